@@ -1,0 +1,115 @@
+#include "driver/element_test.hpp"
+
+#include <cmath>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+
+namespace iwb::driver {
+
+double ShearZone::gamma_of(double u_mm) const {
+  return measure == ShearStrainMeasure::kLinear ? u_mm / d_s_mm : std::atan(u_mm / d_s_mm);
+}
+
+double ShearZone::u_of(double gamma) const {
+  return measure == ShearStrainMeasure::kLinear ? gamma * d_s_mm : d_s_mm * std::tan(gamma);
+}
+
+std::string ShearZone::describe() const {
+  return fmt::format("d_s = {:g} mm, {}", d_s_mm,
+                     measure == ShearStrainMeasure::kLinear ? "gamma = u/d_s" : "tan(gamma) = u/d_s");
+}
+
+namespace {
+
+struct Walker {
+  const models::Model& model;
+  const RunSettings& set;
+  ElementTestResult& result;
+  HistoryRow current;
+  double first_step = 1.0;
+
+  std::string where(const PathSegment& seg) const {
+    return fmt::format("increment {} ('{}', gamma_x = {:.6g}, gamma_y = {:.6g}, eps_n = {:.6g})",
+                       current.increment + 1, seg.label, current.gamma_x, current.gamma_y,
+                       current.eps_n);
+  }
+
+  // Guess for the normal strain increment: the last one within a segment, else one Euler step
+  // of the closed form (cheap and usually within a few percent).
+  double guess(const NormalControlRow& row, double gx, double gy, int k, double last) {
+    if (k > 0) return last;
+    try {
+      return closed_form_normal_strain(model, current.state, gx, gy, row, result.counters);
+    } catch (const std::exception&) {
+      return 0.0;
+    }
+  }
+
+  void segment(int index, const PathSegment& seg) {
+    const double gx = seg.gamma_x / seg.increments, gy = seg.gamma_y / seg.increments;
+    double last = 0.0;
+    for (int k = 0; k < seg.increments; ++k) {
+      if (set.interrupt != nullptr && set.interrupt->load())
+        throw std::runtime_error("interrupted at " + where(seg));
+      IncrementRequest rq{gx, gy, seg.row, guess(seg.row, gx, gy, k, last)};
+      IncrementSolution sol;
+      try {
+        sol = solve_increment(model, current.state, rq, set.integrator, set.mixed, first_step);
+      } catch (const DomainError& e) {
+        throw DomainError(fmt::format("{}: {}", where(seg), e.what()));
+      } catch (const ConvergenceError& e) {
+        throw ConvergenceError(fmt::format("{}: {}", where(seg), e.what()));
+      }
+      if (const auto why = model.domain_violation(sol.state); !why.empty())
+        throw DomainError(fmt::format("{}: {}", where(seg), why));
+      last = sol.eps_n;
+      commit(index, gx, gy, sol);
+      if (current.increment % set.output_every == 0) result.rows.push_back(current);
+    }
+  }
+
+  void commit(int index, double gx, double gy, const IncrementSolution& sol) {
+    current.increment += 1;  // the final increment is appended by run_element_test
+    current.segment = index;
+    current.gamma_x += gx;
+    current.gamma_y += gy;
+    current.eps_n += sol.eps_n;
+    current.state = sol.state;
+    current.newton_iterations = sol.iterations;
+    current.rate_evaluations = sol.counters.rate_evaluations;
+    current.rejected_substeps = sol.counters.rejected_substeps;
+    result.counters += sol.counters;
+    result.increments += 1;
+    result.newton_iterations += sol.iterations;
+  }
+};
+
+}  // namespace
+
+ElementTestResult run_element_test(const models::Model& model, const models::StateVector& initial,
+                                   const Path& path, const RunSettings& settings) {
+  ElementTestResult result;
+  Walker w{model, settings, result, HistoryRow{}, 1.0};
+  w.current.state = initial;
+  result.rows.push_back(w.current);
+  for (const auto& seg : path)
+    if ((seg.gamma_y != 0.0) && !model.has_second_shear_direction())
+      throw InputError(fmt::format("model {} has one shear direction; use direction = \"x\"",
+                                   model.name()));
+  try {
+    for (std::size_t i = 0; i < path.size(); ++i) w.segment(int(i), path[i]);
+  } catch (const DomainError& e) {
+    result.status = fmt::format("failed: domain error at {}", e.what());
+  } catch (const ConvergenceError& e) {
+    result.status = fmt::format("failed: no convergence at {}", e.what());
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    result.status = e.what();  // interrupted
+  }
+  if (result.rows.back().increment != w.current.increment) result.rows.push_back(w.current);
+  return result;
+}
+
+}  // namespace iwb::driver

@@ -1,0 +1,73 @@
+#include "driver/path.hpp"
+
+#include <cmath>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+
+namespace iwb::driver {
+
+namespace {
+PathSegment shear(const std::string& label, double gamma, ShearDirection dir,
+                  const NormalControlRow& row, int increments) {
+  PathSegment s{label, 0.0, 0.0, row, increments};
+  (dir == ShearDirection::kX ? s.gamma_x : s.gamma_y) = gamma;
+  return s;
+}
+
+void require_positive(int n, const char* what) {
+  if (n < 1) throw InputError(fmt::format("{} must be at least 1; got {}", what, n));
+}
+}  // namespace
+
+Path monotonic_path(const BoundaryCondition& bc, double gamma, ShearDirection dir, int increments) {
+  require_positive(increments, "path.increments");
+  return {shear("shear", gamma, dir, bc.row(), increments)};
+}
+
+Path cyclic_path(const BoundaryCondition& bc, double amplitude, int cycles, ShearDirection dir,
+                 int per_quarter) {
+  require_positive(cycles, "path.cycles");
+  require_positive(per_quarter, "path.increments_per_quarter");
+  Path p;
+  for (int c = 1; c <= cycles; ++c) {
+    p.push_back(shear(fmt::format("cycle {} to +A", c), amplitude, dir, bc.row(), per_quarter));
+    p.push_back(shear(fmt::format("cycle {} to -A", c), -2.0 * amplitude, dir, bc.row(), 2 * per_quarter));
+    p.push_back(shear(fmt::format("cycle {} to 0", c), amplitude, dir, bc.row(), per_quarter));
+  }
+  return p;
+}
+
+Path staged_path(double sigma_n0, double gamma, const std::vector<StagedStep>& steps,
+                 ShearDirection dir, int increments, int step_increments) {
+  require_positive(increments, "path.increments");
+  require_positive(step_increments, "path.step_increments");
+  const BoundaryCondition cnl{BoundaryKind::kCNL, 0.0};
+  Path p;
+  double at = 0.0, sigma = sigma_n0;
+  auto shear_to = [&](double target) {
+    if (target <= at) return;
+    const int n = std::max(1, int(std::lround(increments * (target - at) / gamma)));
+    p.push_back(shear(fmt::format("shear at {:g} kPa", sigma), target - at, dir, cnl.row(), n));
+    at = target;
+  };
+  for (const auto& step : steps) {
+    if (!(step.at_gamma > at - 1e-15) || step.at_gamma > gamma)
+      throw InputError(fmt::format("staged path: steps must be ordered within (0, {:g}]; step at "
+                                   "gamma = {:g} is not", gamma, step.at_gamma));
+    shear_to(step.at_gamma);
+    p.push_back({fmt::format("sigma_n {:g} -> {:g} kPa", sigma, step.sigma_n_kPa), 0.0, 0.0,
+                 cnl.row((step.sigma_n_kPa - sigma) / step_increments), step_increments});
+    sigma = step.sigma_n_kPa;
+  }
+  shear_to(gamma);
+  return p;
+}
+
+Path oedometric_path(double sigma_from, double sigma_to, int increments) {
+  require_positive(increments, "path.increments");
+  return {{fmt::format("oedometric {:g} -> {:g} kPa", sigma_from, sigma_to), 0.0, 0.0,
+           {1.0, 0.0, (sigma_to - sigma_from) / increments}, increments}};
+}
+
+}  // namespace iwb::driver

@@ -1,0 +1,41 @@
+#pragma once
+// Element-test paths as data: a list of segments, each a number of equal increments of shear
+// strain with one normal-control row per increment. Monotonic, staged, cyclic and oedometric
+// paths are built from it; the driver only walks segments.
+#include <string>
+#include <vector>
+
+#include "driver/control.hpp"
+
+namespace iwb::driver {
+
+struct PathSegment {
+  std::string label;
+  double gamma_x = 0.0;  // engineering shear strain over the whole segment
+  double gamma_y = 0.0;
+  NormalControlRow row;  // per increment
+  int increments = 1;
+};
+
+using Path = std::vector<PathSegment>;
+
+enum class ShearDirection { kX, kY };
+
+struct StagedStep {
+  double at_gamma;     // shear strain at which sigma_n changes
+  double sigma_n_kPa;  // new normal stress
+};
+
+// Shear to `gamma` under `bc`.
+Path monotonic_path(const BoundaryCondition& bc, double gamma, ShearDirection dir, int increments);
+// `cycles` cycles 0 -> +A -> -A -> 0 under `bc`, `per_quarter` increments per quarter cycle.
+Path cyclic_path(const BoundaryCondition& bc, double amplitude, int cycles, ShearDirection dir,
+                 int per_quarter);
+// CNL shear to `gamma` with sigma_n stepped to new values at given strains; each step is a
+// ramp of `step_increments` pure normal-stress increments at fixed shear.
+Path staged_path(double sigma_n0, double gamma, const std::vector<StagedStep>& steps,
+                 ShearDirection dir, int increments, int step_increments);
+// Normal loading without shear from sigma_from to sigma_to (oedometric for the interface).
+Path oedometric_path(double sigma_from, double sigma_to, int increments);
+
+}  // namespace iwb::driver

@@ -1,0 +1,19 @@
+// ahe: Arnold & Herle's reduced tensors (sigma_22 = sigma_33 = sigma_n, eps_n on the whole
+// diagonal of D, eqs. 5.16-5.19) with the standard Lode angle, a (eq. 5.15) and F (eq. 5.10).
+#include "models/hypoplastic/family.hpp"
+
+namespace iwb::models {
+
+ModelSpec ahe_spec() {
+  return {"ahe",
+          "Arnold & Herle reduced tensors with the standard cos 3theta, a and F",
+          "seed 5.16-5.19 with 5.10, 5.11, 5.15 (ERRATA 8)",
+          true,
+          {&HypoplasticParameters::table()},
+          [](const ModelInputs& in) {
+            return make_hypoplastic("ahe", ReducedInterfaceKinematics<algebra::ReducedOps>{true},
+                                    HypoplasticVariant{}, in);
+          }};
+}
+
+}  // namespace iwb::models

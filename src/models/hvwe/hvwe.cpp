@@ -1,0 +1,19 @@
+// hvwe: the enhanced interface model (Stutz et al. 2016, seed 5.5): von Wolffersdorff's rate on
+// the reduced vectors [sigma_n, sigma_p, tau_x, tau_y] with independent in-plane stress.
+#include "models/hypoplastic/family.hpp"
+
+namespace iwb::models {
+
+ModelSpec hvwe_spec() {
+  return {"hvwe",
+          "enhanced hypoplastic interface model on [sigma_n, sigma_p, tau_x, tau_y]",
+          "seed 5.2, 5.4 (5.22-5.34), 5.5, roughness 5.35-5.41",
+          true,
+          {&HypoplasticParameters::table()},
+          [](const ModelInputs& in) {
+            return make_hypoplastic("hvwe", ReducedInterfaceKinematics<algebra::ReducedOps>{},
+                                    HypoplasticVariant{}, in);
+          }};
+}
+
+}  // namespace iwb::models

@@ -1,0 +1,108 @@
+#pragma once
+// The hypoplastic family as one class over a kinematics policy and variant data. State: the
+// packed stress tensor followed by the void ratio.
+#include <fmt/core.h>
+
+#include <cmath>
+#include <string>
+
+#include "common/errors.hpp"
+#include "models/hypoplastic/kinematics.hpp"
+#include "models/hypoplastic/von_wolffersdorff.hpp"
+#include "models/model.hpp"
+
+namespace iwb::models {
+
+template <class Kinematics>
+class HypoplasticModel final : public Model {
+  using Ops = typename Kinematics::Ops;
+  static constexpr int kVoidRatio = Ops::kPackedSize;
+
+ public:
+  HypoplasticModel(std::string name, Kinematics kin, const HypoplasticParameters& p,
+                   const HypoplasticVariant& variant, const Roughness& roughness)
+      : name_(std::move(name)),
+        kin_(kin),
+        c_(make_constants(p, variant, roughness, value_of(Ops::trace(Ops::template unit<double>())))) {}
+
+  std::string_view name() const override { return name_; }
+  int state_size() const override { return Ops::kPackedSize + 1; }
+  std::vector<std::string> state_names() const override {
+    auto names = Kinematics::component_names();
+    names.push_back("e");
+    return names;
+  }
+  bool has_second_shear_direction() const override { return Kinematics::kSecondShearDirection; }
+  const VonWolffersdorffConstants& constants() const { return c_; }
+
+  StateVector initial_state(const InitialState& init) const override {
+    StateVector s(state_size());
+    Ops::template pack<double>(kin_.initial_stress(init), s, 0);
+    s(kVoidRatio) = init.e0;
+    if (const std::string why = domain_violation(s); !why.empty())
+      throw InputError(fmt::format("initial state (sigma_n0 = {:g} kPa, K0 = {:g}, e0 = {:g}) is "
+                                   "not admissible for {}: {}",
+                                   init.sigma_n, init.K0, init.e0, name_, why));
+    return s;
+  }
+
+  void rate(const StateVector& s, const InterfaceStrain& d, StateVector& ds) const override {
+    rate_impl<double>(s, d, ds);
+  }
+  void rate(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d,
+            StateVectorT<Dual>& ds) const override {
+    rate_impl<Dual>(s, d, ds);
+  }
+
+  InterfaceStress stress(const StateVector& s) const override {
+    return kin_.stress(Ops::template unpack<double>(s, 0));
+  }
+  double void_ratio(const StateVector& s) const override { return s(kVoidRatio); }
+
+  std::string domain_violation(const StateVector& s) const override {
+    if (!s.allFinite()) return "state is not finite (NaN or inf)";
+    const double tr = Ops::trace(Ops::template unpack<double>(s, 0));
+    if (!(tr < 0.0)) return fmt::format("no compression: tr T = {:.6g} kPa >= 0", tr);
+    const auto lim = limiting_void_ratios(-tr, c_.p);
+    const double e = s(kVoidRatio);
+    if (!(e > lim.e_d && e < lim.e_i))
+      return fmt::format("e = {:.6g} outside (e_d, e_i) = ({:.6g}, {:.6g}) at -tr T = {:.6g} kPa",
+                         e, lim.e_d, lim.e_i, -tr);
+    return {};
+  }
+
+  StateVector error_scale(const StateVector& s) const override {
+    const auto t = Ops::template unpack<double>(s, 0);
+    StateVector scale = StateVector::Constant(state_size(), std::sqrt(Ops::contract(t, t)));
+    scale(kVoidRatio) = std::abs(s(kVoidRatio));
+    return scale;
+  }
+
+  std::vector<NamedValue> diagnostics(const StateVector& s) const override {
+    const auto t = Ops::template unpack<double>(s, 0);
+    const double pressure = -Ops::trace(t);
+    const auto lim = limiting_void_ratios(pressure, c_.p);
+    const double tr_unit = Ops::trace(Ops::template unit<double>());
+    return {{"mean_stress_kPa", pressure / tr_unit},
+            {"e_i", lim.e_i},
+            {"e_c", lim.e_c},
+            {"e_d", lim.e_d}};
+  }
+
+ private:
+  template <class S>
+  void rate_impl(const StateVectorT<S>& s, const InterfaceStrainT<S>& d, StateVectorT<S>& ds) const {
+    const auto T = Ops::template unpack<S>(s, 0);
+    const auto D = kin_.template stretching<S>(d);
+    const S e = s(kVoidRatio);
+    ds.resize(state_size());
+    Ops::template pack<S>(von_wolffersdorff_rate<Ops, S>(T, e, D, c_), ds, 0);
+    ds(kVoidRatio) = (1.0 + e) * Ops::trace(D);  // ERRATA item 6
+  }
+
+  std::string name_;
+  Kinematics kin_;
+  VonWolffersdorffConstants c_;
+};
+
+}  // namespace iwb::models

@@ -1,0 +1,38 @@
+#include "models/hypoplastic/parameters.hpp"
+
+#include <cmath>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+
+namespace iwb::models {
+
+const ParameterTable& HypoplasticParameters::table() {
+  static const ParameterTable t{
+      "hypoplastic",
+      {
+          {"phi_c_deg", "deg", {0.0, true}, {90.0, true}, "critical state friction angle phi_c"},
+          {"hs_kPa", "kPa", {0.0, true}, {kUnbounded, true}, "granular hardness h_s"},
+          {"n", "-", {0.0, true}, {1.0, true}, "exponent n of the compression law (eq. 5.13)"},
+          {"ed0", "-", {0.0, true}, {kUnbounded, true}, "minimum void ratio e_d0 at p = 0"},
+          {"ec0", "-", {0.0, true}, {kUnbounded, true}, "critical void ratio e_c0 at p = 0"},
+          {"ei0", "-", {0.0, true}, {kUnbounded, true}, "maximum void ratio e_i0 at p = 0"},
+          {"alpha", "-", {0.0, false}, {kUnbounded, true}, "pyknotropy exponent alpha (eq. 5.14)"},
+          {"beta", "-", {0.0, false}, {kUnbounded, true}, "stiffness exponent beta (eq. 5.12)"},
+      }};
+  return t;
+}
+
+HypoplasticParameters HypoplasticParameters::from(const ParameterValues& v,
+                                                  const std::string& source) {
+  validate(table(), v, source);
+  const double ed0 = v.at("ed0"), ec0 = v.at("ec0"), ei0 = v.at("ei0");
+  if (!(ed0 < ec0 && ec0 < ei0))
+    throw InputError(fmt::format(
+        "{}: void ratios must satisfy ed0 < ec0 < ei0; got ed0 = {:g}, ec0 = {:g}, ei0 = {:g}",
+        source, ed0, ec0, ei0));
+  return {v.at("phi_c_deg") * M_PI / 180.0, v.at("hs_kPa"), v.at("n"), ed0, ec0, ei0,
+          v.at("alpha"), v.at("beta")};
+}
+
+}  // namespace iwb::models

@@ -1,0 +1,38 @@
+#include "models/hypoplastic/von_wolffersdorff.hpp"
+
+#include <cmath>
+
+namespace iwb::models {
+
+double coefficient_a(CoefficientARule rule, double phi) {
+  const double s = std::sin(phi);
+  const double t = std::tan(phi);
+  switch (rule) {
+    case CoefficientARule::kVonWolffersdorff:  // eq. 5.15
+      return std::sqrt(3.0) * (3.0 - s) / (2.0 * std::sqrt(2.0) * s);
+    case CoefficientARule::kArnoldHerle:  // eq. 5.21; real for tan phi < 2
+      if (!(t < 2.0))
+        throw InputError(fmt::format(
+            "Arnold & Herle's coefficient a (eq. 5.21) needs phi < 63.4 deg; got {:.4g} deg",
+            phi * 180.0 / M_PI));
+      return 3.0 * std::sqrt(1.0 / (2.0 * t * t) - 1.0 / 8.0) - std::sqrt(3.0) / (2.0 * std::sqrt(2.0));
+    case CoefficientARule::kGutjahr1D:  // eq. 3.76
+      return 1.0 / t;
+  }
+  return 0.0;
+}
+
+VonWolffersdorffConstants make_constants(const HypoplasticParameters& p,
+                                         const HypoplasticVariant& v, const Roughness& r,
+                                         double trace_of_unit) {
+  const RoughnessEffect eff = effect_of(r);
+  const double phi_r = std::asin(eff.sin_phi_factor * std::sin(p.phi_c));  // eq. 5.37
+  const double a = coefficient_a(v.a_rule, phi_r);
+  const double alpha = p.alpha * eff.alpha_factor;
+  const double fd_ncl = std::pow((p.ei0 - p.ed0) / (p.ec0 - p.ed0), alpha);
+  const double bracket = trace_of_unit + a * a - a * std::sqrt(trace_of_unit) * fd_ncl;
+  const double barotropy = eff.rate_factor * (p.hs / p.n) * std::pow(p.ei0 / p.ec0, p.beta) / bracket;
+  return {p, v.lode, a, alpha, barotropy};
+}
+
+}  // namespace iwb::models

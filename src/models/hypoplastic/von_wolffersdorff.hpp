@@ -1,0 +1,126 @@
+#pragma once
+// von Wolffersdorff's (1996) hypoplastic rate, written once over an algebra policy (src/algebra/
+// ops.hpp) so the 3D model, the reduced interface models and Gutjahr's 1D model share it:
+//
+//   T_rate = f_c f_s / (T^:T^) [F^2 D + a^2 T^ (T^:D) + f_d a F (T^ + T^*) ||D||]
+//
+// seed eqs. 5.7-5.15 with ERRATA items 4-6 (f_s applied once, -tr T in the exponents), tension
+// positive. The variants differ only in data: the Lode-angle rule, the coefficient a, and the
+// roughness effect (a_r, alpha_r, f_c). With ShearPlaneOps F = 1 and the formula is Gutjahr's
+// eq. 3.75 (derivation in src/models/hp1d/README.md).
+#include <cmath>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+#include "common/scalar.hpp"
+#include "models/hypoplastic/parameters.hpp"
+#include "models/roughness/roughness.hpp"
+
+namespace iwb::models {
+
+enum class LodeRule {
+  kStandard,  // cos 3theta from T^* (eq. 5.11)
+  kZero,      // cos 3theta = 0 (Arnold & Herle 2006, ERRATA item 8)
+};
+
+enum class CoefficientARule {
+  kVonWolffersdorff,  // eq. 5.15
+  kArnoldHerle,       // eq. 5.21 with tan psi = tan phi (the interface stress ratio at critical state)
+  kGutjahr1D,         // eq. 3.76, a = 1 / tan phi
+};
+
+struct HypoplasticVariant {
+  LodeRule lode = LodeRule::kStandard;
+  CoefficientARule a_rule = CoefficientARule::kVonWolffersdorff;
+};
+
+double coefficient_a(CoefficientARule rule, double phi);
+
+// Everything in the rate that does not change along a path.
+struct VonWolffersdorffConstants {
+  HypoplasticParameters p;
+  LodeRule lode;
+  double a;           // a, or a_r for a rough wall (eq. 5.37)
+  double alpha;       // alpha, or alpha kappa_r^2 (Gutjahr, eq. 5.38)
+  double barotropy;   // f_c (h_s/n) (e_i0/e_c0)^beta / [tr1 + a^2 - a sqrt(tr1) ((e_i0-e_d0)/(e_c0-e_d0))^alpha]
+};
+
+// trace_of_unit = tr 1 of the algebra: 3 for tensors and reduced vectors, 1 for Gutjahr's 1D
+// vectors; it turns eq. 5.12's bracket (3 + a^2 - sqrt3 a ...) into eq. 3.77's (1 + a^2 - a ...),
+// both of which put the isotropic (normal) compression line at e = e_i.
+VonWolffersdorffConstants make_constants(const HypoplasticParameters& p,
+                                         const HypoplasticVariant& v, const Roughness& r,
+                                         double trace_of_unit);
+
+template <class S>
+struct LimitingVoidRatios {
+  S e_i, e_c, e_d;
+};
+
+// Bauer's compression law, eq. 5.13 with ERRATA item 5; `pressure` = -tr T.
+template <class S>
+LimitingVoidRatios<S> limiting_void_ratios(const S& pressure, const HypoplasticParameters& p) {
+  using std::exp;
+  using std::pow;
+  const S g = exp(-pow(pressure / p.hs, p.n));
+  return {p.ei0 * g, p.ec0 * g, p.ed0 * g};
+}
+
+namespace detail {
+// Matsuoka-Nakai stress function F (eq. 5.10) with cos 3theta from eq. 5.11 or set to zero.
+template <class Ops, class S>
+S stress_function(const typename Ops::template Tensor<S>& t_dev, LodeRule lode) {
+  using std::sqrt;
+  const S dev2 = Ops::contract(t_dev, t_dev);
+  const S tan_psi = sqrt(3.0) * safe_sqrt(dev2);
+  S cos3 = S(0.0);
+  if (lode == LodeRule::kStandard && value_of(dev2) > 1e-300) {
+    cos3 = -sqrt(6.0) * Ops::trace_of_cube(t_dev) / (dev2 * sqrt(dev2));
+    if (value_of(cos3) > 1.0) cos3 = S(1.0);
+    if (value_of(cos3) < -1.0) cos3 = S(-1.0);
+  }
+  const S t2 = tan_psi * tan_psi;
+  const S denominator = 2.0 + sqrt(2.0) * tan_psi * cos3;
+  const S radicand = t2 / 8.0 + (2.0 - t2) / denominator;
+  if (!(value_of(denominator) > 0.0) || !(value_of(radicand) >= 0.0))
+    throw DomainError(fmt::format("stress ratio outside the Matsuoka-Nakai cone (tan psi = {:.4g})",
+                                  value_of(tan_psi)));
+  return sqrt(radicand) - tan_psi / (2.0 * sqrt(2.0));
+}
+}  // namespace detail
+
+template <class Ops, class S>
+typename Ops::template Tensor<S> von_wolffersdorff_rate(const typename Ops::template Tensor<S>& T,
+                                                        const S& e,
+                                                        const typename Ops::template Tensor<S>& D,
+                                                        const VonWolffersdorffConstants& c) {
+  using std::pow;
+  using std::sqrt;
+  using Tensor = typename Ops::template Tensor<S>;
+  const S tr = Ops::trace(T);
+  if (!(value_of(tr) < 0.0))
+    throw DomainError(fmt::format("no compression: tr T = {:.6g} kPa >= 0", value_of(tr)));
+  const Tensor unit = Ops::template unit<S>();
+  const double tr_unit = value_of(Ops::trace(unit));
+  const Tensor t_hat = T / tr;
+  const Tensor t_dev = t_hat - unit / tr_unit;
+
+  const S pressure = -tr;
+  const auto lim = limiting_void_ratios(pressure, c.p);
+  if (!(value_of(e) > value_of(lim.e_d)))
+    throw DomainError(fmt::format("e = {:.6g} at or below e_d = {:.6g}", value_of(e),
+                                  value_of(lim.e_d)));
+  const S f_d = pow((e - lim.e_d) / (lim.e_c - lim.e_d), c.alpha);        // eq. 5.14 / 5.38
+  const S f_e = pow(lim.e_c / e, c.p.beta);                                 // f_e = (e_c/e)^beta
+  const S ratio = pressure / c.p.hs;
+  const S f_b = c.barotropy * (1.0 + lim.e_i) / lim.e_i * ratio / pow(ratio, c.p.n);  // eq. 5.12
+  S F = S(1.0);
+  if constexpr (Ops::kHasLodeAngle) F = detail::stress_function<Ops, S>(t_dev, c.lode);
+
+  const S norm_d = safe_sqrt(Ops::contract(D, D));
+  const S scale = f_b * f_e / Ops::contract(t_hat, t_hat);
+  return scale * (F * F * D + (c.a * c.a * Ops::contract(t_hat, D)) * t_hat +
+                  (f_d * c.a * F * norm_d) * (t_hat + t_dev));
+}
+
+}  // namespace iwb::models

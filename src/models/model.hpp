@@ -1,0 +1,85 @@
+#pragma once
+// What the driver and the integrator know of a constitutive model: a flat state vector, its rate
+// for a given interface stretching, the stresses it stands for, and its domain. Nothing else.
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/scalar.hpp"
+
+namespace iwb::models {
+
+inline constexpr int kMaxStateSize = 16;
+template <class S>
+using StateVectorT = Eigen::Matrix<S, Eigen::Dynamic, 1, 0, kMaxStateSize, 1>;
+using StateVector = StateVectorT<double>;
+
+// Every model stores the normal stress (tension positive) as state component 0, so the driver can
+// read sigma_n, and its derivative, from any state or rate without knowing the model.
+template <class S>
+S normal_stress(const StateVectorT<S>& s) {
+  return -s(0);
+}
+
+// Stretching (or its increment) of an interface element, internal sign convention: eps_n > 0 is
+// opening (dilation), engineering shear strains gamma_x, gamma_y (CONVENTIONS.md).
+template <class S>
+struct InterfaceStrainT {
+  S eps_n{0.0};
+  S gamma_x{0.0};
+  S gamma_y{0.0};
+};
+using InterfaceStrain = InterfaceStrainT<double>;
+
+// Stresses an element stands for, geotechnical sign (compression positive), kPa. sigma_p is empty
+// for models without an in-plane stress (hp1d).
+struct InterfaceStress {
+  double sigma_n = 0.0;
+  std::optional<double> sigma_p;
+  double tau_x = 0.0;
+  double tau_y = 0.0;
+};
+
+// Initial state of an element test (CONVENTIONS.md): geotechnical sign, kPa.
+struct InitialState {
+  double sigma_n = 0.0;
+  double K0 = 1.0;  // sigma_p0 = K0 sigma_n0
+  double e0 = 0.0;
+};
+
+struct NamedValue {
+  std::string name;
+  double value;
+};
+
+class Model {
+ public:
+  virtual ~Model() = default;
+  virtual std::string_view name() const = 0;
+  virtual int state_size() const = 0;
+  virtual std::vector<std::string> state_names() const = 0;
+  // Throws InputError if the initial state is not admissible (tension, e outside [e_d, e_i]).
+  virtual StateVector initial_state(const InitialState& initial) const = 0;
+
+  // Rate of the state for the stretching d. Hypoplastic rates are homogeneous of degree one in d
+  // (rate independence), so integrating over unit pseudo-time with d = the strain increment
+  // gives the increment's response. Throws DomainError where the rate is undefined.
+  virtual void rate(const StateVector& s, const InterfaceStrain& d, StateVector& ds) const = 0;
+  virtual void rate(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d,
+                    StateVectorT<Dual>& ds) const = 0;
+
+  virtual InterfaceStress stress(const StateVector& s) const = 0;
+  virtual double void_ratio(const StateVector& s) const = 0;
+  // Why s is outside the model's domain; empty when it is inside.
+  virtual std::string domain_violation(const StateVector& s) const = 0;
+  // Per-component magnitude against which integration errors are measured (relative tolerance).
+  virtual StateVector error_scale(const StateVector& s) const = 0;
+  // Model-specific quantities worth recording (limiting void ratios, mean stress, ...).
+  virtual std::vector<NamedValue> diagnostics(const StateVector& s) const = 0;
+  // False for models with a single shear component (hp1d): the driver refuses y shear for them.
+  virtual bool has_second_shear_direction() const = 0;
+};
+
+}  // namespace iwb::models

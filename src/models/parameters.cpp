@@ -1,0 +1,50 @@
+#include "models/parameters.hpp"
+
+#include <cmath>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+
+namespace iwb::models {
+
+bool ParameterSpec::admits(double v) const {
+  if (!std::isfinite(v)) return false;
+  const bool above = lower.open ? v > lower.value : v >= lower.value;
+  const bool below = upper.open ? v < upper.value : v <= upper.value;
+  return above && below;
+}
+
+std::string ParameterSpec::range() const {
+  const auto end = [](double b) { return std::isinf(b) ? std::string("inf") : fmt::format("{:g}", b); };
+  return fmt::format("{}{}, {}{}{}", lower.open ? "(" : "[", end(lower.value), end(upper.value),
+                     upper.open ? ")" : "]", unit == "-" ? "" : " " + unit);
+}
+
+const ParameterSpec* ParameterTable::find(const std::string& key) const {
+  for (const auto& e : entries)
+    if (e.key == key) return &e;
+  return nullptr;
+}
+
+void validate(const ParameterTable& table, const ParameterValues& values,
+              const std::string& source) {
+  for (const auto& [key, value] : values) {
+    if (table.find(key) == nullptr) {
+      std::string known;
+      for (const auto& e : table.entries) known += (known.empty() ? "" : ", ") + e.key;
+      throw InputError(fmt::format("{}: unknown key '{}' (value {:g}); table [{}] takes: {}",
+                                   source, key, value, table.name, known));
+    }
+  }
+  for (const auto& spec : table.entries) {
+    const auto it = values.find(spec.key);
+    if (it == values.end())
+      throw InputError(fmt::format("{}: missing key '{}' ({}, allowed {})", source, spec.key,
+                                   spec.doc, spec.range()));
+    if (!spec.admits(it->second))
+      throw InputError(fmt::format("{}: key '{}' = {:g} is out of range; allowed {} ({})", source,
+                                   spec.key, it->second, spec.range(), spec.doc));
+  }
+}
+
+}  // namespace iwb::models

@@ -1,0 +1,38 @@
+#include "models/registry.hpp"
+
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+
+namespace iwb::models {
+
+ModelSpec vw3d_spec();
+ModelSpec ah_spec();
+ModelSpec ahe_spec();
+ModelSpec hvwe_spec();
+ModelSpec hvwe_exact_spec();
+ModelSpec hp1d_spec();
+
+const std::vector<ModelSpec>& model_registry() {
+  static const std::vector<ModelSpec> specs{vw3d_spec(), ah_spec(),         ahe_spec(),
+                                            hvwe_spec(), hvwe_exact_spec(), hp1d_spec()};
+  return specs;
+}
+
+const ModelSpec& find_model(const std::string& name) {
+  std::string known;
+  for (const auto& s : model_registry()) {
+    if (s.name == name) return s;
+    known += (known.empty() ? "" : ", ") + s.name;
+  }
+  throw InputError(fmt::format("unknown model '{}'; known models: {}", name, known));
+}
+
+const ParameterValues& require_table(const ModelInputs& inputs, const std::string& name) {
+  const auto it = inputs.tables.find(name);
+  if (it == inputs.tables.end())
+    throw InputError(fmt::format("{}: no table [{}] of parameters", inputs.source, name));
+  return it->second;
+}
+
+}  // namespace iwb::models

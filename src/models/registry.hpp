@@ -1,0 +1,39 @@
+#pragma once
+// The list of models the workbench knows. Adding a model: one folder under src/models/ with a
+// spec function, and one line in registry.cpp.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "models/model.hpp"
+#include "models/parameters.hpp"
+#include "models/roughness/roughness.hpp"
+
+namespace iwb::models {
+
+// What a model is built from: parameter tables by TOML table name, where they came from (for
+// messages), and the wall roughness (interface models only).
+struct ModelInputs {
+  std::map<std::string, ParameterValues> tables;
+  std::string source;
+  Roughness roughness;
+};
+
+struct ModelSpec {
+  std::string name;
+  std::string summary;
+  std::string equations;  // seed equations it implements
+  bool uses_roughness;
+  std::vector<const ParameterTable*> tables;
+  std::unique_ptr<Model> (*make)(const ModelInputs&);
+};
+
+const std::vector<ModelSpec>& model_registry();
+// Throws InputError listing the known names.
+const ModelSpec& find_model(const std::string& name);
+
+// The parameter table `name` of `inputs`; InputError if the file has no such table.
+const ParameterValues& require_table(const ModelInputs& inputs, const std::string& name);
+
+}  // namespace iwb::models

@@ -1,0 +1,50 @@
+#include "models/roughness/roughness.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+
+namespace iwb::models {
+
+RoughnessEffect effect_of(const Roughness& r) {
+  const double k = r.kappa_r;
+  if (r.scheme == RoughnessScheme::kGutjahr) return {k, k * k, 1.0};  // eqs. 5.37-5.39
+  return {k, 1.0, 1.0 / k};                                           // eqs. 5.37, 5.40, 5.41
+}
+
+namespace {
+KappaR clamped(double raw, const std::string& origin) {
+  KappaR out{std::min(1.0, raw), {}};
+  if (out.value < kKappaRFloor) {
+    out.warnings.push_back(fmt::format("kappa_r = {:.4g} from {} is below the floor {}; clamped",
+                                       raw, origin, kKappaRFloor));
+    out.value = kKappaRFloor;
+  }
+  return out;
+}
+}  // namespace
+
+KappaR kappa_r_from_normalized_roughness(double R_n, double log_base) {
+  if (!(R_n > 0.0) || !std::isfinite(R_n))
+    throw InputError(fmt::format("R_n = {:g}: normalized roughness must be > 0", R_n));
+  if (!(log_base > 1.0))
+    throw InputError(fmt::format("log base {:g} for eq. 5.35 must be > 1", log_base));
+  const double raw = 0.25 * std::log(R_n) / std::log(log_base) + 1.05;
+  return clamped(raw, fmt::format("R_n = {:g} (eq. 5.35, log base {:g})", R_n, log_base));
+}
+
+KappaR kappa_r_from_friction_angles(double delta, double phi_c) {
+  if (!(delta > 0.0) || !(delta < M_PI / 2))
+    throw InputError(fmt::format("interface friction angle {:g} deg must be in (0, 90)",
+                                 delta * 180.0 / M_PI));
+  return clamped(std::tan(delta) / std::tan(phi_c),
+                 fmt::format("delta = {:g} deg (eq. 5.36)", delta * 180.0 / M_PI));
+}
+
+const char* to_string(RoughnessScheme s) {
+  return s == RoughnessScheme::kGutjahr ? "gutjahr" : "arnold-herle";
+}
+
+}  // namespace iwb::models

@@ -1,0 +1,45 @@
+#pragma once
+// Wall roughness for the interface models (seed 5.5.2, CONVENTIONS.md "Roughness").
+//
+// Both schemes reduce the friction angle that enters the coefficient a: sin(phi_r) = kappa_r
+// sin(phi_c) (eq. 5.37 as printed). Gutjahr's scheme also scales the pyknotropy exponent alpha by
+// kappa_r^2 (eqs. 5.38, 5.39); Arnold & Herle's multiplies the whole rate by f_c = 1/kappa_r
+// (eqs. 5.40, 5.41). That difference is data (RoughnessEffect), not code paths.
+#include <string>
+#include <vector>
+
+namespace iwb::models {
+
+enum class RoughnessScheme { kGutjahr, kArnoldHerle };
+
+struct Roughness {
+  RoughnessScheme scheme = RoughnessScheme::kGutjahr;
+  double kappa_r = 1.0;  // (0, 1]; 1 = fully rough
+};
+
+// How kappa_r enters the hypoplastic rate.
+struct RoughnessEffect {
+  double sin_phi_factor;  // sin(phi_r) = factor * sin(phi_c), used for a_r
+  double alpha_factor;    // alpha_r = factor * alpha in f_d and f_s
+  double rate_factor;     // f_c multiplying the whole rate
+};
+RoughnessEffect effect_of(const Roughness& r);
+
+// Smallest kappa_r the formulas accept; below it the base-10 reading of eq. 5.35 would go
+// negative (R_n < ~1e-4). Values are clamped to it with a warning.
+inline constexpr double kKappaRFloor = 0.05;
+
+struct KappaR {
+  double value;
+  std::vector<std::string> warnings;
+};
+
+// Gutjahr's eq. 5.35, kappa_r = min(1, 0.25 log_b(R_n) + 1.05). The seed does not print the
+// base; 10 is our reading (CONVENTIONS.md), e is offered so the DEM fits can decide.
+KappaR kappa_r_from_normalized_roughness(double R_n, double log_base = 10.0);
+// Eq. 5.36 (granular): kappa_r = tan(delta) / tan(phi_c), capped at 1; angles in radians.
+KappaR kappa_r_from_friction_angles(double delta, double phi_c);
+
+const char* to_string(RoughnessScheme s);
+
+}  // namespace iwb::models
