@@ -27,6 +27,7 @@ struct Walker {
   const RunSettings& set;
   ElementTestResult& result;
   HistoryRow current;
+  long total = 0;
   double first_step = 1.0;
 
   std::string where(const PathSegment& seg) const {
@@ -66,6 +67,7 @@ struct Walker {
       last = sol.eps_n;
       commit(index, gx, gy, sol);
       if (current.increment % set.output_every == 0) result.rows.push_back(current);
+      if (set.on_increment) set.on_increment(current.increment, total);
     }
   }
 
@@ -90,7 +92,8 @@ struct Walker {
 ElementTestResult run_element_test(const models::Model& model, const models::StateVector& initial,
                                    const Path& path, const RunSettings& settings) {
   ElementTestResult result;
-  Walker w{model, settings, result, HistoryRow{}, 1.0};
+  Walker w{model, settings, result, HistoryRow{}, 0, 1.0};
+  for (const auto& seg : path) w.total += seg.increments;
   w.current.state = initial;
   result.rows.push_back(w.current);
   for (const auto& seg : path)

@@ -44,6 +44,8 @@ struct RunSettings {
   MixedControlSettings mixed;
   int output_every = 1;                          // record every n-th increment (and the last)
   const std::atomic<bool>* interrupt = nullptr;  // set from a signal handler: stop cleanly
+  // Called after each accepted increment with (done, total): progress reporting.
+  std::function<void(long, long)> on_increment;
 };
 
 struct ElementTestResult {

@@ -1,0 +1,89 @@
+#include "bench/element_bench.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <fmt/core.h>
+
+#include "driver/element_test.hpp"
+#include "models/registry.hpp"
+
+namespace iwb::bench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+models::ModelInputs table_5_1() {
+  models::ModelInputs in;
+  in.tables["hypoplastic"] = {{"phi_c_deg", 28.0}, {"hs_kPa", 2.0e6}, {"n", 0.29},
+                              {"ed0", 0.61},       {"ec0", 0.96},     {"ei0", 1.09},
+                              {"alpha", 0.13},     {"beta", 2.0}};
+  in.source = "seed Table 5.1";
+  return in;
+}
+
+// Nanoseconds per rate evaluation on `s`, measured over at least `min_seconds`.
+template <class S>
+double ns_per_rate(const models::Model& m, const models::StateVector& s, double min_seconds) {
+  const models::StateVectorT<S> state = s.cast<S>();
+  models::InterfaceStrainT<S> d{S(-2e-5), S(1e-4), S(0.0)};
+  if constexpr (!std::is_same_v<S, double>) d.eps_n = make_variable(-2e-5);
+  models::StateVectorT<S> r;
+  long n = 0;
+  double sink = 0.0;
+  const auto t0 = Clock::now();
+  double elapsed = 0.0;
+  while (elapsed < min_seconds) {
+    for (int i = 0; i < 1000; ++i, ++n) {
+      m.rate(state, d, r);
+      sink += value_of(r(0));
+    }
+    elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+  if (sink == 42.0) fmt::print("");  // keeps the loop from being optimised away
+  return 1e9 * elapsed / double(n);
+}
+
+}  // namespace
+
+nlohmann::json run_element_bench(const ElementBenchOptions& opt) {
+  nlohmann::json out = nlohmann::json::array();
+  fmt::print("iwb bench element: Table 5.1 sand, e0 = 0.80, sigma_n = 100 kPa, CNL simple shear,\n"
+             "2000 increments of d gamma = 1e-4, adaptive rk32, rtol 1e-6, Newton to 1e-8; "
+             "best of {} runs, one core\n\n", opt.repeats);
+  fmt::print("{:<11} {:>9} {:>11} {:>9} {:>12} {:>12} {:>13}\n", "model", "test ms", "rate evals",
+             "Newton", "ns/eval dbl", "ns/eval dual", "evals/s (dbl)");
+  for (const auto& spec : models::model_registry()) {
+    const auto model = spec.make(table_5_1());
+    const auto s0 = model->initial_state({100.0, 1.0 - std::sin(28.0 * M_PI / 180.0), 0.80});
+    driver::RunSettings rs;
+    rs.integrator.rtol = 1e-6;
+    rs.output_every = 2000;
+    const auto path = driver::monotonic_path({driver::BoundaryKind::kCNL, 0.0}, 0.2,
+                                             driver::ShearDirection::kX, 2000);
+    double best = INFINITY;
+    driver::ElementTestResult result;
+    for (int i = 0; i < opt.repeats; ++i) {
+      const auto t0 = Clock::now();
+      result = driver::run_element_test(*model, s0, path, rs);
+      best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count());
+    }
+    const auto& sheared = result.rows.back().state;
+    const double ns_double = ns_per_rate<double>(*model, sheared, 0.2);
+    const double ns_dual = ns_per_rate<Dual>(*model, sheared, 0.2);
+    fmt::print("{:<11} {:>9.2f} {:>11} {:>9} {:>12.0f} {:>12.0f} {:>13.3g}{}\n", spec.name,
+               1e3 * best, result.counters.rate_evaluations, result.newton_iterations, ns_double,
+               ns_dual, 1e9 / ns_double, result.complete() ? "" : "  (" + result.status + ")");
+    out.push_back({{"model", spec.name},
+                   {"test_ms", 1e3 * best},
+                   {"rate_evaluations", result.counters.rate_evaluations},
+                   {"newton_iterations", result.newton_iterations},
+                   {"ns_per_rate_double", ns_double},
+                   {"ns_per_rate_dual", ns_dual},
+                   {"status", result.status}});
+  }
+  fmt::print("\ntarget: the whole test under 10 ms on one core (issue 2)\n");
+  return out;
+}
+
+}  // namespace iwb::bench

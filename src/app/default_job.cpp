@@ -1,0 +1,115 @@
+#include "app/default_job.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "io/element_run.hpp"
+#include "io/run_directory.hpp"
+#include "io/toml_reader.hpp"
+
+namespace iwb::app {
+
+const char* const kDefaultElementTest = R"(# Embedded default element test (iwb run).
+description = "Table 5.1 sand, e0 = 0.80, sigma_n0 = 100 kPa, simple shear to gamma = 0.3"
+[model]
+name = "{model}"
+[model.parameters.hypoplastic]  # seed Table 5.1 ("Evaluation")
+phi_c_deg = 28
+hs_kPa = 2.0e6
+n = 0.29
+ed0 = 0.61
+ec0 = 0.96
+ei0 = 1.09
+alpha = 0.13
+beta = 2
+[initial]
+sigma_n_kPa = 100
+e0 = 0.80
+[shear_zone]
+d_s_mm = 1.0
+[boundary]
+type = "{boundary}"
+K_kPa_per_mm = 1000
+[path]
+kind = "monotonic"
+gamma = 0.3
+increments = 3000
+[output]
+every = 10
+)";
+
+namespace {
+
+std::string test_text(const std::string& model, const std::string& bc) {
+  std::string t = kDefaultElementTest;
+  auto replace = [&t](const std::string& key, const std::string& value) {
+    for (auto p = t.find(key); p != std::string::npos; p = t.find(key)) t.replace(p, key.size(), value);
+  };
+  replace("{model}", model);
+  replace("{boundary}", bc);
+  if (bc != "CNS") replace("K_kPa_per_mm = 1000\n", "");
+  return t;
+}
+
+struct Curve {
+  double peak = 0.0, last = 0.0, e_last = 0.0, sigma_last = 0.0;
+  std::vector<double> tau;
+};
+
+Curve curve_of(const io::ElementRunOutcome& o, const models::Model& m) {
+  Curve c;
+  for (const auto& r : o.result.rows) {
+    const auto s = m.stress(r.state);
+    c.tau.push_back(s.tau_x);
+    c.peak = std::max(c.peak, s.tau_x / s.sigma_n);
+    c.last = s.tau_x / s.sigma_n;
+    c.e_last = m.void_ratio(r.state);
+    c.sigma_last = s.sigma_n;
+  }
+  return c;
+}
+
+}  // namespace
+
+int run_default_job(const std::filesystem::path& out, bool force, const std::string& command_line) {
+  nlohmann::json summary;
+  fmt::print("iwb run: embedded default, hvwe against vw3d in simple shear (seed Table 5.1, "
+             "e0 = 0.80, 100 kPa)\n");
+  fmt::print("{:<4} {:>10} {:>10} {:>10} {:>10} {:>14} {:>8}\n", "BC", "peak t/s", "end t/s",
+             "end s_n", "end e", "max |dtau| kPa", "status");
+  bool ok = true;
+  for (const std::string bc : {"CNL", "CNS", "CV"}) {
+    Curve curves[2];
+    int i = 0;
+    std::string status;
+    for (const std::string model : {"hvwe", "vw3d"}) {
+      const std::string text = test_text(model, bc);
+      const std::string name = fmt::format("<embedded:default {} {}>", model, bc);
+      const auto spec = io::parse_element_test(io::parse_toml_text(text, name), name, ".");
+      io::ElementRunOptions opt{out / fmt::format("{}-{}", model, bc), force, command_line, text, nullptr};
+      const auto outcome = io::run_element_to_directory(spec, opt);
+      const auto m = models::find_model(model).make(spec.inputs);
+      curves[i++] = curve_of(outcome, *m);
+      status = outcome.result.status;
+      ok = ok && outcome.result.complete();
+    }
+    double diff = 0.0;
+    for (std::size_t k = 0; k < std::min(curves[0].tau.size(), curves[1].tau.size()); ++k)
+      diff = std::max(diff, std::abs(curves[0].tau[k] - curves[1].tau[k]));
+    const Curve& h = curves[0];
+    fmt::print("{:<4} {:>10.4f} {:>10.4f} {:>10.2f} {:>10.4f} {:>14.3g} {:>8}\n", bc, h.peak, h.last,
+               h.sigma_last, h.e_last, diff, status == "complete" ? "ok" : "FAILED");
+    summary[bc] = {{"hvwe_peak_tau_over_sigma_n", h.peak},
+                   {"hvwe_end_tau_over_sigma_n", h.last},
+                   {"hvwe_end_sigma_n_kPa", h.sigma_last},
+                   {"hvwe_end_e", h.e_last},
+                   {"max_abs_tau_difference_hvwe_vw3d_kPa", diff}};
+  }
+  io::write_atomically(out / "summary.json", summary.dump(2) + "\n");
+  fmt::print("run directories and summary.json in {}\n", out.string());
+  return ok ? 0 : 1;
+}
+
+}  // namespace iwb::app

@@ -1,0 +1,149 @@
+// iwb, the interface workbench: command line. Thin: parses, validates, calls the library.
+// Exit codes: 0 done, 1 the run failed or was interrupted (its manifest says why), 2 bad input.
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <fmt/core.h>
+#include <iostream>
+#include <unistd.h>
+
+#include "app/default_job.hpp"
+#include "bench/element_bench.hpp"
+#include "common/errors.hpp"
+#include "io/element_run.hpp"
+#include "io/run_directory.hpp"
+#include "models/hypoplastic/parameters.hpp"
+#include "models/registry.hpp"
+
+namespace {
+
+std::atomic<bool> g_interrupt{false};
+void on_signal(int) { g_interrupt.store(true); }
+
+std::string joined(int argc, char** argv) {
+  std::string s;
+  for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
+  return s;
+}
+
+// Progress on stderr, at most once a second, only for runs longer than a second.
+std::function<void(long, long)> progress_printer() {
+  auto start = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
+  auto last = std::make_shared<double>(1.0);
+  return [start, last](long done, long total) {
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - *start).count();
+    if (t < *last && done < total) return;
+    *last = t + 1.0;
+    if (t < 1.0) return;
+    const double eta = done > 0 ? t * double(total - done) / double(done) : 0.0;
+    fmt::print(stderr, "  increment {}/{} ({:.0f} %), {:.0f} s elapsed, ETA {:.0f} s\n", done, total,
+               100.0 * double(done) / double(total), t, eta);
+  };
+}
+
+int cmd_element(const std::string& file, const std::string& out, bool force, const std::string& cl) {
+  const auto spec = iwb::io::load_element_test(file);
+  for (const auto& w : spec.warnings) fmt::print(stderr, "warning: {}\n", w);
+  const auto dir = out.empty() ? std::filesystem::path("runs") / std::filesystem::path(file).stem()
+                               : std::filesystem::path(out);
+  iwb::io::ElementRunOptions opt{dir, force, cl, iwb::io::read_file(file), &g_interrupt};
+  auto spec_with_progress = spec;
+  spec_with_progress.settings.on_increment = progress_printer();
+  const auto outcome = iwb::io::run_element_to_directory(spec_with_progress, opt);
+  const auto& r = outcome.result;
+  fmt::print("{}: {} ({} increments, {} rate evaluations, {} rejected substeps) -> {}\n", file,
+             r.status, r.increments, r.counters.rate_evaluations, r.counters.rejected_substeps,
+             dir.string());
+  return r.complete() ? 0 : 1;
+}
+
+int cmd_models(bool json) {
+  nlohmann::json all = nlohmann::json::array();
+  for (const auto& spec : iwb::models::model_registry()) {
+    nlohmann::json m = {{"name", spec.name}, {"summary", spec.summary}, {"equations", spec.equations},
+                        {"roughness", spec.uses_roughness}};
+    if (!json) fmt::print("{:<11} {}\n{:<11} equations: {}; wall roughness: {}\n", spec.name,
+                          spec.summary, "", spec.equations, spec.uses_roughness ? "yes" : "no");
+    for (const auto* table : spec.tables) {
+      if (!json) fmt::print("{:<11} [{}]\n", "", table->name);
+      for (const auto& p : table->entries) {
+        m["parameters"][table->name].push_back(
+            {{"key", p.key}, {"unit", p.unit}, {"range", p.range()}, {"doc", p.doc}});
+        if (!json) fmt::print("{:<13} {:<10} {:<5} {:<16} {}\n", "", p.key, p.unit, p.range(), p.doc);
+      }
+    }
+    if (!json) fmt::print("\n");
+    all.push_back(m);
+  }
+  if (json) fmt::print("{}\n", all.dump(2));
+  else fmt::print("Roughness (interface models): [roughness] scheme = \"gutjahr\" | \"arnold-herle\", "
+                  "and one of kappa_r, R_n (+ log_base), delta_deg. See data/tests/README.md.\n");
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "iwb, the interface workbench: continuum hypoplastic interface models (and, as they land,\n"
+      "DEM interface-shear scenes) run side by side.\n\n"
+      "Examples:\n"
+      "  iwb models                                  list models, parameters, units, bounds\n"
+      "  iwb element data/tests/hvwe_cnl_dense.toml  run one element test into runs/<name>/\n"
+      "  iwb run                                     the main job on the embedded default\n"
+      "  iwb bench element                           cost of the continuum core\n"};
+  app.require_subcommand(1);
+  const std::string cl = joined(argc, argv);
+
+  auto* element = app.add_subcommand(
+      "element",
+      "Run an element test described in a TOML file (schema: data/tests/README.md) and write a "
+      "run directory with manifest.json and history.csv (compression positive, kPa, mm).");
+  std::string test_file, out;
+  bool force = false;
+  element->add_option("test", test_file, "element-test TOML file")->required()->check(CLI::ExistingFile);
+  element->add_option("--out,-o", out, "run directory (default runs/<test file stem>)");
+  element->add_flag("--force", force, "replace an earlier run in the same directory");
+
+  auto* models = app.add_subcommand("models", "List the constitutive models, their parameters "
+                                              "(keys, units, bounds, meaning) and equations.");
+  bool as_json = false;
+  models->add_flag("--json", as_json, "machine-readable output");
+
+  auto* run = app.add_subcommand(
+      "run", "The main job on the embedded default: hvwe against its 3D reference vw3d in simple "
+             "shear under CNL, CNS and CV (seed Table 5.1), with a table of their differences.");
+  std::string run_out = "runs/default";
+  run->add_option("--out,-o", run_out, "output directory")->capture_default_str();
+  run->add_flag("--force", force, "replace earlier runs in the output directory");
+
+  auto* bench = app.add_subcommand("bench", "Benchmarks that print figures.");
+  bench->require_subcommand(1);
+  auto* bench_element = bench->add_subcommand(
+      "element", "Rate evaluations per second and the time of a 2000-increment CNL simple shear "
+                 "at rtol 1e-6, for each model.");
+  iwb::bench::ElementBenchOptions bopt;
+  bench_element->add_option("--repeats", bopt.repeats, "runs per model; the best is reported")
+      ->check(CLI::Range(1, 1000))->capture_default_str();
+
+  CLI11_PARSE(app, argc, argv);
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  try {
+    if (*element) return cmd_element(test_file, out, force, cl);
+    if (*models) return cmd_models(as_json);
+    if (*run) return iwb::app::run_default_job(run_out, force, cl);
+    if (*bench_element) {
+      iwb::bench::run_element_bench(bopt);
+      return 0;
+    }
+  } catch (const iwb::InputError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,63 @@
+#include "io/element_run.hpp"
+
+#include <chrono>
+
+#include "io/history_csv.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::io {
+
+namespace {
+
+nlohmann::json counters_json(const driver::ElementTestResult& r) {
+  return {{"increments", r.increments},
+          {"newton_iterations", r.newton_iterations},
+          {"rate_evaluations", r.counters.rate_evaluations},
+          {"accepted_substeps", r.counters.accepted_substeps},
+          {"rejected_substeps", r.counters.rejected_substeps},
+          {"domain_cutbacks", r.counters.domain_cutbacks}};
+}
+
+}  // namespace
+
+ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
+                                           const ElementRunOptions& opt) {
+  const auto model = models::find_model(spec.model).make(spec.inputs);
+  const auto initial = model->initial_state(spec.initial);  // InputError if not admissible
+
+  ElementRunOutcome outcome;
+  auto& m = outcome.manifest;
+  m["kind"] = "element-test";
+  m["workbench"] = {{"name", "iwb"}, {"version", IWB_VERSION}};
+  m["command_line"] = opt.command_line;
+  m["conventions"] = {{"signs", "compression positive; u_n > 0 is dilation; tau has the sign of the shear displacement"},
+                      {"units", "kPa, mm, degrees; strains dimensionless"}};
+  m["inputs"] = {{"test", {{"source", spec.source}, {"sha256", sha256_hex(opt.input_text)}}}};
+  if (spec.parameter_source != "inline")
+    m["inputs"]["parameters"] = {{"source", spec.parameter_source},
+                                 {"sha256", sha256_hex(read_file(spec.parameter_source))}};
+  m["test"] = spec.resolved;
+  m["warnings"] = spec.warnings;
+  m["state_variables"] = model->state_names();
+  m["files"] = {"history.csv"};
+  m["started"] = utc_timestamp();
+  m["status"] = "running";
+  prepare_run_directory(opt.out, opt.force);
+  write_manifest(opt.out, m);
+
+  driver::RunSettings settings = spec.settings;
+  settings.interrupt = opt.interrupt;
+  const auto t0 = std::chrono::steady_clock::now();
+  outcome.result = driver::run_element_test(*model, initial, spec.path, settings);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  write_atomically(opt.out / "history.csv", history_csv(*model, spec.zone, outcome.result.rows));
+  m["finished"] = utc_timestamp();
+  m["wall_seconds"] = seconds;
+  m["counters"] = counters_json(outcome.result);
+  m["status"] = outcome.result.status;
+  write_manifest(opt.out, m);
+  return outcome;
+}
+
+}  // namespace iwb::io

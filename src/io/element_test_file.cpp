@@ -1,0 +1,248 @@
+#include "io/element_test_file.hpp"
+
+#include <cmath>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+#include "io/parameter_file.hpp"
+#include "io/toml_reader.hpp"
+
+namespace iwb::io {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr double kDegree = M_PI / 180.0;
+
+void read_model(TableReader model, ElementTestSpec& spec, const std::filesystem::path& base) {
+  spec.model = model.text("name");
+  models::find_model(spec.model);  // unknown names fail here, with the list of known ones
+  const toml::node* params = model.node("parameters");
+  if (params == nullptr) throw InputError(model.where("parameters") + " is missing (a parameter file path or inline tables)");
+  if (const auto file = params->value<std::string>()) {
+    const auto path = (base / *file).lexically_normal().string();
+    spec.inputs.tables = load_parameter_file(path);
+    spec.inputs.source = path;
+    spec.parameter_source = path;
+  } else if (const auto* inline_tables = params->as_table()) {
+    spec.inputs.tables = read_parameter_tables(*inline_tables, model.where("parameters"));
+    spec.inputs.source = model.where("parameters");
+    spec.parameter_source = "inline";
+  } else {
+    throw InputError(fmt::format("{} = {} should be a file path or a table", model.where("parameters"),
+                                 describe(*params)));
+  }
+  model.finish();
+}
+
+double phi_c_of(const ElementTestSpec& spec) {
+  for (const auto& [name, values] : spec.inputs.tables)
+    if (auto it = values.find("phi_c_deg"); it != values.end()) return it->second * kDegree;
+  return NAN;
+}
+
+void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
+  const auto& model = models::find_model(spec.model);
+  json out = {{"scheme", "gutjahr"}, {"kappa_r", 1.0}, {"origin", "default (fully rough)"}};
+  if (!r) {
+    spec.resolved["roughness"] = model.uses_roughness ? out : json(nullptr);
+    return;
+  }
+  if (!model.uses_roughness)
+    throw InputError(fmt::format("{}: model '{}' is a continuum model and takes no wall roughness; "
+                                 "remove the table", r->where(), spec.model));
+  const std::string scheme = r->optional_text("scheme").value_or("gutjahr");
+  if (scheme == "gutjahr") spec.inputs.roughness.scheme = models::RoughnessScheme::kGutjahr;
+  else if (scheme == "arnold-herle") spec.inputs.roughness.scheme = models::RoughnessScheme::kArnoldHerle;
+  else throw InputError(fmt::format("{} = \"{}\"; allowed \"gutjahr\" or \"arnold-herle\"", r->where("scheme"), scheme));
+  const std::string source = r->one_of({"kappa_r", "R_n", "delta_deg"});
+  models::KappaR k{1.0, {}};
+  std::string origin;
+  if (source == "kappa_r") {
+    k.value = r->number("kappa_r");
+    if (!(k.value >= models::kKappaRFloor && k.value <= 1.0))
+      throw InputError(fmt::format("{} = {:g} is out of range; allowed [{:g}, 1]", r->where("kappa_r"),
+                                   k.value, models::kKappaRFloor));
+    origin = "given";
+  } else if (source == "R_n") {
+    const double base = r->optional_number("log_base").value_or(10.0);
+    const double rn = r->positive("R_n");
+    k = models::kappa_r_from_normalized_roughness(rn, base);
+    origin = fmt::format("R_n = {:g}, eq. 5.35 with log base {:g}", rn, base);
+  } else {
+    const double delta = r->number("delta_deg");
+    k = models::kappa_r_from_friction_angles(delta * kDegree, phi_c_of(spec));
+    origin = fmt::format("delta = {:g} deg, eq. 5.36", delta);
+  }
+  r->finish();
+  spec.inputs.roughness.kappa_r = k.value;
+  for (auto& w : k.warnings) spec.warnings.push_back(r->where() + ": " + w);
+  spec.resolved["roughness"] = {{"scheme", scheme}, {"kappa_r", k.value}, {"origin", origin}};
+}
+
+void read_initial(TableReader t, ElementTestSpec& spec) {
+  spec.initial.sigma_n = t.positive("sigma_n_kPa");
+  spec.initial.e0 = t.positive("e0");
+  const double phi_c = phi_c_of(spec);
+  if (auto k0 = t.optional_positive("K0")) {
+    spec.initial.K0 = *k0;
+  } else if (std::isfinite(phi_c)) {
+    spec.initial.K0 = 1.0 - std::sin(phi_c);  // oedometric start (CONVENTIONS.md)
+  } else {
+    throw InputError(t.where("K0") + " is missing and no phi_c_deg gives the default 1 - sin(phi_c)");
+  }
+  t.finish();
+  spec.resolved["initial"] = {{"sigma_n_kPa", spec.initial.sigma_n},
+                              {"sigma_p_kPa", spec.initial.K0 * spec.initial.sigma_n},
+                              {"K0", spec.initial.K0},
+                              {"e0", spec.initial.e0}};
+}
+
+void read_zone(std::optional<TableReader> t, ElementTestSpec& spec) {
+  if (t) {
+    if (t->has("d_s_mm")) {
+      spec.zone.d_s_mm = t->positive("d_s_mm");
+    } else {
+      spec.zone.d_s_mm = t->positive("d50_mm") * t->positive("d_s_over_d50");
+    }
+    const std::string m = t->optional_text("strain_measure").value_or("linear");
+    if (m == "linear") spec.zone.measure = driver::ShearStrainMeasure::kLinear;
+    else if (m == "tangent") spec.zone.measure = driver::ShearStrainMeasure::kTangent;
+    else throw InputError(fmt::format("{} = \"{}\"; allowed \"linear\" or \"tangent\"", t->where("strain_measure"), m));
+    t->finish();
+  }
+  spec.resolved["shear_zone"] = {{"d_s_mm", spec.zone.d_s_mm}, {"strain_measure", spec.zone.describe()}};
+}
+
+void read_boundary(TableReader t, ElementTestSpec& spec) {
+  spec.boundary.kind = driver::parse_boundary_kind(t.text("type"), t.where("type"));
+  if (spec.boundary.kind == driver::BoundaryKind::kCNS) {
+    const std::string key = t.one_of({"K_kPa_per_mm", "K_kPa"});
+    const double k = t.positive(key);
+    spec.boundary.K_kPa = key == "K_kPa" ? k : k * spec.zone.d_s_mm;  // K = K_per_mm d_s
+  }
+  t.finish();
+  spec.resolved["boundary"] = {{"type", driver::to_string(spec.boundary.kind)},
+                               {"K_kPa_per_unit_strain", spec.boundary.K_kPa},
+                               {"K_kPa_per_mm", spec.boundary.K_kPa / spec.zone.d_s_mm}};
+}
+
+// A shear strain given as gamma or as a displacement u (mm) through d_s.
+double strain(TableReader& t, const std::string& gamma_key, const std::string& u_key,
+              const driver::ShearZone& zone) {
+  if (t.one_of({gamma_key, u_key}) == gamma_key) return t.positive(gamma_key);
+  return zone.gamma_of(t.positive(u_key));
+}
+
+void read_path(TableReader t, ElementTestSpec& spec) {
+  const std::string kind = t.text("kind");
+  const std::string dir = t.optional_text("direction").value_or("x");
+  if (dir != "x" && dir != "y")
+    throw InputError(fmt::format("{} = \"{}\"; allowed \"x\" or \"y\"", t.where("direction"), dir));
+  const auto d = dir == "x" ? driver::ShearDirection::kX : driver::ShearDirection::kY;
+  json out = {{"kind", kind}, {"direction", dir}};
+  if (kind == "monotonic") {
+    const double g = strain(t, "gamma", "u_mm", spec.zone);
+    spec.path = driver::monotonic_path(spec.boundary, g, d, t.count("increments"));
+    out["gamma"] = g;
+  } else if (kind == "cyclic") {
+    const double a = strain(t, "amplitude_gamma", "amplitude_u_mm", spec.zone);
+    const int cycles = t.count("cycles");
+    spec.path = driver::cyclic_path(spec.boundary, a, cycles, d, t.count("increments_per_quarter"));
+    out["amplitude_gamma"] = a;
+    out["cycles"] = cycles;
+  } else if (kind == "staged") {
+    if (spec.boundary.kind != driver::BoundaryKind::kCNL)
+      throw InputError(fmt::format("{}: a staged path steps sigma_n and needs boundary type CNL",
+                                   t.where("kind")));
+    const double g = strain(t, "gamma", "u_mm", spec.zone);
+    std::vector<driver::StagedStep> steps;
+    for (auto& s : t.array_of_tables("steps")) {
+      const double at = strain(s, "at_gamma", "at_u_mm", spec.zone);
+      steps.push_back({at, s.positive("sigma_n_kPa")});
+      s.finish();
+      out["steps"].push_back({{"at_gamma", at}, {"sigma_n_kPa", steps.back().sigma_n_kPa}});
+    }
+    spec.path = driver::staged_path(spec.initial.sigma_n, g, steps, d, t.count("increments"),
+                                    t.optional_count("step_increments").value_or(50));
+    out["gamma"] = g;
+  } else if (kind == "oedometric") {
+    const double to = t.positive("sigma_n_end_kPa");
+    spec.path = driver::oedometric_path(spec.initial.sigma_n, to, t.count("increments"));
+    out["sigma_n_end_kPa"] = to;
+  } else {
+    throw InputError(fmt::format("{} = \"{}\"; allowed \"monotonic\", \"cyclic\", \"staged\", "
+                                 "\"oedometric\"", t.where("kind"), kind));
+  }
+  t.finish();
+  long n = 0;
+  for (const auto& s : spec.path) n += s.increments;
+  out["increments_total"] = n;
+  spec.resolved["path"] = out;
+}
+
+void read_integration(std::optional<TableReader> t, ElementTestSpec& spec) {
+  auto& is = spec.settings.integrator;
+  auto& mc = spec.settings.mixed;
+  if (t) {
+    const std::string scheme = t->optional_text("scheme").value_or("adaptive");
+    if (scheme == "euler") {
+      is.scheme = integration::Scheme::kExplicitEuler;
+      is.substeps = t->optional_count("substeps").value_or(1);
+    } else if (scheme == "adaptive") {
+      is.scheme = integration::Scheme::kAdaptive;
+      is.pair = t->optional_text("pair").value_or("rk32");
+      integration::embedded_pair(is.pair);  // validates the name
+      is.rtol = t->optional_positive("rtol").value_or(is.rtol);
+    } else {
+      throw InputError(fmt::format("{} = \"{}\"; allowed \"adaptive\" or \"euler\"", t->where("scheme"), scheme));
+    }
+    const std::string method = t->optional_text("mixed_control").value_or("newton");
+    if (method == "closed-form") mc.method = driver::MixedControlMethod::kClosedForm;
+    else if (method != "newton")
+      throw InputError(fmt::format("{} = \"{}\"; allowed \"newton\" or \"closed-form\"", t->where("mixed_control"), method));
+    mc.tolerance = t->optional_positive("tolerance").value_or(mc.tolerance);
+    t->finish();
+  }
+  if (mc.method == driver::MixedControlMethod::kClosedForm && is.scheme != integration::Scheme::kExplicitEuler)
+    throw InputError(fmt::format("{}: mixed_control = \"closed-form\" (appendix C) needs scheme = \"euler\"", spec.source));
+  spec.resolved["integration"] = {
+      {"scheme", is.describe()},
+      {"mixed_control", mc.method == driver::MixedControlMethod::kNewton ? "newton" : "closed-form"},
+      {"tolerance", mc.tolerance}};
+}
+
+}  // namespace
+
+ElementTestSpec parse_element_test(const toml::table& root, const std::string& source,
+                                   const std::filesystem::path& base_dir) {
+  ElementTestSpec spec;
+  spec.source = source;
+  TableReader top(root, source);
+  read_model(top.required_table("model"), spec, base_dir);
+  read_roughness(top.table("roughness"), spec);
+  read_initial(top.required_table("initial"), spec);
+  read_zone(top.table("shear_zone"), spec);
+  read_boundary(top.required_table("boundary"), spec);
+  read_path(top.required_table("path"), spec);
+  read_integration(top.table("integration"), spec);
+  if (auto out = top.table("output")) {
+    spec.settings.output_every = out->optional_count("every").value_or(1);
+    out->finish();
+  }
+  const std::string description = top.optional_text("description").value_or("");
+  top.finish();
+  spec.resolved["description"] = description;
+  spec.resolved["model"] = {{"name", spec.model}, {"parameters", spec.parameter_source},
+                            {"values", spec.inputs.tables}};
+  spec.resolved["output_every"] = spec.settings.output_every;
+  return spec;
+}
+
+ElementTestSpec load_element_test(const std::string& path) {
+  return parse_element_test(parse_toml_file(path), path,
+                            std::filesystem::path(path).parent_path());
+}
+
+}  // namespace iwb::io

@@ -1,0 +1,30 @@
+#include "io/history_csv.hpp"
+
+#include <fmt/core.h>
+
+namespace iwb::io {
+
+std::string history_csv(const models::Model& model, const driver::ShearZone& zone,
+                        const std::vector<driver::HistoryRow>& rows) {
+  std::string out =
+      "increment,segment,u_x_mm,u_y_mm,u_n_mm,gamma_x,gamma_y,eps_n,sigma_n_kPa,sigma_p_kPa,"
+      "tau_x_kPa,tau_y_kPa,tau_over_sigma_n,e";
+  if (!rows.empty())
+    for (const auto& d : model.diagnostics(rows.front().state)) out += "," + d.name;
+  out += ",newton_iterations,rate_evaluations,rejected_substeps\n";
+  for (const auto& r : rows) {
+    const auto s = model.stress(r.state);
+    // sigma_p is empty for models without an in-plane stress (hp1d), never NaN.
+    const std::string sigma_p = s.sigma_p ? fmt::format("{:.10g}", *s.sigma_p) : "";
+    out += fmt::format("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.10g},"
+                       "{:.10g},{:.10g},{:.10g}",
+                       r.increment, r.segment, zone.u_of(r.gamma_x), zone.u_of(r.gamma_y),
+                       zone.u_n_of(r.eps_n), r.gamma_x, r.gamma_y, r.eps_n, s.sigma_n, sigma_p,
+                       s.tau_x, s.tau_y, s.tau_x / s.sigma_n, model.void_ratio(r.state));
+    for (const auto& d : model.diagnostics(r.state)) out += fmt::format(",{:.10g}", d.value);
+    out += fmt::format(",{},{},{}\n", r.newton_iterations, r.rate_evaluations, r.rejected_substeps);
+  }
+  return out;
+}
+
+}  // namespace iwb::io

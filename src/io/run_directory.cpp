@@ -1,0 +1,62 @@
+#include "io/run_directory.hpp"
+
+#include <openssl/evp.h>
+
+#include <chrono>
+#include <fmt/chrono.h>
+#include <fmt/core.h>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "common/errors.hpp"
+
+namespace iwb::io {
+
+namespace fs = std::filesystem;
+
+void write_atomically(const fs::path& path, const std::string& content) {
+  const fs::path tmp = path.string() + fmt::format(".tmp{}", ::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error(fmt::format("{}: cannot write", tmp.string()));
+    out << content;
+    out.flush();
+    if (!out) throw std::runtime_error(fmt::format("{}: write failed (disk full?)", tmp.string()));
+  }
+  fs::rename(tmp, path);
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot read", path.string()));
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+std::string sha256_hex(const std::string& bytes) {
+  unsigned char digest[EVP_MAX_MD_SIZE];
+  unsigned int length = 0;
+  EVP_Digest(bytes.data(), bytes.size(), digest, &length, EVP_sha256(), nullptr);
+  std::string hex;
+  for (unsigned int i = 0; i < length; ++i) hex += fmt::format("{:02x}", digest[i]);
+  return hex;
+}
+
+std::string utc_timestamp() {
+  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::chrono::system_clock::now()));
+}
+
+void prepare_run_directory(const fs::path& dir, bool force) {
+  if (fs::exists(dir / "manifest.json") && !force)
+    throw InputError(fmt::format("{}: holds an earlier run (manifest.json); choose another --out "
+                                 "or pass --force to replace it", dir.string()));
+  fs::create_directories(dir);
+}
+
+void write_manifest(const fs::path& dir, const nlohmann::json& manifest) {
+  write_atomically(dir / "manifest.json", manifest.dump(2) + "\n");
+}
+
+}  // namespace iwb::io

@@ -1,0 +1,163 @@
+#include "io/toml_reader.hpp"
+
+#include <filesystem>
+#include <fmt/core.h>
+#include <sstream>
+
+#include "common/errors.hpp"
+
+namespace iwb::io {
+
+TableReader::TableReader(const toml::table& table, std::string file, std::string prefix)
+    : table_(&table), file_(std::move(file)), prefix_(std::move(prefix)) {}
+
+std::string TableReader::where(const std::string& key) const {
+  return fmt::format("{}: key '{}{}'", file_, prefix_.empty() ? "" : prefix_ + ".", key);
+}
+
+std::string TableReader::where() const {
+  return prefix_.empty() ? file_ : fmt::format("{}: table [{}]", file_, prefix_);
+}
+
+std::string describe(const toml::node& node) {
+  std::ostringstream os;
+  if (auto s = node.as_string()) return fmt::format("\"{}\"", s->get());
+  if (node.is_table()) return "a table";
+  if (node.is_array()) return "an array";
+  node.visit([&os](const auto& v) {
+    if constexpr (toml::is_value<decltype(v)>) os << v;
+  });
+  return os.str();
+}
+
+bool TableReader::has(const std::string& key) const { return table_->contains(key); }
+
+const toml::node* TableReader::node(const std::string& key) {
+  read_.insert(key);
+  return table_->get(key);
+}
+
+std::optional<double> TableReader::optional_number(const std::string& key) {
+  const toml::node* n = node(key);
+  if (n == nullptr) return std::nullopt;
+  if (auto v = n->value<double>(); v && (n->is_floating_point() || n->is_integer())) return *v;
+  throw InputError(fmt::format("{} = {} is not a number", where(key), describe(*n)));
+}
+
+double TableReader::number(const std::string& key) {
+  if (auto v = optional_number(key)) return *v;
+  throw InputError(fmt::format("{} is missing (a number)", where(key)));
+}
+
+std::optional<double> TableReader::optional_positive(const std::string& key) {
+  auto v = optional_number(key);
+  if (v && !(*v > 0.0))
+    throw InputError(fmt::format("{} = {:g} is out of range; allowed (0, inf)", where(key), *v));
+  return v;
+}
+
+double TableReader::positive(const std::string& key) {
+  if (auto v = optional_positive(key)) return *v;
+  throw InputError(fmt::format("{} is missing (a number > 0)", where(key)));
+}
+
+std::optional<int> TableReader::optional_count(const std::string& key) {
+  const toml::node* n = node(key);
+  if (n == nullptr) return std::nullopt;
+  const auto v = n->value_exact<int64_t>();
+  if (!v || *v < 1 || *v > 100000000)
+    throw InputError(fmt::format("{} = {} must be a whole number in [1, 1e8]", where(key), describe(*n)));
+  return int(*v);
+}
+
+int TableReader::count(const std::string& key) {
+  if (auto v = optional_count(key)) return *v;
+  throw InputError(fmt::format("{} is missing (a whole number >= 1)", where(key)));
+}
+
+std::optional<std::string> TableReader::optional_text(const std::string& key) {
+  const toml::node* n = node(key);
+  if (n == nullptr) return std::nullopt;
+  if (auto s = n->value<std::string>()) return *s;
+  throw InputError(fmt::format("{} = {} is not a string", where(key), describe(*n)));
+}
+
+std::string TableReader::text(const std::string& key) {
+  if (auto v = optional_text(key)) return *v;
+  throw InputError(fmt::format("{} is missing (a string)", where(key)));
+}
+
+std::optional<TableReader> TableReader::table(const std::string& key) {
+  const toml::node* n = node(key);
+  if (n == nullptr) return std::nullopt;
+  if (auto t = n->as_table())
+    return TableReader(*t, file_, prefix_.empty() ? key : prefix_ + "." + key);
+  throw InputError(fmt::format("{} = {} should be a table", where(key), describe(*n)));
+}
+
+TableReader TableReader::required_table(const std::string& key) {
+  if (auto t = table(key)) return *t;
+  throw InputError(fmt::format("{}: table [{}{}] is missing", file_,
+                               prefix_.empty() ? "" : prefix_ + ".", key));
+}
+
+std::vector<TableReader> TableReader::array_of_tables(const std::string& key) {
+  std::vector<TableReader> out;
+  const toml::node* n = node(key);
+  if (n == nullptr) return out;
+  const auto* arr = n->as_array();
+  if (arr == nullptr)
+    throw InputError(fmt::format("{} = {} should be an array of tables", where(key), describe(*n)));
+  for (std::size_t i = 0; i < arr->size(); ++i) {
+    const auto* t = arr->get(i)->as_table();
+    if (t == nullptr)
+      throw InputError(fmt::format("{}[{}] should be a table", where(key), i));
+    out.emplace_back(*t, file_, fmt::format("{}{}[{}]", prefix_.empty() ? "" : prefix_ + ".", key, i));
+  }
+  return out;
+}
+
+void TableReader::finish() const {
+  for (const auto& [k, v] : *table_) {
+    const std::string key(k.str());
+    if (!read_.count(key))
+      throw InputError(fmt::format("{} is not a known key (value {})", where(key), describe(v)));
+  }
+}
+
+std::string TableReader::one_of(const std::vector<std::string>& keys) {
+  std::string found, names;
+  for (const auto& k : keys) {
+    names += (names.empty() ? "" : ", ") + k;
+    if (has(k)) {
+      if (!found.empty())
+        throw InputError(fmt::format("{}: give only one of {} (both '{}' and '{}' are set)",
+                                     where(), names, found, k));
+      found = k;
+    }
+  }
+  if (found.empty()) throw InputError(fmt::format("{}: one of {} is required", where(), names));
+  return found;
+}
+
+toml::table parse_toml_text(const std::string& text, const std::string& name) {
+  try {
+    return toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", name, e.source().begin.line,
+                                 e.source().begin.column, e.description()));
+  }
+}
+
+toml::table parse_toml_file(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path))
+    throw InputError(fmt::format("{}: no such file", path));
+  try {
+    return toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", path, e.source().begin.line,
+                                 e.source().begin.column, e.description()));
+  }
+}
+
+}  // namespace iwb::io

@@ -1,0 +1,55 @@
+#pragma once
+// Reading a TOML table with every error naming the file, the dotted key and the value, and with
+// unknown keys refused (a typo must not silently fall back to a default).
+#include <optional>
+#include <set>
+#include <string>
+#include <toml++/toml.h>
+#include <vector>
+
+namespace iwb::io {
+
+class TableReader {
+ public:
+  TableReader(const toml::table& table, std::string file, std::string prefix = "");
+
+  double number(const std::string& key);
+  std::optional<double> optional_number(const std::string& key);
+  // A number that must be > 0.
+  double positive(const std::string& key);
+  std::optional<double> optional_positive(const std::string& key);
+  int count(const std::string& key);  // integer >= 1
+  std::optional<int> optional_count(const std::string& key);
+  std::string text(const std::string& key);
+  std::optional<std::string> optional_text(const std::string& key);
+  std::optional<TableReader> table(const std::string& key);
+  TableReader required_table(const std::string& key);
+  std::vector<TableReader> array_of_tables(const std::string& key);
+  bool has(const std::string& key) const;
+  // The node itself, for values of more than one type (e.g. a path or an inline table).
+  const toml::node* node(const std::string& key);
+
+  // InputError for the first key that was never read.
+  void finish() const;
+
+  // "file: key 'path.increments'" for messages.
+  std::string where(const std::string& key) const;
+  std::string where() const;
+  const std::string& file() const { return file_; }
+  // Exactly one of `keys` must be present; returns it.
+  std::string one_of(const std::vector<std::string>& keys);
+
+ private:
+  const toml::table* table_;
+  std::string file_;
+  std::string prefix_;
+  std::set<std::string> read_;
+};
+
+std::string describe(const toml::node& node);  // the value as the user wrote it, for messages
+
+// Parses `path`; InputError naming the file and the line on syntax errors or a missing file.
+toml::table parse_toml_file(const std::string& path);
+toml::table parse_toml_text(const std::string& text, const std::string& name);
+
+}  // namespace iwb::io
