@@ -2,6 +2,7 @@
 // Symmetric 3x3 tensor operations: the reference the reduced algebra is tested against and the
 // algebra of the full continuum model vw3d. Templated on the scalar like reduced.hpp.
 #include <Eigen/Core>
+#include <Eigen/LU>  // determinant
 #include <cmath>
 
 namespace iwb::algebra::tensor3 {

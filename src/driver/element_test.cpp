@@ -47,13 +47,24 @@ struct Walker {
     }
   }
 
+  // The row's value a sigma_n + b eps_n, compression positive sigma_n.
+  static double row_value(const NormalControlRow& row, const HistoryRow& h) {
+    return row.a * models::normal_stress(h.state) + row.b * h.eps_n;
+  }
+
   void segment(int index, const PathSegment& seg) {
     const double gx = seg.gamma_x / seg.increments, gy = seg.gamma_y / seg.increments;
+    const HistoryRow at_start = current;
+    const double row_start = row_value(seg.row, at_start);
     double last = 0.0;
     for (int k = 0; k < seg.increments; ++k) {
       if (set.interrupt != nullptr && set.interrupt->load())
         throw std::runtime_error("interrupted at " + where(seg));
-      IncrementRequest rq{gx, gy, seg.row, guess(seg.row, gx, gy, k, last)};
+      // Aim at the row's total after k+1 increments, not at its increment: residuals within the
+      // tolerance then never accumulate over a long path.
+      NormalControlRow row = seg.row;
+      row.c = row_start + (k + 1) * seg.row.c - row_value(seg.row, current);
+      IncrementRequest rq{gx, gy, row, guess(row, gx, gy, k, last)};
       IncrementSolution sol;
       try {
         sol = solve_increment(model, current.state, rq, set.integrator, set.mixed, first_step);
@@ -65,17 +76,20 @@ struct Walker {
       if (const auto why = model.domain_violation(sol.state); !why.empty())
         throw DomainError(fmt::format("{}: {}", where(seg), why));
       last = sol.eps_n;
-      commit(index, gx, gy, sol);
+      // Strains from the segment start, so a closed cycle ends exactly where it began.
+      const double fraction = double(k + 1) / seg.increments;
+      commit(index, at_start.gamma_x + fraction * seg.gamma_x,
+             at_start.gamma_y + fraction * seg.gamma_y, sol);
       if (current.increment % set.output_every == 0) result.rows.push_back(current);
       if (set.on_increment) set.on_increment(current.increment, total);
     }
   }
 
-  void commit(int index, double gx, double gy, const IncrementSolution& sol) {
+  void commit(int index, double gamma_x, double gamma_y, const IncrementSolution& sol) {
     current.increment += 1;  // the final increment is appended by run_element_test
     current.segment = index;
-    current.gamma_x += gx;
-    current.gamma_y += gy;
+    current.gamma_x = gamma_x;
+    current.gamma_y = gamma_y;
     current.eps_n += sol.eps_n;
     current.state = sol.state;
     current.newton_iterations = sol.iterations;

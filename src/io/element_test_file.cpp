@@ -222,6 +222,7 @@ ElementTestSpec parse_element_test(const toml::table& root, const std::string& s
   TableReader top(root, source);
   read_model(top.required_table("model"), spec, base_dir);
   read_roughness(top.table("roughness"), spec);
+  models::find_model(spec.model).make(spec.inputs);  // parameters validated before anything runs
   read_initial(top.required_table("initial"), spec);
   read_zone(top.table("shear_zone"), spec);
   read_boundary(top.required_table("boundary"), spec);

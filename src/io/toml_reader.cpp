@@ -1,5 +1,6 @@
 #include "io/toml_reader.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fmt/core.h>
 #include <sstream>
@@ -44,9 +45,38 @@ std::optional<double> TableReader::optional_number(const std::string& key) {
   throw InputError(fmt::format("{} = {} is not a number", where(key), describe(*n)));
 }
 
+namespace {
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+constexpr std::size_t kTypoDistance = 2;  // a dropped, doubled or swapped letter or two
+}  // namespace
+
+std::string TableReader::missing(const std::string& key, const std::string& what) const {
+  std::string near;
+  for (const auto& [k, v] : *table_) {
+    const std::string name(k.str());
+    if (!read_.count(name) && edit_distance(name, key) <= kTypoDistance)
+      near += fmt::format("{}'{}' (value {})", near.empty() ? "" : ", ", name, describe(v));
+  }
+  return fmt::format("{} is missing ({}){}", where(key), what,
+                     near.empty() ? "" : "; did you mean " + near + "?");
+}
+
 double TableReader::number(const std::string& key) {
   if (auto v = optional_number(key)) return *v;
-  throw InputError(fmt::format("{} is missing (a number)", where(key)));
+  throw InputError(missing(key, "a number"));
 }
 
 std::optional<double> TableReader::optional_positive(const std::string& key) {
@@ -58,7 +88,7 @@ std::optional<double> TableReader::optional_positive(const std::string& key) {
 
 double TableReader::positive(const std::string& key) {
   if (auto v = optional_positive(key)) return *v;
-  throw InputError(fmt::format("{} is missing (a number > 0)", where(key)));
+  throw InputError(missing(key, "a number > 0"));
 }
 
 std::optional<int> TableReader::optional_count(const std::string& key) {
@@ -72,7 +102,7 @@ std::optional<int> TableReader::optional_count(const std::string& key) {
 
 int TableReader::count(const std::string& key) {
   if (auto v = optional_count(key)) return *v;
-  throw InputError(fmt::format("{} is missing (a whole number >= 1)", where(key)));
+  throw InputError(missing(key, "a whole number >= 1"));
 }
 
 std::optional<std::string> TableReader::optional_text(const std::string& key) {
@@ -84,7 +114,7 @@ std::optional<std::string> TableReader::optional_text(const std::string& key) {
 
 std::string TableReader::text(const std::string& key) {
   if (auto v = optional_text(key)) return *v;
-  throw InputError(fmt::format("{} is missing (a string)", where(key)));
+  throw InputError(missing(key, "a string"));
 }
 
 std::optional<TableReader> TableReader::table(const std::string& key) {
@@ -127,8 +157,8 @@ void TableReader::finish() const {
 
 std::string TableReader::one_of(const std::vector<std::string>& keys) {
   std::string found, names;
+  for (const auto& k : keys) names += (names.empty() ? "" : ", ") + k;
   for (const auto& k : keys) {
-    names += (names.empty() ? "" : ", ") + k;
     if (has(k)) {
       if (!found.empty())
         throw InputError(fmt::format("{}: give only one of {} (both '{}' and '{}' are set)",

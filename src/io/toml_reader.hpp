@@ -40,6 +40,10 @@ class TableReader {
   std::string one_of(const std::vector<std::string>& keys);
 
  private:
+  // "file: key 'x' is missing (what)", suggesting unread keys that look like a misspelling of it:
+  // a typo shows up as a missing key and an unknown one, and the message should say both.
+  std::string missing(const std::string& key, const std::string& what) const;
+
   const toml::table* table_;
   std::string file_;
   std::string prefix_;

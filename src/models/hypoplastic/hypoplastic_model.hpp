@@ -62,7 +62,8 @@ class HypoplasticModel final : public Model {
   std::string domain_violation(const StateVector& s) const override {
     if (!s.allFinite()) return "state is not finite (NaN or inf)";
     const double tr = Ops::trace(Ops::template unpack<double>(s, 0));
-    if (!(tr < 0.0)) return fmt::format("no compression: tr T = {:.6g} kPa >= 0", tr);
+    if (!(tr < -kMinimumPressure_kPa))
+      return fmt::format("no compression: tr T = {:.6g} kPa (contact lost)", tr);
     const auto lim = limiting_void_ratios(-tr, c_.p);
     const double e = s(kVoidRatio);
     if (!(e > lim.e_d && e < lim.e_i))

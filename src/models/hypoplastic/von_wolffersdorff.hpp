@@ -18,6 +18,12 @@
 
 namespace iwb::models {
 
+// Smallest mean pressure (-tr T) the rate accepts. Under extension a hypoplastic stress decays
+// towards zero without reaching it; below this the element has lost contact and relative error
+// control is meaningless, so it is reported as leaving the domain rather than as a tolerance
+// underflow at 1e-30 kPa.
+inline constexpr double kMinimumPressure_kPa = 1e-6;
+
 enum class LodeRule {
   kStandard,  // cos 3theta from T^* (eq. 5.11)
   kZero,      // cos 3theta = 0 (Arnold & Herle 2006, ERRATA item 8)
@@ -98,8 +104,8 @@ typename Ops::template Tensor<S> von_wolffersdorff_rate(const typename Ops::temp
   using std::sqrt;
   using Tensor = typename Ops::template Tensor<S>;
   const S tr = Ops::trace(T);
-  if (!(value_of(tr) < 0.0))
-    throw DomainError(fmt::format("no compression: tr T = {:.6g} kPa >= 0", value_of(tr)));
+  if (!(value_of(tr) < -kMinimumPressure_kPa))
+    throw DomainError(fmt::format("no compression: tr T = {:.6g} kPa (contact lost)", value_of(tr)));
   const Tensor unit = Ops::template unit<S>();
   const double tr_unit = value_of(Ops::trace(unit));
   const Tensor t_hat = T / tr;

@@ -1,0 +1,64 @@
+// Mixed control: Newton on the integrated increment converges quadratically; with explicit Euler
+// it agrees with the closed form of appendix C (ERRATA 18).
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "driver/mixed_control.hpp"
+#include "support/fixtures.hpp"
+
+using namespace iwb;
+
+namespace {
+// Relative residuals below this are round-off of sigma_n ~ 100 kPa: no longer informative.
+constexpr double kRoundOff = 1e-13;
+}  // namespace
+
+TEST_CASE("Newton on the normal strain increment converges quadratically", "[driver]") {
+  for (const std::string name : {"hvwe", "vw3d", "ah", "hp1d"}) {
+    const auto m = test::make(name);
+    const auto s0 = m->initial_state({100.0, test::kK0Oedometric51, 0.75});
+    driver::MixedControlSettings ms;
+    ms.tolerance = 1e-14;
+    integration::IntegratorSettings is;
+    is.rtol = 1e-8;
+    double first = 1.0;
+    // A crude guess (zero) so that several iterations are needed.
+    const driver::IncrementRequest rq{0.01, 0.0, {1.0, 0.0, 0.0}, 0.0};
+    const auto sol = driver::solve_increment(*m, s0, rq, is, ms, first);
+    const auto& r = sol.residuals;
+    INFO(name << " residuals: " << fmt::format("{:.3g}", fmt::join(r, " ")));
+    REQUIRE(r.size() >= 3);
+    REQUIRE(r.size() <= 7);
+    // quadratic: r_{k+1} / r_k^2 stays bounded while r_k shrinks by orders of magnitude
+    for (std::size_t k = 1; k + 1 < r.size(); ++k) {
+      INFO("r_k = " << r[k] << ", r_k+1 = " << r[k + 1]);
+      if (r[k + 1] > kRoundOff) CHECK(r[k + 1] <= 10.0 * r[k] * r[k] / r[0]);
+    }
+  }
+}
+
+TEST_CASE("Newton with one Euler substep equals the closed form of appendix C", "[driver]") {
+  for (const std::string name : {"hvwe", "ah", "hp1d", "vw3d"}) {
+    for (const driver::NormalControlRow row : {driver::NormalControlRow{1.0, 0.0, 0.0},
+                                               driver::NormalControlRow{1.0, -2000.0, 0.0},
+                                               driver::NormalControlRow{1.0, 0.0, 5.0}}) {
+      const auto m = test::make(name);
+      auto s = m->initial_state({100.0, test::kK0Oedometric51, 0.75});
+      integration::IntegratorSettings euler;
+      euler.scheme = integration::Scheme::kExplicitEuler;
+      driver::MixedControlSettings newton, closed;
+      newton.tolerance = 1e-14;
+      closed.method = driver::MixedControlMethod::kClosedForm;
+      double first = 1.0;
+      for (int i = 0; i < 50; ++i) {
+        const driver::IncrementRequest rq{2e-3, 0.0, row, 0.0};
+        const auto a = driver::solve_increment(*m, s, rq, euler, newton, first);
+        const auto b = driver::solve_increment(*m, s, rq, euler, closed, first);
+        CHECK(a.eps_n == Approx(b.eps_n).epsilon(1e-9).margin(1e-15));
+        CHECK((a.state - b.state).cwiseAbs().maxCoeff() <= 1e-9 * a.state.cwiseAbs().maxCoeff());
+        s = a.state;
+      }
+    }
+  }
+}

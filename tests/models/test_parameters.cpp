@@ -1,0 +1,45 @@
+// Parameter tables: validation names the source, the key, the value and the allowed range.
+#include <catch2/catch.hpp>
+
+#include "common/errors.hpp"
+#include "models/hypoplastic/parameters.hpp"
+#include "support/fixtures.hpp"
+
+using namespace iwb;
+
+namespace {
+models::ParameterValues values() { return test::table_5_1().tables.at("hypoplastic"); }
+std::string message(const models::ParameterValues& v) {
+  try {
+    models::HypoplasticParameters::from(v, "sand.toml [hypoplastic]");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST_CASE("a valid set loads, angles in radians", "[parameters]") {
+  const auto p = models::HypoplasticParameters::from(values(), "x");
+  CHECK(p.phi_c == Approx(28.0 * M_PI / 180.0));
+  CHECK(p.hs == 2.0e6);
+}
+
+TEST_CASE("missing, unknown and out-of-range keys are named with value and range", "[parameters]") {
+  auto v = values();
+  v.erase("n");
+  CHECK_THAT(message(v), Catch::Contains("sand.toml [hypoplastic]") && Catch::Contains("missing key 'n'") &&
+                             Catch::Contains("(0, 1)"));
+  v = values();
+  v["phi_c"] = 30;
+  CHECK_THAT(message(v), Catch::Contains("unknown key 'phi_c'") && Catch::Contains("phi_c_deg"));
+  v = values();
+  v["phi_c_deg"] = 95;
+  CHECK_THAT(message(v), Catch::Contains("'phi_c_deg' = 95 is out of range; allowed (0, 90) deg"));
+  v = values();
+  v["hs_kPa"] = -1;
+  CHECK_THAT(message(v), Catch::Contains("'hs_kPa' = -1") && Catch::Contains("(0, inf) kPa"));
+  v = values();
+  v["ec0"] = 1.2;
+  CHECK_THAT(message(v), Catch::Contains("ed0 < ec0 < ei0") && Catch::Contains("ec0 = 1.2"));
+}
