@@ -1,6 +1,7 @@
 #include "app/default_job.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -55,14 +56,22 @@ std::string test_text(const std::string& model, const std::string& bc) {
 
 struct Curve {
   double peak = 0.0, last = 0.0, e_last = 0.0, sigma_last = 0.0;
-  std::vector<double> tau;
+  std::vector<std::array<double, 4>> path;  // tau, sigma_n, sigma_p, e per row
 };
+
+// Largest difference of each of tau, sigma_n, sigma_p (kPa) and e between two curves.
+std::array<double, 4> max_differences(const Curve& a, const Curve& b) {
+  std::array<double, 4> d{0, 0, 0, 0};
+  for (std::size_t k = 0; k < std::min(a.path.size(), b.path.size()); ++k)
+    for (int i = 0; i < 4; ++i) d[i] = std::max(d[i], std::abs(a.path[k][i] - b.path[k][i]));
+  return d;
+}
 
 Curve curve_of(const io::ElementRunOutcome& o, const models::Model& m) {
   Curve c;
   for (const auto& r : o.result.rows) {
     const auto s = m.stress(r.state);
-    c.tau.push_back(s.tau_x);
+    c.path.push_back({s.tau_x, s.sigma_n, s.sigma_p.value_or(0.0), m.void_ratio(r.state)});
     c.peak = std::max(c.peak, s.tau_x / s.sigma_n);
     c.last = s.tau_x / s.sigma_n;
     c.e_last = m.void_ratio(r.state);
@@ -77,8 +86,10 @@ int run_default_job(const std::filesystem::path& out, bool force, const std::str
   nlohmann::json summary;
   fmt::print("iwb run: embedded default, hvwe against vw3d in simple shear (seed Table 5.1, "
              "e0 = 0.80, 100 kPa)\n");
-  fmt::print("{:<4} {:>10} {:>10} {:>10} {:>10} {:>14} {:>8}\n", "BC", "peak t/s", "end t/s",
-             "end s_n", "end e", "max |dtau| kPa", "status");
+  fmt::print("{:<4} {:>9} {:>9} {:>9} {:>8} | {:^39} |\n", "", "", "hvwe", "", "",
+             "max |hvwe - vw3d| along the path");
+  fmt::print("{:<4} {:>9} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>9} {:>9} | {}\n", "BC", "peak t/s",
+             "end t/s", "end s_n", "end e", "tau kPa", "s_n kPa", "s_p kPa", "e", "status");
   bool ok = true;
   for (const std::string bc : {"CNL", "CNS", "CV"}) {
     Curve curves[2];
@@ -95,17 +106,17 @@ int run_default_job(const std::filesystem::path& out, bool force, const std::str
       status = outcome.result.status;
       ok = ok && outcome.result.complete();
     }
-    double diff = 0.0;
-    for (std::size_t k = 0; k < std::min(curves[0].tau.size(), curves[1].tau.size()); ++k)
-      diff = std::max(diff, std::abs(curves[0].tau[k] - curves[1].tau[k]));
+    const auto d = max_differences(curves[0], curves[1]);
     const Curve& h = curves[0];
-    fmt::print("{:<4} {:>10.4f} {:>10.4f} {:>10.2f} {:>10.4f} {:>14.3g} {:>8}\n", bc, h.peak, h.last,
-               h.sigma_last, h.e_last, diff, status == "complete" ? "ok" : "FAILED");
+    fmt::print("{:<4} {:>9.4f} {:>9.4f} {:>9.2f} {:>8.4f} | {:>9.2e} {:>9.2e} {:>9.2e} {:>9.2e} | {}\n",
+               bc, h.peak, h.last, h.sigma_last, h.e_last, d[0], d[1], d[2], d[3],
+               status == "complete" ? "ok" : "FAILED");
     summary[bc] = {{"hvwe_peak_tau_over_sigma_n", h.peak},
                    {"hvwe_end_tau_over_sigma_n", h.last},
                    {"hvwe_end_sigma_n_kPa", h.sigma_last},
                    {"hvwe_end_e", h.e_last},
-                   {"max_abs_tau_difference_hvwe_vw3d_kPa", diff}};
+                   {"max_abs_difference_hvwe_vw3d",
+                    {{"tau_kPa", d[0]}, {"sigma_n_kPa", d[1]}, {"sigma_p_kPa", d[2]}, {"e", d[3]}}}};
   }
   io::write_atomically(out / "summary.json", summary.dump(2) + "\n");
   fmt::print("run directories and summary.json in {}\n", out.string());

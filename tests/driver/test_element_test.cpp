@@ -175,3 +175,48 @@ TEST_CASE("a run that leaves the domain ends failed, names the increment, and ke
   CHECK_THAT(r.status, Catch::StartsWith("failed: domain error at increment") && Catch::Contains("gamma_x"));
   for (const auto& row : r.rows) CHECK(row.state.allFinite());
 }
+
+TEST_CASE("vw3d under oedometric compression: e stays in (e_d, e_i) and forgets its initial density", "[driver][slow]") {
+  // Proportional compression drives any initial void ratio towards one asymptotic state relative
+  // to Bauer's limiting void ratios (swept-out memory): the spread of (e - e_d)/(e_c - e_d) over
+  // three initial densities must shrink monotonically with pressure, without the curves crossing.
+  // With h_s = 1 GPa the approach is slow: the spread only halves between 10 kPa and 50 MPa.
+  const std::vector<double> checkpoints_kPa = {10.0, 1000.0, 5000.0, 20000.0, 50000.0};
+  std::vector<std::vector<double>> position;  // [e0][checkpoint]
+  for (double e0 : {0.65, 0.80, 0.98}) {
+    const auto m = test::make("vw3d", test::table_5_2_hostun());
+    auto state = m->initial_state({10.0, 0.5, e0});
+    driver::RunSettings rs;
+    rs.integrator.pair = "rk54";
+    rs.integrator.rtol = 1e-8;
+    rs.output_every = 10;
+    std::vector<double> pos;
+    for (std::size_t k = 0; k < checkpoints_kPa.size(); ++k) {
+      if (k > 0) {
+        const auto r = driver::run_element_test(
+            *m, state, driver::oedometric_path(checkpoints_kPa[k - 1], checkpoints_kPa[k], 500), rs);
+        REQUIRE(r.complete());
+        for (const auto& row : r.rows) {
+          const auto d = m->diagnostics(row.state);  // mean stress, e_i, e_c, e_d
+          CHECK(m->void_ratio(row.state) < d[1].value);
+          CHECK(m->void_ratio(row.state) > d[3].value);
+        }
+        state = r.rows.back().state;
+      }
+      const auto d = m->diagnostics(state);
+      pos.push_back((m->void_ratio(state) - d[3].value) / (d[2].value - d[3].value));
+    }
+    position.push_back(pos);
+  }
+  double spread_before = INFINITY;
+  for (std::size_t k = 0; k < checkpoints_kPa.size(); ++k) {
+    const double spread = position[2][k] - position[0][k];
+    INFO("sigma_n " << checkpoints_kPa[k] << " kPa: (e - e_d)/(e_c - e_d) = " << position[0][k]
+                    << ", " << position[1][k] << ", " << position[2][k]);
+    CHECK(position[0][k] < position[1][k]);  // no crossing
+    CHECK(position[1][k] < position[2][k]);
+    CHECK(spread < spread_before);
+    spread_before = spread;
+  }
+  CHECK(spread_before < 0.6 * (position[2][0] - position[0][0]));
+}
