@@ -22,6 +22,11 @@ std::string ShearZone::describe() const {
 
 namespace {
 
+// Thrown by the walker when the interrupt flag is set; ends the run with its message as status.
+struct Interrupted : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct Walker {
   const models::Model& model;
   const RunSettings& set;
@@ -59,7 +64,7 @@ struct Walker {
     double last = 0.0;
     for (int k = 0; k < seg.increments; ++k) {
       if (set.interrupt != nullptr && set.interrupt->load())
-        throw std::runtime_error("interrupted at " + where(seg));
+        throw Interrupted("interrupted at " + where(seg));
       // Aim at the row's total after k+1 increments, not at its increment: residuals within the
       // tolerance then never accumulate over a long path.
       NormalControlRow row = seg.row;
@@ -120,10 +125,8 @@ ElementTestResult run_element_test(const models::Model& model, const models::Sta
     result.status = fmt::format("failed: domain error at {}", e.what());
   } catch (const ConvergenceError& e) {
     result.status = fmt::format("failed: no convergence at {}", e.what());
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::runtime_error& e) {
-    result.status = e.what();  // interrupted
+  } catch (const Interrupted& e) {
+    result.status = e.what();
   }
   if (result.rows.back().increment != w.current.increment) result.rows.push_back(w.current);
   return result;

@@ -1,6 +1,7 @@
 #include "io/element_run.hpp"
 
 #include <chrono>
+#include <fmt/core.h>
 
 #include "io/history_csv.hpp"
 #include "io/run_directory.hpp"
@@ -48,7 +49,14 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
   driver::RunSettings settings = spec.settings;
   settings.interrupt = opt.interrupt;
   const auto t0 = std::chrono::steady_clock::now();
-  outcome.result = driver::run_element_test(*model, initial, spec.path, settings);
+  try {
+    outcome.result = driver::run_element_test(*model, initial, spec.path, settings);
+  } catch (const std::exception& e) {  // the manifest must not keep saying "running"
+    m["finished"] = utc_timestamp();
+    m["status"] = fmt::format("failed: {}", e.what());
+    write_manifest(opt.out, m);
+    throw;
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   write_atomically(opt.out / "history.csv", history_csv(*model, spec.zone, outcome.result.rows));
