@@ -9,6 +9,8 @@
 #include <unistd.h>
 
 #include "app/default_job.hpp"
+#include "dem/liggghts/liggghts_engine.hpp"
+#include "dem/run.hpp"
 #include "bench/element_bench.hpp"
 #include "common/errors.hpp"
 #include "io/element_run.hpp"
@@ -58,6 +60,37 @@ int cmd_element(const std::string& file, const std::string& out, bool force, con
   return r.complete() ? 0 : 1;
 }
 
+// Engine progress on stderr: at most one line every two seconds, and every change of stage.
+std::function<void(const std::string&)> engine_progress() {
+  auto last = std::make_shared<std::chrono::steady_clock::time_point>();
+  auto kind = std::make_shared<std::string>();
+  return [last, kind](const std::string& line) {
+    const auto now = std::chrono::steady_clock::now();
+    const std::string k = line.substr(0, line.find(':'));
+    if (k == *kind && now - *last < std::chrono::seconds(2)) return;
+    *last = now;
+    *kind = k;
+    fmt::print(stderr, "  {}\n", line);
+  };
+}
+
+int cmd_dem_run(const std::string& scene_file, const std::string& engine_name, int np,
+                const std::string& out, bool resume, bool force, const std::string& cl) {
+  const auto scene = iwb::dem::load_scene(scene_file);  // refused here, before any engine starts
+  for (const auto& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+  if (engine_name != "liggghts")
+    throw iwb::InputError(fmt::format("--engine {}: available engines: liggghts", engine_name));
+  iwb::dem::LiggghtsEngine engine;
+  const auto dir = out.empty() ? std::filesystem::path("runs") / fmt::format("{}-{}", scene.name, engine_name)
+                               : std::filesystem::path(out);
+  iwb::dem::RunOptions opt{dir, np, resume, force, cl, &g_interrupt, engine_progress()};
+  fmt::print(stderr, "iwb dem run: {} with {} ({} particles requested, {} rank(s)) -> {}\n", scene_file,
+             engine_name, scene.particle_count, np, dir.string());
+  const auto outcome = iwb::dem::run_scene(scene, iwb::io::read_file(scene_file), engine, opt);
+  fmt::print("{}: {} -> {}\n", scene_file, outcome.status, dir.string());
+  return outcome.complete() ? 0 : 1;
+}
+
 int cmd_models(bool json) {
   nlohmann::json all = nlohmann::json::array();
   for (const auto& spec : iwb::models::model_registry()) {
@@ -92,6 +125,7 @@ int main(int argc, char** argv) {
       "  iwb models                                  list models, parameters, units, bounds\n"
       "  iwb element data/tests/hvwe_cnl_dense.toml  run one element test into runs/<name>/\n"
       "  iwb run                                     the main job on the embedded default\n"
+      "  iwb dem run data/scenes/smoke.toml          a DEM interface-shear scene in LIGGGHTS\n"
       "  iwb bench element                           cost of the continuum core\n"};
   app.require_subcommand(1);
   const std::string cl = joined(argc, argv);
@@ -118,6 +152,23 @@ int main(int argc, char** argv) {
   run->add_option("--out,-o", run_out, "output directory")->capture_default_str();
   run->add_flag("--force", force, "replace earlier runs in the output directory");
 
+  auto* dem = app.add_subcommand("dem", "DEM interface-shear scenes (scene schema: data/scenes/README.md).");
+  dem->require_subcommand(1);
+  auto* dem_run = dem->add_subcommand(
+      "run",
+      "Run a scene in a DEM engine and write the run directory of the contract (DEM.md): "
+      "manifest.json, timeseries.csv, profiles.csv, vtk/ with .pvd indexes, summary.json. Stages "
+      "(consolidate, shear) are recorded as they finish; --resume continues an interrupted run.");
+  std::string scene_file, engine_name = "liggghts";
+  int np = 1;
+  bool resume = false;
+  dem_run->add_option("scene", scene_file, "scene TOML file")->required()->check(CLI::ExistingFile);
+  dem_run->add_option("--engine", engine_name, "DEM engine")->capture_default_str();
+  dem_run->add_option("--np", np, "MPI ranks (LIGGGHTS)")->check(CLI::Range(1, 256))->capture_default_str();
+  dem_run->add_option("--out,-o", out, "run directory (default runs/<scene>-<engine>)");
+  dem_run->add_flag("--resume", resume, "continue an interrupted run of the same scene from its last finished stage");
+  dem_run->add_flag("--force", force, "replace an earlier run in the same directory");
+
   auto* bench = app.add_subcommand("bench", "Benchmarks that print figures.");
   bench->require_subcommand(1);
   auto* bench_element = bench->add_subcommand(
@@ -134,6 +185,7 @@ int main(int argc, char** argv) {
     if (*element) return cmd_element(test_file, out, force, cl);
     if (*models) return cmd_models(as_json);
     if (*run) return iwb::app::run_default_job(run_out, force, cl);
+    if (*dem_run) return cmd_dem_run(scene_file, engine_name, np, out, resume, force, cl);
     if (*bench_element) {
       iwb::bench::run_element_bench(bopt);
       return 0;

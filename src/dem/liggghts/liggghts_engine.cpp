@@ -1,0 +1,219 @@
+#include "dem/liggghts/liggghts_engine.hpp"
+#include "dem/liggghts/liggghts_numerics.hpp"
+#include "dem/liggghts/liggghts_outputs.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fmt/core.h>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include "common/subprocess.hpp"
+#include "common/template.hpp"
+#include "dem/wall_geometry.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::dem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool is_prime(long n) {
+  if (n < 2) return false;
+  for (long d = 2; d * d <= n; ++d)
+    if (n % d == 0) return false;
+  return true;
+}
+
+// LIGGGHTS wants distinct prime seeds above 10000 for each random stream.
+long prime_seed(int scene_seed, int stream) {
+  long n = 15485863L + 104729L * scene_seed + 7919L * stream;
+  while (!is_prime(n)) ++n;
+  return n;
+}
+
+std::string g(double x) { return fmt::format("{:.10g}", x); }
+
+TemplateValues values_of(const Scene& s, const Numerics& n) {
+  const auto& p = s.particles;
+  std::string templates;
+  std::string distribution = fmt::format("fix pdd all particledistribution/discrete {} {}",
+                                         prime_seed(s.seed, 0), p.sizes.size());
+  for (std::size_t i = 0; i < p.sizes.size(); ++i) {
+    templates += fmt::format("fix pt{} all particletemplate/sphere {} atom_type 1 density constant {} "
+                             "radius constant {}\n", i, prime_seed(s.seed, int(i) + 2),
+                             g(p.density_kg_m3), g(0.5 * p.sizes[i].diameter_m));
+    distribution += fmt::format(" pt{} {}", i, g(p.sizes[i].mass_fraction));
+  }
+  const double F0 = s.boundary.sigma_n_Pa * s.area_m2();
+  return {
+      {"Lx", g(s.length_m)}, {"Ly", g(s.width_m)}, {"zlo", g(n.zlo)}, {"zhi", g(n.zhi)},
+      {"skin", g(n.skin)}, {"E", g(p.youngs_modulus_Pa)}, {"nu", g(p.poisson)},
+      {"restitution", g(p.restitution)}, {"mu_consolidation", g(s.consolidation.friction)},
+      {"mu_rolling", g(p.rolling_friction)}, {"mu", g(p.friction)}, {"dt", g(n.dt)},
+      {"plate_com", fmt::format("{} {} {}", g(0.5 * s.length_m), g(0.5 * s.width_m), g(n.plate_z))},
+      {"F0", g(F0)}, {"servo_vmax", g(s.servo.vel_max_m_s)}, {"servo_kp", g(s.servo.kp)},
+      {"particle_templates", templates + distribution},
+      {"ins_zlo", g(n.ins_zlo)}, {"ins_zhi", g(n.ins_zhi)}, {"seed_insert", std::to_string(prime_seed(s.seed, 1))},
+      {"n_particles", std::to_string(s.particle_count)}, {"thermo_every", "5000"},
+      {"settle_steps", std::to_string(n.settle_steps)},
+      {"windows_required", std::to_string(s.consolidation.windows_required)},
+      {"max_windows", std::to_string(s.consolidation.max_windows)},
+      {"window_steps", std::to_string(s.consolidation.window_steps)},
+      {"sigma_n0", g(s.boundary.sigma_n_Pa)}, {"sigma_tol", g(s.consolidation.sigma_tolerance)},
+      {"plate_tol", g(s.consolidation.plate_tolerance_d50 * n.d50)},
+      {"ke_tol", g(s.consolidation.kinetic_energy_J)},
+      {"bc", driver::to_string(s.boundary.kind)},
+      {"K_Pa_per_m", g(s.boundary.kind == driver::BoundaryKind::kCNS ? s.boundary.K_Pa_per_m : 0.0)},
+      {"relax_steps", std::to_string(n.relax_steps)},
+      {"cv_hold", s.boundary.kind == driver::BoundaryKind::kCV
+                      ? "fix_modify P servo/integrate stop  # CV: the plate is held during shear"
+                      : "# the servo keeps controlling the plate during shear"},
+      {"v_wall", g(s.shear.velocity_m_s)}, {"ts_every", std::to_string(n.ts_every)},
+      {"progress_every", std::to_string(n.progress_every)}, {"u_total", g(s.shear.displacement_m)},
+      {"profile_repeat", std::to_string(n.profile_repeat)}, {"profile_every", std::to_string(n.profile_every)},
+      {"bin_dz", g(s.outputs.profile_bin_d50 * n.d50)}, {"vtk_every", std::to_string(n.vtk_every)},
+      {"shear_steps", std::to_string(n.shear_steps)}, {"vtk_dir", "../vtk"},
+      {"band_d50", g((n.band_zhi - n.band_zlo) / n.d50)}, {"band_zlo", g(n.band_zlo)},
+      {"band_zhi", g(n.band_zhi)}, {"servo_kp_shear", g(s.servo.kp_shear)},
+  };
+}
+
+// --- running a stage --------------------------------------------------------------------
+
+std::vector<std::string> command(const std::string& input, int processes) {
+  // Line-buffered output: LIGGGHTS prints its ERROR line and then calls MPI_Abort, which loses a
+  // block-buffered stdout (seen on Debian's 3.8.0: the message never appears).
+  std::vector<std::string> cmd = {"stdbuf", "-oL", "liggghts", "-in", input, "-nocite"};
+  if (processes <= 1) return cmd;
+  std::vector<std::string> mpi = {"mpirun", "--allow-run-as-root", "--oversubscribe", "-np",
+                                  std::to_string(processes)};
+  mpi.insert(mpi.end(), cmd.begin(), cmd.end());
+  return mpi;
+}
+
+std::vector<std::string> words(const std::string& line) {
+  std::istringstream is(line);
+  std::vector<std::string> w;
+  for (std::string x; is >> x;) w.push_back(x);
+  return w;
+}
+
+struct Follower {
+  const StageContext& ctx;
+  std::ofstream log;
+  StageResult result;
+  std::string done_marker;
+  bool done = false;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+
+  bool line(const std::string& l) {
+    log << l << '\n';
+    const auto w = words(l);
+    if (w.empty()) return true;
+    if (l.rfind("ERROR", 0) == 0 || l.find("ERROR on proc") != std::string::npos) {
+      result.failure = "engine error: " + l;
+      return true;  // the engine aborts by itself; keep reading its last words
+    }
+    if (w[0] == "IWB_FAIL") {
+      result.failure = l.substr(9);
+      return false;
+    }
+    if (w[0] == "IWB_PARTICLES" && w.size() >= 4) {
+      const long got = std::stol(w[1]), want = std::stol(w[3]);
+      result.facts["particles"] = got;
+      result.facts["particles_requested"] = want;
+      if (got < want) {
+        result.failure = fmt::format("particle count short: {} of {} inserted (insert/pack under-filled "
+                                     "the region; lower specimen.solid_fraction_estimate or particles)",
+                                     got, want);
+        return false;
+      }
+    }
+    if (w[0] == "IWB_WINDOW" && w.size() >= 10 && ctx.progress)
+      ctx.progress(fmt::format("consolidating: window {}, sigma {:.1f} kPa, {} of {} windows accepted",
+                               w[1], std::stod(w[3]) / 1e3, w[9], ctx.scene.consolidation.windows_required));
+    if (w[0] == "IWB_SHEAR_START" && w.size() >= 5) {
+      result.facts["step0"] = std::stol(w[2]);
+      result.facts["z0_m"] = std::stod(w[4]);
+    }
+    if (w[0] == "IWB_PROGRESS" && w.size() >= 3 && ctx.progress) {
+      const double f = std::stod(w[1]) / std::stod(w[2]);
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      ctx.progress(fmt::format("shearing: u_x {:.2f} of {:.2f} mm ({:.0f} %), ETA {:.0f} s",
+                               std::stod(w[1]) * 1e3, std::stod(w[2]) * 1e3, 100 * f,
+                               f > 0.01 ? t * (1 - f) / f : 0.0));
+    }
+    if (w[0] == "IWB_STAGE_DONE" && w.size() >= 2) {
+      if (w.size() >= 6 && w[1] == "consolidate") {
+        result.facts["zplate_m"] = std::stod(w[3]);
+        result.facts["sigma_Pa"] = std::stod(w[5]);
+      }
+      if (w[1] == done_marker) done = true;
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+std::string LiggghtsEngine::version() const {
+  std::string v = "unknown";
+  try {
+    run_process({"liggghts", "-h"}, fs::temp_directory_path(), [&v](const std::string& l) {
+      if (l.rfind("LIGGGHTS (", 0) == 0) v = l;
+      return true;
+    });
+  } catch (const std::exception&) {
+  }
+  return v;
+}
+
+nlohmann::json LiggghtsEngine::numerics(const Scene& s) const {
+  const Numerics n = derive(s);
+  return {{"timestep_s", n.dt},
+          {"timestep_rule", "0.15 x Rayleigh time of the smallest particle"},
+          {"rayleigh_time_s", rayleigh_time(s.particles)},
+          {"shear_steps", n.shear_steps},
+          {"wall_velocity_mm_s", s.shear.velocity_m_s * 1e3},
+          {"contact_law", "pair gran hertz, tangential history, rolling_friction cdt; walls: wall/gran hertz on STL meshes"},
+          {"servo", {{"vel_max_m_s", s.servo.vel_max_m_s}, {"kp", s.servo.kp}, {"kp_shear", s.servo.kp_shear}}}};
+}
+
+StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageContext& ctx,
+                                      const nlohmann::json& /*facts*/) {
+  const Scene& s = ctx.scene;
+  const Numerics n = derive(s);
+  const double max_edge = s.particles.d50_m;
+  io::write_atomically(ctx.work_dir / "wall.stl",
+                       to_stl(profile_surface(s.wall, s.length_m, s.width_m, 0.0, false, max_edge), "wall"));
+  io::write_atomically(ctx.work_dir / "top.stl",
+                       to_stl(profile_surface(s.plate, s.length_m, s.width_m, n.plate_z, true, max_edge), "top"));
+  const std::string input = stage + ".in";
+  io::write_atomically(ctx.work_dir / input,
+                       render_template(liggghts_templates().at(input), values_of(s, n), input));
+  Follower f{ctx, std::ofstream(ctx.work_dir / (stage + ".out")), {}, stage};
+  const ProcessResult p = run_process(command(input, ctx.processes), ctx.work_dir,
+                                      [&f](const std::string& l) { return f.line(l); }, ctx.interrupt);
+  StageResult r = f.result;
+  if (p.stopped && r.failure.empty()) {
+    r.interrupted = true;
+  } else if (r.failure.empty() && (p.exit_code != 0 || !f.done)) {
+    r.failure = p.exit_code != 0
+                    ? fmt::format("engine exited with code {}{}", p.exit_code,
+                                  p.signal_name.empty() ? "" : " (" + p.signal_name + ")")
+                    : fmt::format("engine stopped before the end of stage {}", stage);
+  }
+  r.ok = r.failure.empty() && !r.interrupted;
+  if (!r.ok && !r.interrupted) r.failure += fmt::format(" [log: {}]", (ctx.work_dir / (stage + ".out")).string());
+  return r;
+}
+
+ContractTables LiggghtsEngine::assemble(const StageContext& ctx, const nlohmann::json& facts) {
+  return assemble_liggghts_outputs(ctx, facts, derive(ctx.scene));
+}
+
+}  // namespace iwb::dem

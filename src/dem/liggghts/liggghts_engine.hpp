@@ -1,0 +1,24 @@
+#pragma once
+// LIGGGHTS 3.8 (Debian) as a DEM engine: renders the stage templates of dem-scripts/liggghts/
+// (embedded at build time), writes the wall and plate STL, runs `liggghts` (through mpirun for
+// more than one rank), follows its output for progress and failures, and converts its raw
+// outputs into the contract.
+#include "dem/engine.hpp"
+
+namespace iwb::dem {
+
+class LiggghtsEngine final : public Engine {
+ public:
+  std::string name() const override { return "liggghts"; }
+  std::string version() const override;
+  std::vector<std::string> stages() const override { return {"consolidate", "shear"}; }
+  nlohmann::json numerics(const Scene& scene) const override;
+  StageResult run_stage(const std::string& stage, const StageContext& ctx,
+                        const nlohmann::json& facts) override;
+  ContractTables assemble(const StageContext& ctx, const nlohmann::json& facts) override;
+};
+
+// The stage templates as shipped in dem-scripts/liggghts/ (generated at build time).
+const std::map<std::string, std::string>& liggghts_templates();
+
+}  // namespace iwb::dem

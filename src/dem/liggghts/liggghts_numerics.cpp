@@ -1,0 +1,50 @@
+#include "dem/liggghts/liggghts_numerics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace iwb::dem {
+
+namespace {
+
+constexpr double kRayleighFraction = 0.15;  // dt = 15 % of the Rayleigh time of the smallest grain
+constexpr double kSkinD50 = 0.3;
+constexpr double kLooseSolidFraction = 0.35;  // insert/pack fills a region this loosely
+constexpr int kProfileEvery = 10;             // ave/spatial samples every 10 steps
+
+}  // namespace
+
+double rayleigh_time(const Particles& p) {
+  const double G = p.youngs_modulus_Pa / (2.0 * (1.0 + p.poisson));
+  return M_PI * 0.5 * p.d_min() * std::sqrt(p.density_kg_m3 / G) / (0.1631 * p.poisson + 0.8766);
+}
+
+Numerics derive(const Scene& s) {
+  Numerics n{};
+  n.d50 = s.particles.d50_m;
+  n.dt = kRayleighFraction * rayleigh_time(s.particles);
+  n.skin = kSkinD50 * n.d50;
+  const double dmax = s.particles.d_max();
+  n.wall_top = s.wall.height_m;
+  n.ins_zlo = n.wall_top + 0.1 * dmax;
+  n.ins_zhi = n.ins_zlo + s.height_m * s.solid_fraction_estimate / kLooseSolidFraction;
+  n.plate_z = n.ins_zhi + s.plate.height_m + 0.1 * dmax;
+  n.zlo = -dmax;
+  n.zhi = n.plate_z + 2.0 * dmax;
+  n.band_zlo = s.wall.mean_height_m();
+  // The time series' band: the lowest 10 d50, or half the specimen if that is lower.
+  n.band_zhi = n.band_zlo + std::min(10.0 * n.d50, 0.5 * s.height_m);
+  const double step_u = s.shear.velocity_m_s * n.dt;  // wall displacement per step
+  n.shear_steps = long(std::ceil(s.shear.displacement_m / step_u));
+  n.ts_every = std::max(1L, long(std::lround(s.outputs.timeseries_every_m / step_u)));
+  n.progress_every = std::max(1L, n.shear_steps / 50);
+  n.profile_every = std::max(long(kProfileEvery),
+                             (n.shear_steps / s.outputs.profile_windows) / kProfileEvery * kProfileEvery);
+  n.profile_repeat = std::max(1L, std::min(100L, n.profile_every / kProfileEvery / 2));
+  n.vtk_every = std::max(1L, long(std::lround(s.outputs.vtk_every_m / step_u)));
+  n.relax_steps = 2L * s.consolidation.window_steps;
+  n.settle_steps = s.consolidation.window_steps;
+  return n;
+}
+
+}  // namespace iwb::dem

@@ -1,0 +1,18 @@
+#pragma once
+// Numbers LIGGGHTS needs that follow from a scene: timestep, geometry in z, step counts.
+#include "dem/scene.hpp"
+
+namespace iwb::dem {
+
+struct Numerics {
+  double dt, skin, d50;
+  double wall_top, ins_zlo, ins_zhi, plate_z, zlo, zhi;
+  double band_zlo, band_zhi;
+  long shear_steps, ts_every, progress_every, profile_every, profile_repeat, vtk_every, relax_steps;
+  long settle_steps;
+};
+
+double rayleigh_time(const Particles& p);
+Numerics derive(const Scene& s);
+
+}  // namespace iwb::dem

@@ -1,0 +1,107 @@
+#include "dem/run.hpp"
+
+#include <chrono>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+#include "dem/summary.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::dem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json fresh_manifest(const Scene& scene, const std::string& text, Engine& engine,
+                              const RunOptions& opt) {
+  return {{"kind", "dem-run"},
+          {"workbench", {{"name", "iwb"}, {"version", IWB_VERSION}}},
+          {"engine", {{"name", engine.name()}, {"version", engine.version()}, {"processes", opt.processes}}},
+          {"command_line", opt.command_line},
+          {"scene", {{"source", scene.source}, {"sha256", io::sha256_hex(text)}, {"text", text},
+                     {"resolved", scene.resolved}}},
+          {"seed", scene.seed},
+          {"numerics", engine.numerics(scene)},
+          {"R_n", scene.wall.normalized_roughness(scene.particles.d50_m)},
+          {"stiffness_level", scene.stiffness_level()},
+          {"inertial_number", scene.shear.inertial_number},
+          {"conventions", {{"signs", "compression positive; u_n > 0 is dilation; tau has the sign of the wall displacement"},
+                           {"units", "kPa, mm, s in the contract files; SI inside the engine"}}},
+          {"warnings", scene.warnings},
+          {"stages", nlohmann::json::object()},
+          {"files", {"timeseries.csv", "profiles.csv", "summary.json", "vtk/particles.pvd", "vtk/walls.pvd"}},
+          {"started", io::utc_timestamp()},
+          {"status", "running"}};
+}
+
+// The manifest of an earlier run of the same scene, for --resume.
+nlohmann::json earlier_manifest(const fs::path& dir, const std::string& sha) {
+  const auto path = dir / "manifest.json";
+  if (!fs::exists(path))
+    throw InputError(fmt::format("{}: nothing to resume (no manifest.json)", dir.string()));
+  auto m = nlohmann::json::parse(io::read_file(path));
+  if (m.value("/scene/sha256"_json_pointer, std::string()) != sha)
+    throw InputError(fmt::format("{}: the earlier run used a different scene (sha256 {}); "
+                                 "--resume needs the same scene file", dir.string(),
+                                 m.value("/scene/sha256"_json_pointer, std::string("?"))));
+  return m;
+}
+
+}  // namespace
+
+RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine,
+                     const RunOptions& opt) {
+  RunOutcome out;
+  auto& m = out.manifest;
+  const std::string sha = io::sha256_hex(text);
+  if (opt.resume) {
+    m = earlier_manifest(opt.out, sha);
+    m["status"] = "running";
+    m["resumed"].push_back(io::utc_timestamp());
+  } else {
+    io::prepare_run_directory(opt.out, opt.force);
+    m = fresh_manifest(scene, text, engine, opt);
+  }
+  const fs::path work = opt.out / engine.name();
+  fs::create_directories(work);
+  fs::create_directories(opt.out / "vtk");
+  io::write_manifest(opt.out, m);
+
+  StageContext ctx{scene, opt.out, work, opt.processes, opt.interrupt, opt.progress};
+  nlohmann::json facts = nlohmann::json::object();
+  for (const auto& [name, stage] : m["stages"].items()) facts[name] = stage.value("facts", nlohmann::json::object());
+  for (const auto& stage : engine.stages()) {
+    if (m["stages"].contains(stage) && m["stages"][stage].value("status", "") == "done") continue;
+    const auto t0 = std::chrono::steady_clock::now();
+    const StageResult r = engine.run_stage(stage, ctx, facts);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    m["stages"][stage] = {{"status", r.ok ? "done" : (r.interrupted ? "interrupted" : "failed")},
+                          {"wall_seconds", seconds}, {"facts", r.facts}};
+    facts[stage] = r.facts;
+    if (!r.ok) {
+      out.status = r.interrupted ? fmt::format("interrupted at stage {}", stage)
+                                 : fmt::format("failed: {} (stage {})", r.failure, stage);
+      m["status"] = out.status;
+      m["finished"] = io::utc_timestamp();
+      io::write_manifest(opt.out, m);
+      return out;
+    }
+    io::write_manifest(opt.out, m);  // a finished stage is never lost
+  }
+
+  const ContractTables tables = engine.assemble(ctx, facts);
+  io::write_atomically(opt.out / "timeseries.csv", tables.timeseries.to_csv());
+  io::write_atomically(opt.out / "profiles.csv", tables.profiles.to_csv());
+  const Summary summary = summarize(scene, tables.timeseries, tables.profiles);
+  io::write_atomically(opt.out / "summary.json", to_json(summary).dump(2) + "\n");
+  m["engine_facts"] = tables.facts;
+  m["particle_count"] = facts.value("/consolidate/particles"_json_pointer, 0);
+  m["finished"] = io::utc_timestamp();
+  out.status = "complete";
+  m["status"] = out.status;
+  io::write_manifest(opt.out, m);
+  return out;
+}
+
+}  // namespace iwb::dem

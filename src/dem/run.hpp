@@ -1,0 +1,35 @@
+#pragma once
+// `iwb dem run`: one scene through one engine into a run directory (DEM.md contract):
+// manifest.json, timeseries.csv, profiles.csv, vtk/ (+ .pvd), summary.json. Stages are recorded
+// in the manifest as they finish; --resume continues from the last finished stage of the same
+// scene. An engine failure, lost particles, a servo that does not converge or a short particle
+// count ends the run with status "failed: <reason>"; an interrupt with "interrupted at stage X".
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "dem/engine.hpp"
+
+namespace iwb::dem {
+
+struct RunOptions {
+  std::filesystem::path out;
+  int processes = 1;
+  bool resume = false;
+  bool force = false;
+  std::string command_line;
+  const std::atomic<bool>* interrupt = nullptr;
+  std::function<void(const std::string&)> progress;
+};
+
+struct RunOutcome {
+  std::string status;  // "complete", "failed: ...", "interrupted at stage ..."
+  nlohmann::json manifest;
+  bool complete() const { return status == "complete"; }
+};
+
+RunOutcome run_scene(const Scene& scene, const std::string& scene_text, Engine& engine,
+                     const RunOptions& options);
+
+}  // namespace iwb::dem

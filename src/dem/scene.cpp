@@ -1,0 +1,289 @@
+#include "dem/scene.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fmt/core.h>
+#include <numeric>
+
+#include "common/errors.hpp"
+#include "io/run_directory.hpp"
+#include "io/toml_reader.hpp"
+
+namespace iwb::dem {
+
+namespace {
+
+constexpr double kMm = 1e-3;
+constexpr double kMinBoxLengthInDmax = 10.0;    // DEM.md: box length at least 10 d_max
+constexpr double kMinWidthInDmax = 3.0;         // periodic images must not touch
+constexpr double kRecommendedHeightInD50 = 20.0;  // DEM.md: ~7 d50 gives no band
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw InputError(message);
+}
+
+std::string range_error(io::TableReader& t, const std::string& key, double v, const std::string& allowed) {
+  return fmt::format("{} = {:g} is out of range; allowed {}", t.where(key), v, allowed);
+}
+
+double fraction(io::TableReader& t, const std::string& key, std::optional<double> fallback = {}) {
+  const auto v = t.optional_number(key);
+  if (!v && fallback) return *fallback;
+  if (!v) return t.number(key);  // throws "missing"
+  require(*v >= 0.0 && *v <= 1.0, range_error(t, key, *v, "[0, 1]"));
+  return *v;
+}
+
+std::vector<double> numbers(io::TableReader& t, const std::string& key) {
+  std::vector<double> out;
+  const toml::node* n = t.node(key);
+  if (n == nullptr) return out;
+  const auto* arr = n->as_array();
+  require(arr != nullptr, fmt::format("{} = {} should be an array of numbers", t.where(key), io::describe(*n)));
+  for (const auto& x : *arr) {
+    const auto v = x.value<double>();
+    require(v.has_value(), fmt::format("{} has a non-number {}", t.where(key), io::describe(x)));
+    out.push_back(*v);
+  }
+  return out;
+}
+
+Particles read_particles(io::TableReader t) {
+  Particles p{};
+  p.d50_m = t.positive("d50_mm") * kMm;
+  const auto ratios = numbers(t, "d_over_d50");
+  const auto fractions = numbers(t, "mass_fraction");
+  if (ratios.empty()) {
+    require(fractions.empty(), t.where("mass_fraction") + " needs d_over_d50 beside it");
+    p.sizes = {{p.d50_m, 1.0}};
+  } else {
+    require(ratios.size() == fractions.size(),
+            fmt::format("{}: d_over_d50 has {} entries and mass_fraction {}; they must match",
+                        t.where(), ratios.size(), fractions.size()));
+    const double sum = std::accumulate(fractions.begin(), fractions.end(), 0.0);
+    require(std::abs(sum - 1.0) < 1e-6, fmt::format("{}: mass_fraction sums to {:g}; it must sum to 1",
+                                                    t.where(), sum));
+    for (std::size_t i = 0; i < ratios.size(); ++i) {
+      require(ratios[i] > 0.0 && fractions[i] > 0.0,
+              fmt::format("{}: size class {} (d_over_d50 = {:g}, mass_fraction = {:g}) must be > 0",
+                          t.where(), i, ratios[i], fractions[i]));
+      p.sizes.push_back({ratios[i] * p.d50_m, fractions[i]});
+    }
+  }
+  p.density_kg_m3 = t.positive("density_kg_m3");
+  p.youngs_modulus_Pa = t.positive("youngs_modulus_Pa");
+  p.poisson = t.number("poisson");
+  require(p.poisson >= 0.0 && p.poisson < 0.5, range_error(t, "poisson", p.poisson, "[0, 0.5)"));
+  p.friction = t.number("friction");
+  require(p.friction >= 0.0, range_error(t, "friction", p.friction, "[0, inf)"));
+  p.rolling_friction = t.optional_number("rolling_friction").value_or(0.0);
+  require(p.rolling_friction >= 0.0, range_error(t, "rolling_friction", p.rolling_friction, "[0, inf)"));
+  p.restitution = fraction(t, "restitution", 0.5);
+  t.finish();
+  return p;
+}
+
+RoughnessProfile read_profile(io::TableReader t, double d50) {
+  RoughnessProfile r;
+  const std::string kind = t.text("profile");
+  if (kind == "flat") {
+    r.kind = ProfileKind::kFlat;
+  } else if (kind == "sawtooth" || kind == "sinusoid") {
+    r.kind = kind == "sawtooth" ? ProfileKind::kSawtooth : ProfileKind::kSinusoid;
+    r.pitch_m = t.positive("pitch_d50") * d50;
+    r.height_m = t.positive("height_d50") * d50;
+  } else if (kind == "glued") {
+    throw InputError(fmt::format("{} = \"glued\": glued-sphere walls are not available in this "
+                                 "version; use flat, sawtooth or sinusoid", t.where("profile")));
+  } else {
+    throw InputError(fmt::format("{} = \"{}\"; allowed \"flat\", \"sawtooth\", \"sinusoid\"",
+                                 t.where("profile"), kind));
+  }
+  t.finish();
+  return r;
+}
+
+void check_geometry(Scene& s, const std::string& file) {
+  const double dmax = s.particles.d_max();
+  require(s.length_m >= kMinBoxLengthInDmax * dmax - 1e-12,
+          fmt::format("{}: key 'specimen.length_d50' = {:g} gives a box of {:g} mm, shorter than {:g} d_max "
+                      "= {:g} mm", file, s.length_m / s.particles.d50_m, s.length_m / kMm,
+                      kMinBoxLengthInDmax, kMinBoxLengthInDmax * dmax / kMm));
+  require(s.width_m >= kMinWidthInDmax * dmax - 1e-12,
+          fmt::format("{}: key 'specimen.width_d50' = {:g} gives {:g} mm, narrower than {:g} d_max",
+                      file, s.width_m / s.particles.d50_m, s.width_m / kMm, kMinWidthInDmax));
+  for (const auto& [name, prof] : {std::pair{"wall", &s.wall}, std::pair{"plate", &s.plate}}) {
+    if (prof->kind == ProfileKind::kFlat) continue;
+    const double n = s.length_m / prof->pitch_m;
+    require(std::abs(n - std::round(n)) < 1e-9 * n,
+            fmt::format("{}: key '{}.pitch_d50' = {:g} does not divide the box length {:g} d50 "
+                        "(a periodic wall needs a whole number of pitches; {:.4g} here)",
+                        file, name, prof->pitch_m / s.particles.d50_m, s.length_m / s.particles.d50_m, n));
+  }
+  if (s.height_m < kRecommendedHeightInD50 * s.particles.d50_m)
+    s.warnings.push_back(fmt::format("{}: specimen height {:g} d50 is below {:g} d50; no shear band can "
+                                     "form (DEM.md), fine for checking the boundary conditions",
+                                     file, s.height_m / s.particles.d50_m, kRecommendedHeightInD50));
+}
+
+}  // namespace
+
+double Particles::d_max() const {
+  double d = 0.0;
+  for (const auto& c : sizes) d = std::max(d, c.diameter_m);
+  return d;
+}
+
+double Particles::d_min() const {
+  double d = INFINITY;
+  for (const auto& c : sizes) d = std::min(d, c.diameter_m);
+  return d;
+}
+
+double Particles::mean_particle_volume_m3() const {
+  // number fraction of class i ~ mass fraction / particle volume
+  double number = 0.0, volume = 0.0;
+  for (const auto& c : sizes) {
+    const double v = M_PI / 6.0 * std::pow(c.diameter_m, 3);
+    number += c.mass_fraction / v;
+    volume += c.mass_fraction;
+  }
+  return volume / number;
+}
+
+double RoughnessProfile::normalized_roughness(double d50) const {
+  if (kind == ProfileKind::kFlat) return 0.0;
+  const double half = 0.5 * pitch_m;  // a rise from valley to peak spans half a pitch
+  if (d50 >= half) return height_m / d50;
+  if (kind == ProfileKind::kSawtooth) return height_m * (d50 / half) / d50;
+  return height_m * std::sin(M_PI * d50 / pitch_m) / d50;  // sinusoid: steepest window
+}
+
+double RoughnessProfile::mean_height_m() const { return 0.5 * height_m; }
+
+std::string RoughnessProfile::describe() const {
+  if (kind == ProfileKind::kFlat) return "flat";
+  return fmt::format("{} pitch {:g} mm, R_max {:g} mm", to_string(kind), pitch_m / kMm, height_m / kMm);
+}
+
+double Scene::stiffness_level() const {
+  const auto& p = particles;
+  return std::pow(p.youngs_modulus_Pa / ((1.0 - p.poisson * p.poisson) * boundary.sigma_n_Pa), 2.0 / 3.0);
+}
+
+const char* to_string(ProfileKind k) {
+  switch (k) {
+    case ProfileKind::kFlat: return "flat";
+    case ProfileKind::kSawtooth: return "sawtooth";
+    case ProfileKind::kSinusoid: return "sinusoid";
+  }
+  return "?";
+}
+
+Scene parse_scene(const std::string& text, const std::string& source) {
+  const auto root = io::parse_toml_text(text, source);
+  io::TableReader top(root, source);
+  Scene s;
+  s.source = source;
+  s.name = std::filesystem::path(source).stem().string();
+  s.description = top.optional_text("description").value_or("");
+  s.seed = top.optional_count("seed").value_or(1);
+
+  s.particles = read_particles(top.required_table("particles"));
+  const double d50 = s.particles.d50_m;
+
+  auto spec = top.required_table("specimen");
+  s.length_m = spec.positive("length_d50") * d50;
+  s.width_m = spec.positive("width_d50") * d50;
+  s.height_m = spec.positive("height_d50") * d50;
+  s.solid_fraction_estimate = fraction(spec, "solid_fraction_estimate", 0.58);
+  const double consolidation_friction = spec.optional_number("consolidation_friction").value_or(0.1);
+  s.particle_count = spec.optional_count("particles").value_or(int(std::lround(
+      s.solid_fraction_estimate * s.length_m * s.width_m * s.height_m / s.particles.mean_particle_volume_m3())));
+  spec.finish();
+
+  s.wall = read_profile(top.required_table("wall"), d50);
+  s.plate = read_profile(top.required_table("plate"), d50);
+  check_geometry(s, source);
+
+  auto bc = top.required_table("boundary");
+  s.boundary.kind = driver::parse_boundary_kind(bc.text("type"), bc.where("type"));
+  s.boundary.sigma_n_Pa = bc.positive("sigma_n_kPa") * 1e3;
+  if (s.boundary.kind == driver::BoundaryKind::kCNS)
+    s.boundary.K_Pa_per_m = bc.positive("K_kPa_per_mm") * 1e3 / kMm;
+  bc.finish();
+
+  auto sh = top.required_table("shear");
+  s.shear.displacement_m = sh.positive("displacement_mm") * kMm;
+  const double rho = s.particles.density_kg_m3;
+  const double sqrt_rho_over_sigma = std::sqrt(rho / s.boundary.sigma_n_Pa);
+  if (sh.one_of({"velocity_mm_s", "inertial_number"}) == "velocity_mm_s") {
+    s.shear.velocity_m_s = sh.positive("velocity_mm_s") * kMm;
+  } else {
+    // I = gamma_dot d50 sqrt(rho / sigma_n) with gamma_dot ~ v / H (DEM.md, conservative: the
+    // whole specimen as the band).
+    s.shear.velocity_m_s = sh.positive("inertial_number") * s.height_m / (d50 * sqrt_rho_over_sigma);
+  }
+  s.shear.inertial_number = s.shear.velocity_m_s / s.height_m * d50 * sqrt_rho_over_sigma;
+  sh.finish();
+
+  s.consolidation.friction = consolidation_friction;
+  s.consolidation.sigma_tolerance = 0.02;
+  s.consolidation.plate_tolerance_d50 = 1e-3;
+  s.consolidation.kinetic_energy_J = 1e-6;
+  s.consolidation.windows_required = 3;
+  s.consolidation.max_windows = 60;
+  s.consolidation.window_steps = 2000;
+  if (auto c = top.table("consolidation")) {
+    s.consolidation.sigma_tolerance = c->optional_positive("sigma_tolerance").value_or(0.02);
+    s.consolidation.plate_tolerance_d50 = c->optional_positive("plate_tolerance_d50").value_or(1e-3);
+    s.consolidation.kinetic_energy_J = c->optional_positive("kinetic_energy_J").value_or(1e-6);
+    s.consolidation.windows_required = c->optional_count("windows_required").value_or(3);
+    s.consolidation.max_windows = c->optional_count("max_windows").value_or(60);
+    s.consolidation.window_steps = c->optional_count("window_steps").value_or(2000);
+    c->finish();
+  }
+
+  s.outputs = {0.01 * kMm, 4, 0.25, 0.5 * kMm};
+  if (auto o = top.table("output")) {
+    s.outputs.timeseries_every_m = o->optional_positive("timeseries_every_mm").value_or(0.01) * kMm;
+    s.outputs.profile_windows = o->optional_count("profile_windows").value_or(4);
+    s.outputs.profile_bin_d50 = o->optional_positive("profile_bin_d50").value_or(0.25);
+    s.outputs.vtk_every_m = o->optional_positive("vtk_every_mm").value_or(0.5) * kMm;
+    o->finish();
+  }
+
+  s.servo = {0.3, 1.0, 2.0};
+  if (auto sv = top.table("servo")) {
+    s.servo.vel_max_m_s = sv->optional_positive("vel_max_m_s").value_or(0.3);
+    s.servo.kp = sv->optional_positive("kp").value_or(1.0);
+    s.servo.kp_shear = sv->optional_positive("kp_shear").value_or(2.0);
+    sv->finish();
+  }
+  top.finish();
+
+  s.resolved = {
+      {"particles", {{"d50_mm", d50 / kMm}, {"d_max_mm", s.particles.d_max() / kMm},
+                     {"density_kg_m3", rho}, {"youngs_modulus_Pa", s.particles.youngs_modulus_Pa},
+                     {"poisson", s.particles.poisson}, {"friction", s.particles.friction},
+                     {"rolling_friction", s.particles.rolling_friction},
+                     {"restitution", s.particles.restitution}, {"count_requested", s.particle_count}}},
+      {"specimen", {{"length_mm", s.length_m / kMm}, {"width_mm", s.width_m / kMm},
+                    {"height_mm", s.height_m / kMm}, {"consolidation_friction", consolidation_friction}}},
+      {"wall", {{"profile", s.wall.describe()}, {"R_n", s.wall.normalized_roughness(d50)}}},
+      {"plate", {{"profile", s.plate.describe()}, {"R_n", s.plate.normalized_roughness(d50)}}},
+      {"boundary", {{"type", driver::to_string(s.boundary.kind)}, {"sigma_n_kPa", s.boundary.sigma_n_Pa / 1e3},
+                    {"K_kPa_per_mm", s.boundary.K_Pa_per_m * kMm / 1e3}}},
+      {"shear", {{"velocity_mm_s", s.shear.velocity_m_s / kMm}, {"displacement_mm", s.shear.displacement_m / kMm},
+                 {"inertial_number", s.shear.inertial_number}}},
+      {"stiffness_level", s.stiffness_level()},
+      {"seed", s.seed}};
+  return s;
+}
+
+Scene load_scene(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(fmt::format("{}: no such file", path));
+  return parse_scene(io::read_file(path), path);
+}
+
+}  // namespace iwb::dem

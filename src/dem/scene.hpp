@@ -1,0 +1,114 @@
+#pragma once
+// A DEM interface-shear scene (../shared/spec/DEM.md): a granular layer between a rough wall under
+// test (bottom, sheared in +x) and a loading plate (top, servo-controlled or held), periodic in x
+// and y. Read from TOML (schema: data/scenes/README.md), SI inside, validated before any engine
+// starts: every error names the file, the key and the value.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "driver/control.hpp"  // BoundaryKind: the same CNL/CNS/CV in DEM and continuum
+
+namespace iwb::dem {
+
+struct SizeClass {
+  double diameter_m;
+  double mass_fraction;
+};
+
+struct Particles {
+  double d50_m;
+  std::vector<SizeClass> sizes;  // mass fractions sum to 1
+  double density_kg_m3;
+  double youngs_modulus_Pa;
+  double poisson;
+  double friction;          // sliding friction during the test
+  double rolling_friction;  // rolling resistance coefficient (LIGGGHTS cdt model)
+  double restitution;
+
+  double d_max() const;
+  double d_min() const;
+  double mean_particle_volume_m3() const;  // number-weighted, from the mass fractions
+};
+
+enum class ProfileKind { kFlat, kSawtooth, kSinusoid };
+
+// A wall's surface profile along x (ridges along y): R_max = height, period = pitch.
+struct RoughnessProfile {
+  ProfileKind kind = ProfileKind::kFlat;
+  double pitch_m = 0.0;
+  double height_m = 0.0;
+
+  // Normalized roughness R_n = R_max(L = d50) / d50 (Uesugi & Kishida 1986): the largest
+  // peak-to-valley height within any gauge window of length d50, over d50.
+  double normalized_roughness(double d50) const;
+  double mean_height_m() const;  // mean surface height above the base plane
+  std::string describe() const;
+};
+
+struct Boundary {
+  driver::BoundaryKind kind = driver::BoundaryKind::kCNL;
+  double sigma_n_Pa = 0.0;  // CNL target; CNS and CV: sigma_n0 of the consolidation
+  double K_Pa_per_m = 0.0;  // CNS: d sigma_n = K d u_n
+};
+
+struct Shear {
+  double velocity_m_s = 0.0;  // wall velocity (given, or from the inertial number)
+  double inertial_number = 0.0;  // target I = gamma_dot d50 sqrt(rho/sigma_n), gamma_dot ~ v/H
+  double displacement_m = 0.0;
+};
+
+struct Consolidation {
+  double friction;          // particle friction while consolidating (low: dense)
+  double sigma_tolerance;   // relative
+  double plate_tolerance_d50;  // plate movement per window, in d50
+  double kinetic_energy_J;  // largest kinetic energy of an accepted window
+  int windows_required;
+  int max_windows;
+  int window_steps;
+};
+
+struct Outputs {
+  double timeseries_every_m;
+  int profile_windows;
+  double profile_bin_d50;
+  double vtk_every_m;
+};
+
+// The plate servo: plate speed = vel_max * kp * e, e the relative force error (measured on
+// LIGGGHTS 3.8.0: kp 0.01 at vel_max 0.1 moved a free plate at 1e-3 m/s).
+struct Servo {
+  double vel_max_m_s;
+  double kp;        // while consolidating
+  double kp_shear;  // while shearing
+};
+
+struct Scene {
+  std::string source;  // file it came from
+  std::string name;
+  std::string description;
+  int seed = 1;
+  Particles particles;
+  double length_m, width_m, height_m;  // box in x, y; target specimen height
+  int particle_count = 0;              // requested
+  double solid_fraction_estimate;      // used to derive particle_count when not given
+  RoughnessProfile wall, plate;
+  Boundary boundary;
+  Shear shear;
+  Consolidation consolidation;
+  Outputs outputs;
+  Servo servo;
+  nlohmann::json resolved;  // every value after defaults and conversions, for the manifest
+  std::vector<std::string> warnings;
+
+  double area_m2() const { return length_m * width_m; }
+  // Stiffness level kappa = (E / ((1 - nu^2) sigma_n))^(2/3) (DEM.md manifest field).
+  double stiffness_level() const;
+};
+
+Scene load_scene(const std::string& path);
+Scene parse_scene(const std::string& text, const std::string& source);
+
+const char* to_string(ProfileKind k);
+
+}  // namespace iwb::dem

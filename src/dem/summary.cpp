@@ -1,0 +1,165 @@
+#include "dem/summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace iwb::dem {
+
+namespace {
+
+constexpr double kLastFraction = 0.2;            // "residual" window: the last fifth of u_x
+constexpr double kFirstLayerD50 = 1.0;           // the first grain layer above the wall surface
+constexpr double kDistributedR2 = 0.95;          // a linear velocity profile this good: no band
+constexpr double kDefaultBandD50 = 10.0;
+
+struct Fit {
+  double slope, intercept, r2;
+};
+
+Fit linear_fit(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = double(x.size());
+  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n;
+  const double my = std::accumulate(y.begin(), y.end(), 0.0) / n;
+  double sxy = 0, sxx = 0, syy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sxy += (x[i] - mx) * (y[i] - my);
+    sxx += (x[i] - mx) * (x[i] - mx);
+    syy += (y[i] - my) * (y[i] - my);
+  }
+  const double slope = sxx > 0 ? sxy / sxx : 0.0;
+  return {slope, my - slope * mx, (sxx > 0 && syy > 0) ? sxy * sxy / (sxx * syy) : 0.0};
+}
+
+// Width w of r(z) = erfc((z - zc)/w)/2 by least squares on a refined grid; the 0.9 -> 0.1 width
+// of that profile is 2 * 0.9062 w.
+double erfc_width(const std::vector<double>& z, const std::vector<double>& r, double height) {
+  double best = INFINITY, best_w = NAN;
+  double zc_lo = 0.0, zc_hi = height, w_lo = 0.05, w_hi = height;
+  for (int level = 0; level < 4; ++level) {
+    double bz = 0, bw = 0;
+    for (int i = 0; i <= 40; ++i)
+      for (int j = 0; j <= 40; ++j) {
+        const double zc = zc_lo + (zc_hi - zc_lo) * i / 40.0, w = w_lo * std::pow(w_hi / w_lo, j / 40.0);
+        double sse = 0;
+        for (std::size_t k = 0; k < z.size(); ++k) {
+          const double d = 0.5 * std::erfc((z[k] - zc) / w) - r[k];
+          sse += d * d;
+        }
+        if (sse < best) best = sse, bz = zc, bw = w, best_w = w;
+      }
+    const double dz = (zc_hi - zc_lo) / 20.0;
+    zc_lo = std::max(0.0, bz - dz), zc_hi = bz + dz;
+    w_lo = bw / 1.5, w_hi = bw * 1.5;
+  }
+  return 2.0 * 0.9062 * best_w;
+}
+
+void shear_band(const io::CsvTable& profiles, Summary& s) {
+  if (profiles.rows.empty()) {
+    s.shear_mode = "no profile";
+    return;
+  }
+  const auto window = profiles.values("u_x_mm_window");
+  const double last = *std::max_element(window.begin(), window.end());
+  std::vector<double> z, v, porosity;
+  for (const auto& row : profiles.rows)
+    if (row[profiles.column("u_x_mm_window")] == last && row[profiles.column("z_over_d50")] >= 0.0) {
+      z.push_back(row[profiles.column("z_over_d50")]);
+      v.push_back(row[profiles.column("vx_over_vwall")]);
+      porosity.push_back(row[profiles.column("porosity")]);
+    }
+  if (z.size() < 4) {
+    s.shear_mode = "no profile";
+    return;
+  }
+  double first = 0.0;
+  int n_first = 0;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (z[i] <= kFirstLayerD50) first += v[i], ++n_first;
+  first = n_first ? first / n_first : v.front();
+  s.wall_slip = 1.0 - first;
+  std::vector<double> r;
+  for (double x : v) r.push_back(first > 1e-9 ? x / first : 0.0);
+  const double height = z.back();
+  // Relative to the first layer (DEM.md: on smooth walls the 0.9 -> 0.1 band is undefined
+  // against the wall's speed because the wall slips).
+  double z90 = NAN, z10 = NAN;
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    if (std::isnan(z90) && r[i] < 0.9) z90 = z[i];
+    if (std::isnan(z10) && r[i] < 0.1) z10 = z[i];
+  }
+  const Fit lin = linear_fit(z, r);
+  double band_top = kDefaultBandD50;
+  if (lin.r2 > kDistributedR2) {
+    s.shear_mode = "distributed shear";
+  } else {
+    s.shear_mode = "localised";
+    if (!std::isnan(z90) && !std::isnan(z10)) {
+      s.band_thickness_d50 = z10 - z90;
+      band_top = z10;
+    }
+    s.band_thickness_erf_d50 = erfc_width(z, r, height);
+  }
+  double n = 0;
+  int count = 0;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (z[i] <= band_top) n += porosity[i], ++count;
+  if (count > 0) {
+    n /= count;
+    s.e_band = n / (1.0 - n);
+  }
+}
+
+}  // namespace
+
+Summary summarize(const Scene& scene, const io::CsvTable& ts, const io::CsvTable& profiles) {
+  Summary s;
+  const auto ux = ts.values("u_x_mm"), un = ts.values("u_n_mm");
+  const auto sigma = ts.values("sigma_n_kPa"), tau = ts.values("tau_kPa");
+  if (ux.empty()) return s;
+  std::vector<double> friction(ux.size());
+  for (std::size_t i = 0; i < ux.size(); ++i) friction[i] = tau[i] / sigma[i];
+  const auto peak = std::max_element(friction.begin(), friction.end());
+  s.peak_friction = *peak;
+  s.u_x_at_peak_mm = ux[std::size_t(peak - friction.begin())];
+  const double u_end = ux.back(), u_from = (1.0 - kLastFraction) * u_end;
+  std::vector<double> xs, fs, ns;
+  for (std::size_t i = 0; i < ux.size(); ++i)
+    if (ux[i] >= u_from) xs.push_back(ux[i]), fs.push_back(friction[i]), ns.push_back(un[i]);
+  s.residual_friction = std::accumulate(fs.begin(), fs.end(), 0.0) / double(fs.size());
+  const Fit f = linear_fit(xs, fs);
+  s.residual_drift = f.slope * (u_end - u_from);
+  s.steady = std::abs(s.residual_drift) < kSteadyDrift;
+  s.dilation_mm = un.back();
+  s.dilatancy_angle_deg = std::atan(linear_fit(xs, ns).slope) * 180.0 / M_PI;
+  const double target = scene.boundary.sigma_n_Pa / 1e3;
+  s.sigma_n_mean_kPa = std::accumulate(sigma.begin(), sigma.end(), 0.0) / double(sigma.size());
+  for (double x : sigma) s.sigma_n_max_deviation = std::max(s.sigma_n_max_deviation, std::abs(x / target - 1.0));
+  shear_band(profiles, s);
+  return s;
+}
+
+nlohmann::json to_json(const Summary& s) {
+  auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  return {{"peak_friction", s.peak_friction},
+          {"u_x_at_peak_mm", s.u_x_at_peak_mm},
+          {"residual_friction", s.residual_friction},
+          {"residual_drift_over_last_fifth", s.residual_drift},
+          {"residual_is", s.steady ? "steady" : "not steady"},
+          {"dilation_mm", s.dilation_mm},
+          {"dilatancy_angle_deg", s.dilatancy_angle_deg},
+          {"sigma_n_mean_kPa", s.sigma_n_mean_kPa},
+          {"sigma_n_max_relative_deviation", s.sigma_n_max_deviation},
+          {"shear_mode", s.shear_mode},
+          {"band_thickness_d50", opt(s.band_thickness_d50)},
+          {"band_thickness_erfc_fit_d50", opt(s.band_thickness_erf_d50)},
+          {"wall_slip", s.wall_slip},
+          {"e_band", opt(s.e_band)},
+          {"definitions", {{"friction", "tau/sigma_n, both on the tested wall"},
+                           {"residual", "mean of the last fifth of u_x; 'not steady' if it drifts by more than 0.02"},
+                           {"band", "where vx falls from 0.9 to 0.1 of the first grain layer's speed; 'distributed shear' when the profile is linear (R^2 > 0.95)"},
+                           {"e_band", "porosity of the band (or the lowest 10 d50) as void ratio"}}}};
+}
+
+}  // namespace iwb::dem

@@ -1,0 +1,35 @@
+#pragma once
+// Derived quantities of a DEM run (DEM.md "What the comparison layer derives"), computed from the
+// contract tables only, so they mean the same for every engine.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "dem/scene.hpp"
+#include "io/csv_table.hpp"
+
+namespace iwb::dem {
+
+struct Summary {
+  double peak_friction = 0.0;         // max tau/sigma_n (sigma_n on the tested wall)
+  double u_x_at_peak_mm = 0.0;
+  double residual_friction = 0.0;     // mean over the last fifth of the displacement
+  double residual_drift = 0.0;        // change of tau/sigma_n over that window (linear fit)
+  bool steady = false;                // |drift| below kSteadyDrift: only then is it "residual"
+  double dilation_mm = 0.0;           // u_n at the end
+  double dilatancy_angle_deg = 0.0;   // atan(du_n/du_x) over the last fifth
+  double sigma_n_mean_kPa = 0.0;      // during shear, on the wall
+  double sigma_n_max_deviation = 0.0; // max |sigma_n / target - 1| during shear (CNL)
+  std::string shear_mode;             // "localised", "distributed shear", "no profile"
+  std::optional<double> band_thickness_d50;      // 0.9 -> 0.1 of the first layer's speed
+  std::optional<double> band_thickness_erf_d50;  // from an erfc fit of the profile
+  double wall_slip = 0.0;             // 1 - v(first layer)/v(wall)
+  std::optional<double> e_band;       // void ratio in the band (or the lowest 10 d50)
+};
+
+inline constexpr double kSteadyDrift = 0.02;  // friction change over the last fifth (DEM.md)
+
+Summary summarize(const Scene& scene, const io::CsvTable& timeseries, const io::CsvTable& profiles);
+nlohmann::json to_json(const Summary& s);
+
+}  // namespace iwb::dem

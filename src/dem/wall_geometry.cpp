@@ -1,0 +1,79 @@
+#include "dem/wall_geometry.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <fmt/core.h>
+
+namespace iwb::dem {
+
+namespace {
+
+// Breakpoints along x and the profile height at each, over one pitch.
+std::vector<std::pair<double, double>> one_pitch(const RoughnessProfile& p) {
+  switch (p.kind) {
+    case ProfileKind::kSawtooth:
+      return {{0.0, 0.0}, {0.5 * p.pitch_m, p.height_m}};
+    case ProfileKind::kSinusoid: {
+      constexpr int kSegmentsPerPitch = 16;  // chord error < 2 % of R_max
+      std::vector<std::pair<double, double>> pts;
+      for (int i = 0; i < kSegmentsPerPitch; ++i) {
+        const double x = p.pitch_m * i / kSegmentsPerPitch;
+        pts.push_back({x, 0.5 * p.height_m * (1.0 - std::cos(2.0 * M_PI * x / p.pitch_m))});
+      }
+      return pts;
+    }
+    case ProfileKind::kFlat:
+      return {{0.0, 0.0}};
+  }
+  return {};
+}
+
+}  // namespace
+
+std::vector<Triangle> profile_surface(const RoughnessProfile& profile, double length, double width,
+                                      double z_base, bool facing_down, double max_edge) {
+  // x breakpoints over the whole length
+  std::vector<std::pair<double, double>> xs;
+  // A flat wall is cut into equal strips no longer than max_edge; profiles repeat their pitch,
+  // which divides the length (checked when the scene is read).
+  const int pitches = profile.kind == ProfileKind::kFlat ? std::max(1, int(std::ceil(length / max_edge)))
+                                                         : int(std::lround(length / profile.pitch_m));
+  const double pitch = length / pitches;
+  for (int k = 0; k < pitches; ++k)
+    for (const auto& [x, h] : one_pitch(profile)) xs.push_back({k * pitch + x, h});
+  xs.push_back({length, 0.0});
+  const int ny = std::max(2, int(std::ceil(width / max_edge)));
+  const double sign = facing_down ? -1.0 : 1.0;
+  auto point = [&](std::size_t i, int j) {
+    return Eigen::Vector3d(xs[i].first, width * j / ny, z_base + sign * xs[i].second);
+  };
+  std::vector<Triangle> out;
+  for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
+    for (int j = 0; j < ny; ++j) {
+      const auto p00 = point(i, j), p10 = point(i + 1, j), p11 = point(i + 1, j + 1), p01 = point(i, j + 1);
+      // counter-clockwise seen from the particles: normals point into the granular layer
+      if (facing_down) {
+        out.push_back({p00, p11, p10});
+        out.push_back({p00, p01, p11});
+      } else {
+        out.push_back({p00, p10, p11});
+        out.push_back({p00, p11, p01});
+      }
+    }
+  }
+  return out;
+}
+
+std::string to_stl(const std::vector<Triangle>& triangles, const std::string& name) {
+  std::string s = "solid " + name + "\n";
+  for (const auto& t : triangles) {
+    const Eigen::Vector3d n = (t.b - t.a).cross(t.c - t.a).normalized();
+    s += fmt::format("facet normal {:.9g} {:.9g} {:.9g}\nouter loop\n", n.x(), n.y(), n.z());
+    for (const auto* v : {&t.a, &t.b, &t.c})
+      s += fmt::format("vertex {:.12g} {:.12g} {:.12g}\n", v->x(), v->y(), v->z());
+    s += "endloop\nendfacet\n";
+  }
+  return s + "endsolid " + name + "\n";
+}
+
+}  // namespace iwb::dem

@@ -1,0 +1,24 @@
+#pragma once
+// Triangle meshes of the roughness profiles for the engines. The profile runs along x with ridges
+// along y; the surface is cut into strips no wider than `max_edge` in both x and y so that no
+// triangle spans a periodic length (LIGGGHTS: a triangle must not touch its own periodic image).
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "dem/scene.hpp"
+
+namespace iwb::dem {
+
+struct Triangle {
+  Eigen::Vector3d a, b, c;
+};
+
+// The surface z = z_base + f(x) (facing up) or z_base - f(x) (facing down, for the top plate),
+// over [0, length] x [0, width].
+std::vector<Triangle> profile_surface(const RoughnessProfile& profile, double length, double width,
+                                      double z_base, bool facing_down, double max_edge);
+
+std::string to_stl(const std::vector<Triangle>& triangles, const std::string& name);
+
+}  // namespace iwb::dem
