@@ -3,6 +3,7 @@
 // along y; the surface is cut into strips no wider than `max_edge` in both x and y so that no
 // triangle spans a periodic length (LIGGGHTS: a triangle must not touch its own periodic image).
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products of triangle edges
 #include <string>
 #include <vector>
 

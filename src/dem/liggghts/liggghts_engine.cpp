@@ -37,7 +37,7 @@ long prime_seed(int scene_seed, int stream) {
 
 std::string g(double x) { return fmt::format("{:.10g}", x); }
 
-TemplateValues values_of(const Scene& s, const Numerics& n) {
+TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidated) {
   const auto& p = s.particles;
   std::string templates;
   std::string distribution = fmt::format("fix pdd all particledistribution/discrete {} {}",
@@ -77,6 +77,7 @@ TemplateValues values_of(const Scene& s, const Numerics& n) {
       {"profile_repeat", std::to_string(n.profile_repeat)}, {"profile_every", std::to_string(n.profile_every)},
       {"bin_dz", g(s.outputs.profile_bin_d50 * n.d50)}, {"vtk_every", std::to_string(n.vtk_every)},
       {"shear_steps", std::to_string(n.shear_steps)}, {"vtk_dir", "../vtk"},
+      {"z0_consolidated", g(z0_consolidated)},
       {"band_d50", g((n.band_zhi - n.band_zlo) / n.d50)}, {"band_zlo", g(n.band_zlo)},
       {"band_zhi", g(n.band_zhi)}, {"servo_kp_shear", g(s.servo.kp_shear)},
   };
@@ -184,7 +185,7 @@ nlohmann::json LiggghtsEngine::numerics(const Scene& s) const {
 }
 
 StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageContext& ctx,
-                                      const nlohmann::json& /*facts*/) {
+                                      const nlohmann::json& facts) {
   const Scene& s = ctx.scene;
   const Numerics n = derive(s);
   const double max_edge = s.particles.d50_m;
@@ -194,7 +195,9 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
                        to_stl(profile_surface(s.plate, s.length_m, s.width_m, n.plate_z, true, max_edge), "top"));
   const std::string input = stage + ".in";
   io::write_atomically(ctx.work_dir / input,
-                       render_template(liggghts_templates().at(input), values_of(s, n), input));
+                       render_template(liggghts_templates().at(input),
+                                       values_of(s, n, facts.value("/consolidate/zplate_m"_json_pointer, n.plate_z)),
+                                       input));
   Follower f{ctx, std::ofstream(ctx.work_dir / (stage + ".out")), {}, stage};
   const ProcessResult p = run_process(command(input, ctx.processes), ctx.work_dir,
                                       [&f](const std::string& l) { return f.line(l); }, ctx.interrupt);

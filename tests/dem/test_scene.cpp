@@ -1,0 +1,66 @@
+// Scene files: refused before any engine starts, with file, key and value; derived geometry.
+#include <catch2/catch.hpp>
+#include <fstream>
+
+#include "common/errors.hpp"
+#include "dem/scene.hpp"
+#include "io/run_directory.hpp"
+
+using namespace iwb;
+
+namespace {
+std::string smoke() { return io::read_file("data/scenes/smoke.toml"); }
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto p = text.find(from);
+  REQUIRE(p != std::string::npos);
+  return text.replace(p, from.size(), to);
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    dem::parse_scene(text, "scene.toml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+}  // namespace
+
+TEST_CASE("the smoke scene resolves R_n, particle sizes and the inertial number", "[dem]") {
+  const auto s = dem::parse_scene(smoke(), "data/scenes/smoke.toml");
+  CHECK(s.wall.normalized_roughness(s.particles.d50_m) == Approx(0.5));
+  CHECK(s.plate.normalized_roughness(s.particles.d50_m) == Approx(1.0));
+  CHECK(s.particles.d_max() == Approx(2.4e-3));
+  CHECK(s.shear.inertial_number == Approx(1e-3));
+  CHECK(s.particle_count == 400);
+  CHECK(s.warnings.size() == 1);  // 8 d50 is too low for a band
+}
+
+TEST_CASE("R_n over a gauge length of d50 for sawtooth and sinusoid walls", "[dem]") {
+  dem::RoughnessProfile saw{dem::ProfileKind::kSawtooth, 4e-3, 1e-3};
+  CHECK(saw.normalized_roughness(2e-3) == Approx(0.5));   // the window spans a full rise
+  CHECK(saw.normalized_roughness(1e-3) == Approx(0.5));   // half the rise in half the length
+  dem::RoughnessProfile sine{dem::ProfileKind::kSinusoid, 8e-3, 1e-3};
+  CHECK(sine.normalized_roughness(2e-3) == Approx(1e-3 * std::sin(M_PI / 4) / 2e-3));
+  CHECK(dem::RoughnessProfile{}.normalized_roughness(2e-3) == 0.0);
+}
+
+TEST_CASE("broken scenes are refused with file, key and value", "[dem]") {
+  CHECK_THAT(error_of(replaced(smoke(), "d50_mm = 2.0\n", "")),
+             Catch::Contains("scene.toml: key 'particles.d50_mm' is missing"));
+  CHECK_THAT(error_of(replaced(smoke(), "d50_mm = 2.0", "d50_mm = -2.0")),
+             Catch::Contains("scene.toml: key 'particles.d50_mm' = -2 is out of range; allowed (0, inf)"));
+  CHECK_THAT(error_of(replaced(smoke(), "length_d50 = 12", "length_d50 = 10")),
+             Catch::Contains("scene.toml: key 'specimen.length_d50' = 10") &&
+                 Catch::Contains("shorter than 10 d_max = 24 mm"));
+  CHECK_THAT(error_of(replaced(replaced(smoke(), "pitch_d50 = 2\n", "pitch_d50 = 5\n"), "length_d50 = 12", "length_d50 = 12")),
+             Catch::Contains("scene.toml: key 'wall.pitch_d50' = 5 does not divide the box length 12 d50"));
+  CHECK_THAT(error_of(replaced(smoke(), "type = \"CNL\"", "type = \"CNS\"")),
+             Catch::Contains("scene.toml: key 'boundary.K_kPa_per_mm' is missing"));
+  CHECK_THAT(error_of(replaced(smoke(), "mass_fraction = [0.25, 0.5, 0.25]", "mass_fraction = [0.25, 0.5, 0.3]")),
+             Catch::Contains("mass_fraction sums to 1.05"));
+  CHECK_THAT(error_of(replaced(smoke(), "profile = \"sawtooth\"", "profile = \"knurled\"")),
+             Catch::Contains("key 'wall.profile' = \"knurled\"; allowed \"flat\", \"sawtooth\", \"sinusoid\""));
+  CHECK_THAT(error_of(smoke() + "\n[shaer]\nx = 1\n"), Catch::Contains("key 'shaer' is not a known key"));
+}

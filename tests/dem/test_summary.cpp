@@ -1,0 +1,55 @@
+// Derived quantities on synthetic contract tables whose answers are known.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "dem/summary.hpp"
+#include "io/run_directory.hpp"
+
+using namespace iwb;
+
+namespace {
+dem::Scene scene() { return dem::parse_scene(io::read_file("data/scenes/smoke.toml"), "smoke.toml"); }
+
+io::CsvTable series(double peak, double residual, double drift) {
+  io::CsvTable t;
+  t.columns = {"t_s", "u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa"};
+  for (int i = 0; i <= 100; ++i) {
+    const double u = 0.05 * i;  // 5 mm
+    const double mu = u < 1.0 ? peak * u : (u < 2.0 ? peak - (peak - residual) * (u - 1.0) : residual + drift * (u - 4.0));
+    t.rows.push_back({0.01 * i, u, 0.05 * u, 50.0, 50.0 * mu});
+  }
+  return t;
+}
+
+io::CsvTable profile(const std::function<double(double)>& v, double height) {
+  io::CsvTable t;
+  t.columns = {"u_x_mm_window", "z_over_d50", "vx_over_vwall", "porosity", "sigma_zz_kPa", "tau_zx_kPa"};
+  for (double z = 0.25; z < height; z += 0.5) t.rows.push_back({4.0, z, v(z), 0.4, 50, 30});
+  return t;
+}
+}  // namespace
+
+TEST_CASE("peak, residual and the steadiness verdict", "[dem]") {
+  const auto steady = dem::summarize(scene(), series(0.8, 0.6, 0.0), {});
+  CHECK(steady.peak_friction == Approx(0.8));
+  CHECK(steady.u_x_at_peak_mm == Approx(1.0));
+  CHECK(steady.residual_friction == Approx(0.6));
+  CHECK(steady.steady);
+  CHECK(steady.dilatancy_angle_deg == Approx(std::atan(0.05) * 180 / M_PI));
+  const auto drifting = dem::summarize(scene(), series(0.8, 0.6, 0.1), {});
+  CHECK_FALSE(drifting.steady);  // 0.1 per mm over the last mm: not a residual
+  CHECK(dem::to_json(drifting)["residual_is"] == "not steady");
+}
+
+TEST_CASE("a localised profile gives its band; a linear one is distributed shear", "[dem]") {
+  // erfc profile centred 4 d50 above the wall, width w = 2 d50: 0.9 -> 0.1 spans 3.62 d50
+  const auto band = dem::summarize(scene(), series(0.8, 0.6, 0), profile([](double z) { return 0.5 * std::erfc((z - 4.0) / 2.0); }, 20.0));
+  REQUIRE(band.shear_mode == "localised");
+  CHECK(band.band_thickness_erf_d50.value() == Approx(3.62).epsilon(0.05));
+  CHECK(band.band_thickness_d50.value() == Approx(3.62).margin(0.6));  // bin resolution 0.5 d50
+  CHECK(band.wall_slip == Approx(1.0 - 0.5 * std::erfc(-3.5 / 2.0)).margin(0.02));
+  CHECK(band.e_band.value() == Approx(0.4 / 0.6));
+  const auto linear = dem::summarize(scene(), series(0.8, 0.6, 0), profile([](double z) { return 1.0 - z / 20.0; }, 20.0));
+  CHECK(linear.shear_mode == "distributed shear");
+  CHECK_FALSE(linear.band_thickness_d50.has_value());
+}
