@@ -11,6 +11,7 @@
 #include "app/default_job.hpp"
 #include "dem/liggghts/liggghts_engine.hpp"
 #include "dem/run.hpp"
+#include "bench/dem_bench.hpp"
 #include "bench/element_bench.hpp"
 #include "common/errors.hpp"
 #include "io/element_run.hpp"
@@ -169,6 +170,12 @@ int main(int argc, char** argv) {
   dem_run->add_flag("--resume", resume, "continue an interrupted run of the same scene from its last finished stage");
   dem_run->add_flag("--force", force, "replace an earlier run in the same directory");
 
+  auto* dem_summary = dem->add_subcommand(
+      "summary", "Recompute summary.json of a complete run directory from its contract files (peak and "
+                 "residual friction, dilation, shear mode and band, wall slip, band void ratio).");
+  std::string run_dir;
+  dem_summary->add_option("run_dir", run_dir, "a run directory of `iwb dem run`")->required()->check(CLI::ExistingDirectory);
+
   auto* bench = app.add_subcommand("bench", "Benchmarks that print figures.");
   bench->require_subcommand(1);
   auto* bench_element = bench->add_subcommand(
@@ -178,6 +185,14 @@ int main(int argc, char** argv) {
   bench_element->add_option("--repeats", bopt.repeats, "runs per model; the best is reported")
       ->check(CLI::Range(1, 1000))->capture_default_str();
 
+  auto* bench_dem = bench->add_subcommand(
+      "dem", "Particle-steps per second of a DEM engine on a scene with 1 and 2 ranks, and the "
+             "workbench's own overhead as a share of the run (a few minutes on the default scene).");
+  iwb::bench::DemBenchOptions dopt;
+  bench_dem->add_option("--engine", dopt.engine, "DEM engine")->capture_default_str();
+  bench_dem->add_option("--scene", dopt.scene, "scene file")->check(CLI::ExistingFile)->capture_default_str();
+  bench_dem->add_option("--ranks", dopt.ranks, "rank counts to measure")->capture_default_str();
+
   CLI11_PARSE(app, argc, argv);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -186,6 +201,14 @@ int main(int argc, char** argv) {
     if (*models) return cmd_models(as_json);
     if (*run) return iwb::app::run_default_job(run_out, force, cl);
     if (*dem_run) return cmd_dem_run(scene_file, engine_name, np, out, resume, force, cl);
+    if (*dem_summary) {
+      fmt::print("{}\n", iwb::dem::resummarize(run_dir).dump(2));
+      return 0;
+    }
+    if (*bench_dem) {
+      iwb::bench::run_dem_bench(dopt);
+      return 0;
+    }
     if (*bench_element) {
       iwb::bench::run_element_bench(bopt);
       return 0;

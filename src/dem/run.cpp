@@ -104,4 +104,17 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
   return out;
 }
 
+nlohmann::json resummarize(const fs::path& dir) {
+  const auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
+  if (m.value("status", "") != "complete")
+    throw InputError(fmt::format("{}: run status is '{}'; only complete runs are summarised",
+                                 dir.string(), m.value("status", "?")));
+  const Scene scene = parse_scene(m.at("scene").at("text").get<std::string>(),
+                                  m.at("scene").at("source").get<std::string>());
+  const auto summary = to_json(summarize(scene, io::read_csv_table(dir / "timeseries.csv"),
+                                         io::read_csv_table(dir / "profiles.csv")));
+  io::write_atomically(dir / "summary.json", summary.dump(2) + "\n");
+  return summary;
+}
+
 }  // namespace iwb::dem

@@ -32,4 +32,8 @@ struct RunOutcome {
 RunOutcome run_scene(const Scene& scene, const std::string& scene_text, Engine& engine,
                      const RunOptions& options);
 
+// Recomputes summary.json of a finished run directory from its contract files and the scene
+// copy in its manifest; returns the summary.
+nlohmann::json resummarize(const std::filesystem::path& run_dir);
+
 }  // namespace iwb::dem

@@ -12,6 +12,7 @@ constexpr double kLastFraction = 0.2;            // "residual" window: the last 
 constexpr double kFirstLayerD50 = 1.0;           // the first grain layer above the wall surface
 constexpr double kDistributedR2 = 0.95;          // a linear velocity profile this good: no band
 constexpr double kDefaultBandD50 = 10.0;
+constexpr double kLocalisedFarField = 0.25;      // far field below this: the wall takes >= 75 %
 
 struct Fit {
   double slope, intercept, r2;
@@ -90,16 +91,40 @@ void shear_band(const io::CsvTable& profiles, Summary& s) {
     if (std::isnan(z10) && r[i] < 0.1) z10 = z[i];
   }
   const Fit lin = linear_fit(z, r);
-  double band_top = kDefaultBandD50;
+  std::vector<double> middle;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (z[i] >= height / 3.0 && z[i] <= 2.0 * height / 3.0) middle.push_back(r[i]);
+  std::nth_element(middle.begin(), middle.begin() + long(middle.size() / 2), middle.end());
+  const double far = middle.empty() ? 0.0 : middle[middle.size() / 2];
+  s.far_field_speed = far;
+  s.wall_share = 1.0 - far;
+  double band_top = std::min(kDefaultBandD50, 0.5 * height);
   if (lin.r2 > kDistributedR2) {
     s.shear_mode = "distributed shear";
   } else {
-    s.shear_mode = "localised";
-    if (!std::isnan(z90) && !std::isnan(z10)) {
-      s.band_thickness_d50 = z10 - z90;
-      band_top = z10;
-    }
-    s.band_thickness_erf_d50 = erfc_width(z, r, height);
+    s.shear_mode = far < kLocalisedFarField       ? "localised at the wall"
+                   : far > 1.0 - kLocalisedFarField ? "localised at the plate"
+                                                    : "split between wall and plate";
+    // the wall band: from the wall until r is within 10 % of its drop from the far field (only
+    // where the wall carries a real share of the drop)
+    for (std::size_t i = 0; i < z.size() && far < 1.0 - kLocalisedFarField; ++i)
+      if (r[i] - far <= 0.1 * (1.0 - far)) {
+        s.wall_band_d50 = z[i];
+        band_top = z[i];
+        break;
+      }
+    // the plate band: from the top down until r is within 10 % of the far field (a rough plate
+    // holds its grains at rest; DEM.md: shear may localise there instead of at the wall)
+    for (std::size_t i = z.size(); i-- > 0;)
+      if (r[i] >= 0.9 * far) {
+        if (far > kLocalisedFarField) s.plate_band_d50 = height - z[i];
+        break;
+      }
+    if (far < kLocalisedFarField && !std::isnan(z90) && !std::isnan(z10)) s.band_thickness_d50 = z10 - z90;
+    std::vector<double> zl, ql;  // the wall band normalised to [0, 1], lower half of the specimen
+    for (std::size_t i = 0; i < z.size(); ++i)
+      if (z[i] <= 0.5 * height) zl.push_back(z[i]), ql.push_back((r[i] - far) / (1.0 - far));
+    if (zl.size() >= 4 && far < 1.0 - kLocalisedFarField) s.band_thickness_erf_d50 = erfc_width(zl, ql, 0.5 * height);
   }
   double n = 0;
   int count = 0;
@@ -152,13 +177,20 @@ nlohmann::json to_json(const Summary& s) {
           {"sigma_n_mean_kPa", s.sigma_n_mean_kPa},
           {"sigma_n_max_relative_deviation", s.sigma_n_max_deviation},
           {"shear_mode", s.shear_mode},
+          {"far_field_speed", s.far_field_speed},
+          {"wall_share_of_velocity_drop", s.wall_share},
+          {"wall_band_d50", opt(s.wall_band_d50)},
+          {"plate_band_d50", opt(s.plate_band_d50)},
           {"band_thickness_d50", opt(s.band_thickness_d50)},
           {"band_thickness_erfc_fit_d50", opt(s.band_thickness_erf_d50)},
           {"wall_slip", s.wall_slip},
           {"e_band", opt(s.e_band)},
           {"definitions", {{"friction", "tau/sigma_n, both on the tested wall"},
                            {"residual", "mean of the last fifth of u_x; 'not steady' if it drifts by more than 0.02"},
-                           {"band", "where vx falls from 0.9 to 0.1 of the first grain layer's speed; 'distributed shear' when the profile is linear (R^2 > 0.95)"},
+                           {"far_field_speed", "median vx over the middle third of the specimen, relative to the first grain layer"},
+                           {"wall_band", "from the wall until vx is within 10 % of its drop to the far field"},
+                           {"plate_band", "from the top of the specimen down until vx reaches 90 % of the far field"},
+                           {"band", "where vx falls from 0.9 to 0.1 of the first grain layer's speed; only when the far field is at rest (< 0.25); 'distributed shear' when the profile is linear (R^2 > 0.95)"},
                            {"e_band", "porosity of the band (or the lowest 10 d50) as void ratio"}}}};
 }
 

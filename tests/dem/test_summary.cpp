@@ -44,7 +44,8 @@ TEST_CASE("peak, residual and the steadiness verdict", "[dem]") {
 TEST_CASE("a localised profile gives its band; a linear one is distributed shear", "[dem]") {
   // erfc profile centred 4 d50 above the wall, width w = 2 d50: 0.9 -> 0.1 spans 3.62 d50
   const auto band = dem::summarize(scene(), series(0.8, 0.6, 0), profile([](double z) { return 0.5 * std::erfc((z - 4.0) / 2.0); }, 20.0));
-  REQUIRE(band.shear_mode == "localised");
+  REQUIRE(band.shear_mode == "localised at the wall");
+  CHECK(band.far_field_speed == Approx(0.0).margin(0.01));
   CHECK(band.band_thickness_erf_d50.value() == Approx(3.62).epsilon(0.05));
   CHECK(band.band_thickness_d50.value() == Approx(3.62).margin(0.6));  // bin resolution 0.5 d50
   CHECK(band.wall_slip == Approx(1.0 - 0.5 * std::erfc(-3.5 / 2.0)).margin(0.02));
@@ -52,4 +53,16 @@ TEST_CASE("a localised profile gives its band; a linear one is distributed shear
   const auto linear = dem::summarize(scene(), series(0.8, 0.6, 0), profile([](double z) { return 1.0 - z / 20.0; }, 20.0));
   CHECK(linear.shear_mode == "distributed shear");
   CHECK_FALSE(linear.band_thickness_d50.has_value());
+}
+
+TEST_CASE("shear split between the wall and the plate: no 0.9 -> 0.1 band, a wall band to the plateau", "[dem]") {
+  // half the velocity drop next to the wall (width 1 d50 at z = 2), half next to the plate (z = 18)
+  const auto split = dem::summarize(scene(), series(0.8, 0.6, 0), profile([](double z) {
+    return 0.5 + 0.5 * 0.5 * std::erfc((z - 2.0) / 1.0) - 0.5 * 0.5 * std::erfc((18.0 - z) / 1.0);
+  }, 20.0));
+  CHECK(split.shear_mode == "split between wall and plate");
+  CHECK(split.far_field_speed == Approx(0.5).margin(0.02));
+  CHECK_FALSE(split.band_thickness_d50.has_value());  // the far field moves: undefined
+  REQUIRE(split.wall_band_d50.has_value());
+  CHECK(split.wall_band_d50.value() == Approx(2.0 + 0.906).margin(0.5));
 }

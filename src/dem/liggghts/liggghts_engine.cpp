@@ -2,6 +2,7 @@
 #include "dem/liggghts/liggghts_numerics.hpp"
 #include "dem/liggghts/liggghts_outputs.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fmt/core.h>
@@ -110,6 +111,7 @@ struct Follower {
   std::string done_marker;
   bool done = false;
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  double loop_seconds = 0.0, particle_steps = 0.0;
 
   bool line(const std::string& l) {
     log << l << '\n';
@@ -118,6 +120,11 @@ struct Follower {
     if (l.rfind("ERROR", 0) == 0 || l.find("ERROR on proc") != std::string::npos) {
       result.failure = "engine error: " + l;
       return true;  // the engine aborts by itself; keep reading its last words
+    }
+    if (w.size() >= 11 && w[0] == "Loop" && w[1] == "time" && w[9] == "with") {
+      // "Loop time of T on P procs for S steps with A atoms": the engine's own cost
+      loop_seconds += std::stod(w[3]);
+      particle_steps += std::stod(w[8]) * std::stod(w[10]);
     }
     if (w[0] == "IWB_FAIL") {
       result.failure = l.substr(9);
@@ -186,6 +193,7 @@ nlohmann::json LiggghtsEngine::numerics(const Scene& s) const {
 
 StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageContext& ctx,
                                       const nlohmann::json& facts) {
+  const auto t0 = std::chrono::steady_clock::now();
   const Scene& s = ctx.scene;
   const Numerics n = derive(s);
   const double max_edge = s.particles.d50_m;
@@ -198,10 +206,14 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
                        render_template(liggghts_templates().at(input),
                                        values_of(s, n, facts.value("/consolidate/zplate_m"_json_pointer, n.plate_z)),
                                        input));
+  const double generation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   Follower f{ctx, std::ofstream(ctx.work_dir / (stage + ".out")), {}, stage};
   const ProcessResult p = run_process(command(input, ctx.processes), ctx.work_dir,
                                       [&f](const std::string& l) { return f.line(l); }, ctx.interrupt);
   StageResult r = f.result;
+  r.facts["generation_seconds"] = generation;
+  r.facts["engine_loop_seconds"] = f.loop_seconds;
+  r.facts["particle_steps"] = f.particle_steps;
   if (p.stopped && r.failure.empty()) {
     r.interrupted = true;
   } else if (r.failure.empty() && (p.exit_code != 0 || !f.done)) {

@@ -9,7 +9,7 @@ namespace {
 
 constexpr double kRayleighFraction = 0.15;  // dt = 15 % of the Rayleigh time of the smallest grain
 constexpr double kSkinD50 = 0.3;
-constexpr double kLooseSolidFraction = 0.35;  // insert/pack fills a region this loosely
+constexpr double kLooseSolidFraction = 0.30;  // insert/pack fills a region reliably this loosely
 constexpr int kProfileEvery = 10;             // ave/spatial samples every 10 steps
 
 }  // namespace
@@ -27,7 +27,9 @@ Numerics derive(const Scene& s) {
   const double dmax = s.particles.d_max();
   n.wall_top = s.wall.height_m;
   n.ins_zlo = n.wall_top + 0.1 * dmax;
-  n.ins_zhi = n.ins_zlo + s.height_m * s.solid_fraction_estimate / kLooseSolidFraction;
+  // The insertion region holds the requested grains at a loose packing; the servo compacts them.
+  n.ins_zhi = n.ins_zlo + s.particle_count * s.particles.mean_particle_volume_m3() /
+                              (s.area_m2() * kLooseSolidFraction);
   n.plate_z = n.ins_zhi + s.plate.height_m + 0.1 * dmax;
   n.zlo = -dmax;
   n.zhi = n.plate_z + 2.0 * dmax;

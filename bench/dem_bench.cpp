@@ -1,0 +1,54 @@
+#include "bench/dem_bench.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+#include "dem/liggghts/liggghts_engine.hpp"
+#include "dem/run.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::bench {
+
+nlohmann::json run_dem_bench(const DemBenchOptions& opt) {
+  if (opt.engine != "liggghts") throw InputError(fmt::format("--engine {}: available engines: liggghts", opt.engine));
+  const std::string text = io::read_file(opt.scene);
+  const auto scene = dem::parse_scene(text, opt.scene);
+  fmt::print("iwb bench dem: {} in {} ({} particles requested), one full run per rank count\n\n",
+             opt.scene, opt.engine, scene.particle_count);
+  fmt::print("{:>5} {:>10} {:>14} {:>12} {:>16} {:>10} {:>12} {:>10}\n", "ranks", "particles",
+             "particle-steps", "engine loop s", "particle-steps/s", "total s", "workbench s", "share");
+  nlohmann::json out = nlohmann::json::array();
+  const auto tmp = std::filesystem::temp_directory_path() / fmt::format("iwb-bench-dem-{}", ::getpid());
+  for (int np : opt.ranks) {
+    dem::LiggghtsEngine engine;
+    const auto dir = tmp / fmt::format("np{}", np);
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto outcome = dem::run_scene(scene, text, engine, {dir, np, false, true, "bench", nullptr, nullptr});
+    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!outcome.complete()) throw std::runtime_error(fmt::format("bench run failed: {}", outcome.status));
+    double loop = 0, steps = 0, process = 0, generation = 0;
+    for (const auto& [name, stage] : outcome.manifest["stages"].items()) {
+      loop += stage["facts"].value("engine_loop_seconds", 0.0);
+      steps += stage["facts"].value("particle_steps", 0.0);
+      generation += stage["facts"].value("generation_seconds", 0.0);
+      process += stage.value("wall_seconds", 0.0) - stage["facts"].value("generation_seconds", 0.0);
+    }
+    // The workbench's own time: generating inputs, and everything outside the engine process
+    // (following its output is done while it runs and costs no wall time of its own).
+    const double workbench = total - process;
+    fmt::print("{:>5} {:>10} {:>14.4g} {:>12.2f} {:>16.3g} {:>10.2f} {:>12.3f} {:>9.2f}%\n", np,
+               outcome.manifest.value("particle_count", 0), steps, loop, steps / loop, total, workbench,
+               100.0 * workbench / total);
+    out.push_back({{"ranks", np}, {"particle_steps", steps}, {"engine_loop_seconds", loop},
+                   {"particle_steps_per_second", steps / loop}, {"total_seconds", total},
+                   {"workbench_seconds", workbench}, {"generation_seconds", generation}});
+  }
+  std::filesystem::remove_all(tmp);
+  fmt::print("\nengine loop: LIGGGHTS' own 'Loop time' lines; total: the whole `iwb dem run`; workbench: total\n"
+             "minus the engine processes (input generation, output parsing, contract assembly, summary)\n");
+  return out;
+}
+
+}  // namespace iwb::bench
