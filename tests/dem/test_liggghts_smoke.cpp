@@ -60,6 +60,13 @@ void common_facts(const SmokeRun& r) {
   CHECK(manifest["status"] == "complete");
   CHECK(manifest["conventions"]["units"].get<std::string>().find("kPa, mm") != std::string::npos);
   CHECK(manifest["stages"]["consolidate"]["status"] == "done");
+  // the engine's own cost, read from its "Loop time" lines: every step moved every particle
+  for (const char* stage : {"consolidate", "shear"}) {
+    const auto& f = manifest["stages"][stage]["facts"];
+    CHECK(f["engine_loop_seconds"].get<double>() > 0.0);
+    CHECK(std::fmod(f["particle_steps"].get<double>(), double(r.scene.particle_count)) == 0.0);
+    CHECK(f["particle_steps"].get<double>() >= 1000.0 * r.scene.particle_count);
+  }
   const auto summary = nlohmann::json::parse(io::read_file(r.dir / "summary.json"));
   CHECK(summary["peak_friction"].get<double>() > 0.2);  // a rough wall under 50 kPa shears sand
   // the particle count is the requested one and stays constant

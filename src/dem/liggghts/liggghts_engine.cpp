@@ -121,10 +121,10 @@ struct Follower {
       result.failure = "engine error: " + l;
       return true;  // the engine aborts by itself; keep reading its last words
     }
-    if (w.size() >= 11 && w[0] == "Loop" && w[1] == "time" && w[9] == "with") {
-      // "Loop time of T on P procs for S steps with A atoms": the engine's own cost
+    if (w.size() >= 12 && w[0] == "Loop" && w[1] == "time" && w[10] == "with") {
+      // "Loop time of T on P procs for S steps with A atoms, ...": the engine's own cost
       loop_seconds += std::stod(w[3]);
-      particle_steps += std::stod(w[8]) * std::stod(w[10]);
+      particle_steps += std::stod(w[8]) * std::stod(w[11]);
     }
     if (w[0] == "IWB_FAIL") {
       result.failure = l.substr(9);
