@@ -166,6 +166,12 @@ std::string RoughnessProfile::describe() const {
   return fmt::format("{} pitch {:g} mm, R_max {:g} mm", to_string(kind), pitch_m / kMm, height_m / kMm);
 }
 
+double Shear::displacement_at(double t) const {
+  if (!cyclic()) return velocity_m_s * t;
+  const double phase = velocity_m_s * t / amplitude_m;  // in quarter cycles
+  return amplitude_m * (std::abs(std::fmod(phase + 3.0, 4.0) - 2.0) - 1.0);
+}
+
 double Scene::stiffness_level() const {
   const auto& p = particles;
   return std::pow(p.youngs_modulus_Pa / ((1.0 - p.poisson * p.poisson) * boundary.sigma_n_Pa), 2.0 / 3.0);
@@ -214,7 +220,12 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   bc.finish();
 
   auto sh = top.required_table("shear");
-  s.shear.displacement_m = sh.positive("displacement_mm") * kMm;
+  if (sh.one_of({"displacement_mm", "amplitude_mm"}) == "displacement_mm") {
+    s.shear.displacement_m = sh.positive("displacement_mm") * kMm;
+  } else {
+    s.shear.amplitude_m = sh.positive("amplitude_mm") * kMm;
+    s.shear.cycles = sh.count("cycles");
+  }
   const double rho = s.particles.density_kg_m3;
   const double sqrt_rho_over_sigma = std::sqrt(rho / s.boundary.sigma_n_Pa);
   if (sh.one_of({"velocity_mm_s", "inertial_number"}) == "velocity_mm_s") {
@@ -275,7 +286,8 @@ Scene parse_scene(const std::string& text, const std::string& source) {
       {"boundary", {{"type", driver::to_string(s.boundary.kind)}, {"sigma_n_kPa", s.boundary.sigma_n_Pa / 1e3},
                     {"K_kPa_per_mm", s.boundary.K_Pa_per_m * kMm / 1e3}}},
       {"shear", {{"velocity_mm_s", s.shear.velocity_m_s / kMm}, {"displacement_mm", s.shear.displacement_m / kMm},
-                 {"inertial_number", s.shear.inertial_number}}},
+                 {"amplitude_mm", s.shear.amplitude_m / kMm}, {"cycles", s.shear.cycles},
+                 {"travel_mm", s.shear.travel_m() / kMm}, {"inertial_number", s.shear.inertial_number}}},
       {"stiffness_level", s.stiffness_level()},
       {"seed", s.seed}};
   return s;

@@ -55,7 +55,14 @@ struct Boundary {
 struct Shear {
   double velocity_m_s = 0.0;  // wall velocity (given, or from the inertial number)
   double inertial_number = 0.0;  // target I = gamma_dot d50 sqrt(rho/sigma_n), gamma_dot ~ v/H
-  double displacement_m = 0.0;
+  double displacement_m = 0.0;   // monotonic: total displacement
+  double amplitude_m = 0.0;      // cyclic: 0 -> +A -> -A -> 0, `cycles` times
+  int cycles = 0;
+
+  bool cyclic() const { return cycles > 0; }
+  double travel_m() const { return cyclic() ? 4.0 * amplitude_m * cycles : displacement_m; }
+  // The wall's displacement t seconds after shear starts (a triangle wave when cyclic).
+  double displacement_at(double t) const;
 };
 
 struct Consolidation {

@@ -143,15 +143,29 @@ Summary summarize(const Scene& scene, const io::CsvTable& ts, const io::CsvTable
   const auto ux = ts.values("u_x_mm"), un = ts.values("u_n_mm");
   const auto sigma = ts.values("sigma_n_kPa"), tau = ts.values("tau_kPa");
   if (ux.empty()) return s;
-  std::vector<double> friction(ux.size());
-  for (std::size_t i = 0; i < ux.size(); ++i) friction[i] = tau[i] / sigma[i];
+  // |tau|/sigma_n along the travelled distance, so that reversals (cyclic shear) count alike
+  std::vector<double> friction(ux.size()), travel(ux.size(), 0.0);
+  for (std::size_t i = 0; i < ux.size(); ++i) {
+    friction[i] = std::abs(tau[i]) / sigma[i];
+    if (i > 0) travel[i] = travel[i - 1] + std::abs(ux[i] - ux[i - 1]);
+  }
   const auto peak = std::max_element(friction.begin(), friction.end());
   s.peak_friction = *peak;
   s.u_x_at_peak_mm = ux[std::size_t(peak - friction.begin())];
-  const double u_end = ux.back(), u_from = (1.0 - kLastFraction) * u_end;
+  const double u_end = travel.back(), u_from = (1.0 - kLastFraction) * u_end;
   std::vector<double> xs, fs, ns;
   for (std::size_t i = 0; i < ux.size(); ++i)
-    if (ux[i] >= u_from) xs.push_back(ux[i]), fs.push_back(friction[i]), ns.push_back(un[i]);
+    if (travel[i] >= u_from) xs.push_back(travel[i]), fs.push_back(friction[i]), ns.push_back(un[i]);
+  if (scene.shear.cyclic()) {
+    const double per_cycle = 4.0 * scene.shear.amplitude_m * 1e3;
+    for (int c = 1; c <= scene.shear.cycles; ++c) {
+      Summary::Cycle cyc{c, 0.0, 0.0};
+      for (std::size_t i = 0; i < ux.size(); ++i)
+        if (travel[i] > (c - 1) * per_cycle && travel[i] <= c * per_cycle + 1e-9)
+          cyc.peak_friction = std::max(cyc.peak_friction, friction[i]), cyc.u_n_end_mm = un[i];
+      s.cycles.push_back(cyc);
+    }
+  }
   s.residual_friction = std::accumulate(fs.begin(), fs.end(), 0.0) / double(fs.size());
   const Fit f = linear_fit(xs, fs);
   s.residual_drift = f.slope * (u_end - u_from);
@@ -185,6 +199,12 @@ nlohmann::json to_json(const Summary& s) {
           {"band_thickness_erfc_fit_d50", opt(s.band_thickness_erf_d50)},
           {"wall_slip", s.wall_slip},
           {"e_band", opt(s.e_band)},
+          {"cycles", [&s] {
+             nlohmann::json c = nlohmann::json::array();
+             for (const auto& x : s.cycles)
+               c.push_back({{"cycle", x.number}, {"peak_friction", x.peak_friction}, {"u_n_end_mm", x.u_n_end_mm}});
+             return c;
+           }()},
           {"definitions", {{"friction", "tau/sigma_n, both on the tested wall"},
                            {"residual", "mean of the last fifth of u_x; 'not steady' if it drifts by more than 0.02"},
                            {"far_field_speed", "median vx over the middle third of the specimen, relative to the first grain layer"},

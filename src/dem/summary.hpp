@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "dem/scene.hpp"
 #include "io/csv_table.hpp"
@@ -32,6 +33,13 @@ struct Summary {
   std::optional<double> band_thickness_erf_d50;  // erfc fit of the wall band
   double wall_slip = 0.0;             // 1 - v(first layer)/v(wall)
   std::optional<double> e_band;       // void ratio in the band (or the lowest 10 d50)
+
+  struct Cycle {
+    int number;
+    double peak_friction;  // max |tau|/sigma_n within the cycle
+    double u_n_end_mm;     // accumulated u_n at the cycle's end
+  };
+  std::vector<Cycle> cycles;  // cyclic shear only
 };
 
 inline constexpr double kSteadyDrift = 0.02;  // friction change over the last fifth (DEM.md)

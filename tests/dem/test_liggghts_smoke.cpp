@@ -72,10 +72,15 @@ void common_facts(const SmokeRun& r) {
   // the particle count is the requested one and stays constant
   for (double n : column(r, "particles")) CHECK(n == r.scene.particle_count);
   CHECK(manifest["particle_count"] == r.scene.particle_count);
-  // the shear displacement reaches the requested one and u_x is v t (units: mm and s)
+  // u_x is the wall's displacement at t (v t, or the triangle wave of cycles; units mm and s),
+  // and the wall travels the requested distance
   const auto t = column(r, "t_s"), ux = column(r, "u_x_mm");
-  for (std::size_t i = 0; i < t.size(); ++i) CHECK(ux[i] == Approx(r.scene.shear.velocity_m_s * t[i] * 1e3).epsilon(1e-9));
-  CHECK(ux.back() == Approx(r.scene.shear.displacement_m * 1e3).margin(0.03));
+  double travel = 0.0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    CHECK(ux[i] == Approx(r.scene.shear.displacement_at(t[i]) * 1e3).epsilon(1e-6).margin(1e-6));  // printed to ~10 digits
+    if (i > 0) travel += std::abs(ux[i] - ux[i - 1]);
+  }
+  CHECK(travel == Approx(r.scene.shear.travel_m() * 1e3).margin(0.03));
   // and the wall really moved by v t: its first mesh node, read from the VTK snapshots
   const std::regex entry(R"re(timestep="([0-9.eE+-]+)" file="(walls_[0-9]+\.vtk)")re");
   const std::string pvd = io::read_file(r.dir / "vtk" / "walls.pvd");
@@ -86,7 +91,7 @@ void common_facts(const SmokeRun& r) {
     while (std::getline(vtk, line) && line.rfind("POINTS", 0) != 0) {}
     double x = NAN;
     vtk >> x;  // the STL's first vertex starts at x = 0
-    const double moved = r.scene.shear.velocity_m_s * std::stod((*it)[1]);
+    const double moved = r.scene.shear.displacement_at(std::stod((*it)[1]));
     // distance on the periodic length: the mesh wraps, and VTK stores float32 coordinates
     const double d = std::fmod(x - moved + 10 * r.scene.length_m, r.scene.length_m);
     CHECK(std::min(d, r.scene.length_m - d) < 1e-6 * r.scene.length_m);
@@ -118,6 +123,28 @@ TEST_CASE("LIGGGHTS smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][
               << slope(un, column(r, "sigma_plate_kPa")));
   CHECK(slope(un, column(r, "sigma_n_kPa")) == Approx(K).epsilon(0.10));
   CHECK(slope(un, column(r, "sigma_plate_kPa")) == Approx(K).epsilon(0.10));
+}
+
+TEST_CASE("LIGGGHTS smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][liggghts]") {
+  const auto r = run("smoke_cyclic");
+  common_facts(r);
+  const double A = r.scene.shear.amplitude_m * 1e3;
+  const auto ux = column(r, "u_x_mm"), tau = column(r, "tau_kPa");
+  double lo = 0, hi = 0;
+  for (double u : ux) lo = std::min(lo, u), hi = std::max(hi, u);
+  CHECK(hi <= A * (1 + 1e-6));
+  CHECK(hi > 0.9 * A);
+  CHECK(lo >= -A * (1 + 1e-6));
+  CHECK(lo < -0.9 * A);
+  // tau has the sign of the wall's motion once the reversal has been taken up
+  int agree = 0, moving = 0;
+  for (std::size_t i = 1; i < ux.size(); ++i) {
+    const double du = ux[i] - ux[i - 1];
+    if (std::abs(ux[i]) > 0.5 * A) ++moving, agree += (du > 0) == (tau[i] > 0);
+  }
+  CHECK(agree > 0.9 * moving);
+  const auto summary = nlohmann::json::parse(io::read_file(r.dir / "summary.json"));
+  CHECK(summary["cycles"].size() == std::size_t(r.scene.shear.cycles));
 }
 
 TEST_CASE("LIGGGHTS smoke CV: the plate does not move and sigma_n is free", "[dem][liggghts]") {

@@ -37,6 +37,21 @@ TEST_CASE("the smoke scene resolves R_n, particle sizes and the inertial number"
   CHECK(s.warnings.size() == 1);  // 8 d50 is too low for a band
 }
 
+TEST_CASE("cyclic shear: a triangle wave 0 -> +A -> -A -> 0 and its travel", "[dem]") {
+  const auto s = dem::parse_scene(io::read_file("data/scenes/smoke_cyclic.toml"), "smoke_cyclic.toml");
+  const auto& sh = s.shear;
+  REQUIRE(sh.cyclic());
+  const double T = sh.amplitude_m / sh.velocity_m_s;  // a quarter cycle
+  CHECK(sh.displacement_at(0.0) == Approx(0.0).margin(1e-15));
+  CHECK(sh.displacement_at(T) == Approx(sh.amplitude_m));
+  CHECK(sh.displacement_at(2 * T) == Approx(0.0).margin(1e-12));
+  CHECK(sh.displacement_at(3 * T) == Approx(-sh.amplitude_m));
+  CHECK(sh.displacement_at(4.5 * T) == Approx(0.5 * sh.amplitude_m));
+  CHECK(sh.travel_m() == Approx(4 * 0.5e-3 * 2));
+  CHECK_THAT(error_of(replaced(io::read_file("data/scenes/smoke_cyclic.toml"), "cycles = 2\n", "")),
+             Catch::Contains("key 'shear.cycles' is missing"));
+}
+
 TEST_CASE("R_n over a gauge length of d50 for sawtooth and sinusoid walls", "[dem]") {
   dem::RoughnessProfile saw{dem::ProfileKind::kSawtooth, 4e-3, 1e-3};
   CHECK(saw.normalized_roughness(2e-3) == Approx(0.5));   // the window spans a full rise

@@ -38,6 +38,21 @@ long prime_seed(int scene_seed, int stream) {
 
 std::string g(double x) { return fmt::format("{:.10g}", x); }
 
+// The wall's displacement ux (m) and its motion: monotonic at v, or cycles 0 -> +A -> -A -> 0 as a
+// triangle wave (the same function as Shear::displacement_at).
+std::string wall_displacement(const Shear& sh) {
+  if (!sh.cyclic()) return fmt::format("variable ux equal {}*v_t", g(sh.velocity_m_s));
+  return fmt::format("variable phase equal v_t*{}/{}\nvariable ux equal {}*(abs(((v_phase+3)%4)-2)-1)",
+                     g(sh.velocity_m_s), g(sh.amplitude_m), g(sh.amplitude_m));
+}
+
+std::string wall_motion(const Shear& sh) {
+  if (!sh.cyclic()) return fmt::format("fix mv all move/mesh mesh W linear {} 0 0", g(sh.velocity_m_s));
+  return fmt::format("variable vx equal {}*(1-2*(floor((v_phase+1)/2)%2))\nvariable zero equal 0\n"
+                     "fix mv all move/mesh mesh W linear/variable v_vx v_zero v_zero",
+                     g(sh.velocity_m_s));
+}
+
 TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidated) {
   const auto& p = s.particles;
   std::string templates;
@@ -73,8 +88,9 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
       {"cv_hold", s.boundary.kind == driver::BoundaryKind::kCV
                       ? "fix_modify P servo/integrate stop  # CV: the plate is held during shear"
                       : "# the servo keeps controlling the plate during shear"},
-      {"v_wall", g(s.shear.velocity_m_s)}, {"ts_every", std::to_string(n.ts_every)},
-      {"progress_every", std::to_string(n.progress_every)}, {"u_total", g(s.shear.displacement_m)},
+      {"v_wall", g(s.shear.velocity_m_s)},
+      {"wall_displacement", wall_displacement(s.shear)}, {"wall_motion", wall_motion(s.shear)}, {"ts_every", std::to_string(n.ts_every)},
+      {"progress_every", std::to_string(n.progress_every)}, {"u_total", g(s.shear.travel_m())},
       {"profile_repeat", std::to_string(n.profile_repeat)}, {"profile_every", std::to_string(n.profile_every)},
       {"bin_dz", g(s.outputs.profile_bin_d50 * n.d50)}, {"vtk_every", std::to_string(n.vtk_every)},
       {"shear_steps", std::to_string(n.shear_steps)}, {"vtk_dir", "../vtk"},

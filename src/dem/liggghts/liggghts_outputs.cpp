@@ -96,7 +96,7 @@ io::CsvTable profiles(const StageContext& ctx, const Numerics& n, long step0) {
                             -density * v[5], -density * v[6]});
   }
   for (const auto& [st, bins] : blocks) {
-    const double u = s.shear.velocity_m_s * double(st - step0) * n.dt * 1e3;
+    const double u = s.shear.displacement_at(double(st - step0) * n.dt) * 1e3;
     for (const auto& b : smoothed(bins, 1.0))
       if (b.count > 0 && b.z >= 0.0)
         t.rows.push_back({u, b.z, b.vx / s.shear.velocity_m_s, 1.0 - b.solid, b.szz / 1e3, b.sxz / 1e3});
