@@ -143,12 +143,14 @@ TEST_CASE("LIGGGHTS smoke cyclic: the wall reverses at +-A and tau follows it", 
   CHECK(hi > 0.9 * A);
   CHECK(lo >= -A * (1 + 1e-6));
   CHECK(lo < -0.9 * A);
-  // tau has the sign of the wall's motion once the reversal has been taken up
+  // tau has the sign of the wall's motion on the outward strokes beyond A/2; right after a
+  // reversal the grains first unload (tau changes sign only ~0.25 mm later on this scene)
   int agree = 0, moving = 0;
   for (std::size_t i = 1; i < ux.size(); ++i) {
     const double du = ux[i] - ux[i - 1];
-    if (std::abs(ux[i]) > 0.5 * A) ++moving, agree += (du > 0) == (tau[i] > 0);
+    if (std::abs(ux[i]) > 0.5 * A && du * ux[i] > 0) ++moving, agree += (du > 0) == (tau[i] > 0);
   }
+  REQUIRE(moving > 10);
   CHECK(agree > 0.9 * moving);
   const auto summary = nlohmann::json::parse(io::read_file(r.dir / "summary.json"));
   CHECK(summary["cycles"].size() == std::size_t(r.scene.shear.cycles));
