@@ -93,10 +93,11 @@ RoughnessProfile read_profile(io::TableReader t, double d50) {
     r.pitch_m = t.positive("pitch_d50") * d50;
     r.height_m = t.positive("height_d50") * d50;
   } else if (kind == "glued") {
-    throw InputError(fmt::format("{} = \"glued\": glued-sphere walls are not available in this "
-                                 "version; use flat, sawtooth or sinusoid", t.where("profile")));
+    r.kind = ProfileKind::kGlued;
+    r.height_m = t.positive("sphere_d50") * d50;
+    r.pitch_m = t.positive("spacing_d50") * d50;
   } else {
-    throw InputError(fmt::format("{} = \"{}\"; allowed \"flat\", \"sawtooth\", \"sinusoid\"",
+    throw InputError(fmt::format("{} = \"{}\"; allowed \"flat\", \"sawtooth\", \"sinusoid\", \"glued\"",
                                  t.where("profile"), kind));
   }
   t.finish();
@@ -112,13 +113,22 @@ void check_geometry(Scene& s, const std::string& file) {
   require(s.width_m >= kMinWidthInDmax * dmax - 1e-12,
           fmt::format("{}: key 'specimen.width_d50' = {:g} gives {:g} mm, narrower than {:g} d_max",
                       file, s.width_m / s.particles.d50_m, s.width_m / kMm, kMinWidthInDmax));
+  require(s.plate.kind != ProfileKind::kGlued,
+          fmt::format("{}: key 'plate.profile' = \"glued\": the servo plate is a mesh and cannot carry "
+                      "glued spheres; use a sawtooth", file));
   for (const auto& [name, prof] : {std::pair{"wall", &s.wall}, std::pair{"plate", &s.plate}}) {
     if (prof->kind == ProfileKind::kFlat) continue;
-    const double n = s.length_m / prof->pitch_m;
-    require(std::abs(n - std::round(n)) < 1e-9 * n,
-            fmt::format("{}: key '{}.pitch_d50' = {:g} does not divide the box length {:g} d50 "
-                        "(a periodic wall needs a whole number of pitches; {:.4g} here)",
-                        file, name, prof->pitch_m / s.particles.d50_m, s.length_m / s.particles.d50_m, n));
+    const std::string key = prof->kind == ProfileKind::kGlued ? "spacing_d50" : "pitch_d50";
+    // glued spheres sit on a square grid: the spacing must divide the width too
+    std::vector<std::pair<const char*, double>> sides = {{"length", s.length_m}};
+    if (prof->kind == ProfileKind::kGlued) sides.push_back({"width", s.width_m});
+    for (const auto& [side, size] : sides) {
+      const double n = size / prof->pitch_m;
+      require(std::abs(n - std::round(n)) < 1e-9 * n,
+              fmt::format("{}: key '{}.{}' = {:g} does not divide the box {} {:g} d50 "
+                          "(a periodic wall needs a whole number of periods; {:.4g} here)",
+                          file, name, key, prof->pitch_m / s.particles.d50_m, side, size / s.particles.d50_m, n));
+    }
   }
   if (s.height_m < kRecommendedHeightInD50 * s.particles.d50_m)
     s.warnings.push_back(fmt::format("{}: specimen height {:g} d50 is below {:g} d50; no shear band can "
@@ -151,18 +161,65 @@ double Particles::mean_particle_volume_m3() const {
   return volume / number;
 }
 
+double RoughnessProfile::surface_at(double x) const {
+  if (kind == ProfileKind::kFlat) return 0.0;
+  const double u = x - pitch_m * std::floor(x / pitch_m);  // position within one period
+  switch (kind) {
+    case ProfileKind::kSawtooth:
+      return height_m * (u < 0.5 * pitch_m ? u : pitch_m - u) / (0.5 * pitch_m);
+    case ProfileKind::kSinusoid:
+      return 0.5 * height_m * (1.0 - std::cos(2.0 * M_PI * u / pitch_m));
+    case ProfileKind::kGlued: {  // spheres centred at pitch/2 (+- pitch for overlapping ones)
+      const double r = 0.5 * height_m;
+      double z = 0.0;
+      for (double c : {-0.5 * pitch_m, 0.5 * pitch_m, 1.5 * pitch_m}) {
+        const double dx = u - c;
+        if (std::abs(dx) <= r) z = std::max(z, r + std::sqrt(r * r - dx * dx));
+      }
+      return z;
+    }
+    case ProfileKind::kFlat:
+      break;
+  }
+  return 0.0;
+}
+
 double RoughnessProfile::normalized_roughness(double d50) const {
   if (kind == ProfileKind::kFlat) return 0.0;
+  if (kind == ProfileKind::kGlued) {
+    // R_max over a sliding gauge window of length d50 on the sampled profile (Uesugi & Kishida)
+    constexpr int kSamples = 4000;
+    const double dx = pitch_m / kSamples;
+    const int window = std::max(1, int(std::lround(d50 / dx)));
+    double r_max = 0.0;
+    for (int i = 0; i < kSamples; ++i) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (int j = 0; j <= window; ++j) {
+        const double z = surface_at((i + j) * dx);
+        lo = std::min(lo, z), hi = std::max(hi, z);
+      }
+      r_max = std::max(r_max, hi - lo);
+    }
+    return r_max / d50;
+  }
   const double half = 0.5 * pitch_m;  // a rise from valley to peak spans half a pitch
   if (d50 >= half) return height_m / d50;
   if (kind == ProfileKind::kSawtooth) return height_m * (d50 / half) / d50;
   return height_m * std::sin(M_PI * d50 / pitch_m) / d50;  // sinusoid: steepest window
 }
 
-double RoughnessProfile::mean_height_m() const { return 0.5 * height_m; }
+double RoughnessProfile::mean_height_m() const {
+  if (kind != ProfileKind::kGlued) return 0.5 * height_m;
+  constexpr int kSamples = 2000;
+  double sum = 0.0;
+  for (int i = 0; i < kSamples; ++i) sum += surface_at((i + 0.5) * pitch_m / kSamples);
+  return sum / kSamples;
+}
 
 std::string RoughnessProfile::describe() const {
   if (kind == ProfileKind::kFlat) return "flat";
+  if (kind == ProfileKind::kGlued)
+    return fmt::format("glued spheres of {:g} mm at {:g} mm spacing", height_m / kMm, pitch_m / kMm);
   return fmt::format("{} pitch {:g} mm, R_max {:g} mm", to_string(kind), pitch_m / kMm, height_m / kMm);
 }
 
@@ -182,6 +239,7 @@ const char* to_string(ProfileKind k) {
     case ProfileKind::kFlat: return "flat";
     case ProfileKind::kSawtooth: return "sawtooth";
     case ProfileKind::kSinusoid: return "sinusoid";
+    case ProfileKind::kGlued: return "glued";
   }
   return "?";
 }

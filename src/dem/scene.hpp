@@ -31,13 +31,17 @@ struct Particles {
   double mean_particle_volume_m3() const;  // number-weighted, from the mass fractions
 };
 
-enum class ProfileKind { kFlat, kSawtooth, kSinusoid };
+enum class ProfileKind { kFlat, kSawtooth, kSinusoid, kGlued };
 
-// A wall's surface profile along x (ridges along y): R_max = height, period = pitch.
+// A wall's surface profile along x (ridges along y): R_max = height, period = pitch. A glued wall
+// is a square layer of spheres of diameter `height_m` at centre spacing `pitch_m` on a flat base.
 struct RoughnessProfile {
   ProfileKind kind = ProfileKind::kFlat;
   double pitch_m = 0.0;
   double height_m = 0.0;
+
+  // Height of the surface above the base plane at x (for glued walls: along a row of centres).
+  double surface_at(double x) const;
 
   // Normalized roughness R_n = R_max(L = d50) / d50 (Uesugi & Kishida 1986): the largest
   // peak-to-valley height within any gauge window of length d50, over d50.

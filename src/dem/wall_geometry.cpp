@@ -23,6 +23,7 @@ std::vector<std::pair<double, double>> one_pitch(const RoughnessProfile& p) {
       return pts;
     }
     case ProfileKind::kFlat:
+    case ProfileKind::kGlued:  // the mesh is the flat base; the spheres are engine particles
       return {{0.0, 0.0}};
   }
   return {};
@@ -34,10 +35,11 @@ std::vector<Triangle> profile_surface(const RoughnessProfile& profile, double le
                                       double z_base, bool facing_down, double max_edge) {
   // x breakpoints over the whole length
   std::vector<std::pair<double, double>> xs;
-  // A flat wall is cut into equal strips no longer than max_edge; profiles repeat their pitch,
-  // which divides the length (checked when the scene is read).
-  const int pitches = profile.kind == ProfileKind::kFlat ? std::max(1, int(std::ceil(length / max_edge)))
-                                                         : int(std::lround(length / profile.pitch_m));
+  // A flat wall (and the base of a glued one) is cut into equal strips no longer than max_edge;
+  // profiles repeat their pitch, which divides the length (checked when the scene is read).
+  const bool flat_mesh = profile.kind == ProfileKind::kFlat || profile.kind == ProfileKind::kGlued;
+  const int pitches = flat_mesh ? std::max(1, int(std::ceil(length / max_edge)))
+                                : int(std::lround(length / profile.pitch_m));
   const double pitch = length / pitches;
   for (int k = 0; k < pitches; ++k)
     for (const auto& [x, h] : one_pitch(profile)) xs.push_back({k * pitch + x, h});

@@ -60,12 +60,16 @@ void common_facts(const SmokeRun& r) {
   CHECK(manifest["status"] == "complete");
   CHECK(manifest["conventions"]["units"].get<std::string>().find("kPa, mm") != std::string::npos);
   CHECK(manifest["stages"]["consolidate"]["status"] == "done");
-  // the engine's own cost, read from its "Loop time" lines: every step moved every particle
+  // the engine's own cost, read from its "Loop time" lines: every step moved every atom (grains
+  // and, for a glued wall, its spheres)
+  double atoms = r.scene.particle_count;
+  if (r.scene.wall.kind == dem::ProfileKind::kGlued)
+    atoms += std::round(r.scene.length_m / r.scene.wall.pitch_m) * std::round(r.scene.width_m / r.scene.wall.pitch_m);
   for (const char* stage : {"consolidate", "shear"}) {
     const auto& f = manifest["stages"][stage]["facts"];
     CHECK(f["engine_loop_seconds"].get<double>() > 0.0);
-    CHECK(std::fmod(f["particle_steps"].get<double>(), double(r.scene.particle_count)) == 0.0);
-    CHECK(f["particle_steps"].get<double>() >= 1000.0 * r.scene.particle_count);
+    CHECK(std::fmod(f["particle_steps"].get<double>(), atoms) == 0.0);
+    CHECK(f["particle_steps"].get<double>() >= 1000.0 * atoms);
   }
   const auto summary = nlohmann::json::parse(io::read_file(r.dir / "summary.json"));
   CHECK(summary["peak_friction"].get<double>() > 0.2);  // a rough wall under 50 kPa shears sand
@@ -154,6 +158,22 @@ TEST_CASE("LIGGGHTS smoke cyclic: the wall reverses at +-A and tau follows it", 
   CHECK(agree > 0.9 * moving);
   const auto summary = nlohmann::json::parse(io::read_file(r.dir / "summary.json"));
   CHECK(summary["cycles"].size() == std::size_t(r.scene.shear.cycles));
+}
+
+TEST_CASE("LIGGGHTS smoke glued: the glued layer carries the wall's load and drags the grains", "[dem][liggghts]") {
+  const auto r = run("smoke_glued");
+  common_facts(r);
+  // sigma_n on the wall is the base mesh plus the glued spheres: without the spheres' share it
+  // would be a fraction of the target
+  double mean = 0;
+  for (double s : column(r, "sigma_n_kPa")) mean += s;
+  mean /= double(r.ts.rows.size());
+  CHECK(std::abs(mean / (r.scene.boundary.sigma_n_Pa / 1e3) - 1.0) < 0.05);
+  // the spheres move with the wall: the grains next to them follow it
+  const auto summary = nlohmann::json::parse(io::read_file(r.dir / "summary.json"));
+  CHECK(summary["wall_slip"].get<double>() < 0.2);
+  const auto manifest = nlohmann::json::parse(io::read_file(r.dir / "manifest.json"));
+  CHECK(manifest["R_n"].get<double>() == Approx(0.5).epsilon(1e-3));
 }
 
 TEST_CASE("LIGGGHTS smoke CV: the plate does not move and sigma_n is free", "[dem][liggghts]") {

@@ -61,6 +61,22 @@ TEST_CASE("R_n over a gauge length of d50 for sawtooth and sinusoid walls", "[de
   CHECK(dem::RoughnessProfile{}.normalized_roughness(2e-3) == 0.0);
 }
 
+TEST_CASE("glued walls: R_n from the sampled sphere profile, spacing checked in x and y", "[dem]") {
+  dem::RoughnessProfile touching{dem::ProfileKind::kGlued, 2e-3, 2e-3};
+  CHECK(touching.normalized_roughness(2e-3) == Approx(0.5).epsilon(1e-3));  // valleys at the equator
+  dem::RoughnessProfile sparse{dem::ProfileKind::kGlued, 4e-3, 2e-3};
+  CHECK(sparse.normalized_roughness(2e-3) == Approx(1.0).epsilon(1e-3));    // the flat base shows
+  CHECK(touching.mean_height_m() > 0.5 * 2e-3);
+  CHECK(touching.mean_height_m() < 2e-3);
+  const std::string glued = io::read_file("data/scenes/smoke_glued.toml");
+  CHECK(dem::parse_scene(glued, "g.toml").wall.normalized_roughness(2e-3) == Approx(0.5).epsilon(1e-3));
+  CHECK_THAT(error_of(replaced(glued, "spacing_d50 = 1.0", "spacing_d50 = 1.5")),
+             Catch::Contains("key 'wall.spacing_d50' = 1.5 does not divide the box width 4 d50"));
+  CHECK_THAT(error_of(replaced(smoke(), "[plate]\nprofile = \"sawtooth\"\npitch_d50 = 2\nheight_d50 = 1.0",
+                               "[plate]\nprofile = \"glued\"\nsphere_d50 = 1\nspacing_d50 = 1")),
+             Catch::Contains("key 'plate.profile' = \"glued\""));
+}
+
 TEST_CASE("broken scenes are refused with file, key and value", "[dem]") {
   CHECK_THAT(error_of(replaced(smoke(), "d50_mm = 2.0\n", "")),
              Catch::Contains("scene.toml: key 'particles.d50_mm' is missing"));

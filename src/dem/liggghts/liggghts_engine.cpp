@@ -53,6 +53,45 @@ std::string wall_motion(const Shear& sh) {
                      g(sh.velocity_m_s));
 }
 
+// Material properties for one grain type, or two when the wall has a glued layer (same material).
+std::string materials(const Particles& p, double friction, int types) {
+  auto repeat = [types](const std::string& v, int n) {
+    std::string out;
+    for (int i = 0; i < n; ++i) out += " " + v;
+    return out;
+  };
+  const int pairs = types * types;
+  return fmt::format(
+      "fix m1 all property/global youngsModulus peratomtype{}\n"
+      "fix m2 all property/global poissonsRatio peratomtype{}\n"
+      "fix m3 all property/global coefficientRestitution peratomtypepair {}{}\n"
+      "fix m4 all property/global coefficientFriction peratomtypepair {}{}\n"
+      "fix m5 all property/global coefficientRollingFriction peratomtypepair {}{}",
+      repeat(g(p.youngs_modulus_Pa), types), repeat(g(p.poisson), types), types,
+      repeat(g(p.restitution), pairs), types, repeat(g(friction), pairs), types,
+      repeat(g(p.rolling_friction), pairs));
+}
+
+bool glued(const Scene& s) { return s.wall.kind == ProfileKind::kGlued; }
+
+// The glued layer: spheres of type 2 on a square grid, resting on the flat base mesh.
+std::string glued_layer(const Scene& s) {
+  if (!glued(s)) return "# no glued layer: the wall is its mesh";
+  const double d = s.wall.height_m, a = s.wall.pitch_m;
+  std::string out;
+  for (int i = 0; i < int(std::lround(s.length_m / a)); ++i)
+    for (int j = 0; j < int(std::lround(s.width_m / a)); ++j)
+      out += fmt::format("create_atoms 2 single {} {} {} units box\n", g((i + 0.5) * a), g((j + 0.5) * a), g(0.5 * d));
+  return out + fmt::format("group glued type 2\nset group glued diameter {}\nset group glued density {}",
+                           g(d), g(s.particles.density_kg_m3));
+}
+
+// The glued spheres move with the wall's mesh: the same displacement, by `fix move`.
+std::string glued_motion(const Shear& sh) {
+  if (!sh.cyclic()) return fmt::format("fix mvg glued move linear {} 0 0", g(sh.velocity_m_s));
+  return "fix mvg glued move variable v_ux NULL NULL v_vx NULL NULL";
+}
+
 TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidated) {
   const auto& p = s.particles;
   std::string templates;
@@ -65,11 +104,18 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
     distribution += fmt::format(" pt{} {}", i, g(p.sizes[i].mass_fraction));
   }
   const double F0 = s.boundary.sigma_n_Pa * s.area_m2();
+  const int types = glued(s) ? 2 : 1;
   return {
+      {"atom_types", std::to_string(types)},
+      {"materials_consolidation", materials(p, s.consolidation.friction, types)},
+      {"materials_test", materials(p, p.friction, types)},
+      {"glued_layer", glued_layer(s)},
+      {"glued_motion", glued(s) ? glued_motion(s.shear) : "# no glued layer"},
+      {"glued_force", glued(s) ? "compute fglued glued reduce sum fx fz" : "# no glued layer"},
+      {"glued_fx", glued(s) ? "+c_fglued[1]" : ""},
+      {"glued_fz", glued(s) ? "+c_fglued[2]" : ""},
       {"Lx", g(s.length_m)}, {"Ly", g(s.width_m)}, {"zlo", g(n.zlo)}, {"zhi", g(n.zhi)},
-      {"skin", g(n.skin)}, {"E", g(p.youngs_modulus_Pa)}, {"nu", g(p.poisson)},
-      {"restitution", g(p.restitution)}, {"mu_consolidation", g(s.consolidation.friction)},
-      {"mu_rolling", g(p.rolling_friction)}, {"mu", g(p.friction)}, {"dt", g(n.dt)},
+      {"skin", g(n.skin)}, {"dt", g(n.dt)},
       {"plate_com", fmt::format("{} {} {}", g(0.5 * s.length_m), g(0.5 * s.width_m), g(n.plate_z))},
       {"F0", g(F0)}, {"servo_vmax", g(s.servo.vel_max_m_s)}, {"servo_kp", g(s.servo.kp)},
       {"particle_templates", templates + distribution},
