@@ -14,6 +14,7 @@
 #include "bench/dem_bench.hpp"
 #include "bench/element_bench.hpp"
 #include "common/errors.hpp"
+#include "comparison/compare.hpp"
 #include "io/element_run.hpp"
 #include "io/run_directory.hpp"
 #include "models/hypoplastic/parameters.hpp"
@@ -176,6 +177,21 @@ int main(int argc, char** argv) {
   std::string run_dir;
   dem_summary->add_option("run_dir", run_dir, "a run directory of `iwb dem run`")->required()->check(CLI::ExistingDirectory);
 
+  auto* compare = app.add_subcommand(
+      "compare",
+      "Replay a DEM run through a continuum model along the DEM's own path (measured u_x(t); CNL with "
+      "the measured sigma_n(t), CNS with the scene's K, CV) from the DEM's first state, in labelled "
+      "variants of kappa_r (eq. 5.35 from the wall's R_n) and d_s (5 d50, 10 d50, the measured wall "
+      "band); writes compare.json (metrics per variant) and compare.csv (curves).");
+  iwb::comparison::CompareOptions copt;
+  std::string dem_dir, compare_out;
+  compare->add_option("dem_run", dem_dir, "a run directory of `iwb dem run`")->required()->check(CLI::ExistingDirectory);
+  compare->add_option("--model", copt.model, "continuum model (iwb models)")->capture_default_str();
+  compare->add_option("--params", copt.params, "parameter file (data/params/)")->required()->check(CLI::ExistingFile);
+  compare->add_option("--out,-o", compare_out, "output directory (default runs/compare-<dem run>)");
+  compare->add_flag("--allow-partial", copt.allow_partial, "compare a failed or interrupted DEM run");
+  compare->add_flag("--force", copt.force, "replace an earlier comparison in the same directory");
+
   auto* bench = app.add_subcommand("bench", "Benchmarks that print figures.");
   bench->require_subcommand(1);
   auto* bench_element = bench->add_subcommand(
@@ -201,6 +217,24 @@ int main(int argc, char** argv) {
     if (*models) return cmd_models(as_json);
     if (*run) return iwb::app::run_default_job(run_out, force, cl);
     if (*dem_run) return cmd_dem_run(scene_file, engine_name, np, out, resume, force, cl);
+    if (*compare) {
+      copt.dem_dir = dem_dir;
+      copt.out = compare_out.empty()
+                     ? std::filesystem::path("runs") / ("compare-" + std::filesystem::path(dem_dir).filename().string())
+                     : std::filesystem::path(compare_out);
+      copt.command_line = cl;
+      const auto result = iwb::comparison::run_comparison(copt);
+      fmt::print("{:<70} {:>10} {:>9} {:>9} {:>9}\n", "variant", "RMSE tau", "peak", "resid.", "status");
+      fmt::print("{:<70} {:>10} {:>9.3f} {:>9.3f}\n", "DEM", "", result["variants"][0]["metrics"]["peak_friction"]["dem"].get<double>(),
+                 result["variants"][0]["metrics"]["residual_friction"]["dem"].get<double>());
+      for (const auto& v : result["variants"])
+        fmt::print("{:<70} {:>7.2f} kPa {:>9.3f} {:>9.3f} {:>9}\n", v["label"].get<std::string>(),
+                   v["metrics"]["rmse_tau_kPa"].get<double>(), v["metrics"]["peak_friction"]["model"].get<double>(),
+                   v["metrics"]["residual_friction"]["model"].get<double>(),
+                   v["status"] == "complete" ? "ok" : "stopped");
+      fmt::print("-> {}\n", copt.out.string());
+      return 0;
+    }
     if (*dem_summary) {
       fmt::print("{}\n", iwb::dem::resummarize(run_dir).dump(2));
       return 0;

@@ -1,0 +1,30 @@
+#pragma once
+// `iwb compare`: one DEM run against a continuum model, in labelled variants of kappa_r and d_s,
+// into a directory with manifest.json, compare.json (variants, metrics) and compare.csv (curves).
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "comparison/replay.hpp"
+
+namespace iwb::comparison {
+
+struct CompareOptions {
+  std::filesystem::path dem_dir;
+  std::string model = "hvwe";
+  std::string params;  // parameter file
+  std::filesystem::path out;
+  bool allow_partial = false;
+  bool force = false;
+  std::string command_line;
+};
+
+// The variants of issue 6 that need no fitting: kappa_r from Gutjahr's eq. 5.35 with the wall's
+// R_n (base 10), d_s = 5 d50, 10 d50 and the measured wall band when the DEM has one.
+std::vector<Variant> standard_variants(const DemRun& dem, const std::string& model,
+                                       const models::ModelInputs& parameters);
+
+nlohmann::json run_comparison(const CompareOptions& options);
+
+}  // namespace iwb::comparison

@@ -1,0 +1,38 @@
+#pragma once
+// A DEM run directory as the comparison layer sees it: the contract of DEM.md, validated.
+// Nothing here knows which engine wrote it.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "driver/control.hpp"
+
+namespace iwb::comparison {
+
+struct DemRun {
+  std::filesystem::path dir;
+  std::string status;
+  std::string engine;
+  driver::BoundaryKind boundary;
+  double sigma_n0_kPa;   // the scene's consolidation stress
+  double K_kPa_per_mm;   // CNS
+  double d50_mm;
+  double R_n;
+  // the time series, contract units
+  std::vector<double> t_s, u_x_mm, u_n_mm, sigma_n_kPa, tau_kPa, e_band;
+  nlohmann::json summary;  // may be empty (partial runs)
+
+  std::optional<double> band_d50() const;  // the measured wall band, if the run localised there
+};
+
+// Reads and validates `dir`. Missing files, a missing or misnamed column, non-monotonic time, a
+// non-number or a truncated row are InputErrors naming the file and line; a run whose status is
+// not "complete" is refused unless `allow_partial`.
+DemRun load_dem_run(const std::filesystem::path& dir, bool allow_partial = false);
+
+// The columns of timeseries.csv the comparison needs (names carry the units).
+const std::vector<std::string>& required_timeseries_columns();
+
+}  // namespace iwb::comparison

@@ -1,0 +1,67 @@
+#include "comparison/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace iwb::comparison {
+
+namespace {
+
+constexpr double kLastFraction = 0.2;  // the residual window, as in the DEM summary
+
+double rmse(const std::vector<double>& a, const std::vector<double>& b, std::size_t n) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < n; ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(s / double(n));
+}
+
+struct Friction {
+  double peak, u_at_peak, residual;
+};
+
+Friction friction(const std::vector<double>& u, const std::vector<double>& tau,
+                  const std::vector<double>& sigma, std::size_t n) {
+  Friction f{0.0, 0.0, 0.0};
+  for (std::size_t i = 0; i < n; ++i)
+    if (std::abs(tau[i]) / sigma[i] > f.peak) f.peak = std::abs(tau[i]) / sigma[i], f.u_at_peak = u[i];
+  const double from = (1.0 - kLastFraction) * u[n - 1];
+  int count = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (u[i] >= from) f.residual += std::abs(tau[i]) / sigma[i], ++count;
+  f.residual /= std::max(count, 1);
+  return f;
+}
+
+}  // namespace
+
+Metrics compare(const DemRun& dem, const Replay& r) {
+  const std::size_t n = r.u_x_mm.size();
+  Metrics m{};
+  m.rows_compared = n;
+  if (n < 2) return m;
+  m.rmse_tau_kPa = rmse(dem.tau_kPa, r.tau_kPa, n);
+  const Friction fd = friction(dem.u_x_mm, dem.tau_kPa, dem.sigma_n_kPa, n);
+  const Friction fm = friction(r.u_x_mm, r.tau_kPa, r.sigma_n_kPa, n);
+  m.peak_friction_dem = fd.peak, m.peak_friction_model = fm.peak;
+  m.residual_friction_dem = fd.residual, m.residual_friction_model = fm.residual;
+  m.u_x_at_peak_dem_mm = fd.u_at_peak, m.u_x_at_peak_model_mm = fm.u_at_peak;
+  if (dem.boundary != driver::BoundaryKind::kCV) m.rmse_u_n_mm = rmse(dem.u_n_mm, r.u_n_mm, n);
+  if (dem.boundary != driver::BoundaryKind::kCNL) m.rmse_sigma_n_kPa = rmse(dem.sigma_n_kPa, r.sigma_n_kPa, n);
+  return m;
+}
+
+nlohmann::json to_json(const Metrics& m) {
+  auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  return {{"rows_compared", m.rows_compared},
+          {"rmse_tau_kPa", m.rmse_tau_kPa},
+          {"peak_friction", {{"dem", m.peak_friction_dem}, {"model", m.peak_friction_model},
+                             {"error", m.peak_friction_model - m.peak_friction_dem}}},
+          {"residual_friction", {{"dem", m.residual_friction_dem}, {"model", m.residual_friction_model},
+                                 {"error", m.residual_friction_model - m.residual_friction_dem}}},
+          {"u_x_at_peak_mm", {{"dem", m.u_x_at_peak_dem_mm}, {"model", m.u_x_at_peak_model_mm},
+                              {"error", m.u_x_at_peak_model_mm - m.u_x_at_peak_dem_mm}}},
+          {"rmse_u_n_mm", opt(m.rmse_u_n_mm)},
+          {"rmse_sigma_n_kPa", opt(m.rmse_sigma_n_kPa)}};
+}
+
+}  // namespace iwb::comparison

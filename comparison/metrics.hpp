@@ -1,0 +1,24 @@
+#pragma once
+// How far a replay is from the DEM (issue 6 "Metrics"), over the DEM rows the replay reached.
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "comparison/dem_run.hpp"
+#include "comparison/replay.hpp"
+
+namespace iwb::comparison {
+
+struct Metrics {
+  double rmse_tau_kPa;
+  double peak_friction_dem, peak_friction_model;
+  double residual_friction_dem, residual_friction_model;  // mean over the last fifth of u_x
+  double u_x_at_peak_dem_mm, u_x_at_peak_model_mm;
+  std::optional<double> rmse_u_n_mm;         // CNL and CNS: dilation u_n(u_x)
+  std::optional<double> rmse_sigma_n_kPa;    // CNS and CV: the normal-stress path
+  std::size_t rows_compared;
+};
+
+Metrics compare(const DemRun& dem, const Replay& replay);
+nlohmann::json to_json(const Metrics& m);
+
+}  // namespace iwb::comparison

@@ -1,0 +1,65 @@
+#include "comparison/replay.hpp"
+
+#include <cmath>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+
+namespace iwb::comparison {
+
+namespace {
+
+driver::Path dem_path(const DemRun& dem, double d_s_mm) {
+  driver::Path path;
+  const double K_per_strain = dem.K_kPa_per_mm * d_s_mm;  // CONVENTIONS.md: K = K_per_mm d_s
+  for (std::size_t i = 1; i < dem.u_x_mm.size(); ++i) {
+    const double dgamma = (dem.u_x_mm[i] - dem.u_x_mm[i - 1]) / d_s_mm;
+    const int n = std::max(1, int(std::ceil(std::abs(dgamma) / kReplayStrainIncrement)));
+    driver::NormalControlRow row;
+    switch (dem.boundary) {
+      case driver::BoundaryKind::kCNL:  // follow the measured normal stress
+        row = {1.0, 0.0, (dem.sigma_n_kPa[i] - dem.sigma_n_kPa[i - 1]) / n};
+        break;
+      case driver::BoundaryKind::kCNS:
+        row = {1.0, -K_per_strain, 0.0};
+        break;
+      case driver::BoundaryKind::kCV:
+        row = {0.0, 1.0, 0.0};
+        break;
+    }
+    path.push_back({fmt::format("DEM row {}", i), dgamma, 0.0, row, n});
+  }
+  return path;
+}
+
+}  // namespace
+
+Replay replay(const DemRun& dem, const Variant& v, const driver::RunSettings& settings) {
+  Replay out{v, "", {}, {}, {}, {}, dem.e_band.front()};
+  const auto model = models::find_model(v.model).make(v.inputs);
+  models::InitialState init{dem.sigma_n_kPa.front(), NAN, out.e0};
+  const auto& tables = v.inputs.tables;
+  for (const auto& [name, values] : tables)  // K0 = 1 - sin(phi_c), the oedometric start
+    if (auto it = values.find("phi_c_deg"); it != values.end()) init.K0 = 1.0 - std::sin(it->second * M_PI / 180.0);
+  if (std::isnan(init.K0)) init.K0 = 1.0;
+  const auto s0 = model->initial_state(init);  // InputError if e0 is outside the model's domain
+  driver::RunSettings rs = settings;
+  rs.output_every = 1;
+  const auto result = driver::run_element_test(*model, s0, dem_path(dem, v.d_s_mm), rs);
+  out.status = result.status;
+  // the state at the end of each segment is the model's answer at that DEM row
+  std::vector<const driver::HistoryRow*> at_row(dem.u_x_mm.size(), nullptr);
+  at_row[0] = &result.rows.front();
+  for (const auto& r : result.rows)
+    if (r.segment >= 0) at_row[std::size_t(r.segment) + 1] = &r;  // last row of the segment wins
+  for (std::size_t i = 0; i < at_row.size() && at_row[i] != nullptr; ++i) {
+    const auto s = model->stress(at_row[i]->state);
+    out.u_x_mm.push_back(dem.u_x_mm[i]);
+    out.tau_kPa.push_back(s.tau_x);
+    out.sigma_n_kPa.push_back(s.sigma_n);
+    out.u_n_mm.push_back(at_row[i]->eps_n * v.d_s_mm);
+  }
+  return out;
+}
+
+}  // namespace iwb::comparison

@@ -1,0 +1,139 @@
+// The comparison layer: a run directory of the contract is validated line by line, and replaying
+// a continuum run's own path with the same model and parameters reproduces its curves.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+#include "comparison/metrics.hpp"
+#include "comparison/replay.hpp"
+#include "io/run_directory.hpp"
+#include "support/fixtures.hpp"
+
+using namespace iwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kDs = 1.0;  // mm
+
+// A "DEM" run directory written from a continuum element test: the contract's files with the
+// model's curves, so that the whole comparison chain can be checked without an engine.
+fs::path synthetic_dem(const std::string& name, driver::BoundaryCondition bc, double K_per_mm) {
+  test::ShearSpec s;
+  s.e0 = 0.70;
+  s.bc = bc;
+  s.gamma = 0.5;
+  s.increments = 250;
+  s.output_every = 5;
+  const auto run = test::shear(s);
+  REQUIRE(run.result.complete());
+  const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / "comparison" / name;
+  fs::create_directories(dir);
+  std::string ts = "t_s,u_x_mm,u_n_mm,sigma_n_kPa,tau_kPa,e_specimen,e_band,coordination\n";
+  for (std::size_t i = 0; i < run.result.rows.size(); ++i) {
+    const auto& r = run.result.rows[i];
+    const auto st = run.model->stress(r.state);
+    const double e = run.model->void_ratio(r.state);
+    ts += fmt::format("{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},4\n", 0.01 * double(i), r.gamma_x * kDs,
+                      r.eps_n * kDs, st.sigma_n, st.tau_x, e, e);
+  }
+  io::write_atomically(dir / "timeseries.csv", ts);
+  const nlohmann::json m = {{"status", "complete"},
+                            {"engine", {{"name", "synthetic"}}},
+                            {"R_n", 1.0},
+                            {"scene", {{"resolved", {{"boundary", {{"type", driver::to_string(bc.kind)},
+                                                                   {"sigma_n_kPa", 100.0},
+                                                                   {"K_kPa_per_mm", K_per_mm}}},
+                                                     {"particles", {{"d50_mm", 0.2}}}}}}}};
+  io::write_manifest(dir, m);
+  return dir;
+}
+
+comparison::Variant same_model() {
+  return {"the generating model", "hvwe", test::table_5_1(1.0), kDs};
+}
+
+std::string rejection(const fs::path& dir, bool allow_partial = false) {
+  try {
+    comparison::load_dem_run(dir, allow_partial);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+void edit(const fs::path& file, const std::string& from, const std::string& to) {
+  std::string s = io::read_file(file);
+  const auto p = s.find(from);
+  REQUIRE(p != std::string::npos);
+  io::write_atomically(file, s.replace(p, from.size(), to));
+}
+
+}  // namespace
+
+TEST_CASE("replaying a continuum run's own path reproduces its curves (CNL, CNS, CV)", "[comparison]") {
+  for (const auto& [name, bc, K] : {std::tuple{"cnl", driver::BoundaryCondition{driver::BoundaryKind::kCNL, 0.0}, 0.0},
+                                    std::tuple{"cns", driver::BoundaryCondition{driver::BoundaryKind::kCNS, 2000.0 * kDs}, 2000.0},
+                                    std::tuple{"cv", driver::BoundaryCondition{driver::BoundaryKind::kCV, 0.0}, 0.0}}) {
+    const auto dem = comparison::load_dem_run(synthetic_dem(std::string("fidelity_") + name, bc, K));
+    const auto r = comparison::replay(dem, same_model());
+    REQUIRE(r.status == "complete");
+    REQUIRE(r.u_x_mm.size() == dem.u_x_mm.size());
+    const auto m = comparison::compare(dem, r);
+    double tau_max = 0;
+    for (double t : dem.tau_kPa) tau_max = std::max(tau_max, std::abs(t));
+    INFO(name << ": RMSE tau " << m.rmse_tau_kPa << " kPa of " << tau_max);
+    CHECK(m.rmse_tau_kPa < 1e-4 * tau_max);  // the integrator's tolerance, not a fit
+    CHECK(m.peak_friction_model == Approx(m.peak_friction_dem).epsilon(1e-4));
+    double un_max = 1e-9;
+    for (double u : dem.u_n_mm) un_max = std::max(un_max, std::abs(u));
+    if (m.rmse_u_n_mm) CHECK(*m.rmse_u_n_mm < 1e-4 * un_max);
+    if (m.rmse_sigma_n_kPa) CHECK(*m.rmse_sigma_n_kPa < 1e-4 * 100.0);
+  }
+}
+
+TEST_CASE("a different d_s is seen by the metrics", "[comparison]") {
+  const auto dem = comparison::load_dem_run(synthetic_dem("other_ds", {driver::BoundaryKind::kCNL, 0.0}, 0.0));
+  auto v = same_model();
+  v.d_s_mm = 2.0 * kDs;
+  const auto m = comparison::compare(dem, comparison::replay(dem, v));
+  CHECK(m.rmse_tau_kPa > 1.0);                         // half the strain: a visibly different curve
+  CHECK(m.u_x_at_peak_model_mm > m.u_x_at_peak_dem_mm);  // the peak comes later in u_x
+}
+
+TEST_CASE("malformed run directories are refused with file, line and reason", "[comparison]") {
+  const auto good = synthetic_dem("malformed_base", {driver::BoundaryKind::kCNL, 0.0}, 0.0);
+  CHECK(rejection(good) == "(accepted)");
+  auto variant = [&good](const std::string& name) {
+    const auto dir = good.parent_path() / name;
+    fs::remove_all(dir);
+    fs::copy(good, dir);
+    return dir;
+  };
+  auto d = variant("no_timeseries");
+  fs::remove(d / "timeseries.csv");
+  CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv: missing"));
+  d = variant("no_manifest");
+  fs::remove(d / "manifest.json");
+  CHECK_THAT(rejection(d), Catch::Contains("manifest.json: missing"));
+  d = variant("wrong_header");
+  edit(d / "timeseries.csv", "tau_kPa", "tau_Pa");
+  CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:1: missing column 'tau_kPa'") && Catch::Contains("tau_Pa"));
+  d = variant("nan");
+  edit(d / "timeseries.csv", ",4\n", ",nan\n");  // the first data row's coordination
+  CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:2: column 'coordination' = 'nan' is not a finite number"));
+  d = variant("truncated");
+  { std::string s = io::read_file(d / "timeseries.csv"); s.resize(s.size() - 12); io::write_atomically(d / "timeseries.csv", s); }
+  CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:") && Catch::Contains("truncated row"));
+  d = variant("time_backwards");
+  edit(d / "timeseries.csv", "\n0.02,", "\n0.001,");
+  CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:4: t_s = 0.001 after 0.01: time must increase"));
+  d = variant("failed");
+  edit(d / "manifest.json", "\"complete\"", "\"failed: engine error\"");
+  CHECK_THAT(rejection(d), Catch::Contains("run status is 'failed: engine error'; pass --allow-partial"));
+  CHECK(rejection(d, true) == "(accepted)");
+  d = variant("no_boundary");
+  edit(d / "manifest.json", "\"type\"", "\"kind\"");
+  CHECK_THAT(rejection(d), Catch::Contains("missing or malformed field '/scene/resolved/boundary/type'"));
+}
