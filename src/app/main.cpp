@@ -9,6 +9,8 @@
 #include <unistd.h>
 
 #include "app/default_job.hpp"
+#include "app/validate.hpp"
+#include "comparison/report.hpp"
 #include "dem/liggghts/liggghts_engine.hpp"
 #include "dem/run.hpp"
 #include "bench/dem_bench.hpp"
@@ -192,6 +194,27 @@ int main(int argc, char** argv) {
   compare->add_flag("--allow-partial", copt.allow_partial, "compare a failed or interrupted DEM run");
   compare->add_flag("--force", copt.force, "replace an earlier comparison in the same directory");
 
+  auto* report = app.add_subcommand(
+      "report", "Write one self-contained HTML report (inline SVG figures, opens offline) from comparison "
+                "directories of `iwb compare`; figures also as SVG and PNG with their data and gnuplot scripts.");
+  std::vector<std::string> compare_dirs;
+  std::string report_out = "report.html";
+  report->add_option("compare_dirs", compare_dirs, "directories of `iwb compare`")->required()->check(CLI::ExistingDirectory);
+  report->add_option("-o,--out", report_out, "HTML file")->capture_default_str();
+
+  auto* validate = app.add_subcommand(
+      "validate", "The main job: run a DEM scene (the embedded default unless --scene), replay it through hvwe "
+                  "with the shipped parameter set closest to the DEM's residual friction angle, and write "
+                  "report.html (a few minutes on 2 cores).");
+  iwb::app::ValidateOptions vopt;
+  std::string vout = "runs/validate";
+  validate->add_option("--scene", vopt.scene, "embedded scene name (default, smoke) or a scene file")->capture_default_str();
+  validate->add_option("--engine", vopt.engine, "DEM engine")->capture_default_str();
+  validate->add_option("--np", vopt.processes, "MPI ranks")->check(CLI::Range(1, 256))->capture_default_str();
+  validate->add_option("--out,-o", vout, "output directory")->capture_default_str();
+  validate->add_option("--params-dir", vopt.params_dir, "where the shipped parameter sets are")->capture_default_str();
+  validate->add_flag("--force", vopt.force, "replace earlier runs in the output directory");
+
   auto* bench = app.add_subcommand("bench", "Benchmarks that print figures.");
   bench->require_subcommand(1);
   auto* bench_element = bench->add_subcommand(
@@ -217,6 +240,17 @@ int main(int argc, char** argv) {
     if (*models) return cmd_models(as_json);
     if (*run) return iwb::app::run_default_job(run_out, force, cl);
     if (*dem_run) return cmd_dem_run(scene_file, engine_name, np, out, resume, force, cl);
+    if (*report) {
+      std::vector<std::filesystem::path> dirs(compare_dirs.begin(), compare_dirs.end());
+      const auto figures = iwb::comparison::write_report(dirs, report_out);
+      fmt::print("report: {} ({} figures)\n", std::filesystem::absolute(report_out).string(), figures.size());
+      return 0;
+    }
+    if (*validate) {
+      vopt.out = vout;
+      vopt.command_line = cl;
+      return iwb::app::run_validate(vopt);
+    }
     if (*compare) {
       copt.dem_dir = dem_dir;
       copt.out = compare_out.empty()

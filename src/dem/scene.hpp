@@ -4,6 +4,7 @@
 // and y. Read from TOML (schema: data/scenes/README.md), SI inside, validated before any engine
 // starts: every error names the file, the key and the value.
 #include <nlohmann/json.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -118,6 +119,9 @@ struct Scene {
 };
 
 Scene load_scene(const std::string& path);
+
+// The shipped scenes embedded in the binary ("default.toml", "smoke.toml"; generated at build).
+const std::map<std::string, std::string>& embedded_scenes();
 Scene parse_scene(const std::string& text, const std::string& source);
 
 const char* to_string(ProfileKind k);

@@ -1,0 +1,22 @@
+#pragma once
+// `iwb validate`, the README's main job (issue 6): run a scene in the DEM engine (the embedded
+// default unless told otherwise), replay it through hvwe with the shipped parameter set that best
+// matches the DEM's grains, and write the HTML report.
+#include <filesystem>
+#include <string>
+
+namespace iwb::app {
+
+struct ValidateOptions {
+  std::string scene = "default";  // an embedded scene name or a scene file
+  std::string engine = "liggghts";
+  int processes = 2;
+  std::filesystem::path out = "runs/validate";
+  std::filesystem::path params_dir = "data/params";
+  bool force = false;
+  std::string command_line;
+};
+
+int run_validate(const ValidateOptions& options);
+
+}  // namespace iwb::app
