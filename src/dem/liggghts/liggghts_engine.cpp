@@ -8,7 +8,6 @@
 #include <fmt/core.h>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 
 #include "common/subprocess.hpp"

@@ -3,6 +3,9 @@
 // (embedded at build time), writes the wall and plate STL, runs `liggghts` (through mpirun for
 // more than one rank), follows its output for progress and failures, and converts its raw
 // outputs into the contract.
+#include <map>
+#include <string>
+
 #include "dem/engine.hpp"
 
 namespace iwb::dem {
