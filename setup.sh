@@ -8,7 +8,7 @@ cd "$(dirname "$0")"
 PACKAGES=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev catch2 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev libssl-dev
-  liggghts libliggghts-dev gnuplot-nox
+  liggghts libliggghts-dev gnuplot-nox libnlopt-cxx-dev
 )
 
 missing=()

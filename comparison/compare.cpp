@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "comparison/fit.hpp"
 #include "comparison/metrics.hpp"
 #include "io/parameter_file.hpp"
 #include "io/run_directory.hpp"
@@ -67,7 +68,16 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
 
   std::vector<Replay> replays;
   nlohmann::json variants = nlohmann::json::array();
-  for (const auto& v : standard_variants(dem, opt.model, params)) {
+  auto candidates = standard_variants(dem, opt.model, params);
+  // the fitted variant, started from the first standard one
+  const FitResult fit = fit_kappa_and_ds(dem, candidates.front());
+  Variant fitted = candidates.front();
+  fitted.inputs.roughness.kappa_r = fit.kappa_r;
+  fitted.d_s_mm = fit.d_s_mm;
+  fitted.label = fmt::format("fitted: kappa_r = {:.3f} +- {:.3f}, d_s = {:.2f} +- {:.2f} mm ({:.1f} d50)", fit.kappa_r,
+                             fit.sigma_kappa_r, fit.d_s_mm, fit.sigma_d_s_mm, fit.d_s_mm / dem.d50_mm);
+  candidates.push_back(fitted);
+  for (const auto& v : candidates) {
     replays.push_back(replay(dem, v));
     variants.push_back({{"index", replays.size() - 1},
                         {"label", v.label},
@@ -82,6 +92,11 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
                {"sigma_n0_kPa", dem.sigma_n_kPa.front()}, {"e0_band", dem.e_band.front()}}},
       {"model", opt.model},
       {"variants", variants},
+      {"fit", {{"kappa_r", fit.kappa_r}, {"sigma_kappa_r", fit.sigma_kappa_r}, {"d_s_mm", fit.d_s_mm},
+               {"sigma_d_s_mm", fit.sigma_d_s_mm}, {"d_s_over_d50", fit.d_s_mm / dem.d50_mm},
+               {"rmse_tau_kPa", fit.rmse_tau_kPa}, {"evaluations", fit.evaluations},
+               {"algorithm", fit.algorithm}, {"stop", fit.stop_reason},
+               {"kappa_r_gutjahr", candidates.front().inputs.roughness.kappa_r}}},
       {"replay", {{"normal_control", "the DEM's boundary condition: CNL with its measured sigma_n(t), CNS with its K, CV"},
                   {"initial_state", "DEM sigma_n and band void ratio of the first row; K0 = 1 - sin(phi_c)"},
                   {"strain_increment", kReplayStrainIncrement}}}};

@@ -1,6 +1,7 @@
 #pragma once
-// `iwb compare`: one DEM run against a continuum model, in labelled variants of kappa_r and d_s,
-// into a directory with manifest.json, compare.json (variants, metrics) and compare.csv (curves).
+// `iwb compare`: one DEM run against a continuum model, in labelled variants of kappa_r and d_s
+// (eq. 5.35 with the wall's R_n at d_s = 5 d50, 10 d50 and the measured band, and both fitted),
+// into a directory with manifest.json, compare.json (variants, metrics, fit) and compare.csv.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
+#include "comparison/fit.hpp"
 #include "comparison/metrics.hpp"
 #include "comparison/replay.hpp"
 #include "io/run_directory.hpp"
@@ -19,10 +20,12 @@ constexpr double kDs = 1.0;  // mm
 
 // A "DEM" run directory written from a continuum element test: the contract's files with the
 // model's curves, so that the whole comparison chain can be checked without an engine.
-fs::path synthetic_dem(const std::string& name, driver::BoundaryCondition bc, double K_per_mm) {
+fs::path synthetic_dem(const std::string& name, driver::BoundaryCondition bc, double K_per_mm,
+                       double kappa_r = 1.0, double d_s = kDs) {
   test::ShearSpec s;
   s.e0 = 0.70;
   s.bc = bc;
+  s.inputs = test::table_5_1(kappa_r);
   s.gamma = 0.5;
   s.increments = 250;
   s.output_every = 5;
@@ -35,8 +38,8 @@ fs::path synthetic_dem(const std::string& name, driver::BoundaryCondition bc, do
     const auto& r = run.result.rows[i];
     const auto st = run.model->stress(r.state);
     const double e = run.model->void_ratio(r.state);
-    ts += fmt::format("{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},4\n", 0.01 * double(i), r.gamma_x * kDs,
-                      r.eps_n * kDs, st.sigma_n, st.tau_x, e, e);
+    ts += fmt::format("{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},4\n", 0.01 * double(i), r.gamma_x * d_s,
+                      r.eps_n * d_s, st.sigma_n, st.tau_x, e, e);
   }
   io::write_atomically(dir / "timeseries.csv", ts);
   const nlohmann::json m = {{"status", "complete"},
@@ -136,4 +139,18 @@ TEST_CASE("malformed run directories are refused with file, line and reason", "[
   d = variant("no_boundary");
   edit(d / "manifest.json", "\"type\"", "\"kind\"");
   CHECK_THAT(rejection(d), Catch::Contains("missing or malformed field '/scene/resolved/boundary/type'"));
+}
+
+TEST_CASE("identifiability: the fit recovers a known kappa_r and d_s within 2 %", "[comparison]") {
+  // "DEM" written by hvwe with kappa_r = 0.7 and d_s = 2 mm; the fit starts from 1 and 1 mm
+  const auto dem = comparison::load_dem_run(
+      synthetic_dem("identifiability", {driver::BoundaryKind::kCNL, 0.0}, 0.0, 0.7, 2.0));
+  const auto fit = comparison::fit_kappa_and_ds(dem, same_model());
+  INFO("kappa_r " << fit.kappa_r << " +- " << fit.sigma_kappa_r << ", d_s " << fit.d_s_mm << " +- " << fit.sigma_d_s_mm
+                  << " mm, RMSE " << fit.rmse_tau_kPa << " kPa, " << fit.evaluations << " evaluations, " << fit.stop_reason);
+  CHECK(fit.kappa_r == Approx(0.7).epsilon(0.02));
+  CHECK(fit.d_s_mm == Approx(2.0).epsilon(0.02));
+  CHECK(fit.rmse_tau_kPa < 0.05);       // the generating curve is reachable
+  CHECK(fit.sigma_kappa_r < 0.02 * 0.7);  // and the data pin the parameters down
+  CHECK(fit.sigma_d_s_mm < 0.02 * 2.0);
 }
