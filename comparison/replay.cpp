@@ -37,11 +37,8 @@ driver::Path dem_path(const DemRun& dem, double d_s_mm) {
 Replay replay(const DemRun& dem, const Variant& v, const driver::RunSettings& settings) {
   Replay out{v, "", {}, {}, {}, {}, dem.e_band.front()};
   const auto model = models::find_model(v.model).make(v.inputs);
-  models::InitialState init{dem.sigma_n_kPa.front(), NAN, out.e0};
-  const auto& tables = v.inputs.tables;
-  for (const auto& [name, values] : tables)  // K0 = 1 - sin(phi_c), the oedometric start
-    if (auto it = values.find("phi_c_deg"); it != values.end()) init.K0 = 1.0 - std::sin(it->second * M_PI / 180.0);
-  if (std::isnan(init.K0)) init.K0 = 1.0;
+  models::InitialState init{dem.sigma_n_kPa.front(), models::oedometric_K0(v.inputs), out.e0};
+  if (std::isnan(init.K0)) init.K0 = 1.0;  // a model without phi_c starts isotropic
   const auto s0 = model->initial_state(init);  // InputError if e0 is outside the model's domain
   driver::RunSettings rs = settings;
   rs.output_every = 1;

@@ -76,18 +76,18 @@ Figure versus_u_x(const std::string& name, const std::string& what, const std::s
   }
   const int vc = curves.column("variant"), xc = curves.column("u_x_mm");
   const int dc = curves.column(dem_col), mc = curves.column(model_col);
+  // compare.csv lists each variant's rows in DEM row order: the k-th row of variant v is DEM row k
   std::vector<std::vector<double>> rows;
+  std::vector<std::size_t> next(nv, 0);
   for (const auto& r : curves.rows) {
     const std::size_t v = std::size_t(r[vc]);
-    std::size_t i = 0;
-    while (i < rows.size() && rows[i][0] != r[xc]) ++i;  // rows share the DEM's u_x
     if (v == 0) {
       rows.push_back(std::vector<double>(nv + 2, NAN));
       rows.back()[0] = r[xc];
       rows.back()[1] = r[dc];
-      i = rows.size() - 1;
     }
-    if (i < rows.size()) rows[i][v + 2] = r[mc];
+    if (next[v] < rows.size()) rows[next[v]][v + 2] = r[mc];
+    ++next[v];
   }
   f.data.rows = rows;
   return f;

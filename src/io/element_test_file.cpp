@@ -36,12 +36,6 @@ void read_model(TableReader model, ElementTestSpec& spec, const std::filesystem:
   model.finish();
 }
 
-double phi_c_of(const ElementTestSpec& spec) {
-  for (const auto& [name, values] : spec.inputs.tables)
-    if (auto it = values.find("phi_c_deg"); it != values.end()) return it->second * kDegree;
-  return NAN;
-}
-
 void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
   const auto& model = models::find_model(spec.model);
   json out = {{"scheme", "gutjahr"}, {"kappa_r", 1.0}, {"origin", "default (fully rough)"}};
@@ -72,7 +66,7 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
     origin = fmt::format("R_n = {:g}, eq. 5.35 with log base {:g}", rn, base);
   } else {
     const double delta = r->number("delta_deg");
-    k = models::kappa_r_from_friction_angles(delta * kDegree, phi_c_of(spec));
+    k = models::kappa_r_from_friction_angles(delta * kDegree, models::critical_friction_angle(spec.inputs));
     origin = fmt::format("delta = {:g} deg, eq. 5.36", delta);
   }
   r->finish();
@@ -84,11 +78,10 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
 void read_initial(TableReader t, ElementTestSpec& spec) {
   spec.initial.sigma_n = t.positive("sigma_n_kPa");
   spec.initial.e0 = t.positive("e0");
-  const double phi_c = phi_c_of(spec);
   if (auto k0 = t.optional_positive("K0")) {
     spec.initial.K0 = *k0;
-  } else if (std::isfinite(phi_c)) {
-    spec.initial.K0 = 1.0 - std::sin(phi_c);  // oedometric start (CONVENTIONS.md)
+  } else if (const double k0_oed = models::oedometric_K0(spec.inputs); std::isfinite(k0_oed)) {
+    spec.initial.K0 = k0_oed;  // oedometric start (CONVENTIONS.md)
   } else {
     throw InputError(t.where("K0") + " is missing and no phi_c_deg gives the default 1 - sin(phi_c)");
   }

@@ -1,5 +1,6 @@
 #include "models/registry.hpp"
 
+#include <cmath>
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
@@ -27,6 +28,14 @@ const ModelSpec& find_model(const std::string& name) {
   }
   throw InputError(fmt::format("unknown model '{}'; known models: {}", name, known));
 }
+
+double critical_friction_angle(const ModelInputs& inputs) {
+  for (const auto& [name, values] : inputs.tables)
+    if (const auto it = values.find("phi_c_deg"); it != values.end()) return it->second * M_PI / 180.0;
+  return NAN;
+}
+
+double oedometric_K0(const ModelInputs& inputs) { return 1.0 - std::sin(critical_friction_angle(inputs)); }
 
 const ParameterValues& require_table(const ModelInputs& inputs, const std::string& name) {
   const auto it = inputs.tables.find(name);

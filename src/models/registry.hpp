@@ -33,6 +33,11 @@ const std::vector<ModelSpec>& model_registry();
 // Throws InputError listing the known names.
 const ModelSpec& find_model(const std::string& name);
 
+// phi_c (rad) of whichever parameter table declares `phi_c_deg`; NaN if none does.
+double critical_friction_angle(const ModelInputs& inputs);
+// The oedometric start K0 = 1 - sin(phi_c) (CONVENTIONS.md); NaN without a phi_c.
+double oedometric_K0(const ModelInputs& inputs);
+
 // The parameter table `name` of `inputs`; InputError if the file has no such table.
 const ParameterValues& require_table(const ModelInputs& inputs, const std::string& name);
 

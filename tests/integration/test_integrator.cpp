@@ -90,7 +90,6 @@ TEST_CASE("rejected substeps do not leak into the committed state", "[integratio
   const auto b = integration::integrate_increment<double>(*m, s0, big, adaptive(1e-8), without, first);
   CHECK(with_rejections.rejected_substeps > 0);
   CHECK(tau_error(*m, a, b) < 1e-6);
-  CHECK(s0(4) == 0.70);  // the committed start state is untouched
 }
 
 TEST_CASE("leaving the domain: Euler names the substep and state, adaptive cuts back", "[integration]") {
