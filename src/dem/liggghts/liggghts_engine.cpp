@@ -1,14 +1,13 @@
 #include "dem/liggghts/liggghts_engine.hpp"
-#include "dem/liggghts/liggghts_numerics.hpp"
+#include "dem/numerics.hpp"
 #include "dem/liggghts/liggghts_outputs.hpp"
+#include "dem/stage_follower.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fmt/core.h>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "common/subprocess.hpp"
 #include "common/template.hpp"
@@ -158,74 +157,13 @@ std::vector<std::string> command(const std::string& input, int processes) {
   return mpi;
 }
 
-std::vector<std::string> words(const std::string& line) {
-  std::istringstream is(line);
-  std::vector<std::string> w;
-  for (std::string x; is >> x;) w.push_back(x);
-  return w;
-}
-
-struct Follower {
-  const StageContext& ctx;
-  std::ofstream log;
-  StageResult result;
-  std::string done_marker;
-  bool done = false;
-  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  double loop_seconds = 0.0, particle_steps = 0.0;
-
-  bool line(const std::string& l) {
-    log << l << '\n';
-    const auto w = words(l);
-    if (w.empty()) return true;
-    if (l.rfind("ERROR", 0) == 0 || l.find("ERROR on proc") != std::string::npos) {
-      result.failure = "engine error: " + l;
-      return true;  // the engine aborts by itself; keep reading its last words
-    }
-    if (w.size() >= 12 && w[0] == "Loop" && w[1] == "time" && w[10] == "with") {
-      // "Loop time of T on P procs for S steps with A atoms, ...": the engine's own cost
-      loop_seconds += std::stod(w[3]);
-      particle_steps += std::stod(w[8]) * std::stod(w[11]);
-    }
-    if (w[0] == "IWB_FAIL") {
-      result.failure = l.substr(9);
-      return false;
-    }
-    if (w[0] == "IWB_PARTICLES" && w.size() >= 4) {
-      const long got = std::stol(w[1]), want = std::stol(w[3]);
-      result.facts["particles"] = got;
-      result.facts["particles_requested"] = want;
-      if (got < want) {
-        result.failure = fmt::format("particle count short: {} of {} inserted (insert/pack under-filled "
-                                     "the region; lower specimen.solid_fraction_estimate or particles)",
-                                     got, want);
-        return false;
-      }
-    }
-    if (w[0] == "IWB_WINDOW" && w.size() >= 10 && ctx.progress)
-      ctx.progress(fmt::format("consolidating: window {}, sigma {:.1f} kPa, {} of {} windows accepted",
-                               w[1], std::stod(w[3]) / 1e3, w[9], ctx.scene.consolidation.windows_required));
-    if (w[0] == "IWB_SHEAR_START" && w.size() >= 5) {
-      result.facts["step0"] = std::stol(w[2]);
-      result.facts["z0_m"] = std::stod(w[4]);
-    }
-    if (w[0] == "IWB_PROGRESS" && w.size() >= 3 && ctx.progress) {
-      const double f = std::stod(w[1]) / std::stod(w[2]);
-      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      ctx.progress(fmt::format("shearing: u_x {:.2f} of {:.2f} mm ({:.0f} %), ETA {:.0f} s",
-                               std::stod(w[1]) * 1e3, std::stod(w[2]) * 1e3, 100 * f,
-                               f > 0.01 ? t * (1 - f) / f : 0.0));
-    }
-    if (w[0] == "IWB_STAGE_DONE" && w.size() >= 2) {
-      if (w.size() >= 6 && w[1] == "consolidate") {
-        result.facts["zplate_m"] = std::stod(w[3]);
-        result.facts["sigma_Pa"] = std::stod(w[5]);
-      }
-      if (w[1] == done_marker) done = true;
-    }
-    return true;
+// "Loop time of T on P procs for S steps with A atoms, ...": the engine's own cost.
+void read_loop_time(const std::vector<std::string>& w, EngineCost& cost) {
+  if (w.size() >= 12 && w[0] == "Loop" && w[1] == "time" && w[10] == "with") {
+    cost.loop_seconds += std::stod(w[3]);
+    cost.particle_steps += std::stod(w[8]) * std::stod(w[11]);
   }
-};
+}
 
 }  // namespace
 
@@ -268,23 +206,8 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
                                        values_of(s, n, facts.value("/consolidate/zplate_m"_json_pointer, n.plate_z)),
                                        input));
   const double generation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  Follower f{ctx, std::ofstream(ctx.work_dir / (stage + ".out")), {}, stage};
-  const ProcessResult p = run_process(command(input, ctx.processes), ctx.work_dir,
-                                      [&f](const std::string& l) { return f.line(l); }, ctx.interrupt);
-  StageResult r = f.result;
+  StageResult r = run_followed_stage(command(input, ctx.processes), stage, ctx, read_loop_time);
   r.facts["generation_seconds"] = generation;
-  r.facts["engine_loop_seconds"] = f.loop_seconds;
-  r.facts["particle_steps"] = f.particle_steps;
-  if (p.stopped && r.failure.empty()) {
-    r.interrupted = true;
-  } else if (r.failure.empty() && (p.exit_code != 0 || !f.done)) {
-    r.failure = p.exit_code != 0
-                    ? fmt::format("engine exited with code {}{}", p.exit_code,
-                                  p.signal_name.empty() ? "" : " (" + p.signal_name + ")")
-                    : fmt::format("engine stopped before the end of stage {}", stage);
-  }
-  r.ok = r.failure.empty() && !r.interrupted;
-  if (!r.ok && !r.interrupted) r.failure += fmt::format(" [log: {}]", (ctx.work_dir / (stage + ".out")).string());
   return r;
 }
 

@@ -2,7 +2,7 @@
 // LIGGGHTS raw outputs (timeseries.raw from fix print, profiles.raw from fix ave/spatial, VTK
 // dumps) into the contract tables and .pvd indexes, converting SI to kPa and mm once, here.
 #include "dem/engine.hpp"
-#include "dem/liggghts/liggghts_numerics.hpp"
+#include "dem/numerics.hpp"
 
 namespace iwb::dem {
 

@@ -1,4 +1,4 @@
-#include "dem/liggghts/liggghts_numerics.hpp"
+#include "dem/numerics.hpp"
 
 #include <algorithm>
 #include <cmath>

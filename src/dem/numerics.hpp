@@ -1,5 +1,6 @@
 #pragma once
-// Numbers LIGGGHTS needs that follow from a scene: timestep, geometry in z, step counts.
+// Numbers an engine needs that follow from a scene: timestep, geometry in z, step counts. Both
+// engines use the same ones, so that a difference between them is the contact law, not the setup.
 #include "dem/scene.hpp"
 
 namespace iwb::dem {

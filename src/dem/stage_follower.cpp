@@ -1,0 +1,111 @@
+#include "dem/stage_follower.hpp"
+
+#include <chrono>
+#include <fmt/core.h>
+#include <fstream>
+#include <sstream>
+
+#include "common/subprocess.hpp"
+
+namespace iwb::dem {
+
+namespace {
+
+std::vector<std::string> words(const std::string& line) {
+  std::istringstream is(line);
+  std::vector<std::string> w;
+  for (std::string x; is >> x;) w.push_back(x);
+  return w;
+}
+
+struct Follower {
+  const StageContext& ctx;
+  const ExtraLineReader& extra;
+  std::ofstream log;
+  StageResult result;
+  std::string done_marker;
+  bool done = false;
+  EngineCost cost;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+
+  bool line(const std::string& l) {
+    log << l << '\n';
+    const auto w = words(l);
+    if (w.empty()) return true;
+    if (l.rfind("ERROR", 0) == 0 || l.find("ERROR on proc") != std::string::npos) {
+      result.failure = "engine error: " + l;
+      return true;  // the engine aborts by itself; keep reading its last words
+    }
+    if (extra) extra(w, cost);
+    if (w[0] == "IWB_FAIL") {
+      result.failure = l.substr(9);
+      return false;
+    }
+    if (w[0] == "IWB_COST" && w.size() >= 5) {
+      cost.loop_seconds += std::stod(w[2]);
+      cost.particle_steps += std::stod(w[4]);
+    }
+    if (w[0] == "IWB_PARTICLES" && w.size() >= 4) particles(std::stol(w[1]), std::stol(w[3]));
+    if (w[0] == "IWB_WINDOW" && w.size() >= 10 && ctx.progress)
+      ctx.progress(fmt::format("consolidating: window {}, sigma {:.1f} kPa, {} of {} windows accepted",
+                               w[1], std::stod(w[3]) / 1e3, w[9], ctx.scene.consolidation.windows_required));
+    if (w[0] == "IWB_SHEAR_START" && w.size() >= 5) {
+      result.facts["step0"] = std::stol(w[2]);
+      result.facts["z0_m"] = std::stod(w[4]);
+    }
+    if (w[0] == "IWB_PROGRESS" && w.size() >= 3 && ctx.progress) progress(std::stod(w[1]), std::stod(w[2]));
+    if (w[0] == "IWB_STAGE_DONE" && w.size() >= 2) {
+      if (w.size() >= 6 && w[1] == "consolidate") {
+        result.facts["zplate_m"] = std::stod(w[3]);
+        result.facts["sigma_Pa"] = std::stod(w[5]);
+      }
+      if (w[1] == done_marker) done = true;
+    }
+    return true;
+  }
+
+  void particles(long got, long want) {
+    result.facts["particles"] = got;
+    result.facts["particles_requested"] = want;
+    if (got < want && result.failure.empty())
+      result.failure = fmt::format("particle count short: {} of {} inserted (the insertion under-filled "
+                                   "the region; lower specimen.solid_fraction_estimate or particles)",
+                                   got, want);
+  }
+
+  void progress(double u, double total) {
+    const double f = u / total;
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ctx.progress(fmt::format("shearing: u_x {:.2f} of {:.2f} mm ({:.0f} %), ETA {:.0f} s", u * 1e3,
+                             total * 1e3, 100 * f, f > 0.01 ? t * (1 - f) / f : 0.0));
+  }
+};
+
+}  // namespace
+
+StageResult run_followed_stage(const std::vector<std::string>& command, const std::string& stage,
+                               const StageContext& ctx, const ExtraLineReader& extra) {
+  Follower f{ctx, extra, std::ofstream(ctx.work_dir / (stage + ".out")), {}, stage, false, {}};
+  const ProcessResult p = run_process(command, ctx.work_dir,
+                                      [&f](const std::string& l) {
+                                        const bool go_on = f.line(l);
+                                        return go_on && f.result.failure.rfind("particle count short", 0) != 0;
+                                      },
+                                      ctx.interrupt);
+  StageResult r = f.result;
+  r.facts["engine_loop_seconds"] = f.cost.loop_seconds;
+  r.facts["particle_steps"] = f.cost.particle_steps;
+  if (p.stopped && r.failure.empty()) {
+    r.interrupted = true;
+  } else if (r.failure.empty() && (p.exit_code != 0 || !f.done)) {
+    r.failure = p.exit_code != 0
+                    ? fmt::format("engine exited with code {}{}", p.exit_code,
+                                  p.signal_name.empty() ? "" : " (" + p.signal_name + ")")
+                    : fmt::format("engine stopped before the end of stage {}", stage);
+  }
+  r.ok = r.failure.empty() && !r.interrupted;
+  if (!r.ok && !r.interrupted) r.failure += fmt::format(" [log: {}]", (ctx.work_dir / (stage + ".out")).string());
+  return r;
+}
+
+}  // namespace iwb::dem
