@@ -11,7 +11,8 @@
 #include "app/default_job.hpp"
 #include "app/validate.hpp"
 #include "comparison/report.hpp"
-#include "dem/liggghts/liggghts_engine.hpp"
+#include "dem/crosscheck.hpp"
+#include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "bench/dem_bench.hpp"
 #include "bench/element_bench.hpp"
@@ -82,17 +83,29 @@ int cmd_dem_run(const std::string& scene_file, const std::string& engine_name, i
                 const std::string& out, bool resume, bool force, const std::string& cl) {
   const auto scene = iwb::dem::load_scene(scene_file);  // refused here, before any engine starts
   for (const auto& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
-  if (engine_name != "liggghts")
-    throw iwb::InputError(fmt::format("--engine {}: available engines: liggghts", engine_name));
-  iwb::dem::LiggghtsEngine engine;
+  const auto engine = iwb::dem::make_engine(engine_name);
   const auto dir = out.empty() ? std::filesystem::path("runs") / fmt::format("{}-{}", scene.name, engine_name)
                                : std::filesystem::path(out);
   iwb::dem::RunOptions opt{dir, np, resume, force, cl, &g_interrupt, engine_progress()};
   fmt::print(stderr, "iwb dem run: {} with {} ({} particles requested, {} rank(s)) -> {}\n", scene_file,
              engine_name, scene.particle_count, np, dir.string());
-  const auto outcome = iwb::dem::run_scene(scene, iwb::io::read_file(scene_file), engine, opt);
+  const auto outcome = iwb::dem::run_scene(scene, iwb::io::read_file(scene_file), *engine, opt);
   fmt::print("{}: {} -> {}\n", scene_file, outcome.status, dir.string());
   return outcome.complete() ? 0 : 1;
+}
+
+std::vector<std::string> split_list(const std::string& csv) {
+  std::vector<std::string> out;
+  std::string item;
+  for (char c : csv + ",") {
+    if (c != ',') {
+      item += c;
+    } else if (!item.empty()) {
+      out.push_back(item);
+      item.clear();
+    }
+  }
+  return out;
 }
 
 int cmd_models(bool json) {
@@ -167,11 +180,26 @@ int main(int argc, char** argv) {
   int np = 1;
   bool resume = false;
   dem_run->add_option("scene", scene_file, "scene TOML file")->required()->check(CLI::ExistingFile);
-  dem_run->add_option("--engine", engine_name, "DEM engine")->capture_default_str();
-  dem_run->add_option("--np", np, "MPI ranks (LIGGGHTS)")->check(CLI::Range(1, 256))->capture_default_str();
+  dem_run->add_option("--engine", engine_name, "DEM engine: liggghts or yade")->capture_default_str();
+  dem_run->add_option("--np,--threads", np, "parallel processes: MPI ranks (LIGGGHTS) or OpenMP threads (YADE)")->check(CLI::Range(1, 256))->capture_default_str();
   dem_run->add_option("--out,-o", out, "run directory (default runs/<scene>-<engine>)");
   dem_run->add_flag("--resume", resume, "continue an interrupted run of the same scene from its last finished stage");
   dem_run->add_flag("--force", force, "replace an earlier run in the same directory");
+
+  auto* dem_cross = dem->add_subcommand(
+      "crosscheck",
+      "Run one scene in both engines with K seeds each (seed = 1..K) and put peak and residual "
+      "tau/sigma_n, dilation rate and wall band thickness side by side with their seed scatter and "
+      "each engine's wall-clock cost; verdicts: residual friction within 10 %, dilation of the same "
+      "sign and order. Writes crosscheck.json and crosscheck.md; complete runs in the output "
+      "directory are reused, so a stopped crosscheck continues when run again.");
+  iwb::dem::CrosscheckOptions xopt;
+  std::string cross_scene, cross_out, cross_engines = "liggghts,yade";
+  dem_cross->add_option("scene", cross_scene, "scene TOML file")->required()->check(CLI::ExistingFile);
+  dem_cross->add_option("--seeds", xopt.seeds, "seeds per engine")->check(CLI::Range(1, 100))->capture_default_str();
+  dem_cross->add_option("--engines", cross_engines, "comma-separated engines")->capture_default_str();
+  dem_cross->add_option("--np,--threads", xopt.processes, "MPI ranks / OpenMP threads per run")->check(CLI::Range(1, 256))->capture_default_str();
+  dem_cross->add_option("--out,-o", cross_out, "output directory (default runs/crosscheck-<scene>)");
 
   auto* dem_summary = dem->add_subcommand(
       "summary", "Recompute summary.json of a complete run directory from its contract files (peak and "
@@ -267,6 +295,20 @@ int main(int argc, char** argv) {
                    v["metrics"]["residual_friction"]["model"].get<double>(),
                    v["status"] == "complete" ? "ok" : "stopped");
       fmt::print("-> {}\n", copt.out.string());
+      return 0;
+    }
+    if (*dem_cross) {
+      xopt.scene_file = cross_scene;
+      xopt.engines = split_list(cross_engines);
+      xopt.out = cross_out.empty() ? std::filesystem::path("runs") /
+                                         ("crosscheck-" + std::filesystem::path(cross_scene).stem().string())
+                                   : std::filesystem::path(cross_out);
+      xopt.command_line = cl;
+      xopt.interrupt = &g_interrupt;
+      xopt.progress = engine_progress();
+      const auto result = iwb::dem::run_crosscheck(xopt);
+      fmt::print("{}", iwb::io::read_file(xopt.out / "crosscheck.md"));
+      fmt::print("-> {}\n", xopt.out.string());
       return 0;
     }
     if (*dem_summary) {

@@ -6,7 +6,7 @@
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
 #include "comparison/report.hpp"
-#include "dem/liggghts/liggghts_engine.hpp"
+#include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "io/parameter_file.hpp"
 #include "io/run_directory.hpp"
@@ -56,16 +56,15 @@ fs::path matching_parameters(const fs::path& dir, double residual_friction, std:
 }  // namespace
 
 int run_validate(const ValidateOptions& opt) {
-  if (opt.engine != "liggghts") throw InputError(fmt::format("--engine {}: available engines: liggghts", opt.engine));
+  const auto engine = dem::make_engine(opt.engine);
   const auto [text, source] = scene_source(opt.scene);
   const auto scene = dem::parse_scene(text, source);
   for (const auto& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
   fs::create_directories(opt.out);
   const fs::path dem_dir = opt.out / fmt::format("dem-{}", opt.engine);
   fmt::print(stderr, "iwb validate: 1/3 DEM run of {} in {} ({} ranks) -> {}\n", source, opt.engine, opt.processes, dem_dir.string());
-  dem::LiggghtsEngine engine;
   auto last = std::chrono::steady_clock::now();
-  const auto outcome = dem::run_scene(scene, text, engine,
+  const auto outcome = dem::run_scene(scene, text, *engine,
                                       {dem_dir, opt.processes, false, opt.force, opt.command_line, nullptr,
                                        [&last](const std::string& l) {
                                          if (std::chrono::steady_clock::now() - last < std::chrono::seconds(3)) return;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <fmt/core.h>
 
+#include "io/run_directory.hpp"
+
 namespace iwb::dem {
 
 namespace {
@@ -76,6 +78,12 @@ std::string to_stl(const std::vector<Triangle>& triangles, const std::string& na
     s += "endloop\nendfacet\n";
   }
   return s + "endsolid " + name + "\n";
+}
+
+void write_scene_meshes(const Scene& s, double plate_z, const std::filesystem::path& dir) {
+  const double max_edge = s.particles.d50_m;
+  io::write_atomically(dir / "wall.stl", to_stl(profile_surface(s.wall, s.length_m, s.width_m, 0.0, false, max_edge), "wall"));
+  io::write_atomically(dir / "top.stl", to_stl(profile_surface(s.plate, s.length_m, s.width_m, plate_z, true, max_edge), "top"));
 }
 
 }  // namespace iwb::dem

@@ -4,6 +4,7 @@
 // triangle spans a periodic length (LIGGGHTS: a triangle must not touch its own periodic image).
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products of triangle edges
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -21,5 +22,9 @@ std::vector<Triangle> profile_surface(const RoughnessProfile& profile, double le
                                       double z_base, bool facing_down, double max_edge);
 
 std::string to_stl(const std::vector<Triangle>& triangles, const std::string& name);
+
+// wall.stl (the tested wall's surface on z = 0) and top.stl (the plate's, facing down from
+// plate_z) in dir, as both engines read them; edges no longer than d50.
+void write_scene_meshes(const Scene& scene, double plate_z, const std::filesystem::path& dir);
 
 }  // namespace iwb::dem

@@ -195,11 +195,7 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
   const auto t0 = std::chrono::steady_clock::now();
   const Scene& s = ctx.scene;
   const Numerics n = derive(s);
-  const double max_edge = s.particles.d50_m;
-  io::write_atomically(ctx.work_dir / "wall.stl",
-                       to_stl(profile_surface(s.wall, s.length_m, s.width_m, 0.0, false, max_edge), "wall"));
-  io::write_atomically(ctx.work_dir / "top.stl",
-                       to_stl(profile_surface(s.plate, s.length_m, s.width_m, n.plate_z, true, max_edge), "top"));
+  write_scene_meshes(s, n.plate_z, ctx.work_dir);
   const std::string input = stage + ".in";
   io::write_atomically(ctx.work_dir / input,
                        render_template(liggghts_templates().at(input),

@@ -1,12 +1,13 @@
-// The smoke scene in the real LIGGGHTS engine under CNL, CNS and CV (issue 4): the boundary
+// The smoke scenes in the real engines under CNL, CNS and CV (issues 4 and 5): the boundary
 // condition holds, the particle count stays, the wall moves by v t, the contract files parse with
-// the stated columns and units. About 15 s per boundary condition.
+// the stated columns and units. The same assertions for LIGGGHTS (about 15 s per boundary
+// condition) and YADE (about a minute); cycles and the glued wall are run in YADE only as heavy.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 
-#include "dem/liggghts/liggghts_engine.hpp"
+#include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "io/csv_table.hpp"
 #include "io/run_directory.hpp"
@@ -23,13 +24,13 @@ struct SmokeRun {
   io::CsvTable ts;
 };
 
-SmokeRun run(const std::string& name) {
+SmokeRun run(const std::string& name, const std::string& engine_name) {
   const std::string file = "data/scenes/" + name + ".toml";
   const std::string text = io::read_file(file);
-  SmokeRun r{dem::parse_scene(text, file), fs::path(IWB_TEST_RUNS_DIR) / "dem" / name, {}, {}};
-  dem::LiggghtsEngine engine;
+  SmokeRun r{dem::parse_scene(text, file), fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / name, {}, {}};
+  const auto engine = dem::make_engine(engine_name);
   dem::RunOptions opt{r.dir, 1, false, true, "tests", nullptr, nullptr};
-  r.outcome = dem::run_scene(r.scene, text, engine, opt);
+  r.outcome = dem::run_scene(r.scene, text, *engine, opt);
   INFO(r.outcome.status);
   REQUIRE(r.outcome.complete());
   r.ts = io::read_csv_table(r.dir / "timeseries.csv");
@@ -60,8 +61,8 @@ void common_facts(const SmokeRun& r) {
   CHECK(manifest["status"] == "complete");
   CHECK(manifest["conventions"]["units"].get<std::string>().find("kPa, mm") != std::string::npos);
   CHECK(manifest["stages"]["consolidate"]["status"] == "done");
-  // the engine's own cost, read from its "Loop time" lines: every step moved every atom (grains
-  // and, for a glued wall, its spheres)
+  // the engine's own cost (LIGGGHTS's "Loop time" lines, the YADE script's IWB_COST): every step
+  // moved every atom (grains and, for a glued wall, its spheres)
   double atoms = r.scene.particle_count;
   if (r.scene.wall.kind == dem::ProfileKind::kGlued)
     atoms += std::round(r.scene.length_m / r.scene.wall.pitch_m) * std::round(r.scene.width_m / r.scene.wall.pitch_m);
@@ -90,7 +91,7 @@ void common_facts(const SmokeRun& r) {
   CHECK(travel <= r.scene.shear.travel_m() * 1e3 + sample);
   CHECK(travel >= r.scene.shear.travel_m() * 1e3 - 2 * sample * (turns + 1));
   // and the wall really moved by v t: its first mesh node, read from the VTK snapshots
-  const std::regex entry(R"re(timestep="([0-9.eE+-]+)" file="(walls_[0-9]+\.vtk)")re");
+  const std::regex entry(R"re(timestep="([0-9.eE+-]+)" file="([^"]+\.vtk)")re");
   const std::string pvd = io::read_file(r.dir / "vtk" / "walls.pvd");
   // a reversal happens at a step boundary: the wall may be one step's travel off per reversal
   const double step_travel = r.scene.shear.velocity_m_s * manifest["engine_facts"]["timestep_s"].get<double>();
@@ -101,7 +102,7 @@ void common_facts(const SmokeRun& r) {
     std::string line;
     while (std::getline(vtk, line) && line.rfind("POINTS", 0) != 0) {}
     double x = NAN;
-    vtk >> x;  // the STL's first vertex starts at x = 0
+    vtk >> x;  // the wall STL's first vertex starts at x = 0; both engines write the wall first
     const double moved = r.scene.shear.displacement_at(std::stod((*it)[1]));
     // distance on the periodic length: the mesh wraps, and VTK stores float32 coordinates
     const double d = std::fmod(x - moved + 10 * r.scene.length_m, r.scene.length_m);
@@ -110,10 +111,8 @@ void common_facts(const SmokeRun& r) {
   CHECK(snapshots >= 2);
 }
 
-}  // namespace
-
-TEST_CASE("LIGGGHTS smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][liggghts]") {
-  const auto r = run("smoke");
+void check_cnl(const std::string& engine) {
+  const auto r = run("smoke", engine);
   common_facts(r);
   const double target = r.scene.boundary.sigma_n_Pa / 1e3;
   for (double s : column(r, "sigma_plate_kPa")) CHECK(std::abs(s / target - 1.0) < 0.05);
@@ -124,8 +123,8 @@ TEST_CASE("LIGGGHTS smoke CNL: sigma_n stays within 5 % of the target during she
   CHECK(column(r, "u_n_mm").back() > 0.05);     // a dense rough-wall specimen dilates
 }
 
-TEST_CASE("LIGGGHTS smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][liggghts]") {
-  const auto r = run("smoke_cns");
+void check_cns(const std::string& engine) {
+  const auto r = run("smoke_cns", engine);
   common_facts(r);
   const auto un = column(r, "u_n_mm");
   REQUIRE(un.back() - un.front() > 0.1);  // enough dilation to measure a slope
@@ -136,8 +135,8 @@ TEST_CASE("LIGGGHTS smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][
   CHECK(slope(un, column(r, "sigma_plate_kPa")) == Approx(K).epsilon(0.10));
 }
 
-TEST_CASE("LIGGGHTS smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][liggghts]") {
-  const auto r = run("smoke_cyclic");
+void check_cyclic(const std::string& engine) {
+  const auto r = run("smoke_cyclic", engine);
   common_facts(r);
   const double A = r.scene.shear.amplitude_m * 1e3;
   const auto ux = column(r, "u_x_mm"), tau = column(r, "tau_kPa");
@@ -160,8 +159,8 @@ TEST_CASE("LIGGGHTS smoke cyclic: the wall reverses at +-A and tau follows it", 
   CHECK(summary["cycles"].size() == std::size_t(r.scene.shear.cycles));
 }
 
-TEST_CASE("LIGGGHTS smoke glued: the glued layer carries the wall's load and drags the grains", "[dem][liggghts]") {
-  const auto r = run("smoke_glued");
+void check_glued(const std::string& engine) {
+  const auto r = run("smoke_glued", engine);
   common_facts(r);
   // sigma_n on the wall is the base mesh plus the glued spheres: without the spheres' share it
   // would be a fraction of the target
@@ -176,10 +175,23 @@ TEST_CASE("LIGGGHTS smoke glued: the glued layer carries the wall's load and dra
   CHECK(manifest["R_n"].get<double>() == Approx(0.5).epsilon(1e-3));
 }
 
-TEST_CASE("LIGGGHTS smoke CV: the plate does not move and sigma_n is free", "[dem][liggghts]") {
-  const auto r = run("smoke_cv");
+void check_cv(const std::string& engine) {
+  const auto r = run("smoke_cv", engine);
   common_facts(r);
   for (double u : column(r, "u_n_mm")) CHECK(u == 0.0);
   const auto s = column(r, "sigma_n_kPa");
   CHECK(std::abs(s.back() - s.front()) > 5.0);  // a dilative specimen held at constant volume
 }
+
+}  // namespace
+
+TEST_CASE("LIGGGHTS smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][liggghts]") { check_cnl("liggghts"); }
+TEST_CASE("LIGGGHTS smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][liggghts]") { check_cns("liggghts"); }
+TEST_CASE("LIGGGHTS smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][liggghts]") { check_cyclic("liggghts"); }
+TEST_CASE("LIGGGHTS smoke glued: the glued layer carries the wall's load and drags the grains", "[dem][liggghts]") { check_glued("liggghts"); }
+TEST_CASE("LIGGGHTS smoke CV: the plate does not move and sigma_n is free", "[dem][liggghts]") { check_cv("liggghts"); }
+TEST_CASE("YADE smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][yade]") { check_cnl("yade"); }
+TEST_CASE("YADE smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][yade]") { check_cns("yade"); }
+TEST_CASE("YADE smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][yade][heavy]") { check_cyclic("yade"); }
+TEST_CASE("YADE smoke glued: the glued layer carries the wall's load and drags the grains", "[dem][yade][heavy]") { check_glued("yade"); }
+TEST_CASE("YADE smoke CV: the plate does not move and sigma_n is free", "[dem][yade]") { check_cv("yade"); }

@@ -1,0 +1,392 @@
+# iwb YADE runner: one stage of an interface-shear scene (DEM.md), driven by the parameters that
+# `iwb dem run --engine yade` derives from the scene file (yade_params.json, SI units).
+# Run headless from the stage's work directory:  yade -n -x -jN interface_shear.py PARAMS STAGE
+#   STAGE consolidate: generate, settle, consolidate to sigma_n0 under the servo plate, save.
+#   STAGE shear:       load, switch to test friction, relax, shear the bottom wall, write raw outputs.
+# Lines starting IWB_ are read by the runner (progress, stage ends, failures, cost), exactly as
+# from the LIGGGHTS templates; the raw files have the LIGGGHTS runner's columns so that one C++
+# routine turns either engine's output into the contract.
+import json
+import math
+import random
+import sys
+import time
+
+from yade import export, ymport
+
+P = json.load(open(sys.argv[1]))
+STAGE = sys.argv[2]
+# YADE's cell is periodic in z as well and starts at 0: the scene is lifted so that its lowest
+# point sits one d_max above 0, and the cell is two d_max taller than the scene, so nothing meets
+# its own image across z.
+ZS = P["d_max"] - P["zlo"]
+LZ = (P["zhi"] - P["zlo"]) + 2.0 * P["d_max"]
+
+
+def say(line):
+    print(line, flush=True)
+
+
+def fail(reason):
+    say("IWB_FAIL " + reason)
+    sys.exit(3)
+
+
+# --- scene construction (stage 1) -------------------------------------------------------------
+
+def material(friction, label):
+    return O.materials.append(FrictMat(young=P["E"], poisson=P["nu"], density=P["density"],
+                                       frictionAngle=math.atan(friction), label=label))
+
+
+def diameters(n, sizes, rng):
+    # Counts per class from mass fractions (number ~ mass / d^3), then shuffled.
+    weights = [f / d ** 3 for d, f in sizes]
+    total = sum(weights)
+    counts = [int(round(n * w / total)) for w in weights]
+    counts[-1] += n - sum(counts)
+    out = [d for (d, _), c in zip(sizes, counts) for _ in range(max(c, 0))]
+    rng.shuffle(out)
+    return out
+
+
+def random_cloud(n, rng):
+    """Non-overlapping spheres at random in the insertion region, periodic in x and y: random
+    sequential addition, largest first, on a hash grid. Fails with the counts if it cannot."""
+    ds = sorted(diameters(n, P["sizes"], rng), reverse=True)
+    lx, ly, z0, z1 = P["Lx"], P["Ly"], P["ins_zlo"], P["ins_zhi"]
+    cell = P["d_max"]
+    grid = {}
+    placed = []
+    for d in ds:
+        r = 0.5 * d
+        for _ in range(2000):
+            p = (rng.uniform(0, lx), rng.uniform(0, ly), rng.uniform(z0 + r, z1 - r))
+            key = (int(p[0] / cell), int(p[1] / cell), int(p[2] / cell))
+            ok = True
+            for i in (-1, 0, 1):
+                for j in (-1, 0, 1):
+                    for k in (-1, 0, 1):
+                        kk = ((key[0] + i) % max(1, int(lx / cell)), (key[1] + j) % max(1, int(ly / cell)), key[2] + k)
+                        for q, rq in grid.get(kk, ()):
+                            dx = abs(p[0] - q[0]); dx = min(dx, lx - dx)
+                            dy = abs(p[1] - q[1]); dy = min(dy, ly - dy)
+                            if dx * dx + dy * dy + (p[2] - q[2]) ** 2 < (r + rq) ** 2:
+                                ok = False
+                                break
+                        if not ok: break
+                    if not ok: break
+                if not ok: break
+            if ok:
+                key = (key[0] % max(1, int(lx / cell)), key[1] % max(1, int(ly / cell)), key[2])
+                grid.setdefault(key, []).append((p, r))
+                placed.append((p, r))
+                break
+        else:
+            break
+    return placed
+
+
+def build_scene():
+    O.periodic = True
+    O.cell.setBox(P["Lx"], P["Ly"], LZ)
+    O.dt = P["dt"]
+    grains_mat = material(P["mu_consolidation"], "grains")
+    wall_mat = material(P["mu_consolidation"], "walls")
+    shift = Vector3(0, 0, ZS)
+    wall = O.bodies.append(ymport.stl(P["wall_stl"], material=wall_mat, shift=shift, fixed=True))
+    glued = O.bodies.append([sphere((x, y, z + ZS), 0.5 * d, material=wall_mat, fixed=True)
+                             for x, y, z, d in P["glued"]])
+    plate = O.bodies.append(ymport.stl(P["plate_stl"], material=wall_mat, shift=shift, fixed=True))
+    rng = random.Random(P["seed"])
+    cloud = random_cloud(P["n_particles"], rng)
+    grains = O.bodies.append([sphere((p[0], p[1], p[2] + ZS), r, material=grains_mat) for p, r in cloud])
+    O.tags["iwb_ids"] = json.dumps({"wall": wall + glued, "plate": plate, "grains": grains})
+    say("IWB_PARTICLES %d requested %d" % (len(grains), P["n_particles"]))
+    if len(grains) < P["n_particles"]:
+        fail("particle count short: %d of %d placed (random placement could not fit them in the "
+             "insertion region; lower specimen.solid_fraction_estimate or particles)" % (len(grains), P["n_particles"]))
+
+
+def engines():
+    # Hertz-Mindlin with restitution damping and a rolling-resistance moment capped at
+    # eta * R_mean * F_n (dem-scripts/yade/README.md: the mapping from LIGGGHTS's cdt model).
+    return [
+        ForceResetter(),
+        InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()], allowBiggerThanPeriod=True,
+                              verletDist=P["skin"], label="collider"),
+        InteractionLoop(
+            [Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()],
+            [Ip2_FrictMat_FrictMat_MindlinPhys(en=P["restitution"], es=P["restitution"],
+                                               krot=P["rolling"]["krot"], eta=P["rolling"]["eta"])],
+            [Law2_ScGeom_MindlinPhys_Mindlin(includeMoment=P["rolling"]["eta"] > 0)]),
+        PyRunner(iterPeriod=P["servo"]["every"], command="control()", label="controller"),
+        NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.0),
+    ]
+
+
+# --- measurements -----------------------------------------------------------------------------
+
+IDS = {}
+REF = {}
+
+
+def ids_from_tags():
+    IDS.update(json.loads(O.tags["iwb_ids"]))
+    SPHERES[0] = sum(1 for b in O.bodies if isinstance(b.shape, Sphere))
+    REF["plate_z"] = O.bodies[IDS["plate"][0]].state.pos[2]
+    REF["wall_x"] = O.bodies[IDS["wall"][0]].state.pos[0]
+
+
+def zplate():
+    # The plate's reference height in scene coordinates (LIGGGHTS: the servo mesh's com).
+    return P["plate_z"] + (O.bodies[IDS["plate"][0]].state.pos[2] - P["plate_ref_z"])
+
+
+def plate_force():
+    return sumForces(IDS["plate"], (0, 0, 1))  # grains push the plate up: positive
+
+
+def wall_forces():
+    return -sumForces(IDS["wall"], (0, 0, 1)), -sumForces(IDS["wall"], (1, 0, 0))
+
+
+def kinetic_energy():
+    return sum(0.5 * b.state.mass * b.state.vel.squaredNorm() for b in (O.bodies[i] for i in IDS["grains"]))
+
+
+def stiffness_on(ids):
+    s = 0.0
+    for i in ids:
+        for c in O.interactions.withBody(i):
+            if c.isReal:
+                s += c.phys.kn
+    return s
+
+
+# --- the servo plate ----------------------------------------------------------------------------
+# Every `every` steps: v = g (F - F_target) / (sum k_n * every * dt), i.e. each update closes the
+# fraction g of the force error (DEM.md), clamped to vel_max; sum k_n of the plate's contacts is
+# refreshed every tenth update. Without contacts the plate approaches at vel_max. g = 0.3 per step
+# made the plate chatter against rattling grains and settle 40 % below target (the clamp is
+# one-sided while approaching); g = 0.02 per step converges on the smoke scene. While shearing,
+# vel_max is capped at 20 wall speeds: dilation is slower than the wall, and a cap near it keeps
+# one rattling contact from kicking the plate.
+
+SERVO = {"on": False, "kn": 0.0, "z0": None, "shear": False, "t0": 0.0, "updates": 0, "integral": 0.0,
+         "vel_max": P["servo"]["vel_max"]}
+
+
+def target_force():
+    if P["bc"] == "CNS" and SERVO["z0"] is not None:
+        return P["F0"] + P["K_Pa_per_m"] * P["area"] * (zplate() - SERVO["z0"])
+    return P["F0"]
+
+
+def set_velocity(ids, v):
+    for i in ids:
+        O.bodies[i].state.vel = v
+
+
+def control():
+    every = P["servo"]["every"]
+    v = 0.0
+    if SERVO["on"]:
+        if SERVO["updates"] % 10 == 0:
+            SERVO["kn"] = stiffness_on(IDS["plate"])
+        SERVO["updates"] += 1
+        err = plate_force() - target_force()
+        vmax = SERVO["vel_max"]
+        if SERVO["kn"] <= 0.0:
+            v = -vmax
+        else:
+            closing = err / (SERVO["kn"] * every * O.dt)  # the velocity that closes the error in one update
+            if SERVO["shear"]:  # the integral follows steady dilation, which a P servo only trails
+                SERVO["integral"] = max(-vmax, min(vmax, SERVO["integral"] + P["servo"]["integral_gain"] * closing))
+            v = P["servo"]["gain"] * closing + SERVO["integral"]
+        v = max(-vmax, min(vmax, v))
+    set_velocity(IDS["plate"], Vector3(0, 0, v))
+    if SERVO["shear"]:
+        set_velocity(IDS["wall"], Vector3(wall_velocity(O.time - SERVO["t0"]), 0, 0))
+
+
+def wall_velocity(t):
+    sh = P["shear"]
+    v = sh["velocity"]
+    if not sh["cyclic"]:
+        return v
+    phase = v * t / sh["amplitude"]  # the LIGGGHTS runner's triangle wave: 0 -> +A -> -A -> 0
+    return v * (1 - 2 * (int(math.floor((phase + 1) / 2)) % 2))
+
+
+COST = {"seconds": 0.0, "particle_steps": 0.0}
+SPHERES = [0]
+
+
+def run(steps):
+    t = time.time()
+    O.run(int(steps), True)
+    COST["seconds"] += time.time() - t
+    COST["particle_steps"] += float(steps) * SPHERES[0]  # grains and glued spheres, as LIGGGHTS counts atoms
+
+
+def report_cost():
+    say("IWB_COST seconds %.6g particle_steps %.6g" % (COST["seconds"], COST["particle_steps"]))
+
+
+# --- stage 1 ----------------------------------------------------------------------------------
+
+def consolidate():
+    build_scene()
+    O.engines = engines()
+    ids_from_tags()
+    P["plate_ref_z"] = REF["plate_z"]
+    O.tags["iwb_plate_ref_z"] = repr(REF["plate_z"])
+    run(P["settle_steps"])  # settle under gravity with the plate held
+    SERVO["on"] = True
+    good, zprev = 0, zplate()
+    for w in range(1, P["max_windows"] + 1):
+        run(P["window_steps"])
+        s = plate_force() / P["area"]
+        zp = zplate()
+        dz, ke = abs(zp - zprev), kinetic_energy()
+        ok = abs(s - P["sigma_n0"]) < P["sigma_tol"] * P["sigma_n0"] and dz < P["plate_tol"] and ke < P["ke_tol"]
+        good = good + 1 if ok else 0
+        say("IWB_WINDOW %d sigma_Pa %.8g dz_m %.6g ke_J %.6g good %d" % (w, s, dz, ke, good))
+        if good >= P["windows_required"]:
+            O.save("consolidated.yade.gz")
+            report_cost()
+            say("IWB_STAGE_DONE consolidate zplate_m %.10g sigma_Pa %.8g" % (zp, s))
+            return
+        zprev = zp
+    report_cost()
+    fail("servo did not converge: consolidation not accepted after %d windows" % P["max_windows"])
+
+
+# --- stage 2 ----------------------------------------------------------------------------------
+
+def set_friction(mu):
+    # Existing contacts keep the friction their Ip2 computed: change both (DEM.md pitfall).
+    for m in O.materials:
+        m.frictionAngle = math.atan(mu)
+    for c in O.interactions:
+        if c.isReal:
+            c.phys.tangensOfFrictionAngle = mu
+
+
+def grain_volumes():
+    return [(4.0 / 3.0) * math.pi * O.bodies[i].shape.radius ** 3 for i in IDS["grains"]]
+
+
+class Outputs:
+    def __init__(self):
+        self.vol = grain_volumes()
+        self.vsolid = sum(self.vol)
+        self.ts = open("timeseries.raw", "w")
+        self.ts.write("# t_s ux_m zplate_m sigma_wall_Pa tau_wall_Pa sigma_plate_Pa vsolid_m3 vband_m3 coordination atoms ke_J\n")
+        self.prof = open("profiles.raw", "w")
+        self.prof.write("# step z_m count vx_m_s solid_fraction s_zz_Pa s_xz_Pa (stresses: compression negative)\n")
+        self.samples = []
+        self.grain_set = set(IDS["grains"])
+
+    def coordination(self):
+        n = sum(1 for c in O.interactions if c.isReal and c.id1 in self.grain_set and c.id2 in self.grain_set)
+        return 2.0 * n / max(1, len(IDS["grains"]))
+
+    def timeseries(self, t):
+        zlo, zhi = P["band_zlo"] + ZS, P["band_zhi"] + ZS
+        vband = sum(v for i, v in zip(IDS["grains"], self.vol) if zlo <= O.bodies[i].state.pos[2] < zhi)
+        sw, tw = wall_forces()
+        ux = O.bodies[IDS["wall"][0]].state.pos[0] - REF["wall_x"]
+        self.ts.write("%.9g %.9g %.10g %.8g %.8g %.8g %.8g %.8g %.6g %d %.6g\n" % (
+            t, ux, zplate(), sw / P["area"], tw / P["area"], plate_force() / P["area"], self.vsolid, vband,
+            self.coordination(), len(IDS["grains"]), kinetic_energy()))
+        self.ts.flush()
+
+    def sample_profile(self):
+        # One instantaneous binning; profile() averages the samples of a window.
+        dz, z0 = P["bin_dz"], P["zlo"]
+        nb = int(math.ceil((P["zhi"] - P["zlo"]) / dz))
+        bins = [[0, 0.0, 0.0, 0.0, 0.0] for _ in range(nb)]
+        stress = bodyStressTensors()
+        for i, v in zip(IDS["grains"], self.vol):
+            b = O.bodies[i]
+            k = int((b.state.pos[2] - ZS - z0) / dz)
+            if 0 <= k < nb:
+                s = stress[i]
+                row = bins[k]
+                row[0] += 1; row[1] += b.state.vel[0]; row[2] += v; row[3] += s[2, 2] * v; row[4] += s[0, 2] * v
+        self.samples.append(bins)
+
+    def profile(self, step):
+        dz, z0 = P["bin_dz"], P["zlo"]
+        vbin = P["area"] * dz
+        ns = len(self.samples)
+        for k in range(len(self.samples[0])):
+            count = sum(s[k][0] for s in self.samples)
+            if count == 0:
+                self.prof.write("%d %.9g 0 0 0 0 0\n" % (step, z0 + (k + 0.5) * dz))
+                continue
+            vx = sum(s[k][1] for s in self.samples) / count
+            solid = sum(s[k][2] for s in self.samples) / (ns * vbin)
+            szz = sum(s[k][3] for s in self.samples) / (ns * vbin)
+            sxz = sum(s[k][4] for s in self.samples) / (ns * vbin)
+            self.prof.write("%d %.9g %.6g %.9g %.9g %.9g %.9g\n" % (step, z0 + (k + 0.5) * dz, count / ns, vx, solid, szz, sxz))
+        self.prof.flush()
+        self.samples = []
+
+
+def shear():
+    O.load("consolidated.yade.gz")
+    ids_from_tags()
+    P["plate_ref_z"] = float(O.tags["iwb_plate_ref_z"])
+    O.engines = engines()
+    set_friction(P["mu_test"])
+    SERVO["on"] = True
+    run(P["relax_steps"])
+    z0 = zplate()
+    SERVO["z0"] = z0
+    say("IWB_STAGE_DONE relax zplate_m %.10g" % z0)
+    if P["bc"] == "CV":
+        SERVO["on"] = False  # CV: the plate is held during shear
+    sh = P["shear"]
+    step0 = O.iter
+    say("IWB_SHEAR_START step %d zplate_m %.10g" % (step0, z0))
+    REF["wall_x"] = O.bodies[IDS["wall"][0]].state.pos[0]
+    SERVO["shear"], SERVO["t0"] = True, O.time
+    SERVO["vel_max"] = min(SERVO["vel_max"], 20.0 * sh["velocity"])
+    out = Outputs()
+    # One loop over the shear in chunks of the smallest output period; outputs fall on chunk ends.
+    chunk = 10
+    sample_every = max(chunk, (sh["profile_every"] // max(1, min(20, sh["profile_repeat"]))) // chunk * chunk)
+    vtk = export.VTKExporter("../vtk/yade")
+    done = 0
+    while done < sh["steps"]:
+        n = min(chunk, sh["steps"] - done)
+        run(n)
+        done += n
+        step = O.iter - step0
+        t = O.time - SERVO["t0"]
+        if step % sh["ts_every"] < chunk:
+            out.timeseries(t)
+        if step % sample_every < chunk:
+            out.sample_profile()
+        if step % sh["profile_every"] < chunk and out.samples:
+            out.profile(O.iter)
+        if step % sh["vtk_every"] < chunk:
+            vtk.exportSpheres(ids=IDS["grains"], what=dict(velocity="b.state.vel"), numLabel=O.iter)
+            vtk.exportFacets(ids=[i for i in IDS["wall"] if isinstance(O.bodies[i].shape, Facet)] + IDS["plate"],
+                             numLabel=O.iter)
+        if step % sh["progress_every"] < chunk:
+            say("IWB_PROGRESS %.9g %.9g" % (sh["velocity"] * t, sh["u_total"]))
+    ux = O.bodies[IDS["wall"][0]].state.pos[0] - REF["wall_x"]
+    report_cost()
+    say("IWB_STAGE_DONE shear ux_m %.9g" % ux)
+
+
+if STAGE == "consolidate":
+    consolidate()
+elif STAGE == "shear":
+    shear()
+else:
+    fail("unknown stage " + STAGE)

@@ -1,0 +1,40 @@
+#pragma once
+// `iwb dem crosscheck`: one scene in several engines with K seeds each, side by side (issue 5):
+// peak and residual friction, dilation rate and band thickness with their seed scatter, and each
+// engine's wall-clock cost. Runs that are already complete in the output directory are reused,
+// so an interrupted crosscheck continues where it stopped.
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace iwb::dem {
+
+struct CrosscheckOptions {
+  std::filesystem::path scene_file;
+  std::vector<std::string> engines = {"liggghts", "yade"};
+  int seeds = 3;
+  int processes = 1;
+  std::filesystem::path out;
+  std::string command_line;
+  const std::atomic<bool>* interrupt = nullptr;
+  std::function<void(const std::string&)> progress;
+};
+
+// The scene text with its top-level `seed` set to `seed` (replaced, or added at the top).
+std::string with_seed(const std::string& scene_text, int seed);
+
+// One quantity over the seeds of one engine.
+struct Scatter {
+  double mean = 0.0, sd = 0.0;
+  int n = 0;
+};
+Scatter scatter_of(const std::vector<double>& values);
+
+// Runs (or reuses) every engine x seed, writes crosscheck.json and crosscheck.md into out and
+// returns the JSON.
+nlohmann::json run_crosscheck(const CrosscheckOptions& options);
+
+}  // namespace iwb::dem

@@ -1,0 +1,157 @@
+#include "dem/yade/yade_engine.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <fmt/core.h>
+#include <fstream>
+#include <sstream>
+
+#include "common/subprocess.hpp"
+#include "dem/contract_outputs.hpp"
+#include "dem/stage_follower.hpp"
+#include "dem/wall_geometry.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::dem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The servo closes kServoGain of the force error per update, every kServoEvery steps: the
+// fraction per step that converged on the smoke scene was 0.02 (interface_shear.py says why).
+constexpr double kServoGain = 0.2;
+constexpr int kServoEvery = 10;
+// While shearing, an integral term adds this share of the closing velocity per update.
+constexpr double kServoIntegralGain = 0.02;
+constexpr const char* kScript = "interface_shear.py";
+
+// LIGGGHTS's cdt rolling model applies mu_r R* F_n against relative rolling (R* = R1 R2 /
+// (R1 + R2)); YADE's Mindlin law caps an elastic bending moment at eta R_mean F_n (R_mean =
+// (R1 + R2) / 2). Equal limits for two grains of d50: eta = mu_r R* / R_mean = mu_r / 2. The
+// bending stiffness follows Ai et al. (2011), k_r = 2.25 k_n mu_r^2 R*^2, with k_n the Hertz
+// tangent stiffness of a d50 contact carrying sigma_n0 d50^2: stiff enough that the moment reaches
+// its cap within a few hundredths of a radian, like the rigid-plastic cdt torque.
+nlohmann::json rolling(const Scene& s) {
+  const auto& p = s.particles;
+  const double mu_r = p.rolling_friction;
+  const double r_star = 0.25 * p.d50_m;
+  const double e_star = p.youngs_modulus_Pa / (2.0 * (1.0 - p.poisson * p.poisson));
+  const double kno = 4.0 / 3.0 * e_star * std::sqrt(r_star);
+  const double force = s.boundary.sigma_n_Pa * p.d50_m * p.d50_m;
+  const double kn = 1.5 * kno * std::sqrt(std::pow(force / kno, 2.0 / 3.0));
+  return {{"eta", 0.5 * mu_r}, {"krot", 2.25 * kn * mu_r * mu_r * r_star * r_star}, {"mu_r", mu_r}};
+}
+
+nlohmann::json glued_spheres(const Scene& s) {
+  nlohmann::json g = nlohmann::json::array();
+  if (s.wall.kind != ProfileKind::kGlued) return g;
+  const double d = s.wall.height_m, a = s.wall.pitch_m;
+  for (int i = 0; i < int(std::lround(s.length_m / a)); ++i)
+    for (int j = 0; j < int(std::lround(s.width_m / a)); ++j) g.push_back({(i + 0.5) * a, (j + 0.5) * a, 0.5 * d, d});
+  return g;
+}
+
+nlohmann::json shear_parameters(const Scene& s, const Numerics& n) {
+  return {{"velocity", s.shear.velocity_m_s}, {"amplitude", s.shear.amplitude_m}, {"cyclic", s.shear.cyclic()},
+          {"steps", n.shear_steps}, {"ts_every", n.ts_every}, {"progress_every", n.progress_every},
+          {"profile_every", n.profile_every}, {"profile_repeat", n.profile_repeat},
+          {"vtk_every", n.vtk_every}, {"u_total", s.shear.travel_m()}};
+}
+
+std::vector<std::string> command(const std::string& stage, int threads) {
+  // -n: no GUI; -x: exit when the script ends. stdbuf keeps the IWB_ lines live.
+  return {"stdbuf", "-oL", "yade", "-n", "-x", "-j", std::to_string(std::max(1, threads)), kScript,
+          "yade_params.json", stage};
+}
+
+// The script's profiles.raw: "step z count vx solid s_zz s_xz" per bin, stresses per bin volume
+// and compression negative, as LIGGGHTS's stress/atom.
+ProfileBlocks profile_blocks(const fs::path& raw, const Scene& s, const Numerics& n) {
+  ProfileBlocks blocks;
+  for (const auto& v : numeric_lines(raw))
+    if (v.size() >= 7)
+      blocks[long(v[0])].push_back({(v[1] - s.wall.mean_height_m()) / n.d50, v[2], v[3], v[4], -v[5], -v[6]});
+  return blocks;
+}
+
+}  // namespace
+
+nlohmann::json yade_parameters(const Scene& s, const Numerics& n) {
+  const auto& p = s.particles;
+  nlohmann::json sizes = nlohmann::json::array();
+  for (const auto& c : p.sizes) sizes.push_back({c.diameter_m, c.mass_fraction});
+  return {
+      {"Lx", s.length_m}, {"Ly", s.width_m}, {"zlo", n.zlo}, {"zhi", n.zhi}, {"d_max", p.d_max()},
+      {"dt", n.dt}, {"skin", n.skin}, {"plate_z", n.plate_z}, {"ins_zlo", n.ins_zlo}, {"ins_zhi", n.ins_zhi},
+      {"sizes", sizes}, {"density", p.density_kg_m3}, {"E", p.youngs_modulus_Pa}, {"nu", p.poisson},
+      {"restitution", p.restitution}, {"mu_consolidation", s.consolidation.friction}, {"mu_test", p.friction},
+      {"rolling", rolling(s)}, {"glued", glued_spheres(s)}, {"wall_stl", "wall.stl"}, {"plate_stl", "top.stl"},
+      {"n_particles", s.particle_count}, {"seed", s.seed},
+      {"settle_steps", n.settle_steps}, {"window_steps", s.consolidation.window_steps},
+      {"windows_required", s.consolidation.windows_required}, {"max_windows", s.consolidation.max_windows},
+      {"sigma_n0", s.boundary.sigma_n_Pa}, {"sigma_tol", s.consolidation.sigma_tolerance},
+      {"plate_tol", s.consolidation.plate_tolerance_d50 * n.d50}, {"ke_tol", s.consolidation.kinetic_energy_J},
+      {"F0", s.boundary.sigma_n_Pa * s.area_m2()}, {"area", s.area_m2()},
+      {"servo", {{"vel_max", s.servo.vel_max_m_s}, {"gain", kServoGain}, {"integral_gain", kServoIntegralGain}, {"every", kServoEvery}}},
+      {"bc", driver::to_string(s.boundary.kind)},
+      {"K_Pa_per_m", s.boundary.kind == driver::BoundaryKind::kCNS ? s.boundary.K_Pa_per_m : 0.0},
+      {"relax_steps", n.relax_steps}, {"band_zlo", n.band_zlo}, {"band_zhi", n.band_zhi},
+      {"bin_dz", s.outputs.profile_bin_d50 * n.d50}, {"shear", shear_parameters(s, n)},
+  };
+}
+
+std::string YadeEngine::version() const {
+  std::string v = "unknown";
+  try {
+    run_process({"yade", "--version"}, fs::temp_directory_path(), [&v](const std::string& l) {
+      if (l.find("Yade") != std::string::npos) v = l;
+      return true;
+    });
+  } catch (const std::exception&) {
+  }
+  return v;
+}
+
+nlohmann::json YadeEngine::numerics(const Scene& s) const {
+  const Numerics n = derive(s);
+  return {{"timestep_s", n.dt},
+          {"timestep_rule", "0.15 x Rayleigh time of the smallest particle (the LIGGGHTS runner's rule)"},
+          {"rayleigh_time_s", rayleigh_time(s.particles)},
+          {"shear_steps", n.shear_steps},
+          {"wall_velocity_mm_s", s.shear.velocity_m_s * 1e3},
+          {"contact_law", "Ip2_FrictMat_FrictMat_MindlinPhys (en = es = restitution, krot, eta) + "
+                          "Law2_ScGeom_MindlinPhys_Mindlin(includeMoment); walls: facets from the STL"},
+          {"rolling", rolling(s)},
+          {"servo", {{"vel_max_m_s", s.servo.vel_max_m_s}, {"gain_per_update", kServoGain}, {"integral_gain_while_shearing", kServoIntegralGain}, {"steps_per_update", kServoEvery}}}};
+}
+
+StageResult YadeEngine::run_stage(const std::string& stage, const StageContext& ctx, const nlohmann::json&) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Scene& s = ctx.scene;
+  const Numerics n = derive(s);
+  write_scene_meshes(s, n.plate_z, ctx.work_dir);
+  io::write_atomically(ctx.work_dir / "yade_params.json", yade_parameters(s, n).dump(2) + "\n");
+  io::write_atomically(ctx.work_dir / kScript, yade_scripts().at(kScript));
+  const double generation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  StageResult r = run_followed_stage(command(stage, ctx.processes), stage, ctx);
+  r.facts["generation_seconds"] = generation;
+  return r;
+}
+
+ContractTables YadeEngine::assemble(const StageContext& ctx, const nlohmann::json& facts) {
+  const Numerics n = derive(ctx.scene);
+  const long step0 = facts.at("shear").at("step0").get<long>();
+  const double z0 = facts.at("shear").at("z0_m").get<double>();
+  ContractTables out;
+  out.timeseries = timeseries_table(ctx.scene, n, ctx.work_dir / "timeseries.raw", z0);
+  out.profiles = profile_table(ctx.scene, n, profile_blocks(ctx.work_dir / "profiles.raw", ctx.scene, n), step0);
+  write_pvd(ctx.run_dir / "vtk", "particles", "yade-spheres-0*([0-9]+)\\.vtk", step0, n.dt);
+  write_pvd(ctx.run_dir / "vtk", "walls", "yade-facets-0*([0-9]+)\\.vtk", step0, n.dt);
+  out.facts = plate_facts(ctx.scene, out.timeseries);
+  out.facts["timestep_s"] = n.dt;
+  out.facts["shear_start_step"] = step0;
+  return out;
+}
+
+}  // namespace iwb::dem
