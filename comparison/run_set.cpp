@@ -110,12 +110,19 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
   io::write_manifest(opt.out, manifest);
   RunSetOutcome outcome;
   std::vector<RunRecord> records;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    CompareOptions c{opt.dem_dirs[i], opt.model, opt.params, opt.out / names[i], opt.allow_partial, opt.force,
-                     opt.command_line};
-    if (compare_or_reuse(c)) outcome.reused.push_back(names[i]);
-    outcome.compare_dirs.push_back(c.out);
-    records.push_back(load_run_record(c.out));
+  try {
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      CompareOptions c{opt.dem_dirs[i], opt.model, opt.params, opt.out / names[i], opt.allow_partial, opt.force,
+                       opt.command_line};
+      if (compare_or_reuse(c)) outcome.reused.push_back(names[i]);
+      outcome.compare_dirs.push_back(c.out);
+      records.push_back(load_run_record(c.out));
+    }
+  } catch (const std::exception& e) {  // the manifest never stays "running" (CONVENTIONS.md "Results")
+    manifest["status"] = fmt::format("failed: {}", e.what());
+    manifest["finished"] = io::utc_timestamp();
+    io::write_manifest(opt.out, manifest);
+    throw;
   }
   outcome.hypotheses = to_json(check_hypotheses(records), records);
   io::write_atomically(opt.out / "hypotheses.json", outcome.hypotheses.dump(2) + "\n");
