@@ -199,8 +199,8 @@ ReportInputs resolve(const std::vector<fs::path>& paths) {
       if (fs::exists(p.parent_path() / "hypotheses.json")) add_unique(in.hypotheses, p.parent_path() / "hypotheses.json");
     } else if (fs::is_directory(p) && fs::exists(p / "hypotheses.json")) {
       add_unique(in.hypotheses, p / "hypotheses.json");
-      for (const auto& r : nlohmann::json::parse(io::read_file(p / "hypotheses.json"))["runs"])
-        add_unique(in.compare_dirs, p / r["name"].get<std::string>());
+      const auto set = nlohmann::json::parse(io::read_file(p / "hypotheses.json"));  // outlives the loop
+      for (const auto& r : set["runs"]) add_unique(in.compare_dirs, p / r["name"].get<std::string>());
     } else if (fs::is_regular_file(p) && set_file(p)) {
       add_unique(in.hypotheses, p.parent_path() / "hypotheses.json");
     } else {
