@@ -1,8 +1,9 @@
 #include "comparison/hypotheses.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 #include <numeric>
 
 #include "comparison/compare.hpp"
@@ -20,19 +21,22 @@ Scatter scatter_of(const std::vector<double>& x) {
   return s;
 }
 
-std::vector<std::vector<std::size_t>> group_close(const std::vector<double>& values, double relative,
-                                                  double absolute) {
+std::vector<std::vector<std::size_t>> group_close(const std::vector<double>& values,
+                                                  double relative, double absolute) {
   std::vector<std::size_t> order(values.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return values[a] < values[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](auto a, auto b) { return values[a] < values[b]; });
   std::vector<std::vector<std::size_t>> groups;
   for (auto i : order) {
     const bool joins = !groups.empty() && [&] {
       const double first = values[groups.back().front()];
       return values[i] - first <= std::max(absolute, relative * std::abs(values[i]));
     }();
-    if (joins) groups.back().push_back(i);
-    else groups.push_back({i});
+    if (joins)
+      groups.back().push_back(i);
+    else
+      groups.push_back({i});
   }
   return groups;
 }
@@ -44,10 +48,13 @@ std::string pm(const Scatter& s, int digits) {
                  : fmt::format("{:.{}f} (one run)", s.mean, digits);
 }
 
-std::string rn_label(double R_n) { return R_n > 0.0 ? fmt::format("R_n = {:.3g}", R_n) : "R_n = 0 (flat)"; }
+std::string rn_label(double R_n) {
+  return R_n > 0.0 ? fmt::format("R_n = {:.3g}", R_n) : "R_n = 0 (flat)";
+}
 
 template <class F>
-std::vector<double> collect(const std::vector<RunRecord>& runs, const std::vector<std::size_t>& idx, F f) {
+std::vector<double> collect(const std::vector<RunRecord>& runs, const std::vector<std::size_t>& idx,
+                            F f) {
   std::vector<double> out;
   for (auto i : idx) out.push_back(f(runs[i]));
   return out;
@@ -68,14 +75,17 @@ KappaAgainstFormula against_formula(const KappaGroup& g, double base) {
   k.difference = g.fit.mean - k.formula;
   if (g.fit.n > 1 && g.scatter > 0.0) {
     k.in_scatter = k.difference / g.scatter;
-    k.follows = std::abs(*k.in_scatter) <= kWithinScatter || std::abs(k.difference) <= kKappaResolution;
+    k.follows =
+        std::abs(*k.in_scatter) <= kWithinScatter || std::abs(k.difference) <= kKappaResolution;
   } else {
     k.follows = std::abs(k.difference) <= kKappaSingleRunTolerance;
   }
   return k;
 }
 
-std::string base_name(double base) { return base == 10.0 ? "log base 10" : "log base e"; }
+std::string base_name(double base) {
+  return base == 10.0 ? "log base 10" : "log base e";
+}
 
 std::string kappa_miss(const KappaGroup& g, const KappaAgainstFormula& k) {
   const std::string how = k.in_scatter ? fmt::format("{:+.1f} SD", *k.in_scatter)
@@ -88,11 +98,13 @@ std::string kappa_verdict(const KappaCheck& c, std::size_t b) {
   int follows = 0;
   std::string misses;
   for (const auto& g : c.groups) {
-    if (g.bases[b].follows) ++follows;
-    else misses += (misses.empty() ? "" : "; ") + kappa_miss(g, g.bases[b]);
+    if (g.bases[b].follows)
+      ++follows;
+    else
+      misses += (misses.empty() ? "" : "; ") + kappa_miss(g, g.bases[b]);
   }
-  std::string v = fmt::format("{}: follows within scatter at {} of {} R_n", base_name(kGutjahrLogBases[b]),
-                              follows, c.groups.size());
+  std::string v = fmt::format("{}: follows within scatter at {} of {} R_n",
+                              base_name(kGutjahrLogBases[b]), follows, c.groups.size());
   return misses.empty() ? v : v + "; misses at " + misses;
 }
 
@@ -105,9 +117,11 @@ KappaCheck check_kappa_r(const std::vector<RunRecord>& runs) {
     g.R_n = scatter_of(collect(runs, idx, [](const RunRecord& r) { return r.R_n; })).mean;
     for (auto i : idx) g.runs.push_back(runs[i].name);
     g.fit = scatter_of(collect(runs, idx, [](const RunRecord& r) { return r.kappa_r_fit; }));
-    const double fit_sigma = scatter_of(collect(runs, idx, [](const RunRecord& r) { return r.sigma_kappa_r_fit; })).mean;
+    const double fit_sigma =
+        scatter_of(collect(runs, idx, [](const RunRecord& r) { return r.sigma_kappa_r_fit; })).mean;
     g.scatter = std::hypot(g.fit.sd, fit_sigma);
-    for (std::size_t b = 0; b < kGutjahrLogBases.size(); ++b) g.bases[b] = against_formula(g, kGutjahrLogBases[b]);
+    for (std::size_t b = 0; b < kGutjahrLogBases.size(); ++b)
+      g.bases[b] = against_formula(g, kGutjahrLogBases[b]);
     c.groups.push_back(g);
   }
   std::array<double, 2> rms{0.0, 0.0};
@@ -118,15 +132,17 @@ KappaCheck check_kappa_r(const std::vector<RunRecord>& runs) {
       rms[b] += g.bases[b].difference * g.bases[b].difference;
     }
     rms[b] = c.groups.empty() ? 0.0 : std::sqrt(rms[b] / double(c.groups.size()));
-    c.outcome[b] = c.groups.empty() ? "not testable"
+    c.outcome[b] = c.groups.empty()                  ? "not testable"
                    : follows == int(c.groups.size()) ? "follows"
-                   : follows > 0 ? "partly follows" : "misses";
+                   : follows > 0                     ? "partly follows"
+                                                     : "misses";
     c.verdict[b] = c.groups.empty() ? "not testable: no runs" : kappa_verdict(c, b);
   }
   if (!c.groups.empty())
-    c.verdict_overall = fmt::format("RMS difference fit - formula over {} R_n: {:.3f} (log base 10), {:.3f} "
-                                    "(log base e); the data favour log base {}",
-                                    c.groups.size(), rms[0], rms[1], rms[0] <= rms[1] ? "10" : "e");
+    c.verdict_overall = fmt::format(
+        "RMS difference fit - formula over {} R_n: {:.3f} (log base 10), {:.3f} "
+        "(log base e); the data favour log base {}",
+        c.groups.size(), rms[0], rms[1], rms[0] <= rms[1] ? "10" : "e");
   return c;
 }
 
@@ -137,8 +153,10 @@ BandCheck check_band_thickness(const std::vector<RunRecord>& runs) {
   std::vector<double> bands, d_s;
   for (const auto& r : runs) {
     d_s.push_back(r.d_s_fit_d50);
-    if (r.shear_mode == "distributed shear") c.distributed.push_back(r.name);
-    else if (!r.band_d50) c.without_wall_band.push_back(r.name + " (" + r.shear_mode + ")");
+    if (r.shear_mode == "distributed shear")
+      c.distributed.push_back(r.name);
+    else if (!r.band_d50)
+      c.without_wall_band.push_back(r.name + " (" + r.shear_mode + ")");
     else {
       c.bands.push_back({r.name, *r.band_d50});
       bands.push_back(*r.band_d50);
@@ -148,18 +166,24 @@ BandCheck check_band_thickness(const std::vector<RunRecord>& runs) {
   c.band = scatter_of(bands);
   c.d_s_fit_d50 = scatter_of(d_s);
   const bool mean_inside = c.band.mean >= kBandMinD50 && c.band.mean <= kBandMaxD50;
-  c.outcome = bands.empty()                    ? "not testable"
+  c.outcome = bands.empty()                   ? "not testable"
               : c.inside == int(bands.size()) ? "holds"
-              : mean_inside                    ? "holds on average"
-                                               : "does not hold";
-  std::string v = bands.empty()
-                      ? "not testable: no run localised a band at the wall"
-                      : fmt::format("{}: wall band {} d50 over {} localised run(s), {} of {} inside [{:g}, {:g}]",
-                                    c.outcome, pm(c.band, 2), bands.size(), c.inside, bands.size(), kBandMinD50,
-                                    kBandMaxD50);
-  if (!c.distributed.empty()) v += fmt::format("; {} run(s) with distributed shear (no band, not counted)", c.distributed.size());
-  if (!c.without_wall_band.empty()) v += fmt::format("; {} run(s) without a wall band", c.without_wall_band.size());
-  if (!runs.empty()) v += fmt::format("; fitted d_s {} d50 over all {} run(s)", pm(c.d_s_fit_d50, 1), runs.size());
+              : mean_inside                   ? "holds on average"
+                                              : "does not hold";
+  std::string v =
+      bands.empty()
+          ? "not testable: no run localised a band at the wall"
+          : fmt::format(
+                "{}: wall band {} d50 over {} localised run(s), {} of {} inside [{:g}, {:g}]",
+                c.outcome, pm(c.band, 2), bands.size(), c.inside, bands.size(), kBandMinD50,
+                kBandMaxD50);
+  if (!c.distributed.empty())
+    v += fmt::format("; {} run(s) with distributed shear (no band, not counted)",
+                     c.distributed.size());
+  if (!c.without_wall_band.empty())
+    v += fmt::format("; {} run(s) without a wall band", c.without_wall_band.size());
+  if (!runs.empty())
+    v += fmt::format("; fitted d_s {} d50 over all {} run(s)", pm(c.d_s_fit_d50, 1), runs.size());
   c.verdict = v;
   return c;
 }
@@ -172,11 +196,13 @@ namespace {
 // critical state, u_n / d50 = (band / d50) * volumetric strain is the same for every d50, and it
 // does not depend on how many mm each run was sheared once the volume is steady. (The dilatancy
 // angle over the last fifth is ~0 at the critical state for every run, so it cannot tell.)
-double final_u_n_over_d50(const RunRecord& r) { return r.dilation_mm / r.d50_mm; }
+double final_u_n_over_d50(const RunRecord& r) {
+  return r.dilation_mm / r.d50_mm;
+}
 
 QuantityCollapse compare_sets(const std::string& quantity, const std::vector<RunRecord>& runs,
-                              const std::vector<std::vector<std::size_t>>& sets, double (*value)(const RunRecord&),
-                              double resolution) {
+                              const std::vector<std::vector<std::size_t>>& sets,
+                              double (*value)(const RunRecord&), double resolution) {
   QuantityCollapse q{quantity, {}, 0.0, 0.0, 0, std::nullopt, resolution, false};
   double ss = 0.0;
   for (const auto& idx : sets) {
@@ -185,8 +211,9 @@ QuantityCollapse compare_sets(const std::string& quantity, const std::vector<Run
     ss += q.sets.back().value.sd * q.sets.back().value.sd * double(x.size() - 1);
     q.dof += int(x.size()) - 1;
   }
-  const auto [lo, hi] = std::minmax_element(q.sets.begin(), q.sets.end(),
-                                            [](const D50Set& a, const D50Set& b) { return a.value.mean < b.value.mean; });
+  const auto [lo, hi] = std::minmax_element(
+      q.sets.begin(), q.sets.end(),
+      [](const D50Set& a, const D50Set& b) { return a.value.mean < b.value.mean; });
   q.difference = hi->value.mean - lo->value.mean;
   q.pooled_sd = q.dof > 0 ? std::sqrt(ss / q.dof) : 0.0;
   const double se = q.pooled_sd * std::sqrt(1.0 / hi->value.n + 1.0 / lo->value.n);
@@ -199,32 +226,42 @@ QuantityCollapse compare_sets(const std::string& quantity, const std::vector<Run
   return q;
 }
 
-CollapseGroup collapse_group(const std::vector<RunRecord>& runs, const std::vector<std::size_t>& idx) {
+CollapseGroup collapse_group(const std::vector<RunRecord>& runs,
+                             const std::vector<std::size_t>& idx) {
   CollapseGroup g;
   g.R_n = scatter_of(collect(runs, idx, [](const RunRecord& r) { return r.R_n; })).mean;
   std::vector<std::vector<std::size_t>> sets;
-  for (const auto& local : group_close(collect(runs, idx, [](const RunRecord& r) { return r.d50_mm; }),
-                                       kSameD50Relative, 0.0)) {
+  for (const auto& local :
+       group_close(collect(runs, idx, [](const RunRecord& r) { return r.d50_mm; }),
+                   kSameD50Relative, 0.0)) {
     sets.push_back({});
     for (auto k : local) sets.back().push_back(idx[k]);
     g.d50s_mm.push_back(runs[sets.back().front()].d50_mm);
   }
   if (sets.size() < 2) return g;
   g.quantities = {
-      compare_sets("peak friction", runs, sets, [](const RunRecord& r) { return r.peak_friction; }, kFrictionResolution),
-      compare_sets("residual friction", runs, sets, [](const RunRecord& r) { return r.residual_friction; },
-                   kFrictionResolution),
+      compare_sets(
+          "peak friction", runs, sets, [](const RunRecord& r) { return r.peak_friction; },
+          kFrictionResolution),
+      compare_sets(
+          "residual friction", runs, sets, [](const RunRecord& r) { return r.residual_friction; },
+          kFrictionResolution),
       compare_sets("final u_n / d50", runs, sets, final_u_n_over_d50, kDilationResolutionD50)};
-  g.collapses = std::all_of(g.quantities.begin(), g.quantities.end(), [](const auto& q) { return q.collapses; });
+  g.collapses = std::all_of(g.quantities.begin(), g.quantities.end(),
+                            [](const auto& q) { return q.collapses; });
   return g;
 }
 
 std::string quantity_text(const QuantityCollapse& q) {
   std::string sets;
-  for (const auto& s : q.sets) sets += fmt::format("{}d50 {:g} mm: {}", sets.empty() ? "" : ", ", s.d50_mm, pm(s.value, 3));
-  const std::string how = q.in_scatter ? fmt::format("{:.1f} x the standard error of the pooled seed scatter "
-                                                     "(SD {:.3f}, {} dof)", *q.in_scatter, q.pooled_sd, q.dof)
-                                       : fmt::format("no seed scatter, resolution {:g}", q.resolution);
+  for (const auto& s : q.sets)
+    sets += fmt::format("{}d50 {:g} mm: {}", sets.empty() ? "" : ", ", s.d50_mm, pm(s.value, 3));
+  const std::string how = q.in_scatter
+                              ? fmt::format(
+                                    "{:.1f} x the standard error of the pooled seed scatter "
+                                    "(SD {:.3f}, {} dof)",
+                                    *q.in_scatter, q.pooled_sd, q.dof)
+                              : fmt::format("no seed scatter, resolution {:g}", q.resolution);
   return fmt::format("{} differs by {:.3f} ({}; {})", q.quantity, q.difference, sets, how);
 }
 
@@ -242,16 +279,19 @@ CollapseCheck check_d50_collapse(const std::vector<RunRecord>& runs) {
     collapsing += g.collapses;
     std::string parts;
     for (const auto& q : g.quantities) parts += (parts.empty() ? "" : "; ") + quantity_text(q);
-    detail += fmt::format(" At {}: {} ({}).", rn_label(g.R_n), g.collapses ? "collapses" : "does not collapse", parts);
+    detail += fmt::format(" At {}: {} ({}).", rn_label(g.R_n),
+                          g.collapses ? "collapses" : "does not collapse", parts);
   }
   if (testable == 0) {
     c.outcome = "not testable";
-    c.verdict = fmt::format("not testable: need runs with two d50 at equal R_n ({} R_n group(s), each with one d50)",
-                            c.groups.size());
+    c.verdict = fmt::format(
+        "not testable: need runs with two d50 at equal R_n ({} R_n group(s), each with one d50)",
+        c.groups.size());
     return c;
   }
   c.outcome = collapsing == testable ? "collapses" : "does not collapse";
-  c.verdict = fmt::format("{} at {} of {} R_n with two or more d50.{}", c.outcome, collapsing, testable, detail);
+  c.verdict = fmt::format("{} at {} of {} R_n with two or more d50.{}", c.outcome, collapsing,
+                          testable, detail);
   return c;
 }
 

@@ -61,9 +61,9 @@ Scatter scatter_of(const std::vector<double>& x);
 // --- 1. fitted kappa_r against Gutjahr's kappa_r(R_n), eq. 5.35, for each log base.
 struct KappaAgainstFormula {
   double base = 10.0;
-  double formula = 0.0;                 // eq. 5.35 (floor for a flat wall)
-  double difference = 0.0;              // mean fit - formula
-  std::optional<double> in_scatter;     // difference / scatter; empty for a single run
+  double formula = 0.0;              // eq. 5.35 (floor for a flat wall)
+  double difference = 0.0;           // mean fit - formula
+  std::optional<double> in_scatter;  // difference / scatter; empty for a single run
   bool follows = false;
 };
 struct KappaGroup {
@@ -85,11 +85,11 @@ KappaCheck check_kappa_r(const std::vector<RunRecord>& runs);
 struct BandCheck {
   std::vector<std::pair<std::string, double>> bands;  // localised runs: name, wall band in d50
   std::vector<std::string> distributed;               // "distributed shear": no band, no thickness
-  std::vector<std::string> without_wall_band;         // other modes with no wall band (plate, no profile)
+  std::vector<std::string> without_wall_band;  // other modes with no wall band (plate, no profile)
   Scatter band;
-  int inside = 0;        // bands in [kBandMinD50, kBandMaxD50]
-  Scatter d_s_fit_d50;   // the fitted d_s of every run, for comparison
-  std::string outcome;   // "holds", "holds on average", "does not hold", "not testable"
+  int inside = 0;       // bands in [kBandMinD50, kBandMaxD50]
+  Scatter d_s_fit_d50;  // the fitted d_s of every run, for comparison
+  std::string outcome;  // "holds", "holds on average", "does not hold", "not testable"
   std::string verdict;
 };
 BandCheck check_band_thickness(const std::vector<RunRecord>& runs);
@@ -102,11 +102,11 @@ struct D50Set {
 struct QuantityCollapse {
   std::string quantity;  // "peak friction", "residual friction", "final u_n / d50"
   std::vector<D50Set> sets;
-  double difference = 0.0;             // largest minus smallest set mean
-  double pooled_sd = 0.0;              // seed scatter pooled over the d50 sets
-  int dof = 0;                         // its degrees of freedom
-  std::optional<double> in_scatter;    // difference / standard error of that difference
-  double resolution = 0.0;             // used instead when there is no seed scatter
+  double difference = 0.0;           // largest minus smallest set mean
+  double pooled_sd = 0.0;            // seed scatter pooled over the d50 sets
+  int dof = 0;                       // its degrees of freedom
+  std::optional<double> in_scatter;  // difference / standard error of that difference
+  double resolution = 0.0;           // used instead when there is no seed scatter
   bool collapses = false;
 };
 struct CollapseGroup {
@@ -137,7 +137,7 @@ std::string to_markdown(const nlohmann::json& hypotheses);
 
 // Groups of indices into `values` whose members are within the tolerance of the group's first
 // (smallest) value; groups in ascending order.
-std::vector<std::vector<std::size_t>> group_close(const std::vector<double>& values, double relative,
-                                                  double absolute);
+std::vector<std::vector<std::size_t>> group_close(const std::vector<double>& values,
+                                                  double relative, double absolute);
 
 }  // namespace iwb::comparison

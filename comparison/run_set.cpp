@@ -1,6 +1,7 @@
 #include "comparison/run_set.hpp"
 
 #include <fmt/core.h>
+
 #include <set>
 
 #include "common/errors.hpp"
@@ -38,7 +39,8 @@ enum class Earlier { kNone, kSameInputs, kOtherInputs, kIncomplete };
 Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
   if (!fs::exists(dir / "manifest.json")) return Earlier::kNone;
   const auto m = read_json(dir / "manifest.json");
-  if (m.value("status", "") != "complete" || !fs::exists(dir / "compare.json")) return Earlier::kIncomplete;
+  if (m.value("status", "") != "complete" || !fs::exists(dir / "compare.json"))
+    return Earlier::kIncomplete;
   const bool same = m.value("/inputs/dem_manifest_sha256"_json_pointer, std::string()) ==
                         io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json")) &&
                     m.value("/inputs/parameters_sha256"_json_pointer, std::string()) ==
@@ -50,14 +52,20 @@ Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
 // Runs or reuses the comparison of one DEM run; returns whether it was reused.
 bool compare_or_reuse(CompareOptions opt) {
   switch (earlier_comparison(opt.out, opt)) {
-    case Earlier::kSameInputs: return true;
+    case Earlier::kSameInputs:
+      return true;
     case Earlier::kOtherInputs:
       if (!opt.force)
-        throw InputError(fmt::format("{}: holds a complete comparison of other inputs (DEM run, parameters or "
-                                     "model); pass --force to replace it", opt.out.string()));
+        throw InputError(
+            fmt::format("{}: holds a complete comparison of other inputs (DEM run, parameters or "
+                        "model); pass --force to replace it",
+                        opt.out.string()));
       break;
-    case Earlier::kIncomplete: opt.force = true; break;  // an interrupted comparison is no result
-    case Earlier::kNone: break;
+    case Earlier::kIncomplete:
+      opt.force = true;
+      break;  // an interrupted comparison is no result
+    case Earlier::kNone:
+      break;
   }
   run_comparison(opt);
   return false;
@@ -71,8 +79,10 @@ std::vector<std::string> run_names(const std::vector<fs::path>& dirs) {
     if (p.filename().empty()) p = p.parent_path();  // "dir/" names dir
     const std::string name = p.filename().string();
     if (!seen.insert(name).second)
-      throw InputError(fmt::format("--runs: two runs are named '{}' ({}); their comparisons would share "
-                                   "OUT/{}", name, d.string(), name));
+      throw InputError(
+          fmt::format("--runs: two runs are named '{}' ({}); their comparisons would share "
+                      "OUT/{}",
+                      name, d.string(), name));
     names.push_back(name);
   }
   return names;
@@ -97,7 +107,8 @@ RunRecord load_run_record(const fs::path& compare_dir) {
   r.residual_friction = field<double>(s, "/residual_friction", sf);
   r.dilation_mm = field<double>(s, "/dilation_mm", sf);
   r.shear_mode = field<std::string>(s, "/shear_mode", sf);
-  if (s.contains("wall_band_d50") && s["wall_band_d50"].is_number()) r.band_d50 = s["wall_band_d50"].get<double>();
+  if (s.contains("wall_band_d50") && s["wall_band_d50"].is_number())
+    r.band_d50 = s["wall_band_d50"].get<double>();
   return r;
 }
 
@@ -105,20 +116,22 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
   if (opt.dem_dirs.empty()) throw InputError("--runs: no DEM run directories given");
   const auto names = run_names(opt.dem_dirs);
   fs::create_directories(opt.out);
-  json manifest = {{"kind", "hypothesis set"}, {"command_line", opt.command_line}, {"model", opt.model},
-                   {"parameters", opt.params}, {"started", io::utc_timestamp()}, {"status", "running"}};
+  json manifest = {
+      {"kind", "hypothesis set"}, {"command_line", opt.command_line}, {"model", opt.model},
+      {"parameters", opt.params}, {"started", io::utc_timestamp()},   {"status", "running"}};
   io::write_manifest(opt.out, manifest);
   RunSetOutcome outcome;
   std::vector<RunRecord> records;
   try {
     for (std::size_t i = 0; i < names.size(); ++i) {
-      CompareOptions c{opt.dem_dirs[i], opt.model, opt.params, opt.out / names[i], opt.allow_partial, opt.force,
-                       opt.command_line};
+      CompareOptions c{opt.dem_dirs[i],   opt.model, opt.params,      opt.out / names[i],
+                       opt.allow_partial, opt.force, opt.command_line};
       if (compare_or_reuse(c)) outcome.reused.push_back(names[i]);
       outcome.compare_dirs.push_back(c.out);
       records.push_back(load_run_record(c.out));
     }
-  } catch (const std::exception& e) {  // the manifest never stays "running" (CONVENTIONS.md "Results")
+  } catch (
+      const std::exception& e) {  // the manifest never stays "running" (CONVENTIONS.md "Results")
     manifest["status"] = fmt::format("failed: {}", e.what());
     manifest["finished"] = io::utc_timestamp();
     io::write_manifest(opt.out, manifest);

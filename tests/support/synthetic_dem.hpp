@@ -4,9 +4,10 @@
 // engine. The shear zone of thickness d_s gives the velocity profile (linear drop over d_s at the
 // wall, or over the whole specimen for distributed shear), and summary.json is computed from the
 // files by the DEM layer's own summarize().
+#include <fmt/core.h>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
-#include <fmt/core.h>
 
 #include "dem/summary.hpp"
 #include "io/run_directory.hpp"
@@ -34,7 +35,8 @@ inline std::string synthetic_profile(const SyntheticDem& s, double u_x_end_mm) {
   const double band = s.distributed ? kSyntheticHeightD50 : s.d_s_mm / s.d50_mm;
   std::string p = "u_x_mm_window,z_over_d50,vx_over_vwall,porosity,sigma_zz_kPa,tau_zx_kPa\n";
   for (double z = 0.25; z < kSyntheticHeightD50; z += 0.5)
-    p += fmt::format("{:.6g},{:.6g},{:.6g},0.4,100,50\n", u_x_end_mm, z, std::max(0.0, 1.0 - z / band));
+    p += fmt::format("{:.6g},{:.6g},{:.6g},0.4,100,50\n", u_x_end_mm, z,
+                     std::max(0.0, 1.0 - z / band));
   return p;
 }
 
@@ -48,7 +50,8 @@ inline std::filesystem::path write_synthetic_dem(const SyntheticDem& spec) {
   s.output_every = spec.output_every;
   const auto run = shear(s);
   REQUIRE(run.result.complete());
-  const std::filesystem::path dir = std::filesystem::path(IWB_TEST_RUNS_DIR) / "comparison" / spec.name;
+  const std::filesystem::path dir =
+      std::filesystem::path(IWB_TEST_RUNS_DIR) / "comparison" / spec.name;
   std::filesystem::create_directories(dir);
   std::string ts = "t_s,u_x_mm,u_n_mm,sigma_n_kPa,tau_kPa,e_specimen,e_band,coordination\n";
   for (std::size_t i = 0; i < run.result.rows.size(); ++i) {
@@ -59,14 +62,18 @@ inline std::filesystem::path write_synthetic_dem(const SyntheticDem& spec) {
                       r.gamma_x * spec.d_s_mm, r.eps_n * spec.d_s_mm, st.sigma_n, st.tau_x, e, e);
   }
   io::write_atomically(dir / "timeseries.csv", ts);
-  io::write_atomically(dir / "profiles.csv", synthetic_profile(spec, run.result.rows.back().gamma_x * spec.d_s_mm));
-  const nlohmann::json m = {
-      {"status", "complete"},
-      {"engine", {{"name", "synthetic"}}},
-      {"R_n", spec.R_n},
-      {"scene", {{"resolved", {{"boundary", {{"type", driver::to_string(spec.bc.kind)}, {"sigma_n_kPa", 100.0},
-                                             {"K_kPa_per_mm", spec.K_per_mm}}},
-                               {"particles", {{"d50_mm", spec.d50_mm}}}}}}}};
+  io::write_atomically(dir / "profiles.csv",
+                       synthetic_profile(spec, run.result.rows.back().gamma_x * spec.d_s_mm));
+  const nlohmann::json m = {{"status", "complete"},
+                            {"engine", {{"name", "synthetic"}}},
+                            {"R_n", spec.R_n},
+                            {"scene",
+                             {{"resolved",
+                               {{"boundary",
+                                 {{"type", driver::to_string(spec.bc.kind)},
+                                  {"sigma_n_kPa", 100.0},
+                                  {"K_kPa_per_mm", spec.K_per_mm}}},
+                                {"particles", {{"d50_mm", spec.d50_mm}}}}}}}};
   io::write_manifest(dir, m);
   dem::Scene scene{};
   scene.boundary.sigma_n_Pa = 100e3;
