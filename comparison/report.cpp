@@ -193,7 +193,9 @@ ReportInputs resolve(const std::vector<fs::path>& paths) {
       if (fs::weakly_canonical(q) == fs::weakly_canonical(p)) return;
     v.push_back(p);
   };
-  for (const auto& p : paths) {
+  for (const auto& given : paths) {
+    auto p = given.lexically_normal();
+    if (p.filename().empty()) p = p.parent_path();  // "OUT/run/": its parent is OUT
     if (fs::is_directory(p) && fs::exists(p / "compare.json")) {
       add_unique(in.compare_dirs, p);
       if (fs::exists(p.parent_path() / "hypotheses.json")) add_unique(in.hypotheses, p.parent_path() / "hypotheses.json");
