@@ -102,7 +102,7 @@ TEST_CASE("kappa_r: a single run follows within 0.05 absolute, not beyond",
   CHECK_FALSE(comparison::check_kappa_r(seeds("a", 0.1, 0.2, {0.86})).groups[0].bases[0].follows);
 }
 
-TEST_CASE("band thickness: 7 +- 1 d50 holds; distributed shear is counted apart, never measured",
+TEST_CASE("band thickness: 7 +- 1 d50 holds, distributed shear is counted apart and never measured",
           "[comparison][hypotheses]") {
   auto runs = with_bands({6.0, 7.0, 8.0});
   runs.push_back(runs[0]);
