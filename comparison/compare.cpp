@@ -15,8 +15,8 @@ namespace {
 std::pair<double, std::string> gutjahr_kappa(double R_n) {
   if (!(R_n > 0.0))
     return {models::kKappaRFloor, fmt::format("kappa_r = {} (flat wall: eq. 5.35's floor)", models::kKappaRFloor)};
-  const auto k = models::kappa_r_from_normalized_roughness(R_n, 10.0);
-  return {k.value, fmt::format("kappa_r = {:.3f} (eq. 5.35, R_n = {:.3g})", k.value, R_n)};
+  const double k = gutjahr_kappa_r(R_n);
+  return {k, fmt::format("kappa_r = {:.3f} (eq. 5.35, R_n = {:.3g})", k, R_n)};
 }
 
 std::string curves_csv(const DemRun& dem, const std::vector<Replay>& replays) {
@@ -31,6 +31,11 @@ std::string curves_csv(const DemRun& dem, const std::vector<Replay>& replays) {
 }
 
 }  // namespace
+
+double gutjahr_kappa_r(double R_n, double log_base) {
+  if (!(R_n > 0.0)) return models::kKappaRFloor;
+  return models::kappa_r_from_normalized_roughness(R_n, log_base).value;
+}
 
 std::vector<Variant> standard_variants(const DemRun& dem, const std::string& model,
                                        const models::ModelInputs& parameters) {

@@ -151,13 +151,77 @@ std::string summary_table(const nlohmann::json& s) {
   return h + "</table>\n";
 }
 
+// The hypothesis checks of a `--runs` set: verdicts and their tables, as hypotheses.json has them.
+std::string hypotheses_section(const fs::path& file) {
+  const auto h = nlohmann::json::parse(io::read_file(file));
+  std::string s = fmt::format("<section><h2>Hypothesis checks over {} DEM runs</h2>\n<p>From {}.</p>\n", h["runs"].size(),
+                              escape_html(file.string()));
+  for (const auto& c : h["checks"]) {
+    s += fmt::format("<h3>{}</h3>\n<p>Assumption: {}.</p>\n<p><strong>Verdict:</strong> {}</p>\n<table><tr>",
+                     escape_html(c["title"]), escape_html(c["assumption"]), escape_html(c["verdict"]));
+    for (const auto& col : c["table"]["columns"]) s += "<th>" + escape_html(col) + "</th>";
+    s += "</tr>\n";
+    for (const auto& row : c["table"]["rows"]) {
+      s += "<tr>";
+      for (const auto& cell : row) s += "<td>" + escape_html(cell) + "</td>";
+      s += "</tr>\n";
+    }
+    s += "</table>\n";
+    if (c.contains("notes")) s += "<p>" + escape_html(c["notes"]) + "</p>\n";
+  }
+  return s + "</section>\n";
+}
+
+// The files a `--runs` set writes beside its comparison directories.
+bool set_file(const fs::path& p) {
+  const auto n = p.filename().string();
+  return fs::exists(p.parent_path() / "hypotheses.json") &&
+         (n == "hypotheses.json" || n == "hypotheses.md" || n == "manifest.json");
+}
+
+struct ReportInputs {
+  std::vector<fs::path> compare_dirs;
+  std::vector<fs::path> hypotheses;  // hypotheses.json of the sets the directories came from
+};
+
+// Comparison directories as given, a set directory (OUT of `iwb compare --runs`) as its runs,
+// and the set's own files (as `OUT/*` passes them) as the set's marker.
+ReportInputs resolve(const std::vector<fs::path>& paths) {
+  ReportInputs in;
+  auto add_unique = [](std::vector<fs::path>& v, const fs::path& p) {
+    for (const auto& q : v)
+      if (fs::weakly_canonical(q) == fs::weakly_canonical(p)) return;
+    v.push_back(p);
+  };
+  for (const auto& given : paths) {
+    auto p = given.lexically_normal();
+    if (p.filename().empty()) p = p.parent_path();  // "OUT/run/": its parent is OUT
+    if (fs::is_directory(p) && fs::exists(p / "compare.json")) {
+      add_unique(in.compare_dirs, p);
+      if (fs::exists(p.parent_path() / "hypotheses.json")) add_unique(in.hypotheses, p.parent_path() / "hypotheses.json");
+    } else if (fs::is_directory(p) && fs::exists(p / "hypotheses.json")) {
+      add_unique(in.hypotheses, p / "hypotheses.json");
+      const auto set = nlohmann::json::parse(io::read_file(p / "hypotheses.json"));  // outlives the loop
+      for (const auto& r : set["runs"]) add_unique(in.compare_dirs, p / r["name"].get<std::string>());
+    } else if (fs::is_regular_file(p) && set_file(p)) {
+      add_unique(in.hypotheses, p.parent_path() / "hypotheses.json");
+    } else {
+      throw InputError(fmt::format("{}: neither a directory of `iwb compare` (compare.json) nor a set of "
+                                   "`iwb compare --runs` (hypotheses.json)", p.string()));
+    }
+  }
+  return in;
+}
+
 }  // namespace
 
-std::vector<fs::path> write_report(const std::vector<fs::path>& compare_dirs, const fs::path& html) {
+std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs::path& html) {
   const fs::path files = html.parent_path() / (html.stem().string() + "_files");
   fs::create_directories(files);
   std::vector<fs::path> figures;
   std::string body;
+  const auto [compare_dirs, hypotheses] = resolve(paths);
+  for (const auto& h : hypotheses) body += hypotheses_section(h);
   for (std::size_t k = 0; k < compare_dirs.size(); ++k) {
     const fs::path& dir = compare_dirs[k];
     if (!fs::exists(dir / "compare.json"))

@@ -9,8 +9,10 @@
 
 namespace iwb::comparison {
 
+// `paths` are comparison directories, or sets of `iwb compare --runs` (their directory, or its
+// files as `OUT/*` passes them): a set's hypothesis verdicts come first, as tables.
 // Returns the figures written (paths of the SVG files).
-std::vector<std::filesystem::path> write_report(const std::vector<std::filesystem::path>& compare_dirs,
+std::vector<std::filesystem::path> write_report(const std::vector<std::filesystem::path>& paths,
                                                 const std::filesystem::path& html);
 
 }  // namespace iwb::comparison

@@ -18,6 +18,7 @@
 #include "bench/element_bench.hpp"
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
+#include "comparison/run_set.hpp"
 #include "io/element_run.hpp"
 #include "io/run_directory.hpp"
 #include "models/hypoplastic/parameters.hpp"
@@ -132,6 +133,20 @@ int cmd_models(bool json) {
   return 0;
 }
 
+// `iwb compare --runs`: the set's comparisons, then the hypothesis verdicts.
+int cmd_compare_set(const std::vector<std::string>& runs, const iwb::comparison::CompareOptions& c,
+                    const std::string& out, const std::string& cl) {
+  iwb::comparison::RunSetOptions opt{{runs.begin(), runs.end()}, c.model, c.params,
+                                     out.empty() ? "runs/hypotheses" : out, c.allow_partial, c.force, cl};
+  const auto outcome = iwb::comparison::run_hypothesis_set(opt);
+  fmt::print("{} run(s) compared ({} reused) -> {}\n", outcome.compare_dirs.size(), outcome.reused.size(),
+             opt.out.string());
+  for (const auto& check : outcome.hypotheses["checks"])
+    fmt::print("\n{}\n  {}\n", check["title"].get<std::string>(), check["verdict"].get<std::string>());
+  fmt::print("\n-> {}\n", (opt.out / "hypotheses.md").string());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -215,7 +230,12 @@ int main(int argc, char** argv) {
       "band); writes compare.json (metrics per variant) and compare.csv (curves).");
   iwb::comparison::CompareOptions copt;
   std::string dem_dir, compare_out;
-  compare->add_option("dem_run", dem_dir, "a run directory of `iwb dem run`")->required()->check(CLI::ExistingDirectory);
+  std::vector<std::string> set_runs;
+  auto* single_run = compare->add_option("dem_run", dem_dir, "a run directory of `iwb dem run`")->check(CLI::ExistingDirectory);
+  compare->add_option("--runs", set_runs, "a set of DEM run directories: each is compared (or its complete comparison "
+                                          "in OUT/<run> reused), then the hypothesis checks of DEM.md over the set "
+                                          "into OUT/hypotheses.json and .md")
+      ->check(CLI::ExistingDirectory)->excludes(single_run);
   compare->add_option("--model", copt.model, "continuum model (iwb models)")->capture_default_str();
   compare->add_option("--params", copt.params, "parameter file (data/params/)")->required()->check(CLI::ExistingFile);
   compare->add_option("--out,-o", compare_out, "output directory (default runs/compare-<dem run>)");
@@ -227,7 +247,8 @@ int main(int argc, char** argv) {
                 "directories of `iwb compare`; figures also as SVG and PNG with their data and gnuplot scripts.");
   std::vector<std::string> compare_dirs;
   std::string report_out = "report.html";
-  report->add_option("compare_dirs", compare_dirs, "directories of `iwb compare`")->required()->check(CLI::ExistingDirectory);
+  report->add_option("compare_dirs", compare_dirs, "directories of `iwb compare`, or the OUT of `iwb compare --runs` "
+                                                   "(its verdicts come first)")->required()->check(CLI::ExistingPath);
   report->add_option("-o,--out", report_out, "HTML file")->capture_default_str();
 
   auto* validate = app.add_subcommand(
@@ -279,7 +300,9 @@ int main(int argc, char** argv) {
       vopt.command_line = cl;
       return iwb::app::run_validate(vopt);
     }
+    if (*compare && !set_runs.empty()) return cmd_compare_set(set_runs, copt, compare_out, cl);
     if (*compare) {
+      if (dem_dir.empty()) throw iwb::InputError("compare: give a DEM run directory or --runs DIR...");
       copt.dem_dir = dem_dir;
       copt.out = compare_out.empty()
                      ? std::filesystem::path("runs") / ("compare-" + std::filesystem::path(dem_dir).filename().string())

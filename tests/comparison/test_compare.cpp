@@ -10,6 +10,7 @@
 #include "comparison/replay.hpp"
 #include "io/run_directory.hpp"
 #include "support/fixtures.hpp"
+#include "support/synthetic_dem.hpp"
 
 using namespace iwb;
 namespace fs = std::filesystem;
@@ -18,39 +19,10 @@ namespace {
 
 constexpr double kDs = 1.0;  // mm
 
-// A "DEM" run directory written from a continuum element test: the contract's files with the
-// model's curves, so that the whole comparison chain can be checked without an engine.
+// A "DEM" run directory written from a continuum element test (support/synthetic_dem.hpp).
 fs::path synthetic_dem(const std::string& name, driver::BoundaryCondition bc, double K_per_mm,
                        double kappa_r = 1.0, double d_s = kDs) {
-  test::ShearSpec s;
-  s.e0 = 0.70;
-  s.bc = bc;
-  s.inputs = test::table_5_1(kappa_r);
-  s.gamma = 0.5;
-  s.increments = 250;
-  s.output_every = 5;
-  const auto run = test::shear(s);
-  REQUIRE(run.result.complete());
-  const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / "comparison" / name;
-  fs::create_directories(dir);
-  std::string ts = "t_s,u_x_mm,u_n_mm,sigma_n_kPa,tau_kPa,e_specimen,e_band,coordination\n";
-  for (std::size_t i = 0; i < run.result.rows.size(); ++i) {
-    const auto& r = run.result.rows[i];
-    const auto st = run.model->stress(r.state);
-    const double e = run.model->void_ratio(r.state);
-    ts += fmt::format("{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},4\n", 0.01 * double(i), r.gamma_x * d_s,
-                      r.eps_n * d_s, st.sigma_n, st.tau_x, e, e);
-  }
-  io::write_atomically(dir / "timeseries.csv", ts);
-  const nlohmann::json m = {{"status", "complete"},
-                            {"engine", {{"name", "synthetic"}}},
-                            {"R_n", 1.0},
-                            {"scene", {{"resolved", {{"boundary", {{"type", driver::to_string(bc.kind)},
-                                                                   {"sigma_n_kPa", 100.0},
-                                                                   {"K_kPa_per_mm", K_per_mm}}},
-                                                     {"particles", {{"d50_mm", 0.2}}}}}}}};
-  io::write_manifest(dir, m);
-  return dir;
+  return test::write_synthetic_dem({name, bc, K_per_mm, kappa_r, d_s});
 }
 
 comparison::Variant same_model() {

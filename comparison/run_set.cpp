@@ -1,0 +1,152 @@
+#include "comparison/run_set.hpp"
+
+#include <fmt/core.h>
+
+#include <set>
+
+#include "common/errors.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::comparison {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+json read_json(const fs::path& file) {
+  if (!fs::exists(file)) throw InputError(fmt::format("{}: missing", file.string()));
+  try {
+    return json::parse(io::read_file(file));
+  } catch (const json::parse_error& e) {
+    throw InputError(fmt::format("{}: not valid JSON ({})", file.string(), e.what()));
+  }
+}
+
+template <class T>
+T field(const json& j, const std::string& pointer, const fs::path& file) {
+  try {
+    return j.at(json::json_pointer(pointer)).get<T>();
+  } catch (const std::exception&) {
+    throw InputError(fmt::format("{}: missing or malformed field '{}'", file.string(), pointer));
+  }
+}
+
+enum class Earlier { kNone, kSameInputs, kOtherInputs, kIncomplete };
+
+// Whether OUT/<run> holds a complete comparison of exactly these inputs (DEM manifest and
+// parameter file by hash, and the model), so that its fit can be reused.
+Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
+  if (!fs::exists(dir / "manifest.json")) return Earlier::kNone;
+  const auto m = read_json(dir / "manifest.json");
+  if (m.value("status", "") != "complete" || !fs::exists(dir / "compare.json"))
+    return Earlier::kIncomplete;
+  const bool same = m.value("/inputs/dem_manifest_sha256"_json_pointer, std::string()) ==
+                        io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json")) &&
+                    m.value("/inputs/parameters_sha256"_json_pointer, std::string()) ==
+                        io::sha256_hex(io::read_file(opt.params)) &&
+                    read_json(dir / "compare.json").value("model", "") == opt.model;
+  return same ? Earlier::kSameInputs : Earlier::kOtherInputs;
+}
+
+// Runs or reuses the comparison of one DEM run; returns whether it was reused.
+bool compare_or_reuse(CompareOptions opt) {
+  switch (earlier_comparison(opt.out, opt)) {
+    case Earlier::kSameInputs:
+      return true;
+    case Earlier::kOtherInputs:
+      if (!opt.force)
+        throw InputError(
+            fmt::format("{}: holds a complete comparison of other inputs (DEM run, parameters or "
+                        "model); pass --force to replace it",
+                        opt.out.string()));
+      break;
+    case Earlier::kIncomplete:
+      opt.force = true;
+      break;  // an interrupted comparison is no result
+    case Earlier::kNone:
+      break;
+  }
+  run_comparison(opt);
+  return false;
+}
+
+std::vector<std::string> run_names(const std::vector<fs::path>& dirs) {
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  for (const auto& d : dirs) {
+    auto p = fs::path(d).lexically_normal();
+    if (p.filename().empty()) p = p.parent_path();  // "dir/" names dir
+    const std::string name = p.filename().string();
+    if (!seen.insert(name).second)
+      throw InputError(
+          fmt::format("--runs: two runs are named '{}' ({}); their comparisons would share "
+                      "OUT/{}",
+                      name, d.string(), name));
+    names.push_back(name);
+  }
+  return names;
+}
+
+}  // namespace
+
+RunRecord load_run_record(const fs::path& compare_dir) {
+  const fs::path cf = compare_dir / "compare.json";
+  const auto cmp = read_json(cf);
+  const fs::path dem_dir = field<std::string>(cmp, "/dem/dir", cf);
+  const fs::path sf = dem_dir / "summary.json";
+  const auto s = read_json(sf);
+  RunRecord r;
+  r.name = compare_dir.filename().string();
+  r.R_n = field<double>(cmp, "/dem/R_n", cf);
+  r.d50_mm = field<double>(cmp, "/dem/d50_mm", cf);
+  r.kappa_r_fit = field<double>(cmp, "/fit/kappa_r", cf);
+  r.sigma_kappa_r_fit = field<double>(cmp, "/fit/sigma_kappa_r", cf);
+  r.d_s_fit_d50 = field<double>(cmp, "/fit/d_s_over_d50", cf);
+  r.peak_friction = field<double>(s, "/peak_friction", sf);
+  r.residual_friction = field<double>(s, "/residual_friction", sf);
+  r.dilation_mm = field<double>(s, "/dilation_mm", sf);
+  r.shear_mode = field<std::string>(s, "/shear_mode", sf);
+  if (s.contains("wall_band_d50") && s["wall_band_d50"].is_number())
+    r.band_d50 = s["wall_band_d50"].get<double>();
+  return r;
+}
+
+RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
+  if (opt.dem_dirs.empty()) throw InputError("--runs: no DEM run directories given");
+  const auto names = run_names(opt.dem_dirs);
+  fs::create_directories(opt.out);
+  json manifest = {
+      {"kind", "hypothesis set"}, {"command_line", opt.command_line}, {"model", opt.model},
+      {"parameters", opt.params}, {"started", io::utc_timestamp()},   {"status", "running"}};
+  io::write_manifest(opt.out, manifest);
+  RunSetOutcome outcome;
+  std::vector<RunRecord> records;
+  try {
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      CompareOptions c{opt.dem_dirs[i],   opt.model, opt.params,      opt.out / names[i],
+                       opt.allow_partial, opt.force, opt.command_line};
+      if (compare_or_reuse(c)) outcome.reused.push_back(names[i]);
+      outcome.compare_dirs.push_back(c.out);
+      records.push_back(load_run_record(c.out));
+    }
+  } catch (
+      const std::exception& e) {  // the manifest never stays "running" (CONVENTIONS.md "Results")
+    manifest["status"] = fmt::format("failed: {}", e.what());
+    manifest["finished"] = io::utc_timestamp();
+    io::write_manifest(opt.out, manifest);
+    throw;
+  }
+  outcome.hypotheses = to_json(check_hypotheses(records), records);
+  io::write_atomically(opt.out / "hypotheses.json", outcome.hypotheses.dump(2) + "\n");
+  io::write_atomically(opt.out / "hypotheses.md", to_markdown(outcome.hypotheses));
+  manifest["runs"] = names;
+  manifest["reused"] = outcome.reused;
+  manifest["files"] = {"hypotheses.json", "hypotheses.md"};
+  manifest["finished"] = io::utc_timestamp();
+  manifest["status"] = "complete";
+  io::write_manifest(opt.out, manifest);
+  return outcome;
+}
+
+}  // namespace iwb::comparison

@@ -1,0 +1,36 @@
+#pragma once
+// `iwb compare --runs DIR...`: every DEM run of a set compared (or an earlier complete comparison
+// of the same inputs reused) into OUT/<run name>, then the hypothesis checks over the set into
+// OUT/hypotheses.json and OUT/hypotheses.md, with OUT/manifest.json saying what was done.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "comparison/compare.hpp"
+#include "comparison/hypotheses.hpp"
+
+namespace iwb::comparison {
+
+struct RunSetOptions {
+  std::vector<std::filesystem::path> dem_dirs;
+  std::string model = "hvwe";
+  std::string params;
+  std::filesystem::path out;
+  bool allow_partial = false;
+  bool force = false;  // replace complete comparisons of other inputs
+  std::string command_line;
+};
+
+struct RunSetOutcome {
+  std::vector<std::filesystem::path> compare_dirs;
+  std::vector<std::string> reused;  // names of the runs whose comparison was reused
+  nlohmann::json hypotheses;        // as written to hypotheses.json
+};
+
+RunSetOutcome run_hypothesis_set(const RunSetOptions& options);
+
+// The record of one comparison directory: compare.json's fit and the DEM's summary.json.
+RunRecord load_run_record(const std::filesystem::path& compare_dir);
+
+}  // namespace iwb::comparison
