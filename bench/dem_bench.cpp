@@ -5,14 +5,14 @@
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
-#include "dem/liggghts/liggghts_engine.hpp"
+#include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::bench {
 
 nlohmann::json run_dem_bench(const DemBenchOptions& opt) {
-  if (opt.engine != "liggghts") throw InputError(fmt::format("--engine {}: available engines: liggghts", opt.engine));
+  dem::make_engine(opt.engine);  // an unknown engine is refused before anything runs
   const std::string text = io::read_file(opt.scene);
   const auto scene = dem::parse_scene(text, opt.scene);
   fmt::print("iwb bench dem: {} in {} ({} particles requested), one full run per rank count\n\n",
@@ -22,10 +22,10 @@ nlohmann::json run_dem_bench(const DemBenchOptions& opt) {
   nlohmann::json out = nlohmann::json::array();
   const auto tmp = std::filesystem::temp_directory_path() / fmt::format("iwb-bench-dem-{}", ::getpid());
   for (int np : opt.ranks) {
-    dem::LiggghtsEngine engine;
+    const auto engine = dem::make_engine(opt.engine);
     const auto dir = tmp / fmt::format("np{}", np);
     const auto t0 = std::chrono::steady_clock::now();
-    const auto outcome = dem::run_scene(scene, text, engine, {dir, np, false, true, "bench", nullptr, nullptr});
+    const auto outcome = dem::run_scene(scene, text, *engine, {dir, np, false, true, "bench", nullptr, nullptr});
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!outcome.complete()) throw std::runtime_error(fmt::format("bench run failed: {}", outcome.status));
     double loop = 0, steps = 0, process = 0, generation = 0;
