@@ -258,8 +258,9 @@ int main(int argc, char** argv) {
   iwb::app::ValidateOptions vopt;
   std::string vout = "runs/validate";
   validate->add_option("--scene", vopt.scene, "embedded scene name (default, smoke) or a scene file")->capture_default_str();
-  validate->add_option("--engine", vopt.engine, "DEM engine")->capture_default_str();
-  validate->add_option("--np", vopt.processes, "MPI ranks")->check(CLI::Range(1, 256))->capture_default_str();
+  std::string validate_engines = "liggghts";
+  validate->add_option("--engines", validate_engines, "comma-separated DEM engines (liggghts, yade); each runs the scene and is replayed, one report")->capture_default_str();
+  validate->add_option("--np,--threads", vopt.processes, "MPI ranks (LIGGGHTS) or threads (YADE) per run")->check(CLI::Range(1, 256))->capture_default_str();
   validate->add_option("--out,-o", vout, "output directory")->capture_default_str();
   validate->add_option("--params-dir", vopt.params_dir, "where the shipped parameter sets are")->capture_default_str();
   validate->add_flag("--force", vopt.force, "replace earlier runs in the output directory");
@@ -277,7 +278,7 @@ int main(int argc, char** argv) {
       "dem", "Particle-steps per second of a DEM engine on a scene with 1 and 2 ranks, and the "
              "workbench's own overhead as a share of the run (a few minutes on the default scene).");
   iwb::bench::DemBenchOptions dopt;
-  bench_dem->add_option("--engine", dopt.engine, "DEM engine")->capture_default_str();
+  bench_dem->add_option("--engine", dopt.engine, "DEM engine: liggghts (ranks = MPI ranks) or yade (ranks = OpenMP threads)")->capture_default_str();
   bench_dem->add_option("--scene", dopt.scene, "scene file")->check(CLI::ExistingFile)->capture_default_str();
   bench_dem->add_option("--ranks", dopt.ranks, "rank counts to measure")->capture_default_str();
 
@@ -297,6 +298,7 @@ int main(int argc, char** argv) {
     }
     if (*validate) {
       vopt.out = vout;
+      vopt.engines = split_list(validate_engines);
       vopt.command_line = cl;
       return iwb::app::run_validate(vopt);
     }

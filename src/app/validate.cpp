@@ -1,5 +1,6 @@
 #include "app/validate.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <fmt/core.h>
 
@@ -53,16 +54,12 @@ fs::path matching_parameters(const fs::path& dir, double residual_friction, std:
   return best;
 }
 
-}  // namespace
-
-int run_validate(const ValidateOptions& opt) {
-  const auto engine = dem::make_engine(opt.engine);
-  const auto [text, source] = scene_source(opt.scene);
-  const auto scene = dem::parse_scene(text, source);
-  for (const auto& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
-  fs::create_directories(opt.out);
-  const fs::path dem_dir = opt.out / fmt::format("dem-{}", opt.engine);
-  fmt::print(stderr, "iwb validate: 1/3 DEM run of {} in {} ({} ranks) -> {}\n", source, opt.engine, opt.processes, dem_dir.string());
+// Runs the scene in one engine into out/dem-<engine>; false (and says why) if it did not complete.
+bool run_dem(const dem::Scene& scene, const std::string& text, const std::string& source, const std::string& engine_name,
+             const ValidateOptions& opt, const fs::path& dem_dir, const std::string& step) {
+  const auto engine = dem::make_engine(engine_name);
+  fmt::print(stderr, "iwb validate: {} DEM run of {} in {} ({} processes) -> {}\n", step, source, engine_name,
+             opt.processes, dem_dir.string());
   auto last = std::chrono::steady_clock::now();
   const auto outcome = dem::run_scene(scene, text, *engine,
                                       {dem_dir, opt.processes, false, opt.force, opt.command_line, nullptr,
@@ -71,20 +68,44 @@ int run_validate(const ValidateOptions& opt) {
                                          last = std::chrono::steady_clock::now();
                                          fmt::print(stderr, "  {}\n", l);
                                        }});
-  if (!outcome.complete()) {
-    fmt::print(stderr, "iwb validate: the DEM run did not complete: {}\n", outcome.status);
-    return 1;
-  }
-  const auto summary = nlohmann::json::parse(io::read_file(dem_dir / "summary.json"));
+  if (!outcome.complete()) fmt::print(stderr, "iwb validate: the {} run did not complete: {}\n", engine_name, outcome.status);
+  return outcome.complete();
+}
+
+}  // namespace
+
+int run_validate(const ValidateOptions& opt) {
+  if (opt.engines.empty()) throw InputError("--engines: name at least one engine (liggghts, yade)");
+  for (const auto& e : opt.engines) dem::make_engine(e);  // refused before anything runs
+  const auto [text, source] = scene_source(opt.scene);
+  const auto scene = dem::parse_scene(text, source);
+  for (const auto& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+  fs::create_directories(opt.out);
+  const std::size_t steps = 2 * opt.engines.size() + 1;
+  std::size_t step = 0;
+  std::vector<fs::path> compares;
+  fs::path params;
   std::string why;
-  const fs::path params = matching_parameters(opt.params_dir, summary["residual_friction"].get<double>(), why);
-  fmt::print(stderr, "iwb validate: 2/3 replay through hvwe with {} ({})\n", params.string(), why);
-  comparison::CompareOptions copt{dem_dir, "hvwe", params.string(), opt.out / "compare-hvwe", false, opt.force,
-                                  opt.command_line + " [parameters: " + why + "]"};
-  comparison::run_comparison(copt);
+  for (const auto& engine : opt.engines) {
+    const fs::path dem_dir = opt.out / fmt::format("dem-{}", engine);
+    if (!run_dem(scene, text, source, engine, opt, dem_dir, fmt::format("{}/{}", ++step, steps))) return 1;
+    // One parameter set for every engine, chosen on the first, so that the engines are compared
+    // through the same continuum model.
+    if (params.empty()) {
+      const auto summary = nlohmann::json::parse(io::read_file(dem_dir / "summary.json"));
+      params = matching_parameters(opt.params_dir, summary["residual_friction"].get<double>(), why);
+    }
+    fmt::print(stderr, "iwb validate: {}/{} replay of the {} run through hvwe with {} ({})\n", ++step, steps, engine,
+               params.string(), why);
+    const fs::path out = opt.out / (opt.engines.size() == 1 ? "compare-hvwe" : fmt::format("compare-hvwe-{}", engine));
+    comparison::CompareOptions copt{dem_dir, "hvwe", params.string(), out, false, opt.force,
+                                    opt.command_line + " [parameters: " + why + "]"};
+    comparison::run_comparison(copt);
+    compares.push_back(out);
+  }
   const fs::path html = opt.out / "report.html";
-  fmt::print(stderr, "iwb validate: 3/3 report\n");
-  comparison::write_report({copt.out}, html);
+  fmt::print(stderr, "iwb validate: {}/{} report\n", ++step, steps);
+  comparison::write_report(compares, html);
   fmt::print("report: {}\n", fs::absolute(html).string());
   return 0;
 }

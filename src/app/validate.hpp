@@ -1,15 +1,16 @@
 #pragma once
-// `iwb validate`, the README's main job (issue 6): run a scene in the DEM engine (the embedded
-// default unless told otherwise), replay it through hvwe with the shipped parameter set that best
+// `iwb validate`, the README's main job (issue 6): run a scene in each DEM engine asked for (the
+// embedded default scene in LIGGGHTS unless told otherwise), replay it through hvwe with the shipped parameter set that best
 // matches the DEM's grains, and write the HTML report.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace iwb::app {
 
 struct ValidateOptions {
   std::string scene = "default";  // an embedded scene name or a scene file
-  std::string engine = "liggghts";
+  std::vector<std::string> engines = {"liggghts"};  // each runs the scene; one report
   int processes = 2;
   std::filesystem::path out = "runs/validate";
   std::filesystem::path params_dir = "data/params";
