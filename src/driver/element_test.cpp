@@ -34,6 +34,7 @@ struct Walker {
   HistoryRow current;
   long total = 0;
   double first_step = 1.0;
+  double last_eps_n_increment = 0.0;
 
   std::string where(const PathSegment& seg) const {
     return fmt::format("increment {} ('{}', gamma_x = {:.6g}, gamma_y = {:.6g}, eps_n = {:.6g})",
@@ -85,9 +86,30 @@ struct Walker {
       const double fraction = double(k + 1) / seg.increments;
       commit(index, at_start.gamma_x + fraction * seg.gamma_x,
              at_start.gamma_y + fraction * seg.gamma_y, sol);
+      if (seg.cycle > 0) track_cycle(seg, k + 1 == seg.increments);
       if (current.increment % set.output_every == 0) result.rows.push_back(current);
       if (set.on_increment) set.on_increment(current.increment, total);
     }
+  }
+
+  // Per-cycle summary (cycles.csv) from every accepted increment of a cycle's segments.
+  void track_cycle(const PathSegment& seg, bool segment_end) {
+    if (result.cycles.empty() || result.cycles.back().cycle != seg.cycle) {
+      result.cycles.push_back({});
+      result.cycles.back().cycle = seg.cycle;
+      result.cycles.back().eps_n_start = current.eps_n - last_eps_n_increment;
+    }
+    CycleSummary& c = result.cycles.back();
+    const auto st = model.stress(current.state);
+    const double tau = seg.gamma_y != 0.0 ? st.tau_y : st.tau_x;
+    c.tau_max_kPa = std::max(c.tau_max_kPa, tau);
+    c.tau_min_kPa = std::min(c.tau_min_kPa, tau);
+    if (segment_end && seg.ends_at_reversal)
+      (seg.gamma_x + seg.gamma_y > 0.0 ? c.sigma_n_at_plus_kPa : c.sigma_n_at_minus_kPa) = st.sigma_n;
+    c.eps_n_end = current.eps_n;
+    c.sigma_n_end_kPa = st.sigma_n;
+    c.e_end = model.void_ratio(current.state);
+    c.complete = segment_end && !seg.ends_at_reversal;
   }
 
   void commit(int index, double gamma_x, double gamma_y, const IncrementSolution& sol) {
@@ -96,6 +118,7 @@ struct Walker {
     current.gamma_x = gamma_x;
     current.gamma_y = gamma_y;
     current.eps_n += sol.eps_n;
+    last_eps_n_increment = sol.eps_n;
     current.state = sol.state;
     current.newton_iterations = sol.iterations;
     current.rate_evaluations = sol.counters.rate_evaluations;
@@ -111,7 +134,7 @@ struct Walker {
 ElementTestResult run_element_test(const models::Model& model, const models::StateVector& initial,
                                    const Path& path, const RunSettings& settings) {
   ElementTestResult result;
-  Walker w{model, settings, result, HistoryRow{}, 0, 1.0};
+  Walker w{model, settings, result, HistoryRow{}, 0, 1.0, 0.0};
   for (const auto& seg : path) w.total += seg.increments;
   w.current.state = initial;
   result.rows.push_back(w.current);
