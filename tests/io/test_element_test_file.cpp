@@ -153,7 +153,7 @@ TEST_CASE("initial intergranular strain: the seed's default, given values, and b
              Catch::Contains("key 'chi' = 0 is out of range; allowed (0, inf)"));
 }
 
-TEST_CASE("cyclic paths with staged sigma_n are read; stages need CNL", "[io][cyclic]") {
+TEST_CASE("cyclic paths with staged sigma_n are read, and the stages need CNL", "[io][cyclic]") {
   const std::string cyclic = "kind = \"cyclic\"\namplitude_gamma = 0.01\ncycles = 3\nincrements_per_quarter = 5\n"
                              "steps = [ { from_cycle = 2, sigma_n_kPa = 200 } ]\n";
   auto text = replaced(kGood, "kind = \"monotonic\"\ngamma = 0.1\nincrements = 100\n", cyclic);
