@@ -34,7 +34,6 @@ struct Walker {
   HistoryRow current;
   long total = 0;
   double first_step = 1.0;
-  double last_eps_n_increment = 0.0;
 
   std::string where(const PathSegment& seg) const {
     return fmt::format("increment {} ('{}', gamma_x = {:.6g}, gamma_y = {:.6g}, eps_n = {:.6g})",
@@ -86,18 +85,18 @@ struct Walker {
       const double fraction = double(k + 1) / seg.increments;
       commit(index, at_start.gamma_x + fraction * seg.gamma_x,
              at_start.gamma_y + fraction * seg.gamma_y, sol);
-      if (seg.cycle > 0) track_cycle(seg, k + 1 == seg.increments);
+      if (seg.cycle > 0) track_cycle(seg, at_start, k + 1 == seg.increments);
       if (current.increment % set.output_every == 0) result.rows.push_back(current);
       if (set.on_increment) set.on_increment(current.increment, total);
     }
   }
 
   // Per-cycle summary (cycles.csv) from every accepted increment of a cycle's segments.
-  void track_cycle(const PathSegment& seg, bool segment_end) {
+  void track_cycle(const PathSegment& seg, const HistoryRow& segment_start, bool segment_end) {
     if (result.cycles.empty() || result.cycles.back().cycle != seg.cycle) {
       result.cycles.push_back({});
       result.cycles.back().cycle = seg.cycle;
-      result.cycles.back().eps_n_start = current.eps_n - last_eps_n_increment;
+      result.cycles.back().eps_n_start = segment_start.eps_n;  // the cycle's first segment
     }
     CycleSummary& c = result.cycles.back();
     const auto st = model.stress(current.state);
@@ -118,7 +117,6 @@ struct Walker {
     current.gamma_x = gamma_x;
     current.gamma_y = gamma_y;
     current.eps_n += sol.eps_n;
-    last_eps_n_increment = sol.eps_n;
     current.state = sol.state;
     current.newton_iterations = sol.iterations;
     current.rate_evaluations = sol.counters.rate_evaluations;
@@ -134,7 +132,7 @@ struct Walker {
 ElementTestResult run_element_test(const models::Model& model, const models::StateVector& initial,
                                    const Path& path, const RunSettings& settings) {
   ElementTestResult result;
-  Walker w{model, settings, result, HistoryRow{}, 0, 1.0, 0.0};
+  Walker w{model, settings, result, HistoryRow{}, 0, 1.0};
   for (const auto& seg : path) w.total += seg.increments;
   w.current.state = initial;
   result.rows.push_back(w.current);

@@ -15,6 +15,11 @@ PathSegment shear(const std::string& label, double gamma, ShearDirection dir,
   return s;
 }
 
+// A ramp of sigma_n (CNL rows) from `from` to `to` kPa in `n` increments at fixed shear.
+PathSegment sigma_ramp(const std::string& label, double from, double to, int n) {
+  return {label, 0.0, 0.0, BoundaryCondition{BoundaryKind::kCNL, 0.0}.row((to - from) / n), n};
+}
+
 void require_positive(int n, const char* what) {
   if (n < 1) throw InputError(fmt::format("{} must be at least 1; got {}", what, n));
 }
@@ -56,8 +61,8 @@ Path staged_cyclic_path(double sigma_n0, double amplitude, int cycles,
   for (int c = 1; c <= cycles; ++c) {
     for (; next < stages.size() && stages[next].from_cycle == c; ++next) {
       const auto& st = stages[next];
-      p.push_back({fmt::format("sigma_n {:g} -> {:g} kPa before cycle {}", sigma, st.sigma_n_kPa, c),
-                   0.0, 0.0, cnl.row((st.sigma_n_kPa - sigma) / step_increments), step_increments});
+      p.push_back(sigma_ramp(fmt::format("sigma_n {:g} -> {:g} kPa before cycle {}", sigma,
+                                         st.sigma_n_kPa, c), sigma, st.sigma_n_kPa, step_increments));
       sigma = st.sigma_n_kPa;
     }
     append_cycle(p, c, cnl, amplitude, dir, per_quarter);
@@ -87,8 +92,8 @@ Path staged_path(double sigma_n0, double gamma, const std::vector<StagedStep>& s
       throw InputError(fmt::format("staged path: steps must be ordered within (0, {:g}]; step at "
                                    "gamma = {:g} is not", gamma, step.at_gamma));
     shear_to(step.at_gamma);
-    p.push_back({fmt::format("sigma_n {:g} -> {:g} kPa", sigma, step.sigma_n_kPa), 0.0, 0.0,
-                 cnl.row((step.sigma_n_kPa - sigma) / step_increments), step_increments});
+    p.push_back(sigma_ramp(fmt::format("sigma_n {:g} -> {:g} kPa", sigma, step.sigma_n_kPa), sigma,
+                           step.sigma_n_kPa, step_increments));
     sigma = step.sigma_n_kPa;
   }
   shear_to(gamma);

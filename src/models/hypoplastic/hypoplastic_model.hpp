@@ -115,13 +115,13 @@ class HypoplasticModel final : public Model {
     const S e = s(kVoidRatio);
     ds.resize(state_size());
     ds(kVoidRatio) = (1.0 + e) * Ops::trace(D);  // ERRATA item 6
-    const auto tangent = von_wolffersdorff_tangent<Ops, S>(T, e, c_);
     if (!igs_) {
-      Ops::template pack<S>(tangent.L(D) + safe_sqrt(Ops::contract(D, D)) * tangent.N, ds, 0);
+      Ops::template pack<S>(von_wolffersdorff_rate<Ops, S>(T, e, D, c_), ds, 0);
       return;
     }
     const auto delta = Ops::template unpack<S>(s, kDelta);
-    const auto r = intergranular_strain_rate<Ops, S>(tangent, delta, D, *igs_);
+    const auto r = intergranular_strain_rate<Ops, S>(von_wolffersdorff_tangent<Ops, S>(T, e, c_),
+                                                     delta, D, *igs_);
     Ops::template pack<S>(r.stress, ds, 0);
     Ops::template pack<S>(kin_.template intergranular<S>(r.delta), ds, kDelta);
   }

@@ -3,7 +3,6 @@
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
-#include "models/hypoplastic/family.hpp"
 
 namespace iwb::models {
 
@@ -33,15 +32,6 @@ IntergranularStrainParameters IntergranularStrainParameters::from(const Paramete
 
 std::array<double, 3> seed_initial_intergranular_strain(double R) {
   return {0.0, R / std::sqrt(3.0), R / std::sqrt(3.0)};
-}
-
-ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build) {
-  base.name += "-igs";
-  base.summary += ", with Niemunis & Herle's intergranular strain";
-  base.equations += "; intergranular strain 5.42-5.48 (ERRATA 10)";
-  base.tables.push_back(&IntergranularStrainParameters::table());
-  base.make = [build](const ModelInputs& in) { return build(in, WithIntergranularStrain::kYes); };
-  return base;
 }
 
 }  // namespace iwb::models

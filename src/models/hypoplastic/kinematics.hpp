@@ -84,6 +84,7 @@ struct ShearPlaneKinematics {
   Ops::Tensor<double> initial_stress(const InitialState& s) const { return {-s.sigma_n, 0.0}; }
   InterfaceStress stress(const Ops::Tensor<double>& t) const { return {-t(0), {}, t(1), 0.0}; }
   static std::vector<std::string> component_names() { return {"T_n", "T_x"}; }
+  // hp1d has no -igs variant; the shared model class still names the projection.
   template <class S>
   typename Ops::template Tensor<S> intergranular(const typename Ops::template Tensor<S>& delta) const {
     return delta;
