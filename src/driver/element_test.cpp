@@ -85,9 +85,30 @@ struct Walker {
       const double fraction = double(k + 1) / seg.increments;
       commit(index, at_start.gamma_x + fraction * seg.gamma_x,
              at_start.gamma_y + fraction * seg.gamma_y, sol);
+      if (seg.cycle > 0) track_cycle(seg, at_start, k + 1 == seg.increments);
       if (current.increment % set.output_every == 0) result.rows.push_back(current);
       if (set.on_increment) set.on_increment(current.increment, total);
     }
+  }
+
+  // Per-cycle summary (cycles.csv) from every accepted increment of a cycle's segments.
+  void track_cycle(const PathSegment& seg, const HistoryRow& segment_start, bool segment_end) {
+    if (result.cycles.empty() || result.cycles.back().cycle != seg.cycle) {
+      result.cycles.push_back({});
+      result.cycles.back().cycle = seg.cycle;
+      result.cycles.back().eps_n_start = segment_start.eps_n;  // the cycle's first segment
+    }
+    CycleSummary& c = result.cycles.back();
+    const auto st = model.stress(current.state);
+    const double tau = seg.gamma_y != 0.0 ? st.tau_y : st.tau_x;
+    c.tau_max_kPa = std::max(c.tau_max_kPa, tau);
+    c.tau_min_kPa = std::min(c.tau_min_kPa, tau);
+    if (segment_end && seg.ends_at_reversal)
+      (seg.gamma_x + seg.gamma_y > 0.0 ? c.sigma_n_at_plus_kPa : c.sigma_n_at_minus_kPa) = st.sigma_n;
+    c.eps_n_end = current.eps_n;
+    c.sigma_n_end_kPa = st.sigma_n;
+    c.e_end = model.void_ratio(current.state);
+    c.complete = segment_end && !seg.ends_at_reversal;
   }
 
   void commit(int index, double gamma_x, double gamma_y, const IncrementSolution& sol) {

@@ -2,6 +2,7 @@
 // The element-test driver: walks a path increment by increment, solves the mixed control, commits
 // accepted increments and records history. It knows a model only through models::Model.
 #include <atomic>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -48,8 +49,24 @@ struct RunSettings {
   std::function<void(long, long)> on_increment;
 };
 
+// One cycle of a cyclic path, taken from every increment (not only the recorded rows). Stresses
+// geotechnical (compression positive), kPa; tau in the direction of shear; strains accumulated
+// from the start of the test.
+struct CycleSummary {
+  int cycle = 0;
+  double tau_max_kPa = -INFINITY;            // largest tau in the cycle (peak towards +A)
+  double tau_min_kPa = INFINITY;             // smallest tau (peak towards -A)
+  double sigma_n_at_plus_kPa = NAN;          // at the reversal at +A
+  double sigma_n_at_minus_kPa = NAN;         // at the reversal at -A
+  double eps_n_start = NAN, eps_n_end = NAN;  // normal strain (opening positive)
+  double sigma_n_end_kPa = NAN;
+  double e_end = NAN;
+  bool complete = false;  // the cycle's last increment was reached
+};
+
 struct ElementTestResult {
   std::vector<HistoryRow> rows;
+  std::vector<CycleSummary> cycles;  // empty for paths without cycles
   std::string status = "complete";  // "complete", "failed: ...", "interrupted at ..."
   integration::IntegrationCounters counters;
   long increments = 0;

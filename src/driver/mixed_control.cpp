@@ -12,6 +12,10 @@ using models::StateVectorT;
 
 namespace {
 
+// Relative residual a root of the closed form may leave in the true rate: round-off of the four
+// rate evaluations it is assembled from.
+constexpr double kClosedFormRootTolerance = 1e-8;
+
 double residual_scale(const NormalControlRow& row, const StateVector& s, double shear) {
   constexpr double kStressFloor_kPa = 1.0;  // keeps the relative residual meaningful near 0 kPa
   return std::abs(row.a) * std::max(std::abs(models::normal_stress(s)), kStressFloor_kPa) +
@@ -53,6 +57,21 @@ IncrementSolution newton(const models::Model& m, const StateVector& committed,
                                      out.residuals.back()));
 }
 
+// The closed form reads L and N off the rate assuming T_rate = L:D + N||D||. A rate that is not of
+// that form (intergranular strain switches its stiffness with the direction of D) gives a root
+// that misses the row: substitute it into the true rate and refuse rather than drift silently.
+void check_closed_form_root(const NormalControlRow& row, double x, const StateVector& rate) {
+  const double d_sigma = models::normal_stress(rate);
+  const double residual = row.a * d_sigma + row.b * x - row.c;
+  // Measured against the whole stress rate: under CNL the normal row's own terms are all ~0.
+  const double scale = std::abs(row.a) * rate.cwiseAbs().maxCoeff() + std::abs(row.b * x) + std::abs(row.c);
+  if (!(std::abs(residual) <= kClosedFormRootTolerance * std::max(scale, 1e-300)))
+    throw ConvergenceError(fmt::format(
+        "mixed control: the closed form (appendix C) root misses the normal row by {:.3g} relative; "
+        "the model's rate is not of the form L:D + N||D|| (e.g. intergranular strain): use "
+        "mixed_control = \"newton\"", std::abs(residual) / std::max(scale, 1e-300)));
+}
+
 // Row of appendix C: per explicit Euler substep, the closed form gives x.
 IncrementSolution closed_form(const models::Model& m, const StateVector& committed,
                               const IncrementRequest& rq, int substeps) {
@@ -65,6 +84,7 @@ IncrementSolution closed_form(const models::Model& m, const StateVector& committ
     StateVector r;
     m.rate(y, {x, rq.gamma_x / n, rq.gamma_y / n}, r);
     ++out.counters.rate_evaluations;
+    check_closed_form_root(sub, x, r);
     y += r;
     ++out.counters.accepted_substeps;
     if (const auto why = m.domain_violation(y); !why.empty())

@@ -15,6 +15,11 @@ PathSegment shear(const std::string& label, double gamma, ShearDirection dir,
   return s;
 }
 
+// A ramp of sigma_n (CNL rows) from `from` to `to` kPa in `n` increments at fixed shear.
+PathSegment sigma_ramp(const std::string& label, double from, double to, int n) {
+  return {label, 0.0, 0.0, BoundaryCondition{BoundaryKind::kCNL, 0.0}.row((to - from) / n), n};
+}
+
 void require_positive(int n, const char* what) {
   if (n < 1) throw InputError(fmt::format("{} must be at least 1; got {}", what, n));
 }
@@ -25,16 +30,47 @@ Path monotonic_path(const BoundaryCondition& bc, double gamma, ShearDirection di
   return {shear("shear", gamma, dir, bc.row(), increments)};
 }
 
+void append_cycle(Path& p, int c, const BoundaryCondition& bc, double amplitude, ShearDirection dir,
+                  int per_quarter) {
+  p.push_back(shear(fmt::format("cycle {} to +A", c), amplitude, dir, bc.row(), per_quarter));
+  p.push_back(shear(fmt::format("cycle {} to -A", c), -2.0 * amplitude, dir, bc.row(), 2 * per_quarter));
+  p.push_back(shear(fmt::format("cycle {} to 0", c), amplitude, dir, bc.row(), per_quarter));
+  for (std::size_t i = p.size() - 3; i < p.size(); ++i) p[i].cycle = c;
+  p[p.size() - 3].ends_at_reversal = p[p.size() - 2].ends_at_reversal = true;
+}
+
 Path cyclic_path(const BoundaryCondition& bc, double amplitude, int cycles, ShearDirection dir,
                  int per_quarter) {
   require_positive(cycles, "path.cycles");
   require_positive(per_quarter, "path.increments_per_quarter");
   Path p;
+  for (int c = 1; c <= cycles; ++c) append_cycle(p, c, bc, amplitude, dir, per_quarter);
+  return p;
+}
+
+Path staged_cyclic_path(double sigma_n0, double amplitude, int cycles,
+                        const std::vector<CyclicStage>& stages, ShearDirection dir,
+                        int per_quarter, int step_increments) {
+  require_positive(cycles, "path.cycles");
+  require_positive(per_quarter, "path.increments_per_quarter");
+  require_positive(step_increments, "path.step_increments");
+  const BoundaryCondition cnl{BoundaryKind::kCNL, 0.0};
+  Path p;
+  double sigma = sigma_n0;
+  std::size_t next = 0;
   for (int c = 1; c <= cycles; ++c) {
-    p.push_back(shear(fmt::format("cycle {} to +A", c), amplitude, dir, bc.row(), per_quarter));
-    p.push_back(shear(fmt::format("cycle {} to -A", c), -2.0 * amplitude, dir, bc.row(), 2 * per_quarter));
-    p.push_back(shear(fmt::format("cycle {} to 0", c), amplitude, dir, bc.row(), per_quarter));
+    for (; next < stages.size() && stages[next].from_cycle == c; ++next) {
+      const auto& st = stages[next];
+      p.push_back(sigma_ramp(fmt::format("sigma_n {:g} -> {:g} kPa before cycle {}", sigma,
+                                         st.sigma_n_kPa, c), sigma, st.sigma_n_kPa, step_increments));
+      sigma = st.sigma_n_kPa;
+    }
+    append_cycle(p, c, cnl, amplitude, dir, per_quarter);
   }
+  if (next < stages.size())  // a stage was skipped: out of order or beyond the last cycle
+    throw InputError(fmt::format("staged cyclic path: stages must name cycles in [1, {}] in "
+                                 "increasing order; stage {} (from_cycle = {}) does not",
+                                 cycles, next + 1, stages[next].from_cycle));
   return p;
 }
 
@@ -56,8 +92,8 @@ Path staged_path(double sigma_n0, double gamma, const std::vector<StagedStep>& s
       throw InputError(fmt::format("staged path: steps must be ordered within (0, {:g}]; step at "
                                    "gamma = {:g} is not", gamma, step.at_gamma));
     shear_to(step.at_gamma);
-    p.push_back({fmt::format("sigma_n {:g} -> {:g} kPa", sigma, step.sigma_n_kPa), 0.0, 0.0,
-                 cnl.row((step.sigma_n_kPa - sigma) / step_increments), step_increments});
+    p.push_back(sigma_ramp(fmt::format("sigma_n {:g} -> {:g} kPa", sigma, step.sigma_n_kPa), sigma,
+                           step.sigma_n_kPa, step_increments));
     sigma = step.sigma_n_kPa;
   }
   shear_to(gamma);

@@ -15,6 +15,8 @@ struct PathSegment {
   double gamma_y = 0.0;
   NormalControlRow row;  // per increment
   int increments = 1;
+  int cycle = 0;                  // 1-based cycle it belongs to; 0 outside cyclic paths
+  bool ends_at_reversal = false;  // its end is a shear reversal (+A or -A) of a cycle
 };
 
 using Path = std::vector<PathSegment>;
@@ -26,11 +28,21 @@ struct StagedStep {
   double sigma_n_kPa;  // new normal stress
 };
 
+struct CyclicStage {
+  int from_cycle;      // sigma_n is ramped to the new value before this cycle (1-based)
+  double sigma_n_kPa;  // new normal stress
+};
+
 // Shear to `gamma` under `bc`.
 Path monotonic_path(const BoundaryCondition& bc, double gamma, ShearDirection dir, int increments);
 // `cycles` cycles 0 -> +A -> -A -> 0 under `bc`, `per_quarter` increments per quarter cycle.
 Path cyclic_path(const BoundaryCondition& bc, double amplitude, int cycles, ShearDirection dir,
                  int per_quarter);
+// The same under CNL from sigma_n0 with the normal stress staged between cycles: before each
+// stage's cycle, a ramp of `step_increments` pure normal-stress increments at zero shear.
+Path staged_cyclic_path(double sigma_n0, double amplitude, int cycles,
+                        const std::vector<CyclicStage>& stages, ShearDirection dir,
+                        int per_quarter, int step_increments);
 // CNL shear to `gamma` with sigma_n stepped to new values at given strains; each step is a
 // ramp of `step_increments` pure normal-stress increments at fixed shear.
 Path staged_path(double sigma_n0, double gamma, const std::vector<StagedStep>& steps,

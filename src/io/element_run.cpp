@@ -60,6 +60,10 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   write_atomically(opt.out / "history.csv", history_csv(*model, spec.zone, outcome.result.rows));
+  if (!outcome.result.cycles.empty()) {
+    write_atomically(opt.out / "cycles.csv", cycles_csv(spec.zone, outcome.result.cycles));
+    m["files"].push_back("cycles.csv");
+  }
   m["finished"] = utc_timestamp();
   m["wall_seconds"] = seconds;
   m["counters"] = counters_json(outcome.result);

@@ -1,5 +1,6 @@
 #pragma once
-// Runs an element-test spec into a run directory: manifest.json + history.csv.
+// Runs an element-test spec into a run directory: manifest.json, history.csv and, for cyclic
+// paths, cycles.csv.
 #include <atomic>
 #include <filesystem>
 #include <functional>

@@ -1,10 +1,12 @@
 #include "io/element_test_file.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
 #include "io/parameter_file.hpp"
+#include "models/hypoplastic/intergranular_strain.hpp"
 #include "io/toml_reader.hpp"
 
 namespace iwb::io {
@@ -75,6 +77,66 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
   spec.resolved["roughness"] = {{"scheme", scheme}, {"kappa_r", k.value}, {"origin", origin}};
 }
 
+bool has_intergranular_strain(const std::string& model) {
+  for (const auto* t : models::find_model(model).tables)
+    if (t == &models::IntergranularStrainParameters::table()) return true;
+  return false;
+}
+
+// Beyond this multiple of R an initial intergranular strain is taken as a units mistake (e.g. a
+// percentage): the seed's own default has ||delta|| = 2R/sqrt(3) = 1.155 R, see
+// src/models/hypoplastic/README.md.
+constexpr double kMaxInitialRho = 2.0;
+
+// The value as written, arrays included (describe() names only the type of an array).
+std::string written(const toml::node& node) {
+  if (const auto* arr = node.as_array()) {
+    std::ostringstream os;
+    os << *arr;
+    return os.str();
+  }
+  return describe(node);
+}
+
+bool all_numbers(const toml::array& a) {
+  for (const auto& v : a)
+    if (!v.is_integer() && !v.is_floating_point()) return false;
+  return true;
+}
+
+// [initial] delta: [delta_n, delta_x, delta_y] (opening positive like eps_n, tensor components) or
+// "seed" (default): delta_n = 0, delta_x = delta_y = R/sqrt(3) after oedometric loading (seed 5.6).
+void read_delta(TableReader& t, ElementTestSpec& spec) {
+  const toml::node* node = t.node("delta");
+  if (!has_intergranular_strain(spec.model)) {
+    if (node != nullptr)
+      throw InputError(fmt::format("{} = {}: model '{}' has no intergranular strain (use '{}-igs' or "
+                                   "remove the key)", t.where("delta"), written(*node), spec.model,
+                                   spec.model));
+    return;
+  }
+  const double R = spec.inputs.tables.at("intergranular_strain").at("R");  // validated by make()
+  std::string origin = "given";
+  std::array<double, 3> d{};
+  if (node == nullptr || node->value<std::string>() == std::optional<std::string>("seed")) {
+    d = models::seed_initial_intergranular_strain(R);
+    origin = "seed 5.6 after oedometric loading: [0, R/sqrt(3), R/sqrt(3)]";
+  } else {
+    const auto* arr = node->as_array();
+    if (arr == nullptr || arr->size() != 3 || !all_numbers(*arr))
+      throw InputError(fmt::format("{} = {} should be \"seed\" or three numbers [delta_n, delta_x, "
+                                   "delta_y]", t.where("delta"), written(*node)));
+    for (int i = 0; i < 3; ++i) d[i] = arr->get(i)->value<double>().value();
+    const double rho = std::sqrt(d[0] * d[0] + 2.0 * (d[1] * d[1] + d[2] * d[2])) / R;
+    if (!(rho <= kMaxInitialRho))
+      throw InputError(fmt::format("{} = {}: ||delta|| = {:g} R is out of range; allowed [0, {:g}] R "
+                                   "(R = {:g})", t.where("delta"), written(*node), rho, kMaxInitialRho, R));
+  }
+  spec.initial.delta = d;
+  spec.resolved["initial"]["delta"] = {{"delta_n", d[0]}, {"delta_x", d[1]}, {"delta_y", d[2]},
+                                       {"origin", origin}};
+}
+
 void read_initial(TableReader t, ElementTestSpec& spec) {
   spec.initial.sigma_n = t.positive("sigma_n_kPa");
   spec.initial.e0 = t.positive("e0");
@@ -85,11 +147,12 @@ void read_initial(TableReader t, ElementTestSpec& spec) {
   } else {
     throw InputError(t.where("K0") + " is missing and no phi_c_deg gives the default 1 - sin(phi_c)");
   }
-  t.finish();
   spec.resolved["initial"] = {{"sigma_n_kPa", spec.initial.sigma_n},
                               {"sigma_p_kPa", spec.initial.K0 * spec.initial.sigma_n},
                               {"K0", spec.initial.K0},
                               {"e0", spec.initial.e0}};
+  read_delta(t, spec);
+  t.finish();
 }
 
 void read_zone(std::optional<TableReader> t, ElementTestSpec& spec) {
@@ -142,7 +205,23 @@ void read_path(TableReader t, ElementTestSpec& spec) {
   } else if (kind == "cyclic") {
     const double a = strain(t, "amplitude_gamma", "amplitude_u_mm", spec.zone);
     const int cycles = t.count("cycles");
-    spec.path = driver::cyclic_path(spec.boundary, a, cycles, d, t.count("increments_per_quarter"));
+    const int per_quarter = t.count("increments_per_quarter");
+    if (t.has("steps")) {
+      if (spec.boundary.kind != driver::BoundaryKind::kCNL)
+        throw InputError(fmt::format("{}: staged cycles step sigma_n and need boundary type CNL",
+                                     t.where("steps")));
+      std::vector<driver::CyclicStage> stages;
+      for (auto& s : t.array_of_tables("steps")) {
+        stages.push_back({s.count("from_cycle"), s.positive("sigma_n_kPa")});
+        s.finish();
+        out["steps"].push_back({{"from_cycle", stages.back().from_cycle},
+                                {"sigma_n_kPa", stages.back().sigma_n_kPa}});
+      }
+      spec.path = driver::staged_cyclic_path(spec.initial.sigma_n, a, cycles, stages, d, per_quarter,
+                                             t.optional_count("step_increments").value_or(50));
+    } else {
+      spec.path = driver::cyclic_path(spec.boundary, a, cycles, d, per_quarter);
+    }
     out["amplitude_gamma"] = a;
     out["cycles"] = cycles;
   } else if (kind == "staged") {

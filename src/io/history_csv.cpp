@@ -1,5 +1,6 @@
 #include "io/history_csv.hpp"
 
+#include <cmath>
 #include <fmt/core.h>
 
 namespace iwb::io {
@@ -24,6 +25,21 @@ std::string history_csv(const models::Model& model, const driver::ShearZone& zon
     for (const auto& d : model.diagnostics(r.state)) out += fmt::format(",{:.10g}", d.value);
     out += fmt::format(",{},{},{}\n", r.newton_iterations, r.rate_evaluations, r.rejected_substeps);
   }
+  return out;
+}
+
+std::string cycles_csv(const driver::ShearZone& zone, const std::vector<driver::CycleSummary>& cycles) {
+  std::string out =
+      "cycle,tau_max_kPa,tau_min_kPa,sigma_n_at_plus_reversal_kPa,sigma_n_at_minus_reversal_kPa,"
+      "sigma_n_end_kPa,u_n_end_mm,du_n_cycle_mm,e_end,complete\n";
+  // A reversal not reached (a failed run) is an empty field, never NaN.
+  const auto field = [](double v) { return std::isfinite(v) ? fmt::format("{:.10g}", v) : std::string(); };
+  for (const auto& c : cycles)
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", c.cycle, field(c.tau_max_kPa),
+                       field(c.tau_min_kPa), field(c.sigma_n_at_plus_kPa),
+                       field(c.sigma_n_at_minus_kPa), field(c.sigma_n_end_kPa),
+                       field(zone.u_n_of(c.eps_n_end)), field(zone.u_n_of(c.eps_n_end - c.eps_n_start)),
+                       field(c.e_end), c.complete ? 1 : 0);
   return out;
 }
 

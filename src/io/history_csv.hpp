@@ -12,4 +12,8 @@ namespace iwb::io {
 std::string history_csv(const models::Model& model, const driver::ShearZone& zone,
                         const std::vector<driver::HistoryRow>& rows);
 
+// cycles.csv: one row per cycle of a cyclic path (peak tau each way, sigma_n at the reversals,
+// accumulated and per-cycle u_n, e at the cycle's end). Incomplete cycles are marked.
+std::string cycles_csv(const driver::ShearZone& zone, const std::vector<driver::CycleSummary>& cycles);
+
 }  // namespace iwb::io

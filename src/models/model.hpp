@@ -2,6 +2,7 @@
 // What the driver and the integrator know of a constitutive model: a flat state vector, its rate
 // for a given interface stretching, the stresses it stands for, and its domain. Nothing else.
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -47,6 +48,9 @@ struct InitialState {
   double sigma_n = 0.0;
   double K0 = 1.0;  // sigma_p0 = K0 sigma_n0
   double e0 = 0.0;
+  // Models with intergranular strain: [delta_n, delta_x, delta_y] as tensor components (opening
+  // positive like eps_n, delta_x = delta_12); empty = the model's default (seed 5.6).
+  std::optional<std::array<double, 3>> delta = std::nullopt;
 };
 
 struct NamedValue {

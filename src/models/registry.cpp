@@ -13,10 +13,16 @@ ModelSpec ahe_spec();
 ModelSpec hvwe_spec();
 ModelSpec hvwe_exact_spec();
 ModelSpec hp1d_spec();
+ModelSpec vw3d_igs_spec();
+ModelSpec ahe_igs_spec();
+ModelSpec hvwe_igs_spec();
+ModelSpec hvwe_exact_igs_spec();
 
 const std::vector<ModelSpec>& model_registry() {
   static const std::vector<ModelSpec> specs{vw3d_spec(), ah_spec(),         ahe_spec(),
-                                            hvwe_spec(), hvwe_exact_spec(), hp1d_spec()};
+                                            hvwe_spec(), hvwe_exact_spec(), hp1d_spec(),
+                                            vw3d_igs_spec(), ahe_igs_spec(), hvwe_igs_spec(),
+                                            hvwe_exact_igs_spec()};
   return specs;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The list of models the workbench knows. Adding a model: one folder under src/models/ with a
 // spec function, and one line in registry.cpp.
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -26,7 +27,7 @@ struct ModelSpec {
   std::string equations;  // seed equations it implements
   bool uses_roughness;
   std::vector<const ParameterTable*> tables;
-  std::unique_ptr<Model> (*make)(const ModelInputs&);
+  std::function<std::unique_ptr<Model>(const ModelInputs&)> make;
 };
 
 const std::vector<ModelSpec>& model_registry();

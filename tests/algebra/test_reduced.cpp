@@ -100,7 +100,7 @@ TEST_CASE("inner product keeps four entries of the 3x3 product and loses the res
   }
 }
 
-TEST_CASE("tr(X.X.X): reduced minus exact is tr X (X3^2 - X4^2); equal for deviators (ERRATA 2)", "[algebra]") {
+TEST_CASE("tr(X.X.X): reduced minus exact is tr X (X3^2 - X4^2), equal for deviators (ERRATA 2)", "[algebra]") {
   for (const auto& x : samples()) {
     const double reduced_value = reduced::trace_of_cube(x);
     const double exact = tensor3::trace_of_cube(reduced::embed(x));

@@ -2,8 +2,10 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "common/errors.hpp"
+#include "io/element_run.hpp"
 #include "io/element_test_file.hpp"
 #include "io/toml_reader.hpp"
 
@@ -117,4 +119,78 @@ TEST_CASE("parameter files: a relative path resolves against the test file", "[i
   } catch (const InputError& e) {
     CHECK_THAT(std::string(e.what()), Catch::Contains("p/sand.toml: key 'hypoplastic.beta' = \"two\" is not a number"));
   }
+}
+
+namespace {
+// kGood with hvwe-igs and Table 5.3's intergranular-strain columns inline.
+std::string igs_file(const std::string& initial_extra = "") {
+  auto text = replaced(kGood, "name = \"hvwe\"", "name = \"hvwe-igs\"");
+  text = replaced(text, "[initial]", "[model.parameters.intergranular_strain]\nR = 1e-4\nm_R = 5\nm_T = 2\n"
+                                      "beta_r = 0.12\nchi = 1\n[initial]\n" + initial_extra);
+  return text;
+}
+}  // namespace
+
+TEST_CASE("initial intergranular strain: the seed's default, given values, and bad ones", "[io][igs]") {
+  const auto seed = parse(igs_file());
+  REQUIRE(seed.initial.delta.has_value());
+  CHECK((*seed.initial.delta)[0] == 0.0);
+  CHECK((*seed.initial.delta)[1] == Approx(1e-4 / std::sqrt(3.0)));
+  CHECK((*seed.initial.delta)[2] == Approx(1e-4 / std::sqrt(3.0)));
+  CHECK(seed.resolved["initial"]["delta"]["origin"].get<std::string>().find("seed 5.6") != std::string::npos);
+
+  const auto given = parse(igs_file("delta = [-1e-4, 0, 0]\n"));
+  CHECK((*given.initial.delta)[0] == -1e-4);
+
+  CHECK_THAT(error_of(igs_file("delta = [1e-4, 0]\n")),
+             Catch::Contains("t.toml: key 'initial.delta' = [ 0.0001, 0 ]") && Catch::Contains("three numbers"));
+  CHECK_THAT(error_of(igs_file("delta = [0, 1e-3, 0]\n")),
+             Catch::Contains("key 'initial.delta'") && Catch::Contains("allowed [0, 2] R"));
+  CHECK_THAT(error_of(igs_file("delta = \"oedometric\"\n")), Catch::Contains("should be \"seed\" or three numbers"));
+  CHECK_THAT(error_of(replaced(kGood, "e0 = 0.8", "e0 = 0.8\ndelta = [0, 0, 0]")),
+             Catch::Contains("key 'initial.delta'") && Catch::Contains("model 'hvwe' has no intergranular strain"));
+  CHECK_THAT(error_of(replaced(igs_file(), "chi = 1", "chi = 0")),
+             Catch::Contains("key 'chi' = 0 is out of range; allowed (0, inf)"));
+}
+
+TEST_CASE("cyclic paths with staged sigma_n are read, and the stages need CNL", "[io][cyclic]") {
+  const std::string cyclic = "kind = \"cyclic\"\namplitude_gamma = 0.01\ncycles = 3\nincrements_per_quarter = 5\n"
+                             "steps = [ { from_cycle = 2, sigma_n_kPa = 200 } ]\n";
+  auto text = replaced(kGood, "kind = \"monotonic\"\ngamma = 0.1\nincrements = 100\n", cyclic);
+  const auto spec = parse(text);
+  CHECK(spec.path.size() == 10);
+  CHECK(spec.resolved["path"]["steps"][0]["from_cycle"] == 2);
+  CHECK_THAT(error_of(replaced(text, "type = \"CNL\"", "type = \"CV\"")),
+             Catch::Contains("key 'path.steps'") && Catch::Contains("need boundary type CNL"));
+  CHECK_THAT(error_of(replaced(text, "from_cycle = 2", "from_cycle = 4")),
+             Catch::Contains("stage 1 (from_cycle = 4) does not"));
+}
+
+TEST_CASE("a cyclic run directory holds cycles.csv, one row per cycle, listed in the manifest", "[io][cyclic]") {
+  const std::string cyclic = "kind = \"cyclic\"\namplitude_u_mm = 0.002\ncycles = 3\nincrements_per_quarter = 5\n";
+  const auto text = replaced(igs_file(), "kind = \"monotonic\"\ngamma = 0.1\nincrements = 100\n", cyclic) +
+                    "[shear_zone]\nd_s_mm = 2\n";
+  const auto spec = parse(text);
+  const auto dir = std::filesystem::temp_directory_path() / "iwb-io-cycles";
+  io::ElementRunOptions opt;
+  opt.out = dir;
+  opt.force = true;
+  opt.input_text = text;
+  const auto outcome = io::run_element_to_directory(spec, opt);
+  REQUIRE(outcome.result.complete());
+  std::ifstream in(dir / "cycles.csv");
+  std::string line;
+  std::vector<std::string> lines;
+  while (std::getline(in, line)) lines.push_back(line);
+  REQUIRE(lines.size() == 4);
+  CHECK(lines[0].rfind("cycle,tau_max_kPa,tau_min_kPa,sigma_n_at_plus_reversal_kPa", 0) == 0);
+  CHECK(lines[3].rfind("3,", 0) == 0);
+  CHECK(lines[3].substr(lines[3].size() - 2) == ",1");  // complete
+  // u_n through d_s = 2 mm: u_n_end_mm (column 7) = 2 eps_n
+  std::vector<std::string> fields;
+  std::stringstream row(lines[3]);
+  for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
+  REQUIRE(fields.size() == 10);
+  CHECK(std::stod(fields[6]) == Approx(2.0 * outcome.result.cycles.back().eps_n_end));
+  CHECK(outcome.manifest["files"].dump().find("cycles.csv") != std::string::npos);
 }

@@ -41,16 +41,35 @@ models::StateVector to_3d(const models::StateVector& r) {  // [11, 22, 33, 12, 1
   return s;
 }
 
+// The model an -igs model extends.
+std::string base_of(const std::string& name) {
+  return test::has_intergranular_strain(name) ? name.substr(0, name.size() - 4) : name;
+}
+
+// `s` (a state of the base model) with an intergranular strain [delta_n, delta_x, delta_y]
+// (tensor components) appended when `m` carries one, packed like its stress.
+models::StateVector with_delta(const models::Model& m, const models::StateVector& s, double dn,
+                               double dx, double dy) {
+  if (m.state_size() == s.size()) return s;
+  models::StateVector out(m.state_size());
+  out.head(s.size()) = s;
+  if (m.state_size() - s.size() == 6) out.tail(6) << dn, 0.0, 0.0, dx, dy, 0.0;
+  else out.tail(4) << dn, 0.0, dx, dy;
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("every model is rate independent: rate(s, l d) = l rate(s, d) for l > 0", "[models]") {
   std::mt19937 rng(1);
   for (const auto& spec : models::model_registry()) {
     const auto m = make(spec.name);
-    for (const auto& r : reduced_states(50, spec.name != "hp1d")) {
-      models::StateVector s = spec.name == "vw3d" ? to_3d(r) : r;
-      if (spec.name == "hp1d") s = (models::StateVector(3) << r(0), r(2), r(4)).finished();
-      if (spec.name == "ah" || spec.name == "ahe") s(1) = s(0);
+    const std::string base = base_of(spec.name);
+    for (const auto& r : reduced_states(50, base != "hp1d")) {
+      models::StateVector s = base == "vw3d" ? to_3d(r) : r;
+      if (base == "hp1d") s = (models::StateVector(3) << r(0), r(2), r(4)).finished();
+      if (base == "ah" || base == "ahe") s(1) = s(0);
+      s = with_delta(*m, s, -0.3e-4, 0.5e-4, -0.2e-4);
       auto d = random_strain(rng);
       if (spec.name == "hp1d") d.gamma_y = 0.0;
       models::StateVector r1, r2;
@@ -65,12 +84,19 @@ TEST_CASE("every model is rate independent: rate(s, l d) = l rate(s, d) for l > 
 
 TEST_CASE("dual-number rates carry the finite-difference derivative in eps_n", "[models]") {
   std::mt19937 rng(2);
-  for (const std::string name : {"hvwe", "vw3d", "ah", "hp1d"}) {
+  for (const std::string name : {"hvwe", "vw3d", "ah", "hp1d", "hvwe-igs", "vw3d-igs", "ahe-igs"}) {
     const auto m = make(name);
+    const std::string base = base_of(name);
+    int k = 0;
     for (const auto& r : reduced_states(20, false)) {
-      models::StateVector s = name == "vw3d" ? to_3d(r) : r;
-      if (name == "hp1d") s = (models::StateVector(3) << r(0), r(2), r(4)).finished();
-      if (name == "ah") s(1) = s(0);
+      models::StateVector s = base == "vw3d" ? to_3d(r) : r;
+      if (base == "hp1d") s = (models::StateVector(3) << r(0), r(2), r(4)).finished();
+      if (base == "ah" || base == "ahe") s(1) = s(0);
+      // intergranular strain inside, on and beyond ||delta|| = R (and zero), both branches
+      const double rho[] = {0.0, 0.4, 1.0, 1.1547};
+      const double sign = (k % 2 == 0) ? 1.0 : -1.0;
+      s = with_delta(*m, s, 0.0, sign * rho[k % 4] * 1e-4 / std::sqrt(2.0), 0.0);
+      ++k;
       auto d = random_strain(rng);
       d.gamma_y = 0.0;
       models::StateVectorT<Dual> rd;

@@ -29,12 +29,37 @@ inline models::ModelInputs table_5_2_hostun() {
   return in;
 }
 
+// Table 5.3's intergranular-strain columns for Toyoura sand (Arnold 2008).
+inline models::ParameterValues table_5_3_toyoura_igs() {
+  return {{"R", 1e-4}, {"m_R", 5.0}, {"m_T", 2.0}, {"beta_r", 0.12}, {"chi", 1.0}};
+}
+
+// Seed Table 5.3, Toyoura sand, both column groups (seed 5.7.5).
+inline models::ModelInputs table_5_3_toyoura() {
+  models::ModelInputs in;
+  in.tables["hypoplastic"] = {{"phi_c_deg", 30.0}, {"hs_kPa", 2.6e6}, {"n", 0.27},
+                              {"ed0", 0.61},       {"ec0", 0.98},     {"ei0", 1.1},
+                              {"alpha", 0.18},     {"beta", 1.0}};
+  in.tables["intergranular_strain"] = table_5_3_toyoura_igs();
+  in.source = "seed Table 5.3 Toyoura";
+  return in;
+}
+
+inline bool has_intergranular_strain(const std::string& model) {
+  return model.size() > 4 && model.compare(model.size() - 4, 4, "-igs") == 0;
+}
+
 inline const double kPhiC51 = 28.0 * M_PI / 180.0;
 inline const double kK0Oedometric51 = 1.0 - std::sin(kPhiC51);
 
+// `in`, with Table 5.3's Toyoura intergranular-strain columns added for the -igs models when it
+// has none (the seed gives them only with Table 5.3).
 inline std::unique_ptr<models::Model> make(const std::string& name,
                                            const models::ModelInputs& in = table_5_1()) {
-  return models::find_model(name).make(in);
+  models::ModelInputs with = in;
+  if (has_intergranular_strain(name) && !with.tables.count("intergranular_strain"))
+    with.tables["intergranular_strain"] = table_5_3_toyoura_igs();
+  return models::find_model(name).make(with);
 }
 
 struct Run {

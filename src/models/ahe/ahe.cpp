@@ -4,16 +4,22 @@
 
 namespace iwb::models {
 
+namespace {
+std::unique_ptr<Model> build(const ModelInputs& in, WithIntergranularStrain igs) {
+  return make_hypoplastic("ahe", ReducedInterfaceKinematics<algebra::ReducedOps>{true},
+                          HypoplasticVariant{}, in, igs);
+}
+}  // namespace
+
 ModelSpec ahe_spec() {
   return {"ahe",
           "Arnold & Herle reduced tensors with the standard cos 3theta, a and F",
           "seed 5.16-5.19 with 5.10, 5.11, 5.15 (ERRATA 8)",
           true,
           {&HypoplasticParameters::table()},
-          [](const ModelInputs& in) {
-            return make_hypoplastic("ahe", ReducedInterfaceKinematics<algebra::ReducedOps>{true},
-                                    HypoplasticVariant{}, in);
-          }};
+          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); }};
 }
+
+ModelSpec ahe_igs_spec() { return with_intergranular_strain(ahe_spec(), build); }
 
 }  // namespace iwb::models

@@ -5,17 +5,22 @@
 
 namespace iwb::models {
 
+namespace {
+std::unique_ptr<Model> build(const ModelInputs& in, WithIntergranularStrain igs) {
+  return make_hypoplastic("hvwe-exact", ReducedInterfaceKinematics<algebra::EmbeddedReducedOps>{},
+                          HypoplasticVariant{}, in, igs);
+}
+}  // namespace
+
 ModelSpec hvwe_exact_spec() {
   return {"hvwe-exact",
           "hvwe with invariants evaluated on the embedded 3x3 tensor",
           "seed 5.5, ERRATA 2",
           true,
           {&HypoplasticParameters::table()},
-          [](const ModelInputs& in) {
-            return make_hypoplastic("hvwe-exact",
-                                    ReducedInterfaceKinematics<algebra::EmbeddedReducedOps>{},
-                                    HypoplasticVariant{}, in);
-          }};
+          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); }};
 }
+
+ModelSpec hvwe_exact_igs_spec() { return with_intergranular_strain(hvwe_exact_spec(), build); }
 
 }  // namespace iwb::models

@@ -4,16 +4,22 @@
 
 namespace iwb::models {
 
+namespace {
+std::unique_ptr<Model> build(const ModelInputs& in, WithIntergranularStrain igs) {
+  return make_hypoplastic("hvwe", ReducedInterfaceKinematics<algebra::ReducedOps>{},
+                          HypoplasticVariant{}, in, igs);
+}
+}  // namespace
+
 ModelSpec hvwe_spec() {
   return {"hvwe",
           "enhanced hypoplastic interface model on [sigma_n, sigma_p, tau_x, tau_y]",
           "seed 5.2, 5.4 (5.22-5.34), 5.5, roughness 5.35-5.41",
           true,
           {&HypoplasticParameters::table()},
-          [](const ModelInputs& in) {
-            return make_hypoplastic("hvwe", ReducedInterfaceKinematics<algebra::ReducedOps>{},
-                                    HypoplasticVariant{}, in);
-          }};
+          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); }};
 }
+
+ModelSpec hvwe_igs_spec() { return with_intergranular_strain(hvwe_spec(), build); }
 
 }  // namespace iwb::models

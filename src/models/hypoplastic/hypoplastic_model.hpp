@@ -1,12 +1,14 @@
 #pragma once
 // The hypoplastic family as one class over a kinematics policy and variant data. State: the
-// packed stress tensor followed by the void ratio.
+// packed stress tensor, the void ratio and, with intergranular strain, the packed delta.
 #include <fmt/core.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "common/errors.hpp"
+#include "models/hypoplastic/intergranular_strain.hpp"
 #include "models/hypoplastic/kinematics.hpp"
 #include "models/hypoplastic/von_wolffersdorff.hpp"
 #include "models/model.hpp"
@@ -17,19 +19,24 @@ template <class Kinematics>
 class HypoplasticModel final : public Model {
   using Ops = typename Kinematics::Ops;
   static constexpr int kVoidRatio = Ops::kPackedSize;
+  static constexpr int kDelta = kVoidRatio + 1;  // first intergranular strain component
 
  public:
   HypoplasticModel(std::string name, Kinematics kin, const HypoplasticParameters& p,
-                   const HypoplasticVariant& variant, const Roughness& roughness)
+                   const HypoplasticVariant& variant, const Roughness& roughness,
+                   std::optional<IntergranularStrainParameters> igs = std::nullopt)
       : name_(std::move(name)),
         kin_(kin),
-        c_(make_constants(p, variant, roughness, value_of(Ops::trace(Ops::template unit<double>())))) {}
+        c_(make_constants(p, variant, roughness, value_of(Ops::trace(Ops::template unit<double>())))),
+        igs_(igs) {}
 
   std::string_view name() const override { return name_; }
-  int state_size() const override { return Ops::kPackedSize + 1; }
+  int state_size() const override { return Ops::kPackedSize * (igs_ ? 2 : 1) + 1; }
   std::vector<std::string> state_names() const override {
     auto names = Kinematics::component_names();
     names.push_back("e");
+    if (igs_)
+      for (const auto& t : Kinematics::component_names()) names.push_back("delta" + t.substr(1));
     return names;
   }
   bool has_second_shear_direction() const override { return Kinematics::kSecondShearDirection; }
@@ -39,6 +46,10 @@ class HypoplasticModel final : public Model {
     StateVector s(state_size());
     Ops::template pack<double>(kin_.initial_stress(init), s, 0);
     s(kVoidRatio) = init.e0;
+    if (igs_) Ops::template pack<double>(initial_intergranular_strain(init), s, kDelta);
+    else if (init.delta)
+      throw InputError(fmt::format("{} has no intergranular strain; an initial delta is meaningless "
+                                   "for it (use {}-igs)", name_, name_));
     if (const std::string why = domain_violation(s); !why.empty())
       throw InputError(fmt::format("initial state (sigma_n0 = {:g} kPa, K0 = {:g}, e0 = {:g}) is "
                                    "not admissible for {}: {}",
@@ -76,6 +87,7 @@ class HypoplasticModel final : public Model {
     const auto t = Ops::template unpack<double>(s, 0);
     StateVector scale = StateVector::Constant(state_size(), std::sqrt(Ops::contract(t, t)));
     scale(kVoidRatio) = std::abs(s(kVoidRatio));
+    if (igs_) scale.tail(Ops::kPackedSize).setConstant(igs_->R);  // delta is measured against R
     return scale;
   }
 
@@ -84,10 +96,15 @@ class HypoplasticModel final : public Model {
     const double pressure = -Ops::trace(t);
     const auto lim = limiting_void_ratios(pressure, c_.p);
     const double tr_unit = Ops::trace(Ops::template unit<double>());
-    return {{"mean_stress_kPa", pressure / tr_unit},
-            {"e_i", lim.e_i},
-            {"e_c", lim.e_c},
-            {"e_d", lim.e_d}};
+    std::vector<NamedValue> out{{"mean_stress_kPa", pressure / tr_unit},
+                                {"e_i", lim.e_i},
+                                {"e_c", lim.e_c},
+                                {"e_d", lim.e_d}};
+    if (igs_) {
+      const auto delta = Ops::template unpack<double>(s, kDelta);
+      out.push_back({"rho", std::sqrt(Ops::contract(delta, delta)) / igs_->R});
+    }
+    return out;
   }
 
  private:
@@ -97,13 +114,30 @@ class HypoplasticModel final : public Model {
     const auto D = kin_.template stretching<S>(d);
     const S e = s(kVoidRatio);
     ds.resize(state_size());
-    Ops::template pack<S>(von_wolffersdorff_rate<Ops, S>(T, e, D, c_), ds, 0);
     ds(kVoidRatio) = (1.0 + e) * Ops::trace(D);  // ERRATA item 6
+    if (!igs_) {
+      Ops::template pack<S>(von_wolffersdorff_rate<Ops, S>(T, e, D, c_), ds, 0);
+      return;
+    }
+    const auto delta = Ops::template unpack<S>(s, kDelta);
+    const auto r = intergranular_strain_rate<Ops, S>(von_wolffersdorff_tangent<Ops, S>(T, e, c_),
+                                                     delta, D, *igs_);
+    Ops::template pack<S>(r.stress, ds, 0);
+    Ops::template pack<S>(kin_.template intergranular<S>(r.delta), ds, kDelta);
+  }
+
+  // Given [delta_n, delta_x, delta_y] or the seed's default, as the stretching-shaped tensor of
+  // the element's algebra (delta_x is a tensor component, hence gamma = 2 delta_x).
+  typename Ops::template Tensor<double> initial_intergranular_strain(const InitialState& init) const {
+    const auto d = init.delta.value_or(seed_initial_intergranular_strain(igs_->R));
+    return kin_.template intergranular<double>(
+        kin_.template stretching<double>(InterfaceStrain{d[0], 2.0 * d[1], 2.0 * d[2]}));
   }
 
   std::string name_;
   Kinematics kin_;
   VonWolffersdorffConstants c_;
+  std::optional<IntergranularStrainParameters> igs_;
 };
 
 }  // namespace iwb::models

@@ -32,6 +32,13 @@ struct ReducedInterfaceKinematics {
   static std::vector<std::string> component_names() {
     return {"T_n", "T_p", "T_x", "T_y"};
   }
+  // The reduced intergranular strain has delta_p = 0 (eq. 5.48), also for AHE whose stretching
+  // carries eps_n in plane: its in-plane part loads no intergranular strain.
+  template <class S>
+  typename Ops::template Tensor<S> intergranular(typename Ops::template Tensor<S> delta) const {
+    delta(1) = S(0.0);
+    return delta;
+  }
   static constexpr bool kSecondShearDirection = true;
 };
 
@@ -57,6 +64,12 @@ struct SimpleShearKinematics {
   static std::vector<std::string> component_names() {
     return {"T_11", "T_22", "T_33", "T_12", "T_13", "T_23"};
   }
+  // In simple shear D_22 = D_33 = D_23 = 0, so the lateral intergranular strain stays as it
+  // starts (zero): nothing to project.
+  template <class S>
+  typename Ops::template Tensor<S> intergranular(const typename Ops::template Tensor<S>& delta) const {
+    return delta;
+  }
   static constexpr bool kSecondShearDirection = true;
 };
 
@@ -71,6 +84,11 @@ struct ShearPlaneKinematics {
   Ops::Tensor<double> initial_stress(const InitialState& s) const { return {-s.sigma_n, 0.0}; }
   InterfaceStress stress(const Ops::Tensor<double>& t) const { return {-t(0), {}, t(1), 0.0}; }
   static std::vector<std::string> component_names() { return {"T_n", "T_x"}; }
+  // hp1d has no -igs variant; the shared model class still names the projection.
+  template <class S>
+  typename Ops::template Tensor<S> intergranular(const typename Ops::template Tensor<S>& delta) const {
+    return delta;
+  }
   static constexpr bool kSecondShearDirection = false;
 };
 

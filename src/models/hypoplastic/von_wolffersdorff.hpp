@@ -95,13 +95,28 @@ S stress_function(const typename Ops::template Tensor<S>& t_dev, LodeRule lode) 
 }
 }  // namespace detail
 
+// The rate split into its linear part L : X and the tensor N of T_rate = L : D + N ||D|| (eq.
+// 5.6), so the intergranular strain (intergranular_strain.hpp) can interpolate between them
+// without writing the formula a second time.
 template <class Ops, class S>
-typename Ops::template Tensor<S> von_wolffersdorff_rate(const typename Ops::template Tensor<S>& T,
-                                                        const S& e,
-                                                        const typename Ops::template Tensor<S>& D,
-                                                        const VonWolffersdorffConstants& c) {
+struct HypoplasticTangent {
+  using Tensor = typename Ops::template Tensor<S>;
+  S scale;       // f_c f_b f_e / (T^:T^)
+  S F2;          // F^2
+  double a2;     // a^2
+  Tensor t_hat;  // T^
+  Tensor N;      // scale f_d a F (T^ + T^*)
+
+  Tensor L(const Tensor& X) const {  // L : X = scale [F^2 X + a^2 T^ (T^:X)]
+    return scale * (F2 * X + (a2 * Ops::contract(t_hat, X)) * t_hat);
+  }
+};
+
+template <class Ops, class S>
+HypoplasticTangent<Ops, S> von_wolffersdorff_tangent(const typename Ops::template Tensor<S>& T,
+                                                     const S& e,
+                                                     const VonWolffersdorffConstants& c) {
   using std::pow;
-  using std::sqrt;
   using Tensor = typename Ops::template Tensor<S>;
   const S tr = Ops::trace(T);
   if (!(value_of(tr) < -kMinimumPressure_kPa))
@@ -123,10 +138,18 @@ typename Ops::template Tensor<S> von_wolffersdorff_rate(const typename Ops::temp
   S F = S(1.0);
   if constexpr (Ops::kHasLodeAngle) F = detail::stress_function<Ops, S>(t_dev, c.lode);
 
-  const S norm_d = safe_sqrt(Ops::contract(D, D));
   const S scale = f_b * f_e / Ops::contract(t_hat, t_hat);
-  return scale * (F * F * D + (c.a * c.a * Ops::contract(t_hat, D)) * t_hat +
-                  (f_d * c.a * F * norm_d) * (t_hat + t_dev));
+  const Tensor N = (scale * f_d * c.a * F) * (t_hat + t_dev);
+  return {scale, F * F, c.a * c.a, t_hat, N};
+}
+
+template <class Ops, class S>
+typename Ops::template Tensor<S> von_wolffersdorff_rate(const typename Ops::template Tensor<S>& T,
+                                                        const S& e,
+                                                        const typename Ops::template Tensor<S>& D,
+                                                        const VonWolffersdorffConstants& c) {
+  const auto h = von_wolffersdorff_tangent<Ops, S>(T, e, c);
+  return h.L(D) + safe_sqrt(Ops::contract(D, D)) * h.N;
 }
 
 }  // namespace iwb::models

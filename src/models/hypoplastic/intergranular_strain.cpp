@@ -1,0 +1,37 @@
+#include "models/hypoplastic/intergranular_strain.hpp"
+
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+
+namespace iwb::models {
+
+const ParameterTable& IntergranularStrainParameters::table() {
+  static const ParameterTable t{
+      "intergranular_strain",
+      {
+          {"R", "-", {0.0, true}, {0.01, false}, "size R of the elastic range, max ||delta|| (eq. 5.43)"},
+          {"m_R", "-", {1.0, false}, {kUnbounded, true}, "stiffness factor m_R after a 180 deg reversal"},
+          {"m_T", "-", {1.0, false}, {kUnbounded, true}, "stiffness factor m_T after a 90 deg turn"},
+          {"beta_r", "-", {0.0, true}, {kUnbounded, true}, "evolution exponent beta_r of delta (eq. 5.46)"},
+          {"chi", "-", {0.0, true}, {kUnbounded, true}, "interpolation exponent chi of rho (eq. 5.45)"},
+      }};
+  return t;
+}
+
+IntergranularStrainParameters IntergranularStrainParameters::from(const ParameterValues& v,
+                                                                  const std::string& source) {
+  validate(table(), v, source);
+  const double m_R = v.at("m_R"), m_T = v.at("m_T");
+  if (!(m_T <= m_R))
+    throw InputError(fmt::format("{}: stiffness factors must satisfy m_T <= m_R (a reversal is the "
+                                 "stiffest change of direction); got m_T = {:g}, m_R = {:g}",
+                                 source, m_T, m_R));
+  return {v.at("R"), m_R, m_T, v.at("beta_r"), v.at("chi")};
+}
+
+std::array<double, 3> seed_initial_intergranular_strain(double R) {
+  return {0.0, R / std::sqrt(3.0), R / std::sqrt(3.0)};
+}
+
+}  // namespace iwb::models
