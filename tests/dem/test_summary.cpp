@@ -41,7 +41,7 @@ TEST_CASE("peak, residual and the steadiness verdict", "[dem]") {
   CHECK(dem::to_json(drifting)["residual_is"] == "not steady");
 }
 
-TEST_CASE("a localised profile gives its band; a linear one is distributed shear", "[dem]") {
+TEST_CASE("a localised profile gives its band, a linear one is distributed shear", "[dem]") {
   // erfc profile centred 4 d50 above the wall, width w = 2 d50: 0.9 -> 0.1 spans 3.62 d50
   const auto band = dem::summarize(scene(), series(0.8, 0.6, 0), profile([](double z) { return 0.5 * std::erfc((z - 4.0) / 2.0); }, 20.0));
   REQUIRE(band.shear_mode == "localised at the wall");

@@ -25,7 +25,7 @@ TEST_CASE("sawtooth wall: inside the box, heights 0..R_max, normals up", "[dem]"
   CHECK(zmax == Approx(1e-3));
 }
 
-TEST_CASE("top plate faces down; a flat wall is cut into strips", "[dem]") {
+TEST_CASE("top plate faces down and a flat wall is cut into strips", "[dem]") {
   const RoughnessProfile saw{ProfileKind::kSawtooth, 4e-3, 2e-3};
   for (const auto& t : profile_surface(saw, 24e-3, 8e-3, 0.02, true, 2e-3)) {
     CHECK((t.b - t.a).cross(t.c - t.a).z() < 0.0);
