@@ -1,0 +1,40 @@
+// The cross-engine check's pieces that need no engine: seeding a scene text and the seed scatter.
+#include <catch2/catch.hpp>
+
+#include "common/errors.hpp"
+#include "dem/crosscheck.hpp"
+#include "dem/engines.hpp"
+#include "dem/scene.hpp"
+#include "io/run_directory.hpp"
+
+using namespace iwb;
+
+TEST_CASE("with_seed replaces the top-level seed or adds one, and the scene parses with it", "[dem]") {
+  const std::string smoke = io::read_file("data/scenes/smoke.toml");
+  const auto seeded = dem::with_seed(smoke, 7);
+  CHECK(dem::parse_scene(seeded, "smoke+seed").seed == 7);
+  CHECK(dem::parse_scene(smoke, "smoke").seed == 1);  // the original says seed = 1
+  const std::string without = "description = \"x\"\n";
+  CHECK(dem::with_seed(without, 3).rfind("seed = 3\n", 0) == 0);
+  // a key that merely ends in "seed" inside a table is left alone
+  const std::string nested = "seed = 1\n[particles]\nnot_a_seed = 2\n";
+  CHECK(dem::with_seed(nested, 5) == "seed = 5\n[particles]\nnot_a_seed = 2\n");
+}
+
+TEST_CASE("seed scatter is the sample standard deviation", "[dem]") {
+  const auto s = dem::scatter_of({0.50, 0.52, 0.54});
+  CHECK(s.n == 3);
+  CHECK(s.mean == Approx(0.52));
+  CHECK(s.sd == Approx(0.02));
+  CHECK(dem::scatter_of({0.4}).sd == 0.0);
+  CHECK(dem::scatter_of({}).n == 0);
+}
+
+TEST_CASE("an unknown engine is refused with the engines available", "[dem]") {
+  try {
+    dem::make_engine("pfc");
+    FAIL("pfc accepted");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()) == "--engine pfc: available engines: liggghts, yade");
+  }
+}
