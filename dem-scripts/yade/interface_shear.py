@@ -384,9 +384,14 @@ def shear():
     say("IWB_STAGE_DONE shear ux_m %.9g" % ux)
 
 
-if STAGE == "consolidate":
-    consolidate()
-elif STAGE == "shear":
-    shear()
-else:
+STAGES = {"consolidate": consolidate, "shear": shear}
+if STAGE not in STAGES:
     fail("unknown stage " + STAGE)
+try:
+    STAGES[STAGE]()
+except SystemExit:
+    raise
+except Exception as e:  # the runner shows this line; the traceback stays in the stage log
+    import traceback
+    traceback.print_exc()
+    fail("python error in stage %s: %s: %s" % (STAGE, type(e).__name__, e))

@@ -1,4 +1,4 @@
-// Run orchestration with the real engine: a failure ends the run with "failed: <reason>" and
+// Run orchestration with the real engines (the same statuses for both): a failure ends the run with "failed: <reason>" and
 // keeps no partial contract; --resume continues from the last finished stage. (The short particle
 // count path was seen live: "failed: particle count short: 1685 of 1882 inserted"; since the
 // insertion region is sized from the request it no longer triggers on the shipped scenes.)
@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "common/errors.hpp"
-#include "dem/liggghts/liggghts_engine.hpp"
+#include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "io/run_directory.hpp"
 
@@ -20,14 +20,13 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text.replace(p, from.size(), to);
 }
 dem::RunOptions options(const fs::path& dir, bool resume) { return {dir, 1, resume, !resume, "tests", nullptr, nullptr}; }
-}  // namespace
 
-TEST_CASE("LIGGGHTS: a servo that does not converge fails the run with its reason", "[dem][liggghts]") {
+void servo_failure(const std::string& engine_name) {
   // two windows are not enough for the plate to reach the grains: consolidation is not accepted
   const std::string text = io::read_file("data/scenes/smoke.toml") + "\n[consolidation]\nmax_windows = 2\n";
-  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "no_convergence";
-  dem::LiggghtsEngine engine;
-  const auto outcome = dem::run_scene(dem::parse_scene(text, "short.toml"), text, engine, options(dir, false));
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / "no_convergence";
+  const auto engine = dem::make_engine(engine_name);
+  const auto outcome = dem::run_scene(dem::parse_scene(text, "short.toml"), text, *engine, options(dir, false));
   CHECK_THAT(outcome.status, Catch::StartsWith("failed: servo did not converge") &&
                                  Catch::Contains("after 2 windows") && Catch::Contains("(stage consolidate)"));
   const auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
@@ -36,13 +35,13 @@ TEST_CASE("LIGGGHTS: a servo that does not converge fails the run with its reaso
   CHECK_FALSE(fs::exists(dir / "timeseries.csv"));  // never a silent partial result
 }
 
-TEST_CASE("LIGGGHTS: --resume runs only the stages that did not finish", "[dem][liggghts]") {
+void resume_after_interrupt(const std::string& engine_name) {
   const std::string file = "data/scenes/smoke_cv.toml";
   const std::string text = io::read_file(file);
   const auto scene = dem::parse_scene(text, file);
-  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "resume";
-  dem::LiggghtsEngine engine;
-  REQUIRE(dem::run_scene(scene, text, engine, options(dir, false)).complete());
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / "resume";
+  const auto engine = dem::make_engine(engine_name);
+  REQUIRE(dem::run_scene(scene, text, *engine, options(dir, false)).complete());
   // as if the shear stage had been interrupted
   auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
   const double consolidation_seconds = m["stages"]["consolidate"]["wall_seconds"];
@@ -50,7 +49,7 @@ TEST_CASE("LIGGGHTS: --resume runs only the stages that did not finish", "[dem][
   m["status"] = "interrupted at stage shear";
   io::write_manifest(dir, m);
   fs::remove(dir / "timeseries.csv");
-  const auto resumed = dem::run_scene(scene, text, engine, options(dir, true));
+  const auto resumed = dem::run_scene(scene, text, *engine, options(dir, true));
   REQUIRE(resumed.complete());
   CHECK(resumed.manifest["stages"]["consolidate"]["wall_seconds"].get<double>() == consolidation_seconds);
   CHECK(resumed.manifest["stages"]["shear"]["status"] == "done");
@@ -58,6 +57,19 @@ TEST_CASE("LIGGGHTS: --resume runs only the stages that did not finish", "[dem][
   CHECK(fs::exists(dir / "timeseries.csv"));
   // another scene may not resume this run
   const std::string other = replaced(text, "sigma_n_kPa = 50", "sigma_n_kPa = 60");
-  CHECK_THROWS_WITH(dem::run_scene(dem::parse_scene(other, file), other, engine, options(dir, true)),
+  CHECK_THROWS_WITH(dem::run_scene(dem::parse_scene(other, file), other, *engine, options(dir, true)),
                     Catch::Contains("different scene"));
+}
+
+}  // namespace
+
+TEST_CASE("LIGGGHTS: a servo that does not converge fails the run with its reason", "[dem][liggghts]") {
+  servo_failure("liggghts");
+}
+TEST_CASE("YADE: a servo that does not converge fails the run with its reason", "[dem][yade]") { servo_failure("yade"); }
+TEST_CASE("LIGGGHTS: --resume runs only the stages that did not finish", "[dem][liggghts]") {
+  resume_after_interrupt("liggghts");
+}
+TEST_CASE("YADE: --resume runs only the stages that did not finish", "[dem][yade][heavy]") {
+  resume_after_interrupt("yade");
 }
