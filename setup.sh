@@ -8,7 +8,7 @@ cd "$(dirname "$0")"
 PACKAGES=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev catch2 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev libssl-dev
-  liggghts libliggghts-dev gnuplot-nox libnlopt-cxx-dev
+  liggghts libliggghts-dev yade gnuplot-nox libnlopt-cxx-dev
   chromium  # the report test opens the HTML in headless Chromium
 )
 
