@@ -136,3 +136,15 @@ TEST_CASE("stability: the written map has a CSV row per point, no NaN, and a fig
   CHECK(lower.find("inf,") == std::string::npos);
   CHECK_THAT(io::read_file(dir / "stability.md"), Catch::Contains("| complete |"));
 }
+
+// The full sweep (1575 points for hvwe, 1000-cycle runs; about 40 s here): opt-in.
+TEST_CASE("stability: the full hvwe sweep classifies every point, nothing non-finite or over budget", "[heavy]") {
+  const auto results = analysis::run_stability_sweep(models::find_model("hvwe"), test::table_5_1(),
+                                                     StabilitySweep::full());
+  const auto n = analysis::count_outcomes(results);
+  CHECK(n.at(Outcome::kNonFinite) == 0);
+  CHECK(n.at(Outcome::kOtherError) == 0);
+  CHECK(n.at(Outcome::kBudgetExceeded) == 0);
+  CHECK(n.at(Outcome::kComplete) > long(results.size()) * 9 / 10);
+  for (const auto& r : results) CHECK(all_finite(r));
+}
