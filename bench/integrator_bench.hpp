@@ -31,9 +31,10 @@ std::vector<TradeoffSetting> tradeoff_settings(int max_substeps = 256, double mi
 
 struct TradeoffPath {
   double sigma_n_kPa = 100.0;
-  double e0 = 0.75;  // medium dense for Table 5.3 Toyoura at 100 kPa: (e_d, e_c, e_i) = (0.57, 0.92, 1.03)
+  double e0 =
+      0.75;  // medium dense for Table 5.3 Toyoura at 100 kPa: (e_d, e_c, e_i) = (0.57, 0.92, 1.03)
   double gamma = 0.1;
-  int increments = 20;  // 5e-3 per increment: coarse enough that the adaptive tolerances bind
+  int increments = 20;        // 5e-3 per increment: coarse enough that the adaptive tolerances bind
   double cns_K_kPa = 1000.0;  // per unit normal strain
 };
 
@@ -48,8 +49,9 @@ struct TradeoffPoint {
 };
 
 // The settings against the reference for one model and boundary condition.
-std::vector<TradeoffPoint> run_tradeoff(const models::ModelSpec& spec, const models::ModelInputs& inputs,
-                                        driver::BoundaryKind bc, const TradeoffPath& path,
+std::vector<TradeoffPoint> run_tradeoff(const models::ModelSpec& spec,
+                                        const models::ModelInputs& inputs, driver::BoundaryKind bc,
+                                        const TradeoffPath& path,
                                         const std::vector<TradeoffSetting>& settings);
 
 struct IntegratorBenchOptions {

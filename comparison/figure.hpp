@@ -12,9 +12,9 @@ namespace iwb::comparison {
 
 struct Figure {
   std::string name, title, xlabel, ylabel;
-  io::CsvTable data;                 // column 0 is x, the others are series
-  std::vector<std::string> titles;   // one per series
-  std::string extra;                 // gnuplot commands before the plot (e.g. the band marker)
+  io::CsvTable data;                // column 0 is x, the others are series
+  std::vector<std::string> titles;  // one per series
+  std::string extra;                // gnuplot commands before the plot (e.g. the band marker)
   // The plot command, for figures that are not lines of each series against column 0 (scatter
   // maps, log-log fronts); it reads NAME.csv. Empty: one line per series.
   std::string plot;

@@ -1,9 +1,10 @@
 #include "analysis/stability.hpp"
 
+#include <fmt/core.h>
+
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <fmt/core.h>
 
 #include "common/errors.hpp"
 #include "driver/element_test.hpp"
@@ -15,13 +16,20 @@ using Clock = std::chrono::steady_clock;
 
 const char* to_string(Outcome o) {
   switch (o) {
-    case Outcome::kComplete: return "complete";
-    case Outcome::kDomainError: return "domain error";
-    case Outcome::kNoConvergence: return "no convergence";
-    case Outcome::kBudgetExceeded: return "budget exceeded";
-    case Outcome::kInadmissibleStart: return "inadmissible start";
-    case Outcome::kNonFinite: return "non-finite value";
-    case Outcome::kOtherError: return "other error";
+    case Outcome::kComplete:
+      return "complete";
+    case Outcome::kDomainError:
+      return "domain error";
+    case Outcome::kNoConvergence:
+      return "no convergence";
+    case Outcome::kBudgetExceeded:
+      return "budget exceeded";
+    case Outcome::kInadmissibleStart:
+      return "inadmissible start";
+    case Outcome::kNonFinite:
+      return "non-finite value";
+    case Outcome::kOtherError:
+      return "other error";
   }
   return "?";
 }
@@ -86,8 +94,9 @@ models::StateVector any_admissible_state(const models::Model& m, double sigma_n,
     } catch (const InputError&) {
     }
   }
-  throw InputError(fmt::format("{}: no void ratio in [{:g}, {:g}] is admissible at sigma_n = {:g} kPa",
-                               m.name(), kFirst, kLast, sigma_n));
+  throw InputError(
+      fmt::format("{}: no void ratio in [{:g}, {:g}] is admissible at sigma_n = {:g} kPa", m.name(),
+                  kFirst, kLast, sigma_n));
 }
 
 driver::Path path_of(const StabilityPoint& p, const StabilitySweep& sw) {
@@ -95,7 +104,8 @@ driver::Path path_of(const StabilityPoint& p, const StabilitySweep& sw) {
   if (p.path == PathKind::kCyclic)
     return driver::cyclic_path(bc, sw.cyclic_amplitude, sw.cycles, driver::ShearDirection::kX,
                                sw.cyclic_per_quarter);
-  const int n = std::max(1, std::min(sw.max_increments, int(std::lround(sw.gamma_total / p.d_gamma))));
+  const int n =
+      std::max(1, std::min(sw.max_increments, int(std::lround(sw.gamma_total / p.d_gamma))));
   return driver::monotonic_path(bc, n * p.d_gamma, driver::ShearDirection::kX, n);
 }
 
@@ -128,7 +138,8 @@ void walk(const models::Model& m, const models::StateVector& s0, const Stability
   rs.integrator.max_substeps = sw.max_substeps;
   rs.interrupt = &over_budget;
   rs.on_increment = [&](long, long) {
-    if (std::chrono::duration<double>(Clock::now() - t0).count() > sw.budget_seconds) over_budget = true;
+    if (std::chrono::duration<double>(Clock::now() - t0).count() > sw.budget_seconds)
+      over_budget = true;
   };
   const auto r = driver::run_element_test(m, s0, path, rs);
   out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -170,13 +181,16 @@ std::array<double, 3> limiting_void_ratios_at(const models::Model& m, double sig
   const auto d = m.diagnostics(any_admissible_state(m, sigma_n, K0));
   const std::array<double, 3> lim{named(d, "e_d"), named(d, "e_c"), named(d, "e_i")};
   if (!std::isfinite(lim[0]) || !std::isfinite(lim[2]))
-    throw InputError(fmt::format("{} reports no limiting void ratios (e_d, e_i); the stability map "
-                                 "needs them to place e0", m.name()));
+    throw InputError(
+        fmt::format("{} reports no limiting void ratios (e_d, e_i); the stability map "
+                    "needs them to place e0",
+                    m.name()));
   return lim;
 }
 
-StabilityResult run_stability_point(const models::ModelSpec& spec, const models::ModelInputs& inputs,
-                                    const StabilityPoint& p, const StabilitySweep& sw) {
+StabilityResult run_stability_point(const models::ModelSpec& spec,
+                                    const models::ModelInputs& inputs, const StabilityPoint& p,
+                                    const StabilitySweep& sw) {
   StabilityResult out;
   out.point = p;
   try {

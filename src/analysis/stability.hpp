@@ -27,8 +27,8 @@ enum class Outcome {
   kNonFinite,          // a NaN or inf in the history: must never happen
   kOtherError,         // any other exception: must never happen
 };
-inline constexpr std::array kAllOutcomes{Outcome::kComplete,     Outcome::kDomainError,
-                                         Outcome::kNoConvergence, Outcome::kBudgetExceeded,
+inline constexpr std::array kAllOutcomes{Outcome::kComplete,          Outcome::kDomainError,
+                                         Outcome::kNoConvergence,     Outcome::kBudgetExceeded,
                                          Outcome::kInadmissibleStart, Outcome::kNonFinite,
                                          Outcome::kOtherError};
 const char* to_string(Outcome o);
@@ -54,9 +54,9 @@ struct StabilitySweep {
   int max_increments = 1000;  // ... or after this many increments, whichever comes first
   int cycles = 3;             // cyclic runs: cycles 0 -> +A -> -A -> 0 at kappa_r = 1
   double cyclic_amplitude = 1e-3;
-  int cyclic_per_quarter = 5;      // increments per quarter cycle
-  double budget_seconds = 10.0;    // wall clock per point
-  int max_substeps = 10000;        // adaptive substeps per increment (bounds one increment)
+  int cyclic_per_quarter = 5;    // increments per quarter cycle
+  double budget_seconds = 10.0;  // wall clock per point
+  int max_substeps = 10000;      // adaptive substeps per increment (bounds one increment)
 
   // A few points per axis, a few cycles: seconds per model, in the default test suite.
   static StabilitySweep reduced();
@@ -74,7 +74,8 @@ struct StabilityResult {
   double e_d = 0.0, e_c = 0.0, e_i = 0.0;  // limits at sigma_n0 (0 if unknown)
   double e0 = 0.0;
   Outcome outcome = Outcome::kOtherError;
-  std::string reason;   // the class of the stop: "void ratio left (e_d, e_i)", ...; empty if complete
+  std::string
+      reason;  // the class of the stop: "void ratio left (e_d, e_i)", ...; empty if complete
   std::string message;  // the full status or error text
   long increments = 0, increments_planned = 0;
   long rate_evaluations = 0, rejected_substeps = 0, domain_cutbacks = 0;
@@ -84,11 +85,13 @@ struct StabilityResult {
 
 // The void-ratio limits (e_d, e_c, e_i) of `model` at sigma_n (compression positive) and K0,
 // read from the model's diagnostics; InputError if it reports none or no admissible e exists.
-std::array<double, 3> limiting_void_ratios_at(const models::Model& model, double sigma_n_kPa, double K0);
+std::array<double, 3> limiting_void_ratios_at(const models::Model& model, double sigma_n_kPa,
+                                              double K0);
 
 // Runs one point; never throws for anything the point itself causes.
-StabilityResult run_stability_point(const models::ModelSpec& spec, const models::ModelInputs& inputs,
-                                    const StabilityPoint& point, const StabilitySweep& sweep);
+StabilityResult run_stability_point(const models::ModelSpec& spec,
+                                    const models::ModelInputs& inputs, const StabilityPoint& point,
+                                    const StabilitySweep& sweep);
 
 // Every point of `sweep` for one model.
 std::vector<StabilityResult> run_stability_sweep(const models::ModelSpec& spec,

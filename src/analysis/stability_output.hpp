@@ -22,8 +22,8 @@ struct StabilityMapInfo {
 std::map<Outcome, long> count_outcomes(const std::vector<StabilityResult>& results);
 
 std::string stability_csv(const std::vector<StabilityResult>& results);
-std::string stability_markdown(const std::vector<StabilityResult>& results, const StabilitySweep& sweep,
-                               const StabilityMapInfo& info);
+std::string stability_markdown(const std::vector<StabilityResult>& results,
+                               const StabilitySweep& sweep, const StabilityMapInfo& info);
 // Writes the CSV, the markdown and the figures into `dir` (created); returns the figures' SVGs.
 std::vector<std::filesystem::path> write_stability_map(const std::vector<StabilityResult>& results,
                                                        const StabilitySweep& sweep,

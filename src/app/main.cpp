@@ -299,7 +299,7 @@ int main(int argc, char** argv) {
       "integrators", "Integration error against cost (rate evaluations, wall time) of explicit Euler with "
                      "1..256 substeps and adaptive rk32/rk54 at rtol 1e-2..1e-8, against rk54 at 1e-10, for "
                      "vw3d, hvwe, ahe, ah, hp1d, hvwe-exact, hvwe-igs under CNL, CNS and CV; writes "
-                     "integrators.csv, integrators.md and pareto_<model>.svg/.png (about a minute).");
+                     "integrators.csv, integrators.md and pareto_<model>.svg/.png (a few seconds). Error: max over the path of |x - x_ref| / max |x_ref| for tau and sigma_n, the larger of the two.");
   iwb::bench::IntegratorBenchOptions iopt;
   std::string iout = iopt.out.string();
   bench_integrators->add_option("--out,-o", iout, "output directory")->capture_default_str();

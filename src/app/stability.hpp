@@ -6,9 +6,9 @@ namespace iwb::app {
 
 struct StabilityOptions {
   std::string model;
-  std::string params;  // parameter file (data/params/)
-  bool full = false;   // the full sweep (minutes) instead of the reduced one (seconds)
-  std::string out;     // default runs/stability-<model>
+  std::string params;           // parameter file (data/params/)
+  bool full = false;            // the full sweep (minutes) instead of the reduced one (seconds)
+  std::string out;              // default runs/stability-<model>
   double budget_seconds = 0.0;  // per point; 0 = the sweep's default
 };
 

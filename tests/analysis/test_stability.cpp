@@ -1,8 +1,8 @@
 // Stability map: every point ends in one outcome of the closed set, nothing is NaN, the physical
 // facts hold (moderate stress and e0 between e_d and e_c complete), impossible starts and spent
 // budgets are classified with a message instead of crashing or hanging.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -32,12 +32,14 @@ bool all_finite(const StabilityResult& r) {
 }
 
 bool in_closed_set(Outcome o) {
-  return std::find(analysis::kAllOutcomes.begin(), analysis::kAllOutcomes.end(), o) != analysis::kAllOutcomes.end();
+  return std::find(analysis::kAllOutcomes.begin(), analysis::kAllOutcomes.end(), o) !=
+         analysis::kAllOutcomes.end();
 }
 
 }  // namespace
 
-TEST_CASE("stability: the reduced sweep gives every point an outcome of the closed set and no NaN") {
+TEST_CASE(
+    "stability: the reduced sweep gives every point an outcome of the closed set and no NaN") {
   for (const std::string name : {"hvwe", "vw3d", "hp1d", "ahe-igs"}) {
     INFO(name);
     const auto& spec = models::find_model(name);
@@ -53,7 +55,8 @@ TEST_CASE("stability: the reduced sweep gives every point an outcome of the clos
       CHECK(all_finite(r));
       CHECK(r.outcome != Outcome::kNonFinite);
       CHECK(r.outcome != Outcome::kOtherError);
-      CHECK(r.outcome != Outcome::kBudgetExceeded);  // the reduced form is seconds, far inside 5 s a point
+      CHECK(r.outcome !=
+            Outcome::kBudgetExceeded);  // the reduced form is seconds, far inside 5 s a point
       CHECK((r.outcome == Outcome::kComplete) == r.reason.empty());
       if (r.outcome == Outcome::kComplete) CHECK(r.increments == r.increments_planned);
       if (r.outcome != Outcome::kComplete) CHECK(r.reason != "unclassified");
@@ -61,7 +64,9 @@ TEST_CASE("stability: the reduced sweep gives every point an outcome of the clos
   }
 }
 
-TEST_CASE("stability: at 100 kPa and e0 between e_d and e_c every model completes under CNL, CNS and CV") {
+TEST_CASE(
+    "stability: at 100 kPa and e0 between e_d and e_c every model completes under CNL, CNS and "
+    "CV") {
   StabilitySweep sweep = StabilitySweep::reduced();
   for (const auto& spec : models::model_registry())
     for (auto bc : sweep.boundaries)
@@ -82,7 +87,8 @@ TEST_CASE("stability: e0 above e_i is an inadmissible start with a message namin
   CHECK(r.outcome == Outcome::kInadmissibleStart);
   CHECK(r.e0 > r.e_i);
   CHECK(r.reason == "initial state outside the domain");
-  CHECK_THAT(r.message, Catch::Contains("not admissible for hvwe") && Catch::Contains("outside (e_d, e_i)"));
+  CHECK_THAT(r.message,
+             Catch::Contains("not admissible for hvwe") && Catch::Contains("outside (e_d, e_i)"));
   CHECK(all_finite(r));
 }
 
@@ -90,7 +96,8 @@ TEST_CASE("stability: a spent budget stops a point as budget exceeded after one 
   StabilitySweep sweep = StabilitySweep::reduced();
   sweep.budget_seconds = 1e-12;
   const StabilityPoint p{driver::BoundaryKind::kCV, 100.0, 0.5, 1.0, 1e-4, PathKind::kCyclic};
-  const auto r = analysis::run_stability_point(models::find_model("hvwe"), test::table_5_1(), p, sweep);
+  const auto r =
+      analysis::run_stability_point(models::find_model("hvwe"), test::table_5_1(), p, sweep);
   CHECK(r.outcome == Outcome::kBudgetExceeded);
   CHECK(r.increments == 1);
   CHECK(r.reason == "wall-clock budget");
@@ -110,21 +117,27 @@ TEST_CASE("stability: the limits placed for e0 are Bauer's, e_d and e_i in the r
 }
 
 TEST_CASE("stability: stop messages are classified by their stable fragment") {
-  CHECK(analysis::classify_reason("failed: domain error at increment 3 (...): e = 0.5 outside (e_d, e_i) = (0.6, 1)") ==
+  CHECK(analysis::classify_reason(
+            "failed: domain error at increment 3 (...): e = 0.5 outside (e_d, e_i) = (0.6, 1)") ==
         "void ratio left (e_d, e_i)");
-  CHECK(analysis::classify_reason("substep below 1e-12 of the increment at fraction 0.5: no compression: tr T = 1 kPa "
-                                  "(contact lost) [...]") == "substep underflow: contact lost (no compression)");
+  CHECK(analysis::classify_reason(
+            "substep below 1e-12 of the increment at fraction 0.5: no compression: tr T = 1 kPa "
+            "(contact lost) [...]") == "substep underflow: contact lost (no compression)");
   CHECK(analysis::classify_reason("something new") == "unclassified");
 }
 
-TEST_CASE("stability: the written map has a CSV row per point, no NaN, and a figure per boundary condition") {
+TEST_CASE(
+    "stability: the written map has a CSV row per point, no NaN, and a figure per boundary "
+    "condition") {
   const auto dir = std::filesystem::path(IWB_TEST_RUNS_DIR) / "stability-map";
   std::filesystem::remove_all(dir);
   StabilitySweep sweep = StabilitySweep::reduced();
   sweep.sigma_n_kPa = {10.0, 1e3};
   sweep.d_gamma = {1e-2};
-  const auto results = analysis::run_stability_sweep(models::find_model("hvwe"), test::table_5_1(), sweep);
-  const auto figures = analysis::write_stability_map(results, sweep, {"hvwe", "Table 5.1", "reduced"}, dir);
+  const auto results =
+      analysis::run_stability_sweep(models::find_model("hvwe"), test::table_5_1(), sweep);
+  const auto figures =
+      analysis::write_stability_map(results, sweep, {"hvwe", "Table 5.1", "reduced"}, dir);
   CHECK(figures.size() == 3);
   for (const auto& f : figures) CHECK(std::filesystem::exists(f));
   CHECK(std::filesystem::exists(dir / "stability_CNS.png"));
@@ -138,7 +151,9 @@ TEST_CASE("stability: the written map has a CSV row per point, no NaN, and a fig
 }
 
 // The full sweep (1575 points for hvwe, 1000-cycle runs; about 40 s here): opt-in.
-TEST_CASE("stability: the full hvwe sweep classifies every point, nothing non-finite or over budget", "[heavy]") {
+TEST_CASE(
+    "stability: the full hvwe sweep classifies every point, nothing non-finite or over budget",
+    "[heavy]") {
   const auto results = analysis::run_stability_sweep(models::find_model("hvwe"), test::table_5_1(),
                                                      StabilitySweep::full());
   const auto n = analysis::count_outcomes(results);

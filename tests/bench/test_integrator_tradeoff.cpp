@@ -17,7 +17,8 @@ bench::TradeoffPath short_path() {
   return tp;
 }
 
-std::vector<bench::TradeoffSetting> only(const std::string& scheme, int max_substeps, double min_rtol) {
+std::vector<bench::TradeoffSetting> only(const std::string& scheme, int max_substeps,
+                                         double min_rtol) {
   std::vector<bench::TradeoffSetting> out;
   for (const auto& s : bench::tradeoff_settings(max_substeps, min_rtol))
     if (s.scheme == scheme) out.push_back(s);
@@ -27,11 +28,12 @@ std::vector<bench::TradeoffSetting> only(const std::string& scheme, int max_subs
 
 TEST_CASE("integrators: explicit Euler error halves when the substeps double (first order)") {
   for (auto bc : {driver::BoundaryKind::kCNL, driver::BoundaryKind::kCV}) {
-    const auto pts = bench::run_tradeoff(models::find_model("hvwe"), test::table_5_3_toyoura(), bc, short_path(),
-                                         only("euler", 64, 1e-2));
-    REQUIRE(pts.size() == 7);  // n = 1 ... 64
+    const auto pts = bench::run_tradeoff(models::find_model("hvwe"), test::table_5_3_toyoura(), bc,
+                                         short_path(), only("euler", 64, 1e-2));
+    REQUIRE(pts.size() == 7);                           // n = 1 ... 64
     for (std::size_t i = 2; i + 1 < pts.size(); ++i) {  // from n = 4: the asymptotic range
-      INFO(driver::to_string(bc) << " n = " << pts[i].parameter << ": " << pts[i].error << " -> " << pts[i + 1].error);
+      INFO(driver::to_string(bc) << " n = " << pts[i].parameter << ": " << pts[i].error << " -> "
+                                 << pts[i + 1].error);
       CHECK(pts[i].error / pts[i + 1].error == Approx(2.0).margin(0.25));
       CHECK(pts[i + 1].rate_evaluations > pts[i].rate_evaluations);
     }
@@ -48,7 +50,8 @@ TEST_CASE("integrators: the adaptive error falls as the tolerance tightens, at m
                                          driver::BoundaryKind::kCNS, coarse, only(pair, 1, 1e-7));
     REQUIRE(pts.size() == 6);  // rtol 1e-2 ... 1e-7
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-      INFO(pair << " rtol " << pts[i].parameter << ": " << pts[i].error << ", " << pts[i].rate_evaluations);
+      INFO(pair << " rtol " << pts[i].parameter << ": " << pts[i].error << ", "
+                << pts[i].rate_evaluations);
       CHECK(pts[i + 1].error <= pts[i].error);
       CHECK(pts[i + 1].rate_evaluations >= pts[i].rate_evaluations);
     }
