@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
-#include "common/subprocess.hpp"
+#include "comparison/figure.hpp"
 #include "io/csv_table.hpp"
 #include "io/run_directory.hpp"
 
@@ -28,46 +28,10 @@ std::string escape_html(const std::string& s) {
   return out;
 }
 
-std::string gnuplot_string(const std::string& s) {  // single-quoted gnuplot string
-  std::string out;
-  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return "'" + out + "'";
-}
-
-struct Figure {
-  std::string name, title, xlabel, ylabel;
-  io::CsvTable data;                 // column 0 is x, the others are series
-  std::vector<std::string> titles;   // one per series
-  std::string extra;                 // gnuplot commands (e.g. the band marker)
-};
-
-// Writes NAME.csv, NAME.gp, runs gnuplot for NAME.svg and NAME.png; returns the SVG's path.
-fs::path draw(const Figure& f, const fs::path& dir) {
-  io::write_atomically(dir / (f.name + ".csv"), f.data.to_csv(8));
-  std::string gp = "set datafile separator ','\nset key below\nset grid\n";
-  gp += fmt::format("set title {}\nset xlabel {}\nset ylabel {}\n{}\n", gnuplot_string(f.title),
-                    gnuplot_string(f.xlabel), gnuplot_string(f.ylabel), f.extra);
-  std::string plot = "plot ";
-  for (std::size_t i = 0; i < f.titles.size(); ++i)
-    plot += fmt::format("{}{} using 1:{} skip 1 with lines lw {} title {}", i ? ", " : "",
-                        gnuplot_string(f.name + ".csv"), i + 2, i == 0 ? 3 : 1.5, gnuplot_string(f.titles[i]));
-  // noenhanced on each terminal: labels hold underscores (kappa_r, d_s) that are not subscripts
-  gp += fmt::format("set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'\nset output '{}.svg'\n{}\n"
-                    "set terminal pngcairo size 900,560 font 'sans,10' noenhanced\nset output '{}.png'\nreplot\nunset output\n",
-                    f.name, plot, f.name);
-  io::write_atomically(dir / (f.name + ".gp"), gp);
-  std::string log;
-  const auto r = run_process({"gnuplot", f.name + ".gp"}, dir, [&log](const std::string& l) { log += l + "\n"; return true; });
-  if (r.exit_code != 0 || !fs::exists(dir / (f.name + ".svg")))
-    throw std::runtime_error(fmt::format("gnuplot failed on {} (exit {}): {}", (dir / (f.name + ".gp")).string(),
-                                         r.exit_code, log));
-  return dir / (f.name + ".svg");
-}
-
 // One figure of `column` (tau, sigma_n or u_n) against u_x: the DEM and every variant.
 Figure versus_u_x(const std::string& name, const std::string& what, const std::string& dem_col,
                   const std::string& model_col, const io::CsvTable& curves, const nlohmann::json& variants) {
-  Figure f{name, what + " against u_x", "u_x (mm)", what, {}, {"DEM"}, ""};
+  Figure f{name, what + " against u_x", "u_x (mm)", what, {}, {"DEM"}, "", ""};
   f.data.columns = {"u_x_mm", "dem"};
   std::size_t nv = variants.size();
   for (std::size_t v = 0; v < nv; ++v) {
@@ -94,7 +58,7 @@ Figure versus_u_x(const std::string& name, const std::string& what, const std::s
 }
 
 Figure velocity_profile(const fs::path& dem_dir, const nlohmann::json& summary) {
-  Figure f{"velocity_profile", "DEM velocity profile (last window)", "vx / v_wall", "z / d50", {}, {}, ""};
+  Figure f{"velocity_profile", "DEM velocity profile (last window)", "vx / v_wall", "z / d50", {}, {}, "", ""};
   const auto prof = io::read_csv_table(dem_dir / "profiles.csv");
   double last = -INFINITY;
   for (const auto& r : prof.rows) last = std::max(last, r[prof.column("u_x_mm_window")]);

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "app/default_job.hpp"
+#include "app/stability.hpp"
 #include "app/validate.hpp"
 #include "comparison/report.hpp"
 #include "dem/crosscheck.hpp"
@@ -16,6 +17,7 @@
 #include "dem/run.hpp"
 #include "bench/dem_bench.hpp"
 #include "bench/element_bench.hpp"
+#include "bench/integrator_bench.hpp"
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
 #include "comparison/run_set.hpp"
@@ -158,7 +160,8 @@ int main(int argc, char** argv) {
       "  iwb element data/tests/hvwe_cnl_dense.toml  run one element test into runs/<name>/\n"
       "  iwb run                                     the main job on the embedded default\n"
       "  iwb dem run data/scenes/smoke.toml          a DEM interface-shear scene in LIGGGHTS\n"
-      "  iwb bench element                           cost of the continuum core\n"};
+      "  iwb bench element                           cost of the continuum core\n"
+      "  iwb stability hvwe data/params/table_5_1_evaluation.toml   where a model runs and where it stops\n"};
   app.require_subcommand(1);
   const std::string cl = joined(argc, argv);
 
@@ -265,6 +268,24 @@ int main(int argc, char** argv) {
   validate->add_option("--params-dir", vopt.params_dir, "where the shipped parameter sets are")->capture_default_str();
   validate->add_flag("--force", vopt.force, "replace earlier runs in the output directory");
 
+  auto* stability = app.add_subcommand(
+      "stability",
+      "Stability map of a model: sweeps sigma_n0 (1 kPa to 10 MPa), e0 (just above e_d to just below e_i at "
+      "sigma_n0), kappa_r (0.05 to 1), shear strain per increment (1e-6 to 1e-2) and cyclic runs, under CNL, "
+      "CNS and CV, and writes stability.csv (one row per point: outcome, reason, message, counts of rejected "
+      "substeps), stability.md (counts per outcome, why points stopped) and stability_<BC>.svg/.png (sigma_n0 x "
+      "density index coloured by the worst outcome). Outcomes: complete, domain error, no convergence, budget "
+      "exceeded, inadmissible start, non-finite value, other error. The reduced form takes seconds, --full "
+      "(1000-cycle runs) minutes.\n\nExample: iwb stability hvwe data/params/table_5_1_evaluation.toml --full");
+  iwb::app::StabilityOptions sopt;
+  stability->add_option("model", sopt.model, "model name (iwb models)")->required();
+  stability->add_option("params", sopt.params, "parameter file, e.g. data/params/table_5_1_evaluation.toml; "
+                                               "-igs models need an [intergranular_strain] table (table_5_3_*)")->required();
+  stability->add_flag("--full", sopt.full, "the full sweep (5 values per axis, 1000 cycles) instead of the reduced one");
+  stability->add_option("--out,-o", sopt.out, "output directory (default runs/stability-<model>)");
+  stability->add_option("--budget", sopt.budget_seconds, "wall-clock seconds per point before it is stopped as "
+                                                          "'budget exceeded' (default 5 reduced, 10 full)")->check(CLI::PositiveNumber);
+
   auto* bench = app.add_subcommand("bench", "Benchmarks that print figures.");
   bench->require_subcommand(1);
   auto* bench_element = bench->add_subcommand(
@@ -273,6 +294,15 @@ int main(int argc, char** argv) {
   iwb::bench::ElementBenchOptions bopt;
   bench_element->add_option("--repeats", bopt.repeats, "runs per model; the best is reported")
       ->check(CLI::Range(1, 1000))->capture_default_str();
+
+  auto* bench_integrators = bench->add_subcommand(
+      "integrators", "Integration error against cost (rate evaluations, wall time) of explicit Euler with "
+                     "1..256 substeps and adaptive rk32/rk54 at rtol 1e-2..1e-8, against rk54 at 1e-10, for "
+                     "vw3d, hvwe, ahe, ah, hp1d, hvwe-exact, hvwe-igs under CNL, CNS and CV; writes "
+                     "integrators.csv, integrators.md and pareto_<model>.svg/.png (a few seconds). Error: max over the path of |x - x_ref| / max |x_ref| for tau and sigma_n, the larger of the two.");
+  iwb::bench::IntegratorBenchOptions iopt;
+  std::string iout = iopt.out.string();
+  bench_integrators->add_option("--out,-o", iout, "output directory")->capture_default_str();
 
   auto* bench_dem = bench->add_subcommand(
       "dem", "Particle-steps per second of a DEM engine on a scene with 1 and 2 ranks, and the "
@@ -342,6 +372,12 @@ int main(int argc, char** argv) {
     }
     if (*bench_dem) {
       iwb::bench::run_dem_bench(dopt);
+      return 0;
+    }
+    if (*stability) return iwb::app::run_stability(sopt);
+    if (*bench_integrators) {
+      iopt.out = iout;
+      iwb::bench::run_integrator_bench(iopt);
       return 0;
     }
     if (*bench_element) {

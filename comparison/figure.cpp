@@ -1,0 +1,56 @@
+#include "comparison/figure.hpp"
+
+#include <fmt/core.h>
+
+#include <stdexcept>
+
+#include "common/subprocess.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::comparison {
+
+namespace fs = std::filesystem;
+
+std::string gnuplot_string(const std::string& s) {
+  std::string out;
+  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return "'" + out + "'";
+}
+
+namespace {
+std::string series_lines(const Figure& f) {
+  std::string plot = "plot ";
+  for (std::size_t i = 0; i < f.titles.size(); ++i)
+    plot += fmt::format("{}{} using 1:{} skip 1 with lines lw {} title {}", i ? ", " : "",
+                        gnuplot_string(f.name + ".csv"), i + 2, i == 0 ? 3 : 1.5,
+                        gnuplot_string(f.titles[i]));
+  return plot;
+}
+}  // namespace
+
+fs::path draw(const Figure& f, const fs::path& dir) {
+  io::write_atomically(dir / (f.name + ".csv"), f.data.to_csv(8));
+  std::string gp = "set datafile separator ','\nset key below\nset grid\n";
+  gp += fmt::format("set title {}\nset xlabel {}\nset ylabel {}\n{}\n", gnuplot_string(f.title),
+                    gnuplot_string(f.xlabel), gnuplot_string(f.ylabel), f.extra);
+  const std::string plot = f.plot.empty() ? series_lines(f) : f.plot;
+  // noenhanced on each terminal: labels hold underscores (kappa_r, d_s) that are not subscripts
+  gp += fmt::format(
+      "set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'\nset output "
+      "'{}.svg'\n{}\n"
+      "set terminal pngcairo size 900,560 font 'sans,10' noenhanced\nset output "
+      "'{}.png'\nreplot\nunset output\n",
+      f.name, plot, f.name);
+  io::write_atomically(dir / (f.name + ".gp"), gp);
+  std::string log;
+  const auto r = run_process({"gnuplot", f.name + ".gp"}, dir, [&log](const std::string& l) {
+    log += l + "\n";
+    return true;
+  });
+  if (r.exit_code != 0 || !fs::exists(dir / (f.name + ".svg")))
+    throw std::runtime_error(fmt::format("gnuplot failed on {} (exit {}): {}",
+                                         (dir / (f.name + ".gp")).string(), r.exit_code, log));
+  return dir / (f.name + ".svg");
+}
+
+}  // namespace iwb::comparison

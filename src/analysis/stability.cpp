@@ -1,0 +1,248 @@
+#include "analysis/stability.hpp"
+
+#include <fmt/core.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+
+#include "common/errors.hpp"
+#include "driver/element_test.hpp"
+
+namespace iwb::analysis {
+
+using driver::BoundaryKind;
+using Clock = std::chrono::steady_clock;
+
+const char* to_string(Outcome o) {
+  switch (o) {
+    case Outcome::kComplete:
+      return "complete";
+    case Outcome::kDomainError:
+      return "domain error";
+    case Outcome::kNoConvergence:
+      return "no convergence";
+    case Outcome::kBudgetExceeded:
+      return "budget exceeded";
+    case Outcome::kInadmissibleStart:
+      return "inadmissible start";
+    case Outcome::kNonFinite:
+      return "non-finite value";
+    case Outcome::kOtherError:
+      return "other error";
+  }
+  return "?";
+}
+
+StabilitySweep StabilitySweep::reduced() {
+  StabilitySweep s;
+  s.boundaries = {BoundaryKind::kCNL, BoundaryKind::kCNS, BoundaryKind::kCV};
+  s.sigma_n_kPa = {1.0, 100.0, 1e4};
+  s.density_index = {0.02, 0.3, 0.98};
+  s.kappa_r = {0.05, 1.0};
+  s.d_gamma = {1e-6, 1e-2};
+  s.gamma_total = 0.1;
+  s.max_increments = 50;
+  s.cycles = 3;
+  s.budget_seconds = 5.0;
+  return s;
+}
+
+StabilitySweep StabilitySweep::full() {
+  StabilitySweep s;
+  s.boundaries = {BoundaryKind::kCNL, BoundaryKind::kCNS, BoundaryKind::kCV};
+  s.sigma_n_kPa = {1.0, 10.0, 100.0, 1e3, 1e4};
+  s.density_index = {0.01, 0.25, 0.5, 0.75, 0.99};
+  s.kappa_r = {0.05, 0.25, 0.5, 1.0};
+  s.d_gamma = {1e-6, 1e-5, 1e-4, 1e-3, 1e-2};
+  s.gamma_total = 0.2;
+  s.max_increments = 1000;
+  s.cycles = 1000;
+  s.budget_seconds = 10.0;
+  return s;
+}
+
+std::vector<StabilityPoint> StabilitySweep::points(bool uses_roughness) const {
+  // A continuum model ignores kappa_r: one value instead of identical copies.
+  const std::vector<double> kappas = uses_roughness ? kappa_r : std::vector<double>{1.0};
+  std::vector<StabilityPoint> out;
+  for (auto bc : boundaries)
+    for (double s : sigma_n_kPa)
+      for (double i : density_index) {
+        for (double k : kappas)
+          for (double dg : d_gamma) out.push_back({bc, s, i, k, dg, PathKind::kMonotonic});
+        out.push_back({bc, s, i, 1.0, cyclic_amplitude / cyclic_per_quarter, PathKind::kCyclic});
+      }
+  return out;
+}
+
+namespace {
+
+double named(const std::vector<models::NamedValue>& values, const std::string& name) {
+  for (const auto& v : values)
+    if (v.name == name) return v.value;
+  return NAN;
+}
+
+// Any void ratio the model admits at this stress: the limits scale together with pressure
+// (Bauer, eq. 5.13), so a geometric scan with a ratio below e_i/e_d lands inside them.
+models::StateVector any_admissible_state(const models::Model& m, double sigma_n, double K0) {
+  constexpr double kFirst = 1e-3, kLast = 20.0, kRatio = 1.1;
+  for (double e = kFirst; e < kLast; e *= kRatio) {
+    try {
+      return m.initial_state({sigma_n, K0, e});
+    } catch (const InputError&) {
+    }
+  }
+  throw InputError(
+      fmt::format("{}: no void ratio in [{:g}, {:g}] is admissible at sigma_n = {:g} kPa", m.name(),
+                  kFirst, kLast, sigma_n));
+}
+
+driver::Path path_of(const StabilityPoint& p, const StabilitySweep& sw) {
+  driver::BoundaryCondition bc{p.boundary, kCnsStiffnessPerSigma * p.sigma_n_kPa};
+  if (p.path == PathKind::kCyclic)
+    return driver::cyclic_path(bc, sw.cyclic_amplitude, sw.cycles, driver::ShearDirection::kX,
+                               sw.cyclic_per_quarter);
+  const int n =
+      std::max(1, std::min(sw.max_increments, int(std::lround(sw.gamma_total / p.d_gamma))));
+  return driver::monotonic_path(bc, n * p.d_gamma, driver::ShearDirection::kX, n);
+}
+
+Outcome outcome_of_status(const std::string& status) {
+  if (status == "complete") return Outcome::kComplete;
+  if (status.rfind("failed: domain error", 0) == 0) return Outcome::kDomainError;
+  if (status.rfind("failed: no convergence", 0) == 0) return Outcome::kNoConvergence;
+  if (status.rfind("interrupted", 0) == 0) return Outcome::kBudgetExceeded;
+  return Outcome::kOtherError;
+}
+
+bool finite_history(const models::Model& m, const driver::ElementTestResult& r) {
+  for (const auto& row : r.rows) {
+    const auto st = m.stress(row.state);
+    if (!row.state.allFinite() || !std::isfinite(st.sigma_n) || !std::isfinite(st.tau_x) ||
+        !std::isfinite(row.eps_n))
+      return false;
+  }
+  return true;
+}
+
+// Walks the point's path under a wall-clock budget: the driver's interrupt flag is raised from
+// the per-increment callback, so the run stops cleanly after the increment in progress.
+void walk(const models::Model& m, const models::StateVector& s0, const StabilityPoint& p,
+          const StabilitySweep& sw, StabilityResult& out) {
+  const auto path = path_of(p, sw);
+  std::atomic<bool> over_budget{false};
+  const auto t0 = Clock::now();
+  driver::RunSettings rs;
+  rs.integrator.max_substeps = sw.max_substeps;
+  rs.interrupt = &over_budget;
+  rs.on_increment = [&](long, long) {
+    if (std::chrono::duration<double>(Clock::now() - t0).count() > sw.budget_seconds)
+      over_budget = true;
+  };
+  const auto r = driver::run_element_test(m, s0, path, rs);
+  out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  for (const auto& seg : path) out.increments_planned += seg.increments;
+  out.increments = r.increments;
+  out.rate_evaluations = r.counters.rate_evaluations;
+  out.rejected_substeps = r.counters.rejected_substeps;
+  out.domain_cutbacks = r.counters.domain_cutbacks;
+  out.outcome = finite_history(m, r) ? outcome_of_status(r.status) : Outcome::kNonFinite;
+  out.message = out.outcome == Outcome::kBudgetExceeded
+                    ? fmt::format("budget of {:g} s exceeded; {}", sw.budget_seconds, r.status)
+                    : r.status;
+  const auto st = m.stress(r.rows.back().state);
+  out.sigma_n_end_kPa = st.sigma_n;
+  out.tau_end_kPa = st.tau_x;
+  out.e_end = m.void_ratio(r.rows.back().state);
+}
+
+// Builds the model, finds the limits and the start; throws InputError if the start is refused.
+models::StateVector prepare(const models::Model& m, const models::ModelInputs& in,
+                            const StabilityPoint& p, StabilityResult& out) {
+  const double K0 = std::isfinite(models::oedometric_K0(in)) ? models::oedometric_K0(in) : 1.0;
+  const auto lim = limiting_void_ratios_at(m, p.sigma_n_kPa, K0);
+  out.e_d = lim[0];
+  out.e_c = lim[1];
+  out.e_i = lim[2];
+  out.e0 = out.e_d + p.density_index * (out.e_i - out.e_d);
+  return m.initial_state({p.sigma_n_kPa, K0, out.e0});
+}
+
+void fail(StabilityResult& out, Outcome o, const std::string& message) {
+  out.outcome = o;
+  out.message = message;
+}
+
+}  // namespace
+
+std::array<double, 3> limiting_void_ratios_at(const models::Model& m, double sigma_n, double K0) {
+  const auto d = m.diagnostics(any_admissible_state(m, sigma_n, K0));
+  const std::array<double, 3> lim{named(d, "e_d"), named(d, "e_c"), named(d, "e_i")};
+  if (!std::isfinite(lim[0]) || !std::isfinite(lim[2]))
+    throw InputError(
+        fmt::format("{} reports no limiting void ratios (e_d, e_i); the stability map "
+                    "needs them to place e0",
+                    m.name()));
+  return lim;
+}
+
+StabilityResult run_stability_point(const models::ModelSpec& spec,
+                                    const models::ModelInputs& inputs, const StabilityPoint& p,
+                                    const StabilitySweep& sw) {
+  StabilityResult out;
+  out.point = p;
+  try {
+    models::ModelInputs in = inputs;
+    in.roughness.kappa_r = p.kappa_r;
+    const auto model = spec.make(in);
+    models::StateVector s0;
+    try {
+      s0 = prepare(*model, in, p, out);
+    } catch (const InputError& e) {
+      fail(out, Outcome::kInadmissibleStart, e.what());
+    }
+    out.sigma_n_end_kPa = p.sigma_n_kPa;
+    out.e_end = out.e0;
+    if (out.outcome != Outcome::kInadmissibleStart) walk(*model, s0, p, sw, out);
+  } catch (const std::exception& e) {
+    fail(out, Outcome::kOtherError, e.what());
+  }
+  if (out.outcome != Outcome::kComplete) out.reason = classify_reason(out.message);
+  return out;
+}
+
+std::vector<StabilityResult> run_stability_sweep(const models::ModelSpec& spec,
+                                                 const models::ModelInputs& inputs,
+                                                 const StabilitySweep& sweep) {
+  std::vector<StabilityResult> out;
+  for (const auto& p : sweep.points(spec.uses_roughness))
+    out.push_back(run_stability_point(spec, inputs, p, sweep));
+  return out;
+}
+
+std::string classify_reason(const std::string& message) {
+  // The stable fragments of the messages thrown by the models, the integrator and the driver,
+  // most specific first; the step-size underflow names its last rejection, so it is prefixed.
+  static const std::vector<std::pair<std::string, std::string>> kClasses{
+      {"budget of", "wall-clock budget"},
+      {"not admissible", "initial state outside the domain"},
+      {"no void ratio", "no admissible void ratio at this stress"},
+      {"outside (e_d, e_i)", "void ratio left (e_d, e_i)"},
+      {"at or below e_d", "void ratio at e_d"},
+      {"contact lost", "contact lost (no compression)"},
+      {"Matsuoka-Nakai", "stress ratio outside the Matsuoka-Nakai cone"},
+      {"not finite", "non-finite state"},
+      {"more than", "substep cap per increment"},
+      {"Newton did not reach", "Newton did not converge"},
+      {"normal row has slope", "normal row lost its slope"},
+  };
+  std::string prefix;
+  if (message.find("substep below") != std::string::npos) prefix = "substep underflow: ";
+  for (const auto& [fragment, cls] : kClasses)
+    if (message.find(fragment) != std::string::npos) return prefix + cls;
+  return prefix.empty() ? "unclassified" : "substep underflow";
+}
+
+}  // namespace iwb::analysis

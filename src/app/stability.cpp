@@ -1,0 +1,49 @@
+#include "app/stability.hpp"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <filesystem>
+
+#include "analysis/stability_output.hpp"
+#include "common/errors.hpp"
+#include "io/parameter_file.hpp"
+
+namespace iwb::app {
+
+namespace {
+models::ModelInputs inputs_from(const std::string& params) {
+  if (!std::filesystem::is_regular_file(params))
+    throw InputError(fmt::format("parameter file '{}' does not exist (see data/params/)", params));
+  models::ModelInputs in;
+  in.tables = io::load_parameter_file(params);
+  in.source = params;
+  return in;
+}
+}  // namespace
+
+int run_stability(const StabilityOptions& opt) {
+  const auto& spec = models::find_model(opt.model);  // InputError listing the models
+  const auto inputs = inputs_from(opt.params);
+  spec.make(inputs);  // refuses a parameter file the model cannot use, before the sweep
+  auto sweep = opt.full ? analysis::StabilitySweep::full() : analysis::StabilitySweep::reduced();
+  if (opt.budget_seconds > 0.0) sweep.budget_seconds = opt.budget_seconds;
+  const auto dir = opt.out.empty() ? std::filesystem::path("runs") / ("stability-" + opt.model)
+                                   : std::filesystem::path(opt.out);
+  fmt::print(stderr, "iwb stability: {} with {} ({} form, {} points) -> {}\n", opt.model,
+             opt.params, opt.full ? "full" : "reduced", sweep.points(spec.uses_roughness).size(),
+             dir.string());
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto results = analysis::run_stability_sweep(spec, inputs, sweep);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  analysis::write_stability_map(results, sweep,
+                                {opt.model, opt.params, opt.full ? "full" : "reduced"}, dir);
+  for (const auto& [o, n] : analysis::count_outcomes(results))
+    fmt::print("{:<20} {}\n", analysis::to_string(o), n);
+  fmt::print("{} points in {:.1f} s -> {}\n", results.size(), seconds,
+             (dir / "stability.md").string());
+  return 0;
+}
+
+}  // namespace iwb::app
