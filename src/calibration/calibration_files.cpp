@@ -27,7 +27,7 @@ std::string parameter_file(const CalibrationResult& r, const std::vector<SoilTes
   s += "# Per parameter: value +- one sigma (Gauss-Newton), and how it was set. See calibration.json.\n";
   s += fmt::format("# Command: {}\n[hypoplastic]\n", command_line);
   for (const auto& p : r.parameters)
-    s += fmt::format("{} = {:.6g}  # {} ({})\n", p.key, p.value, sigma_text(p), p.how);
+    s += fmt::format("{} = {:.9g}  # {} ({})\n", p.key, p.value, sigma_text(p), p.how);
   return s;
 }
 

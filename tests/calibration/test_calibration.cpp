@@ -2,7 +2,7 @@
 // Hostun, the staged fit finds the parameters again within their reported uncertainty, and
 // flags what the tests cannot determine.
 #include <catch2/catch.hpp>
-#include <chrono>
+#include <ctime>
 #include <cmath>
 
 #include "calibration/calibrate.hpp"
@@ -65,11 +65,16 @@ const calibration::ParameterEstimate& estimate(const calibration::CalibrationRes
 // tiny and the stated tolerance kRecoveryTolerance (relative) applies where it is larger than 3 sigma.
 TEST_CASE("calibration recovers the Hostun parameters from synthetic vw3d soil tests", "[calibration]") {
   constexpr double kRecoveryTolerance = 1e-4;
+  const std::clock_t cpu0 = std::clock();
   const auto tests = hostun_targets();
   const auto r = calibration::calibrate(tests);
+  const double cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   const auto truth = test::table_5_2_hostun().tables.at("hypoplastic");
   explain(r, truth);
-  CHECK(r.seconds < 40.0);  // ~11 s of CPU; wall time on this 2-core machine under DEM load up to ~25 s
+  UNSCOPED_INFO("CPU " << cpu_seconds << " s");
+  // CPU, not wall time: about 11 s here, while the wall time on this shared 2-core machine ranged
+  // from 21 s to 58 s with DEM runs and builds beside it.
+  CHECK(cpu_seconds < 30.0);
   for (const auto& p : r.parameters) {
     INFO(p.key << " = " << p.value << " +- " << p.sigma << ", true " << truth.at(p.key));
     CHECK(p.identified);
