@@ -251,7 +251,8 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
   stage_phi_c(c, critical);
   // h_s, n and e_c0 depend on each other only weakly (e_c0 through exp(-(3 sigma_n/h_s)^n) ~ 0.9,
   // the oedometric curve through the limits): two passes settle them.
-  for (int pass = 0; pass < 2; ++pass) {
+  const int passes = c.of_kind(SoilTestKind::kOedometer).empty() ? 1 : 2;
+  for (int pass = 0; pass < passes; ++pass) {
     stage_compression(c, o);
     stage_void_ratios(c, critical);
   }
