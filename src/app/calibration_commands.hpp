@@ -13,6 +13,7 @@ struct CalibrationCommands;
 std::shared_ptr<CalibrationCommands> add_calibration_commands(CLI::App& app);
 
 // Runs whichever of them was given; nullopt if none was. Exit code otherwise.
-std::optional<int> run_calibration_commands(const CalibrationCommands& c, const std::string& command_line);
+std::optional<int> run_calibration_commands(const CalibrationCommands& c,
+                                            const std::string& command_line);
 
 }  // namespace iwb::app

@@ -1,9 +1,10 @@
 #include "calibration/calibrate.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fmt/core.h>
 #include <limits>
 
 #include "calibration/simulate.hpp"
@@ -25,7 +26,7 @@ struct BoxEntry {
 };
 constexpr BoxEntry kBox[] = {
     {"phi_c_deg", 15.0, 50.0, false}, {"hs_kPa", 1e4, 1e8, true}, {"n", 0.1, 0.9, false},
-    {"ec0", 0.3, 2.0, false},         {"ed0", 0.2, 1.5, false},    {"ei0", 0.4, 2.5, false},
+    {"ec0", 0.3, 2.0, false},         {"ed0", 0.2, 1.5, false},   {"ei0", 0.4, 2.5, false},
     {"alpha", 0.01, 1.0, false},      {"beta", 0.1, 5.0, false},
 };
 
@@ -35,8 +36,12 @@ const BoxEntry& box(const std::string& key) {
   throw std::logic_error("no calibration box for " + key);
 }
 
-double to_fit(const BoxEntry& b, double v) { return b.logarithmic ? std::log(v) : v; }
-double from_fit(const BoxEntry& b, double x) { return b.logarithmic ? std::exp(x) : x; }
+double to_fit(const BoxEntry& b, double v) {
+  return b.logarithmic ? std::log(v) : v;
+}
+double from_fit(const BoxEntry& b, double x) {
+  return b.logarithmic ? std::exp(x) : x;
+}
 
 // Parameters converged when a BOBYQA step changes them by less than this: the objective is
 // computed to the integrator's tolerance (1e-7), finer steps only chase its noise.
@@ -81,8 +86,10 @@ struct Calibrator {
         continue;
       }
       add(reached ? s.tau_kPa[i] : 0.0, t.tau_kPa[i], stress_scale);
-      if (t.boundary == driver::BoundaryKind::kCV) add(reached ? s.sigma_n_kPa[i] : 0.0, t.sigma_n_kPa[i], stress_scale);
-      else add(reached ? s.e[i] : 0.0, t.e[i], kVoidRatioScale);
+      if (t.boundary == driver::BoundaryKind::kCV)
+        add(reached ? s.sigma_n_kPa[i] : 0.0, t.sigma_n_kPa[i], stress_scale);
+      else
+        add(reached ? s.e[i] : 0.0, t.e[i], kVoidRatioScale);
     }
   }
 
@@ -96,7 +103,8 @@ struct Calibrator {
 
   models::ParameterValues with(const Keys& keys, const Eigen::VectorXd& x) const {
     models::ParameterValues v = current;
-    for (std::size_t k = 0; k < keys.size(); ++k) v[keys[k]] = from_fit(box(keys[k]), x(Eigen::Index(k)));
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      v[keys[k]] = from_fit(box(keys[k]), x(Eigen::Index(k)));
     if (limits_follow_ec0) set_limits_from_ec0(v);
     return v;
   }
@@ -147,7 +155,8 @@ std::size_t last_fifth_start(const SoilTest& t) {
 
 bool at_critical_state(const SoilTest& t) {
   const std::size_t i = last_fifth_start(t), j = t.rows() - 1;
-  const double ratio_change = std::abs(t.tau_kPa[j] / t.sigma_n_kPa[j] - t.tau_kPa[i] / t.sigma_n_kPa[i]);
+  const double ratio_change =
+      std::abs(t.tau_kPa[j] / t.sigma_n_kPa[j] - t.tau_kPa[i] / t.sigma_n_kPa[i]);
   return ratio_change < kCriticalRatioChange && std::abs(t.e[j] - t.e[i]) < kCriticalVoidChange;
 }
 
@@ -161,18 +170,21 @@ Indices critical_tests(const Calibrator& c) {
 
 void stage_phi_c(Calibrator& c, const Indices& critical) {
   if (critical.empty()) {
-    c.notes.push_back("A: no simple-shear test ends at a critical state (tau/sigma_n and e stationary "
-                      "over the last fifth); phi_c starts from 30 deg and is left to the joint fit");
+    c.notes.push_back(
+        "A: no simple-shear test ends at a critical state (tau/sigma_n and e stationary "
+        "over the last fifth); phi_c starts from 30 deg and is left to the joint fit");
     return;
   }
   double eta = 0.0;
   for (const auto i : critical) eta += c.tests[i].tau_kPa.back() / c.tests[i].sigma_n_kPa.back();
   eta /= double(critical.size());
   c.current["phi_c_deg"] = models::friction_angle_of_simple_shear_ratio(eta) * 180.0 / M_PI;
-  c.notes.push_back(fmt::format("A: residual tau/sigma_n = {:.5f} over {} test(s) at critical state -> "
-                                "phi_c = {:.3f} deg through the simple-shear critical state "
-                                "(tan phi_c would be {:.3f})", eta, critical.size(),
-                                c.current["phi_c_deg"], std::tan(c.current["phi_c_deg"] * M_PI / 180.0)));
+  c.notes.push_back(
+      fmt::format("A: residual tau/sigma_n = {:.5f} over {} test(s) at critical state -> "
+                  "phi_c = {:.3f} deg through the simple-shear critical state "
+                  "(tan phi_c would be {:.3f})",
+                  eta, critical.size(), c.current["phi_c_deg"],
+                  std::tan(c.current["phi_c_deg"] * M_PI / 180.0)));
 }
 
 void stage_compression(Calibrator& c, const CalibrationOptions& o) {
@@ -181,15 +193,19 @@ void stage_compression(Calibrator& c, const CalibrationOptions& o) {
     c.notes.push_back("B: no oedometer test; h_s and n are left to the joint fit");
     return;
   }
-  const auto r = c.fit({"hs_kPa", "n"}, oedo, o.max_evaluations_per_stage, 0.0, o.polish_iterations);
-  c.notes.push_back(fmt::format("B: h_s = {:.4g} kPa, n = {:.4f} from {} oedometer test(s), RMS "
-                                "residual {:.3g} scatter units ({})", c.current["hs_kPa"],
-                                c.current["n"], oedo.size(), r.rmse, r.stop_reason));
+  const auto r =
+      c.fit({"hs_kPa", "n"}, oedo, o.max_evaluations_per_stage, 0.0, o.polish_iterations);
+  c.notes.push_back(
+      fmt::format("B: h_s = {:.4g} kPa, n = {:.4f} from {} oedometer test(s), RMS "
+                  "residual {:.3g} scatter units ({})",
+                  c.current["hs_kPa"], c.current["n"], oedo.size(), r.rmse, r.stop_reason));
 }
 
 void stage_void_ratios(Calibrator& c, const Indices& critical) {
   if (critical.empty()) {
-    c.notes.push_back("C: no critical state reached; e_c0 starts from the loosest test and is left to the joint fit");
+    c.notes.push_back(
+        "C: no critical state reached; e_c0 starts from the loosest test and is left to the joint "
+        "fit");
     return;
   }
   // Bauer (eq. 5.13): e_c = e_c0 exp(-(p/h_s)^n) with p = -tr T = 3 sigma_n at the critical state
@@ -197,26 +213,30 @@ void stage_void_ratios(Calibrator& c, const Indices& critical) {
   double ec0 = 0.0;
   for (const auto i : critical) {
     const auto& t = c.tests[i];
-    ec0 += t.e.back() / std::exp(-std::pow(3.0 * t.sigma_n_kPa.back() / c.current["hs_kPa"], c.current["n"]));
+    ec0 += t.e.back() /
+           std::exp(-std::pow(3.0 * t.sigma_n_kPa.back() / c.current["hs_kPa"], c.current["n"]));
   }
   c.current["ec0"] = ec0 / double(critical.size());
   set_limits_from_ec0(c.current);
-  c.notes.push_back(fmt::format("C: e_c0 = {:.4f} from the critical void ratios of {} test(s); e_i0 = "
-                                "{} e_c0, e_d0 = {} e_c0 as starting values", c.current["ec0"],
-                                critical.size(), kEi0OverEc0, kEd0OverEc0));
+  c.notes.push_back(
+      fmt::format("C: e_c0 = {:.4f} from the critical void ratios of {} test(s); e_i0 = "
+                  "{} e_c0, e_d0 = {} e_c0 as starting values",
+                  c.current["ec0"], critical.size(), kEi0OverEc0, kEd0OverEc0));
 }
 
 void stage_density(Calibrator& c, const CalibrationOptions& o) {
-  const auto r = c.fit({"alpha", "beta"}, c.all(), o.max_evaluations_per_stage, 0.0, o.polish_iterations);
-  c.notes.push_back(fmt::format("D: alpha = {:.4f}, beta = {:.4f} from all tests, RMS residual {:.3g} ({})",
-                                c.current["alpha"], c.current["beta"], r.rmse, r.stop_reason));
+  const auto r =
+      c.fit({"alpha", "beta"}, c.all(), o.max_evaluations_per_stage, 0.0, o.polish_iterations);
+  c.notes.push_back(
+      fmt::format("D: alpha = {:.4f}, beta = {:.4f} from all tests, RMS residual {:.3g} ({})",
+                  c.current["alpha"], c.current["beta"], r.rmse, r.stop_reason));
 }
 
 // Start: middle-of-the-box exponents, void ratios around the loosest initial state.
 models::ParameterValues starting_values(const std::vector<SoilTest>& tests) {
   double loosest = 0.0;
   for (const auto& t : tests) loosest = std::max(loosest, t.e0);
-  models::ParameterValues v{{"phi_c_deg", 30.0}, {"hs_kPa", 1e6}, {"n", 0.3},
+  models::ParameterValues v{{"phi_c_deg", 30.0},     {"hs_kPa", 1e6}, {"n", 0.3},
                             {"ec0", 1.05 * loosest}, {"alpha", 0.15}, {"beta", 1.0}};
   set_limits_from_ec0(v);
   return v;
@@ -232,7 +252,8 @@ double identifiability_sigma(const fitting::LeastSquaresResult& r, Eigen::Index 
 
 bool unidentified(const fitting::LeastSquaresResult& r, const BoxEntry& b, Eigen::Index k) {
   const double s = identifiability_sigma(r, k);
-  return !std::isfinite(s) || s > kUnidentifiedShareOfBox * (to_fit(b, b.upper) - to_fit(b, b.lower));
+  return !std::isfinite(s) ||
+         s > kUnidentifiedShareOfBox * (to_fit(b, b.upper) - to_fit(b, b.lower));
 }
 
 }  // namespace
@@ -260,7 +281,8 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
 
   Keys keys;
   for (const auto& b : kBox) keys.push_back(b.key);
-  auto joint = c.fit(keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
+  auto joint =
+      c.fit(keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
   Keys by_factor;
   for (const char* limit : {"ed0", "ei0"}) {
     const auto k = Eigen::Index(std::find(keys.begin(), keys.end(), limit) - keys.begin());
@@ -269,11 +291,13 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
   if (!by_factor.empty()) {  // fix them by the factors and refit the rest
     c.limits_follow_ec0 = true;
     std::erase_if(keys, [&](const std::string& k) { return k == "ed0" || k == "ei0"; });
-    joint = c.fit(keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
+    joint =
+        c.fit(keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
   }
-  c.notes.push_back(fmt::format("E: joint fit of {} parameters on {} tests: RMS residual {:.3g} scatter "
-                                "units, {} ({} evaluations in all)", keys.size(), tests.size(),
-                                joint.rmse, joint.stop_reason, c.evaluations));
+  c.notes.push_back(
+      fmt::format("E: joint fit of {} parameters on {} tests: RMS residual {:.3g} scatter "
+                  "units, {} ({} evaluations in all)",
+                  keys.size(), tests.size(), joint.rmse, joint.stop_reason, c.evaluations));
 
   CalibrationResult out;
   out.model = o.model;
@@ -284,31 +308,44 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
     ParameterEstimate e{b.key, c.current.at(b.key), none, none, false, "", b.lower, b.upper};
     const auto it = std::find(keys.begin(), keys.end(), b.key);
     if (it == keys.end()) {
-      e.how = fmt::format("not identifiable from these tests: set to {} e_c0 (Herle & Gudehus 1999 factor)",
-                          std::string(b.key) == "ei0" ? kEi0OverEc0 : kEd0OverEc0);
+      e.how = fmt::format(
+          "not identifiable from these tests: set to {} e_c0 (Herle & Gudehus 1999 factor)",
+          std::string(b.key) == "ei0" ? kEi0OverEc0 : kEd0OverEc0);
     } else {
       const auto k = Eigen::Index(it - keys.begin());
       e.identified = !unidentified(joint, b, k);
       // ln h_s: sigma(h_s) = h_s sigma(ln h_s) to first order
       e.sigma = b.logarithmic ? e.value * joint.sigma(k) : joint.sigma(k);
-      e.sigma_at_scatter = b.logarithmic ? e.value * identifiability_sigma(joint, k) : identifiability_sigma(joint, k);
-      e.how = e.identified ? "joint fit (Gauss-Newton sigma)"
-                           : fmt::format("NOT IDENTIFIED: at the declared scatter its sigma would be {:.3g}, "
-                                         "beyond {} of its box [{:g}, {:g}]", e.sigma_at_scatter,
-                                         kUnidentifiedShareOfBox, b.lower, b.upper);
+      e.sigma_at_scatter = b.logarithmic ? e.value * identifiability_sigma(joint, k)
+                                         : identifiability_sigma(joint, k);
+      e.how = e.identified
+                  ? "joint fit (Gauss-Newton sigma)"
+                  : fmt::format(
+                        "NOT IDENTIFIED: at the declared scatter its sigma would be {:.3g}, "
+                        "beyond {} of its box [{:g}, {:g}]",
+                        e.sigma_at_scatter, kUnidentifiedShareOfBox, b.lower, b.upper);
     }
     out.parameters.push_back(e);
   }
   for (const auto& k : by_factor)
-    c.notes.push_back(fmt::format("{} is not identifiable from these tests (sigma beyond {} of its box): "
-                                  "set from e_c0 by the usual factor", k, kUnidentifiedShareOfBox));
+    c.notes.push_back(
+        fmt::format("{} is not identifiable from these tests (sigma beyond {} of its box): "
+                    "set from e_c0 by the usual factor",
+                    k, kUnidentifiedShareOfBox));
   for (const auto& t : tests) {
     const Simulated s = simulate(t, o.model, c.inputs(c.current));
-    TestFit f{t.name, to_string(t.kind), t.kind == SoilTestKind::kOedometer ? "" : driver::to_string(t.boundary),
-              s.status, s.rows(), t.rows(), {}};
-    const auto rmse = [&](const std::string& column, const std::vector<double>& model, const std::vector<double>& data) {
+    TestFit f{t.name,
+              to_string(t.kind),
+              t.kind == SoilTestKind::kOedometer ? "" : driver::to_string(t.boundary),
+              s.status,
+              s.rows(),
+              t.rows(),
+              {}};
+    const auto rmse = [&](const std::string& column, const std::vector<double>& model,
+                          const std::vector<double>& data) {
       double sum = 0.0;
-      for (std::size_t i = 0; i < model.size(); ++i) sum += (model[i] - data[i]) * (model[i] - data[i]);
+      for (std::size_t i = 0; i < model.size(); ++i)
+        sum += (model[i] - data[i]) * (model[i] - data[i]);
       f.rmse.push_back({column, std::sqrt(sum / double(std::max<std::size_t>(model.size(), 1)))});
     };
     rmse("e", s.e, t.e);

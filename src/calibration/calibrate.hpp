@@ -11,8 +11,9 @@
 //             stiffness);
 //   E  all eight jointly on all tests, from the staged estimate; Gauss-Newton covariance. A
 //             parameter the data do not determine (singular direction, or one sigma at the
-//             declared scatter above kUnidentifiedShareOfBox of its calibration box) is flagged; e_d0 and e_i0 so
-//             flagged are set from e_c0 by the factors and the rest refitted, and the output says so.
+//             declared scatter above kUnidentifiedShareOfBox of its calibration box) is flagged;
+//             e_d0 and e_i0 so flagged are set from e_c0 by the factors and the rest refitted, and
+//             the output says so.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -52,14 +53,14 @@ struct CalibrationOptions {
 };
 
 struct ParameterEstimate {
-  std::string key;         // as in the parameter file: phi_c_deg, hs_kPa, ...
+  std::string key;  // as in the parameter file: phi_c_deg, hs_kPa, ...
   double value = 0.0;
-  double sigma = 0.0;      // one standard deviation, s^2 (J^T J)^-1; inf when singular
+  double sigma = 0.0;  // one standard deviation, s^2 (J^T J)^-1; inf when singular
   // The same at the declared scatter (s^2 = 1 if the fit is better than that): what decides
   // `identified`, and what a noisy test of the same design would give.
   double sigma_at_scatter = 0.0;
   bool identified = true;
-  std::string how;         // which stage or rule set it
+  std::string how;                  // which stage or rule set it
   double lower = 0.0, upper = 0.0;  // calibration box
 };
 
@@ -85,7 +86,8 @@ struct CalibrationResult {
   models::ParameterValues values() const;
 };
 
-CalibrationResult calibrate(const std::vector<SoilTest>& tests, const CalibrationOptions& options = {});
+CalibrationResult calibrate(const std::vector<SoilTest>& tests,
+                            const CalibrationOptions& options = {});
 
 // The parameter file (data/params format, header comment: source and fit quality) and
 // calibration.json next to it.

@@ -1,7 +1,8 @@
 #include "calibration/simulate.hpp"
 
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
 
 #include "common/errors.hpp"
 #include "driver/element_test.hpp"

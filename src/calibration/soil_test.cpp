@@ -1,8 +1,9 @@
 #include "calibration/soil_test.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 
 #include "common/errors.hpp"
 #include "io/csv_table.hpp"
@@ -23,7 +24,8 @@ std::size_t SoilTest::loading_end() const {
 namespace {
 
 nlohmann::json read_manifest(const fs::path& file) {
-  if (!fs::exists(file)) throw InputError(fmt::format("{}: missing (not a soil-test directory)", file.string()));
+  if (!fs::exists(file))
+    throw InputError(fmt::format("{}: missing (not a soil-test directory)", file.string()));
   try {
     return nlohmann::json::parse(io::read_file(file));
   } catch (const nlohmann::json::exception& e) {
@@ -38,7 +40,8 @@ T require(const nlohmann::json& m, const std::string& key, const fs::path& file,
   try {
     return m.at(key).get<T>();
   } catch (const nlohmann::json::exception&) {
-    throw InputError(fmt::format("{}: key '{}' = {} is not {}", file.string(), key, m.at(key).dump(), what));
+    throw InputError(
+        fmt::format("{}: key '{}' = {} is not {}", file.string(), key, m.at(key).dump(), what));
   }
 }
 
@@ -46,14 +49,16 @@ double require_positive(const nlohmann::json& m, const std::string& key, const f
                         const char* what) {
   const double v = require<double>(m, key, file, what);
   if (!(v > 0.0) || !std::isfinite(v))
-    throw InputError(fmt::format("{}: key '{}' = {:g} must be positive ({})", file.string(), key, v, what));
+    throw InputError(
+        fmt::format("{}: key '{}' = {:g} must be positive ({})", file.string(), key, v, what));
   return v;
 }
 
 void read_header(SoilTest& t, const fs::path& file) {
   const auto m = read_manifest(file);
   if (require<std::string>(m, "kind", file, "\"soiltest\"") != "soiltest")
-    throw InputError(fmt::format("{}: key 'kind' = {} should be \"soiltest\"", file.string(), m["kind"].dump()));
+    throw InputError(
+        fmt::format("{}: key 'kind' = {} should be \"soiltest\"", file.string(), m["kind"].dump()));
   const auto test = require<std::string>(m, "test", file, "\"oedometer\" or \"simpleshear\"");
   if (test == "oedometer") {
     t.kind = SoilTestKind::kOedometer;
@@ -61,24 +66,29 @@ void read_header(SoilTest& t, const fs::path& file) {
   } else if (test == "simpleshear") {
     t.kind = SoilTestKind::kSimpleShear;
     t.sigma0_kPa = require_positive(m, "sigma_n0_kPa", file, "initial normal stress, kPa");
-    t.boundary = driver::parse_boundary_kind(require<std::string>(m, "boundary", file, "\"CNL\" or \"CV\""),
-                                             file.string() + ": key 'boundary'");
+    t.boundary =
+        driver::parse_boundary_kind(require<std::string>(m, "boundary", file, "\"CNL\" or \"CV\""),
+                                    file.string() + ": key 'boundary'");
     if (t.boundary == driver::BoundaryKind::kCNS)
-      throw InputError(fmt::format("{}: key 'boundary' = \"CNS\": soil tests are CNL or CV", file.string()));
+      throw InputError(
+          fmt::format("{}: key 'boundary' = \"CNS\": soil tests are CNL or CV", file.string()));
   } else {
-    throw InputError(fmt::format("{}: key 'test' = \"{}\" should be \"oedometer\" or \"simpleshear\"",
-                                 file.string(), test));
+    throw InputError(fmt::format(
+        "{}: key 'test' = \"{}\" should be \"oedometer\" or \"simpleshear\"", file.string(), test));
   }
   t.e0 = require_positive(m, "e0", file, "initial void ratio");
   if (m.contains("K0")) t.K0 = require_positive(m, "K0", file, "initial lateral stress ratio");
   t.source = require<std::string>(m, "source", file, "\"dem:<engine>\" or \"synthetic:<model>\"");
   if (m.contains("source_parameters")) t.source_parameters = m["source_parameters"];
   if (m.contains("status") && m["status"] != "complete")
-    throw InputError(fmt::format("{}: status {} is not \"complete\"", file.string(), m["status"].dump()));
+    throw InputError(
+        fmt::format("{}: status {} is not \"complete\"", file.string(), m["status"].dump()));
 }
 
 // Line of data row i in timeseries.csv: the header is line 1.
-std::size_t line_of(std::size_t row) { return row + 2; }
+std::size_t line_of(std::size_t row) {
+  return row + 2;
+}
 
 void check_monotonic(const SoilTest& t, const fs::path& file) {
   const char* column = t.kind == SoilTestKind::kOedometer ? "sigma_v_kPa" : "gamma";
@@ -87,13 +97,14 @@ void check_monotonic(const SoilTest& t, const fs::path& file) {
     const bool loading = i <= peak;
     const bool ok = loading ? t.control[i] > t.control[i - 1] : t.control[i] < t.control[i - 1];
     if (!ok)
-      throw InputError(fmt::format(
-          "{}:{}: column '{}' = {:g} after {:g}: the {} must be strictly {} here ({})", file.string(),
-          line_of(i), column, t.control[i], t.control[i - 1],
-          t.kind == SoilTestKind::kOedometer ? "vertical stress" : "shear strain",
-          loading ? "increasing" : "decreasing",
-          t.kind == SoilTestKind::kOedometer ? "one loading branch, then at most one unloading branch"
-                                             : "monotonic shear"));
+      throw InputError(
+          fmt::format("{}:{}: column '{}' = {:g} after {:g}: the {} must be strictly {} here ({})",
+                      file.string(), line_of(i), column, t.control[i], t.control[i - 1],
+                      t.kind == SoilTestKind::kOedometer ? "vertical stress" : "shear strain",
+                      loading ? "increasing" : "decreasing",
+                      t.kind == SoilTestKind::kOedometer
+                          ? "one loading branch, then at most one unloading branch"
+                          : "monotonic shear"));
   }
 }
 
@@ -115,8 +126,8 @@ void read_columns(SoilTest& t, const fs::path& file) {
                                  t.rows(), kMinimumRows));
   for (std::size_t i = 0; i < t.rows(); ++i)
     if (!(t.e[i] > 0.0))
-      throw InputError(fmt::format("{}:{}: column 'e' = {:g} is not a void ratio (> 0)", file.string(),
-                                   line_of(i), t.e[i]));
+      throw InputError(fmt::format("{}:{}: column 'e' = {:g} is not a void ratio (> 0)",
+                                   file.string(), line_of(i), t.e[i]));
   check_monotonic(t, file);
 }
 
@@ -124,7 +135,8 @@ std::string timeseries_csv(const SoilTest& t) {
   io::CsvTable table;
   if (t.kind == SoilTestKind::kOedometer) {
     table.columns = {"sigma_v_kPa", "eps_v", "e"};
-    for (std::size_t i = 0; i < t.rows(); ++i) table.rows.push_back({t.control[i], t.eps_v[i], t.e[i]});
+    for (std::size_t i = 0; i < t.rows(); ++i)
+      table.rows.push_back({t.control[i], t.eps_v[i], t.e[i]});
   } else {
     table.columns = {"gamma", "tau_kPa", "sigma_n_kPa", "e"};
     for (std::size_t i = 0; i < t.rows(); ++i)
@@ -143,7 +155,8 @@ SoilTest read_soil_test(const fs::path& dir) {
   return t;
 }
 
-void write_soil_test(const SoilTest& t, const fs::path& dir, bool force, const nlohmann::json& extra) {
+void write_soil_test(const SoilTest& t, const fs::path& dir, bool force,
+                     const nlohmann::json& extra) {
   nlohmann::json m = extra;
   m["kind"] = "soiltest";
   m["test"] = to_string(t.kind);

@@ -22,8 +22,8 @@ struct SoilTest {
   driver::BoundaryKind boundary = driver::BoundaryKind::kCNL;  // simple shear: CNL or CV
   double sigma0_kPa = 0.0;  // sigma_v0 (oedometer) or sigma_n0 (simple shear)
   double e0 = 0.0;
-  double K0 = 0.0;  // lateral / vertical stress at the start; 0 = not given: 1 - sin(phi_c)
-  std::string source;              // "dem:<engine>" or "synthetic:<model>"
+  double K0 = 0.0;     // lateral / vertical stress at the start; 0 = not given: 1 - sin(phi_c)
+  std::string source;  // "dem:<engine>" or "synthetic:<model>"
   nlohmann::json source_parameters = nlohmann::json::object();  // what a synthetic source used
 
   // One entry per row of timeseries.csv. Oedometer: sigma_kPa = sigma_v (the control), e and

@@ -1,7 +1,8 @@
 #include "calibration/synthetic.hpp"
 
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
 
 #include "common/errors.hpp"
 #include "models/hypoplastic/von_wolffersdorff.hpp"

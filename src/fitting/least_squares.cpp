@@ -1,9 +1,10 @@
 #include "fitting/least_squares.hpp"
 
+#include <fmt/core.h>
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 #include <limits>
 #include <nlopt.hpp>
 
@@ -27,16 +28,21 @@ double objective(const std::vector<double>& x, std::vector<double>& /*grad*/, vo
 
 std::string describe(nlopt::result r) {
   switch (r) {
-    case nlopt::XTOL_REACHED: return "parameters converged";
-    case nlopt::FTOL_REACHED: return "objective converged";
-    case nlopt::MAXEVAL_REACHED: return "evaluation limit";
-    case nlopt::STOPVAL_REACHED: return "objective reached zero";
-    default: return "converged";
+    case nlopt::XTOL_REACHED:
+      return "parameters converged";
+    case nlopt::FTOL_REACHED:
+      return "objective converged";
+    case nlopt::MAXEVAL_REACHED:
+      return "evaluation limit";
+    case nlopt::STOPVAL_REACHED:
+      return "objective reached zero";
+    default:
+      return "converged";
   }
 }
 
-Eigen::MatrixXd central_jacobian(const LeastSquaresProblem& problem, const Eigen::VectorXd& x, Eigen::Index m,
-                                 int& evaluations) {
+Eigen::MatrixXd central_jacobian(const LeastSquaresProblem& problem, const Eigen::VectorXd& x,
+                                 Eigen::Index m, int& evaluations) {
   const Eigen::Index p = x.size();
   Eigen::MatrixXd J(m, p);
   for (Eigen::Index k = 0; k < p; ++k) {
@@ -52,7 +58,8 @@ Eigen::MatrixXd central_jacobian(const LeastSquaresProblem& problem, const Eigen
 
 // Levenberg-Marquardt with Marquardt's diagonal scaling, steps clamped into the box. Stops when
 // a Jacobian no longer buys a relative decrease of kPolishDecrease in ||r||^2.
-void polish(const LeastSquaresProblem& problem, int iterations, Eigen::VectorXd& x, int& evaluations) {
+void polish(const LeastSquaresProblem& problem, int iterations, Eigen::VectorXd& x,
+            int& evaluations) {
   constexpr double kPolishDecrease = 1e-10;
   Eigen::VectorXd r = problem.residuals(x);
   ++evaluations;
@@ -65,7 +72,8 @@ void polish(const LeastSquaresProblem& problem, int iterations, Eigen::VectorXd&
     for (int tries = 0; tries < 8 && !improved; ++tries, lambda *= 10.0) {
       Eigen::MatrixXd a = jtj;
       a.diagonal() += lambda * jtj.diagonal().cwiseMax(1e-300);
-      const Eigen::VectorXd trial = (x - a.ldlt().solve(g)).cwiseMax(problem.lower).cwiseMin(problem.upper);
+      const Eigen::VectorXd trial =
+          (x - a.ldlt().solve(g)).cwiseMax(problem.lower).cwiseMin(problem.upper);
       const Eigen::VectorXd rt = problem.residuals(trial);
       ++evaluations;
       if (rt.squaredNorm() < r.squaredNorm()) {
@@ -98,8 +106,10 @@ void gauss_newton_covariance(const LeastSquaresProblem& problem, LeastSquaresRes
   for (Eigen::Index i = 0; i < p; ++i) {
     const double lambda = eig.eigenvalues()(i);
     const Eigen::VectorXd v = eig.eigenvectors().col(i);
-    if (largest > 0.0 && lambda > kSingularRelative * largest) pinv += v * v.transpose() / lambda;
-    else null_weight += v.cwiseAbs2();
+    if (largest > 0.0 && lambda > kSingularRelative * largest)
+      pinv += v * v.transpose() / lambda;
+    else
+      null_weight += v.cwiseAbs2();
   }
   at.unit_covariance = pinv;
   at.covariance = s2 * pinv;

@@ -43,15 +43,15 @@ inline constexpr double kSingularRelative = 1e-12;
 
 struct LeastSquaresResult {
   Eigen::VectorXd x;
-  Eigen::VectorXd residuals;    // at x
-  Eigen::MatrixXd jacobian;     // at x
-  Eigen::MatrixXd covariance;   // s^2 (J^T J)^+ ; rows/columns of unidentifiable parameters inf
+  Eigen::VectorXd residuals;   // at x
+  Eigen::MatrixXd jacobian;    // at x
+  Eigen::MatrixXd covariance;  // s^2 (J^T J)^+ ; rows/columns of unidentifiable parameters inf
   // (J^T J)^+ alone: the covariance at unit residual variance. With residuals scaled by their
   // expected scatter, it says how well the data *could* determine x even when a noise-free
   // (synthetic) target makes s^2 vanish.
   Eigen::MatrixXd unit_covariance;
-  Eigen::VectorXd sigma;        // sqrt of the diagonal; inf where unidentifiable
-  double rmse = 0.0;            // sqrt(||r||^2 / m)
+  Eigen::VectorXd sigma;  // sqrt of the diagonal; inf where unidentifiable
+  double rmse = 0.0;      // sqrt(||r||^2 / m)
   int evaluations = 0;
   std::string stop_reason;
 };

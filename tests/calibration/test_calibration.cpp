@@ -2,8 +2,8 @@
 // Hostun, the staged fit finds the parameters again within their reported uncertainty, and
 // flags what the tests cannot determine.
 #include <catch2/catch.hpp>
-#include <ctime>
 #include <cmath>
+#include <ctime>
 
 #include "calibration/calibrate.hpp"
 #include "calibration/synthetic.hpp"
@@ -15,7 +15,8 @@ using driver::BoundaryKind;
 
 namespace {
 
-calibration::SoilTest target(SoilTestKind kind, BoundaryKind bc, double e0, const std::string& name) {
+calibration::SoilTest target(SoilTestKind kind, BoundaryKind bc, double e0,
+                             const std::string& name) {
   calibration::SyntheticSpec s;
   s.kind = kind;
   s.boundary = bc;
@@ -42,18 +43,19 @@ std::vector<calibration::SoilTest> hostun_targets() {
           target(SoilTestKind::kSimpleShear, BoundaryKind::kCV, 0.88, "loose CV")};
 }
 
-
 void explain(const calibration::CalibrationResult& r, const models::ParameterValues& truth) {
   for (const auto& n : r.notes) UNSCOPED_INFO(n);
   UNSCOPED_INFO(r.seconds << " s, " << r.evaluations << " evaluations, s2 " << r.s2);
   for (const auto& t : r.tests)
-    for (const auto& c : t.rmse) UNSCOPED_INFO(t.name << ": RMSE " << c.column << " " << c.rmse << " (" << t.status << ")");
+    for (const auto& c : t.rmse)
+      UNSCOPED_INFO(t.name << ": RMSE " << c.column << " " << c.rmse << " (" << t.status << ")");
   for (const auto& p : r.parameters)
-    UNSCOPED_INFO(p.key << " = " << p.value << " +- " << p.sigma << " (at scatter " << p.sigma_at_scatter
-                        << "; true " << truth.at(p.key) << ") " << p.how);
+    UNSCOPED_INFO(p.key << " = " << p.value << " +- " << p.sigma << " (at scatter "
+                        << p.sigma_at_scatter << "; true " << truth.at(p.key) << ") " << p.how);
 }
 
-const calibration::ParameterEstimate& estimate(const calibration::CalibrationResult& r, const std::string& key) {
+const calibration::ParameterEstimate& estimate(const calibration::CalibrationResult& r,
+                                               const std::string& key) {
   for (const auto& p : r.parameters)
     if (p.key == key) return p;
   throw std::logic_error(key);
@@ -61,9 +63,11 @@ const calibration::ParameterEstimate& estimate(const calibration::CalibrationRes
 
 }  // namespace
 
-// Noise-free targets: the fit residual is the integrator's (rtol 1e-7), so the Gauss-Newton sigma is
-// tiny and the stated tolerance kRecoveryTolerance (relative) applies where it is larger than 3 sigma.
-TEST_CASE("calibration recovers the Hostun parameters from synthetic vw3d soil tests", "[calibration]") {
+// Noise-free targets: the fit residual is the integrator's (rtol 1e-7), so the Gauss-Newton sigma
+// is tiny and the stated tolerance kRecoveryTolerance (relative) applies where it is larger than 3
+// sigma.
+TEST_CASE("calibration recovers the Hostun parameters from synthetic vw3d soil tests",
+          "[calibration]") {
   constexpr double kRecoveryTolerance = 1e-4;
   const std::clock_t cpu0 = std::clock();
   const auto tests = hostun_targets();
@@ -79,15 +83,18 @@ TEST_CASE("calibration recovers the Hostun parameters from synthetic vw3d soil t
     INFO(p.key << " = " << p.value << " +- " << p.sigma << ", true " << truth.at(p.key));
     CHECK(p.identified);
     CHECK(std::isfinite(p.sigma));
-    CHECK(std::abs(p.value - truth.at(p.key)) <= std::max(3.0 * p.sigma, kRecoveryTolerance * truth.at(p.key)));
+    CHECK(std::abs(p.value - truth.at(p.key)) <=
+          std::max(3.0 * p.sigma, kRecoveryTolerance * truth.at(p.key)));
   }
-  // the staged estimate of phi_c (stage A) already within 0.1 deg: the critical ratio is the model's
+  // the staged estimate of phi_c (stage A) already within 0.1 deg: the critical ratio is the
+  // model's
   CHECK(r.notes.front().find("phi_c = 31.0") != std::string::npos);
   for (const auto& t : r.tests) {
     INFO(t.name);
     CHECK(t.status == "complete");
     CHECK(t.rows_reached == t.rows);
-    for (const auto& c : t.rmse) CHECK(c.rmse < (c.column == "e" ? 1e-4 : 0.05));  // kPa for stresses
+    for (const auto& c : t.rmse)
+      CHECK(c.rmse < (c.column == "e" ? 1e-4 : 0.05));  // kPa for stresses
   }
 }
 

@@ -56,11 +56,12 @@ TEST_CASE("a synthetic soil test is written and read back row by row", "[calibra
     CHECK(back.e[i] == Approx(t.e[i]).epsilon(1e-11));
     CHECK(back.control[i] == Approx(t.control[i]).epsilon(1e-11));
   }
-  CHECK(back.e[6] < back.e[0]);  // compressed
+  CHECK(back.e[6] < back.e[0]);      // compressed
   CHECK(back.e.back() > back.e[6]);  // swells on unloading
 }
 
-TEST_CASE("malformed soil-test directories are refused naming file, line and column", "[calibration]") {
+TEST_CASE("malformed soil-test directories are refused naming file, line and column",
+          "[calibration]") {
   const auto t = small_oedometer();
   const auto dir = fresh_dir("malformed");
   calibration::write_soil_test(t, dir, false, {});
@@ -78,17 +79,22 @@ TEST_CASE("malformed soil-test directories are refused naming file, line and col
     refused("manifest.json: missing (not a soil-test directory)");
   }
   SECTION("missing column") {
-    write_text(dir / "timeseries.csv", "sigma_v_kPa,eps_v,void_ratio\n10,0,0.8\n20,0.01,0.79\n40,0.02,0.78\n");
+    write_text(dir / "timeseries.csv",
+               "sigma_v_kPa,eps_v,void_ratio\n10,0,0.8\n20,0.01,0.79\n40,0.02,0.78\n");
     refused("timeseries.csv: no column 'e'");
   }
   SECTION("NaN") {
-    write_text(dir / "timeseries.csv", "sigma_v_kPa,eps_v,e\n10,0,0.8\n20,0.01,nan\n40,0.02,0.78\n");
+    write_text(dir / "timeseries.csv",
+               "sigma_v_kPa,eps_v,e\n10,0,0.8\n20,0.01,nan\n40,0.02,0.78\n");
     refused("timeseries.csv:3: column 'e' = 'nan' is not a finite number");
   }
   SECTION("non-monotonic loading") {
     write_text(dir / "timeseries.csv",
-               "sigma_v_kPa,eps_v,e\n10,0,0.8\n40,0.01,0.79\n30,0.015,0.795\n50,0.02,0.78\n60,0.03,0.77\n");
-    refused("timeseries.csv:4: column 'sigma_v_kPa' = 30 after 40: the vertical stress must be strictly increasing");
+               "sigma_v_kPa,eps_v,e\n10,0,0.8\n40,0.01,0.79\n30,0.015,0.795\n50,0.02,0.78\n60,0.03,"
+               "0.77\n");
+    refused(
+        "timeseries.csv:4: column 'sigma_v_kPa' = 30 after 40: the vertical stress must be "
+        "strictly increasing");
   }
   SECTION("wrong kind and test") {
     auto m = nlohmann::json::parse(manifest);

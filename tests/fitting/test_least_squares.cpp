@@ -11,7 +11,9 @@ using namespace iwb;
 
 namespace {
 // y = 2 + 0.5 t at t = 0..9 with a fixed, zero-mean, non-trivial perturbation
-Eigen::VectorXd times() { return Eigen::VectorXd::LinSpaced(10, 0.0, 9.0); }
+Eigen::VectorXd times() {
+  return Eigen::VectorXd::LinSpaced(10, 0.0, 9.0);
+}
 Eigen::VectorXd data() {
   Eigen::VectorXd y = 2.0 + 0.5 * times().array();
   const double noise[10] = {0.03, -0.02, 0.01, -0.04, 0.02, 0.00, -0.01, 0.03, -0.03, 0.01};
@@ -46,7 +48,8 @@ TEST_CASE("linear least squares: optimum and covariance equal the normal equatio
   CHECK(r.unit_covariance(1, 1) == Approx(cov(1, 1) / s2).epsilon(1e-6));
 }
 
-TEST_CASE("a parameter the residuals ignore gets an infinite sigma, the others keep theirs", "[fitting]") {
+TEST_CASE("a parameter the residuals ignore gets an infinite sigma, the others keep theirs",
+          "[fitting]") {
   fitting::LeastSquaresProblem p;
   // x(2) does not enter: the data cannot identify it
   p.residuals = [](const Eigen::VectorXd& x) -> Eigen::VectorXd {
