@@ -1,8 +1,8 @@
 #pragma once
 // Fitting kappa_r and d_s of a continuum model to a DEM run (issue 6): least squares on the
 // replay's tau(u_x) against the DEM's, with NLopt's bounded derivative-free BOBYQA over
-// (kappa_r, ln d_s). The uncertainty is the Gauss-Newton covariance s^2 (J^T J)^-1 of the
-// residuals at the optimum (J by central differences).
+// (kappa_r, ln d_s), through fitting::fit_least_squares (src/fitting/), which also gives the
+// Gauss-Newton covariance s^2 (J^T J)^-1 of the residuals at the optimum.
 #include <string>
 
 #include "comparison/replay.hpp"

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "app/calibration_commands.hpp"
 #include "app/default_job.hpp"
 #include "app/stability.hpp"
 #include "app/validate.hpp"
@@ -312,11 +313,14 @@ int main(int argc, char** argv) {
   bench_dem->add_option("--scene", dopt.scene, "scene file")->check(CLI::ExistingFile)->capture_default_str();
   bench_dem->add_option("--ranks", dopt.ranks, "rank counts to measure")->capture_default_str();
 
+  const auto calibration_commands = iwb::app::add_calibration_commands(app);
+
   CLI11_PARSE(app, argc, argv);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   try {
     if (*element) return cmd_element(test_file, out, force, cl);
+    if (const auto code = iwb::app::run_calibration_commands(*calibration_commands, cl)) return *code;
     if (*models) return cmd_models(as_json);
     if (*run) return iwb::app::run_default_job(run_out, force, cl);
     if (*dem_run) return cmd_dem_run(scene_file, engine_name, np, out, resume, force, cl);

@@ -47,22 +47,9 @@ TEST_CASE("CNS satisfies d sigma_n = K d eps_n increment by increment", "[driver
   CHECK(r.result.rows.back().eps_n > 0.0);
 }
 
-namespace {
-// tau/sigma_n at the stationary state of a simple-shear element with cos 3theta = 0 and
-// sigma_p = sigma_n: the root of sqrt2 eta/3 a = F(eta) (||T^*|| = F/a, von Wolffersdorff 1996).
-double critical_ratio(double phi_c) {
-  const double a = models::coefficient_a(models::CoefficientARule::kVonWolffersdorff, phi_c);
-  auto f = [a](double eta) {
-    return std::sqrt(2.0) * eta / 3.0 * a - (std::sqrt(1.0 - eta * eta / 4.0) - eta / (2.0 * std::sqrt(3.0)));
-  };
-  double lo = 0.1, hi = 1.5;
-  for (int i = 0; i < 100; ++i) (f(0.5 * (lo + hi)) > 0 ? hi : lo) = 0.5 * (lo + hi);
-  return 0.5 * (lo + hi);
-}
-}  // namespace
 
 TEST_CASE("long CNL shear reaches the critical state whatever the initial density", "[driver][slow]") {
-  const double eta_c = critical_ratio(test::kPhiC51);
+  const double eta_c = models::simple_shear_critical_ratio(test::kPhiC51);
   for (const std::string name : {"hvwe", "vw3d"}) {
     for (double e0 : {0.62, 0.95}) {
       test::ShearSpec s;

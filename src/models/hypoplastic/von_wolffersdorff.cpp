@@ -22,6 +22,34 @@ double coefficient_a(CoefficientARule rule, double phi) {
   return 0.0;
 }
 
+namespace {
+// Bisection to double precision: both functions are monotonic on their brackets.
+template <class F>
+double bisect(F f, double lo, double hi) {
+  for (int i = 0; i < 200 && hi - lo > 1e-15 * std::abs(hi); ++i)
+    (f(0.5 * (lo + hi)) > 0.0 ? hi : lo) = 0.5 * (lo + hi);
+  return 0.5 * (lo + hi);
+}
+constexpr double kDeg = M_PI / 180.0;
+}  // namespace
+
+double simple_shear_critical_ratio(double phi_c) {
+  const double a = coefficient_a(CoefficientARule::kVonWolffersdorff, phi_c);
+  // F(eta) falls and ||T^*|| a rises with eta: one root in (0, 2) where F is real
+  return bisect([a](double eta) {
+    return std::sqrt(2.0) * eta / 3.0 * a - (std::sqrt(1.0 - eta * eta / 4.0) - eta / (2.0 * std::sqrt(3.0)));
+  }, 0.0, 2.0);
+}
+
+double friction_angle_of_simple_shear_ratio(double eta) {
+  const double lo = 1.0 * kDeg, hi = 89.0 * kDeg;
+  if (!(eta > simple_shear_critical_ratio(lo) && eta < simple_shear_critical_ratio(hi)))
+    throw InputError(fmt::format("critical stress ratio tau/sigma_n = {:.6g} is outside ({:.4g}, "
+                                 "{:.4g}), what phi_c in (1, 89) deg gives in simple shear", eta,
+                                 simple_shear_critical_ratio(lo), simple_shear_critical_ratio(hi)));
+  return bisect([eta](double phi) { return simple_shear_critical_ratio(phi) - eta; }, lo, hi);
+}
+
 VonWolffersdorffConstants make_constants(const HypoplasticParameters& p,
                                          const HypoplasticVariant& v, const Roughness& r,
                                          double trace_of_unit) {

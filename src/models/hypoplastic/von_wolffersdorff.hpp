@@ -42,6 +42,15 @@ struct HypoplasticVariant {
 
 double coefficient_a(CoefficientARule rule, double phi);
 
+// tau/sigma_n at the critical state of von Wolffersdorff's model in simple shear (vw3d, hvwe):
+// stationary stress with sigma_p = sigma_n and cos 3theta = 0, the root eta of
+// ||T^*|| = F/a, i.e. sqrt2 eta a / 3 = sqrt(1 - eta^2/4) - eta / (2 sqrt3) (von Wolffersdorff
+// 1996). Not tan(phi_c): 0.52322 for phi_c = 28 deg. phi_c in rad.
+double simple_shear_critical_ratio(double phi_c);
+// Its inverse: the phi_c (rad) whose critical simple-shear ratio is `eta`; InputError outside the
+// range phi_c in [1, 89] deg gives.
+double friction_angle_of_simple_shear_ratio(double eta);
+
 // Everything in the rate that does not change along a path.
 struct VonWolffersdorffConstants {
   HypoplasticParameters p;

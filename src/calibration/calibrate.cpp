@@ -1,0 +1,364 @@
+#include "calibration/calibrate.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "calibration/simulate.hpp"
+#include "common/errors.hpp"
+#include "fitting/least_squares.hpp"
+#include "models/hypoplastic/parameters.hpp"
+#include "models/hypoplastic/von_wolffersdorff.hpp"
+
+namespace iwb::calibration {
+
+namespace {
+
+// The box the optimiser searches: the parameter table's bounds (HypoplasticParameters::table)
+// narrowed to what sands show, because BOBYQA needs finite bounds. h_s is fitted as ln h_s.
+struct BoxEntry {
+  const char* key;
+  double lower, upper;
+  bool logarithmic;
+};
+constexpr BoxEntry kBox[] = {
+    {"phi_c_deg", 15.0, 50.0, false}, {"hs_kPa", 1e4, 1e8, true}, {"n", 0.1, 0.9, false},
+    {"ec0", 0.3, 2.0, false},         {"ed0", 0.2, 1.5, false},   {"ei0", 0.4, 2.5, false},
+    {"alpha", 0.01, 1.0, false},      {"beta", 0.1, 5.0, false},
+};
+
+const BoxEntry& box(const std::string& key) {
+  for (const auto& b : kBox)
+    if (key == b.key) return b;
+  throw std::logic_error("no calibration box for " + key);
+}
+
+double to_fit(const BoxEntry& b, double v) {
+  return b.logarithmic ? std::log(v) : v;
+}
+double from_fit(const BoxEntry& b, double x) {
+  return b.logarithmic ? std::exp(x) : x;
+}
+
+// Parameters converged when a BOBYQA step changes them by less than this: the objective is
+// computed to the integrator's tolerance (1e-7), finer steps only chase its noise.
+constexpr double kFitRelativeTolerance = 1e-6;
+// The joint fit starts near the staged estimate: a trust region of 2 % of the box.
+constexpr double kJointInitialStepShare = 0.02;
+
+void set_limits_from_ec0(models::ParameterValues& v) {
+  v["ei0"] = kEi0OverEc0 * v["ec0"];
+  v["ed0"] = kEd0OverEc0 * v["ec0"];
+}
+
+using Keys = std::vector<std::string>;
+using Indices = std::vector<std::size_t>;
+
+struct Calibrator {
+  const std::vector<SoilTest>& tests;
+  const CalibrationOptions& options;
+  models::ParameterValues current;
+  int evaluations = 0;
+  std::vector<std::string> notes;
+  // Set once e_d0 and e_i0 are found unidentifiable: every trial then takes them from its e_c0.
+  bool limits_follow_ec0 = false;
+
+  models::ModelInputs inputs(const models::ParameterValues& v) const {
+    models::ModelInputs in;
+    in.tables["hypoplastic"] = v;
+    in.source = "calibration trial";
+    return in;
+  }
+
+  // Scaled residuals of one test, kUnreachedResidual for rows the model did not reach.
+  void append_residuals(const SoilTest& t, const Simulated& s, std::vector<double>& r) const {
+    const double stress_scale = kStressRatioScale * t.sigma0_kPa;
+    for (std::size_t i = 1; i < t.rows(); ++i) {
+      const bool reached = i < s.rows();
+      const auto add = [&](double model, double measured, double scale) {
+        r.push_back(reached ? (model - measured) / scale : kUnreachedResidual);
+      };
+      if (t.kind == SoilTestKind::kOedometer) {
+        add(reached ? s.e[i] : 0.0, t.e[i], kVoidRatioScale);
+        continue;
+      }
+      add(reached ? s.tau_kPa[i] : 0.0, t.tau_kPa[i], stress_scale);
+      if (t.boundary == driver::BoundaryKind::kCV)
+        add(reached ? s.sigma_n_kPa[i] : 0.0, t.sigma_n_kPa[i], stress_scale);
+      else
+        add(reached ? s.e[i] : 0.0, t.e[i], kVoidRatioScale);
+    }
+  }
+
+  Eigen::VectorXd residuals(const models::ParameterValues& v, const Indices& which) {
+    ++evaluations;
+    std::vector<double> r;
+    for (const std::size_t i : which)
+      append_residuals(tests[i], simulate(tests[i], options.model, inputs(v)), r);
+    return Eigen::Map<Eigen::VectorXd>(r.data(), Eigen::Index(r.size()));
+  }
+
+  models::ParameterValues with(const Keys& keys, const Eigen::VectorXd& x) const {
+    models::ParameterValues v = current;
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      v[keys[k]] = from_fit(box(keys[k]), x(Eigen::Index(k)));
+    if (limits_follow_ec0) set_limits_from_ec0(v);
+    return v;
+  }
+
+  fitting::LeastSquaresResult fit(const Keys& keys, const Indices& which, int max_evaluations,
+                                  double initial_step_share = 0.0, int polish_iterations = 0) {
+    fitting::LeastSquaresProblem p;
+    const auto n = Eigen::Index(keys.size());
+    p.start.resize(n), p.lower.resize(n), p.upper.resize(n), p.difference_step.resize(n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const auto& b = box(keys[std::size_t(k)]);
+      p.lower(k) = to_fit(b, b.lower);
+      p.upper(k) = to_fit(b, b.upper);
+      p.start(k) = to_fit(b, current.at(b.key));
+      // Steps well above the integrator's relative tolerance (simulate.cpp), far below the box.
+      p.difference_step(k) = 1e-4 * (p.upper(k) - p.lower(k));
+    }
+    p.residuals = [&](const Eigen::VectorXd& x) { return residuals(with(keys, x), which); };
+    fitting::LeastSquaresSettings s;
+    s.max_evaluations = max_evaluations;
+    s.xtol_rel = kFitRelativeTolerance;
+    s.initial_step_share = initial_step_share;
+    s.polish_iterations = polish_iterations;
+    auto r = fitting::fit_least_squares(p, s);
+    current = with(keys, r.x);
+    return r;
+  }
+
+  Indices of_kind(SoilTestKind kind) const {
+    Indices out;
+    for (std::size_t i = 0; i < tests.size(); ++i)
+      if (tests[i].kind == kind) out.push_back(i);
+    return out;
+  }
+  Indices all() const {
+    Indices out(tests.size());
+    for (std::size_t i = 0; i < tests.size(); ++i) out[i] = i;
+    return out;
+  }
+};
+
+// Row index where gamma first reaches 80 % of the test's last gamma.
+std::size_t last_fifth_start(const SoilTest& t) {
+  std::size_t i = 0;
+  while (i + 1 < t.rows() && t.control[i] < 0.8 * t.control.back()) ++i;
+  return i;
+}
+
+bool at_critical_state(const SoilTest& t) {
+  const std::size_t i = last_fifth_start(t), j = t.rows() - 1;
+  const double ratio_change =
+      std::abs(t.tau_kPa[j] / t.sigma_n_kPa[j] - t.tau_kPa[i] / t.sigma_n_kPa[i]);
+  return ratio_change < kCriticalRatioChange && std::abs(t.e[j] - t.e[i]) < kCriticalVoidChange;
+}
+
+// The shear tests whose end is a critical state; all shear tests (with a note) if none is.
+Indices critical_tests(const Calibrator& c) {
+  Indices shear = c.of_kind(SoilTestKind::kSimpleShear), out;
+  for (const auto i : shear)
+    if (at_critical_state(c.tests[i])) out.push_back(i);
+  return out;
+}
+
+void stage_phi_c(Calibrator& c, const Indices& critical) {
+  if (critical.empty()) {
+    c.notes.push_back(
+        "A: no simple-shear test ends at a critical state (tau/sigma_n and e stationary "
+        "over the last fifth); phi_c starts from 30 deg and is left to the joint fit");
+    return;
+  }
+  double eta = 0.0;
+  for (const auto i : critical) eta += c.tests[i].tau_kPa.back() / c.tests[i].sigma_n_kPa.back();
+  eta /= double(critical.size());
+  c.current["phi_c_deg"] = models::friction_angle_of_simple_shear_ratio(eta) * 180.0 / M_PI;
+  c.notes.push_back(
+      fmt::format("A: residual tau/sigma_n = {:.5f} over {} test(s) at critical state -> "
+                  "phi_c = {:.3f} deg through the simple-shear critical state "
+                  "(tan phi_c would be {:.3f})",
+                  eta, critical.size(), c.current["phi_c_deg"],
+                  std::tan(c.current["phi_c_deg"] * M_PI / 180.0)));
+}
+
+void stage_compression(Calibrator& c, const CalibrationOptions& o) {
+  const Indices oedo = c.of_kind(SoilTestKind::kOedometer);
+  if (oedo.empty()) {
+    c.notes.push_back("B: no oedometer test; h_s and n are left to the joint fit");
+    return;
+  }
+  const auto r =
+      c.fit({"hs_kPa", "n"}, oedo, o.max_evaluations_per_stage, 0.0, o.polish_iterations);
+  c.notes.push_back(
+      fmt::format("B: h_s = {:.4g} kPa, n = {:.4f} from {} oedometer test(s), RMS "
+                  "residual {:.3g} scatter units ({})",
+                  c.current["hs_kPa"], c.current["n"], oedo.size(), r.rmse, r.stop_reason));
+}
+
+void stage_void_ratios(Calibrator& c, const Indices& critical) {
+  if (critical.empty()) {
+    c.notes.push_back(
+        "C: no critical state reached; e_c0 starts from the loosest test and is left to the joint "
+        "fit");
+    return;
+  }
+  // Bauer (eq. 5.13): e_c = e_c0 exp(-(p/h_s)^n) with p = -tr T = 3 sigma_n at the critical state
+  // of simple shear (sigma_p -> sigma_n there; vw3d README).
+  double ec0 = 0.0;
+  for (const auto i : critical) {
+    const auto& t = c.tests[i];
+    ec0 += t.e.back() /
+           std::exp(-std::pow(3.0 * t.sigma_n_kPa.back() / c.current["hs_kPa"], c.current["n"]));
+  }
+  c.current["ec0"] = ec0 / double(critical.size());
+  set_limits_from_ec0(c.current);
+  c.notes.push_back(
+      fmt::format("C: e_c0 = {:.4f} from the critical void ratios of {} test(s); e_i0 = "
+                  "{} e_c0, e_d0 = {} e_c0 as starting values",
+                  c.current["ec0"], critical.size(), kEi0OverEc0, kEd0OverEc0));
+}
+
+void stage_density(Calibrator& c, const CalibrationOptions& o) {
+  const auto r =
+      c.fit({"alpha", "beta"}, c.all(), o.max_evaluations_per_stage, 0.0, o.polish_iterations);
+  c.notes.push_back(
+      fmt::format("D: alpha = {:.4f}, beta = {:.4f} from all tests, RMS residual {:.3g} ({})",
+                  c.current["alpha"], c.current["beta"], r.rmse, r.stop_reason));
+}
+
+// Start: middle-of-the-box exponents, void ratios around the loosest initial state.
+models::ParameterValues starting_values(const std::vector<SoilTest>& tests) {
+  double loosest = 0.0;
+  for (const auto& t : tests) loosest = std::max(loosest, t.e0);
+  models::ParameterValues v{{"phi_c_deg", 30.0},     {"hs_kPa", 1e6}, {"n", 0.3},
+                            {"ec0", 1.05 * loosest}, {"alpha", 0.15}, {"beta", 1.0}};
+  set_limits_from_ec0(v);
+  return v;
+}
+
+// Judged at the scatter the residual scales declare (s^2 >= 1): a noise-free synthetic target
+// has s^2 ~ 0 and would otherwise call every direction with J != 0 identified.
+double identifiability_sigma(const fitting::LeastSquaresResult& r, Eigen::Index k) {
+  const double m = double(r.residuals.size()), p = double(r.x.size());
+  const double s2 = r.residuals.squaredNorm() / std::max(m - p, 1.0);
+  return std::sqrt(std::max(s2, 1.0) * r.unit_covariance(k, k));
+}
+
+bool unidentified(const fitting::LeastSquaresResult& r, const BoxEntry& b, Eigen::Index k) {
+  const double s = identifiability_sigma(r, k);
+  return !std::isfinite(s) ||
+         s > kUnidentifiedShareOfBox * (to_fit(b, b.upper) - to_fit(b, b.lower));
+}
+
+}  // namespace
+
+models::ParameterValues CalibrationResult::values() const {
+  models::ParameterValues v;
+  for (const auto& p : parameters) v[p.key] = p.value;
+  return v;
+}
+
+CalibrationResult calibrate(const std::vector<SoilTest>& tests, const CalibrationOptions& o) {
+  if (tests.empty()) throw InputError("calibrate: no soil tests given");
+  const auto t0 = std::chrono::steady_clock::now();
+  Calibrator c{tests, o, starting_values(tests), 0, {}};
+  const Indices critical = critical_tests(c);
+  stage_phi_c(c, critical);
+  // h_s, n and e_c0 depend on each other only weakly (e_c0 through exp(-(3 sigma_n/h_s)^n) ~ 0.9,
+  // the oedometric curve through the limits): two passes settle them.
+  const int passes = c.of_kind(SoilTestKind::kOedometer).empty() ? 1 : 2;
+  for (int pass = 0; pass < passes; ++pass) {
+    stage_compression(c, o);
+    stage_void_ratios(c, critical);
+  }
+  stage_density(c, o);
+
+  Keys keys;
+  for (const auto& b : kBox) keys.push_back(b.key);
+  auto joint =
+      c.fit(keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
+  Keys by_factor;
+  for (const char* limit : {"ed0", "ei0"}) {
+    const auto k = Eigen::Index(std::find(keys.begin(), keys.end(), limit) - keys.begin());
+    if (unidentified(joint, box(limit), k)) by_factor.push_back(limit);
+  }
+  if (!by_factor.empty()) {  // fix them by the factors and refit the rest
+    c.limits_follow_ec0 = true;
+    std::erase_if(keys, [&](const std::string& k) { return k == "ed0" || k == "ei0"; });
+    joint =
+        c.fit(keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
+  }
+  c.notes.push_back(
+      fmt::format("E: joint fit of {} parameters on {} tests: RMS residual {:.3g} scatter "
+                  "units, {} ({} evaluations in all)",
+                  keys.size(), tests.size(), joint.rmse, joint.stop_reason, c.evaluations));
+
+  CalibrationResult out;
+  out.model = o.model;
+  const double m = double(joint.residuals.size()), p = double(keys.size());
+  out.s2 = joint.residuals.squaredNorm() / std::max(m - p, 1.0);
+  for (const auto& b : kBox) {
+    const double none = std::numeric_limits<double>::infinity();
+    ParameterEstimate e{b.key, c.current.at(b.key), none, none, false, "", b.lower, b.upper};
+    const auto it = std::find(keys.begin(), keys.end(), b.key);
+    if (it == keys.end()) {
+      e.how = fmt::format(
+          "not identifiable from these tests: set to {} e_c0 (Herle & Gudehus 1999 factor)",
+          std::string(b.key) == "ei0" ? kEi0OverEc0 : kEd0OverEc0);
+    } else {
+      const auto k = Eigen::Index(it - keys.begin());
+      e.identified = !unidentified(joint, b, k);
+      // ln h_s: sigma(h_s) = h_s sigma(ln h_s) to first order
+      e.sigma = b.logarithmic ? e.value * joint.sigma(k) : joint.sigma(k);
+      e.sigma_at_scatter = b.logarithmic ? e.value * identifiability_sigma(joint, k)
+                                         : identifiability_sigma(joint, k);
+      e.how = e.identified
+                  ? "joint fit (Gauss-Newton sigma)"
+                  : fmt::format(
+                        "NOT IDENTIFIED: at the declared scatter its sigma would be {:.3g}, "
+                        "beyond {} of its box [{:g}, {:g}]",
+                        e.sigma_at_scatter, kUnidentifiedShareOfBox, b.lower, b.upper);
+    }
+    out.parameters.push_back(e);
+  }
+  for (const auto& k : by_factor)
+    c.notes.push_back(
+        fmt::format("{} is not identifiable from these tests (sigma beyond {} of its box): "
+                    "set from e_c0 by the usual factor",
+                    k, kUnidentifiedShareOfBox));
+  for (const auto& t : tests) {
+    const Simulated s = simulate(t, o.model, c.inputs(c.current));
+    TestFit f{t.name,
+              to_string(t.kind),
+              t.kind == SoilTestKind::kOedometer ? "" : driver::to_string(t.boundary),
+              s.status,
+              s.rows(),
+              t.rows(),
+              {}};
+    const auto rmse = [&](const std::string& column, const std::vector<double>& model,
+                          const std::vector<double>& data) {
+      double sum = 0.0;
+      for (std::size_t i = 0; i < model.size(); ++i)
+        sum += (model[i] - data[i]) * (model[i] - data[i]);
+      f.rmse.push_back({column, std::sqrt(sum / double(std::max<std::size_t>(model.size(), 1)))});
+    };
+    rmse("e", s.e, t.e);
+    if (t.kind == SoilTestKind::kSimpleShear) {
+      rmse("tau_kPa", s.tau_kPa, t.tau_kPa);
+      rmse("sigma_n_kPa", s.sigma_n_kPa, t.sigma_n_kPa);
+    }
+    out.tests.push_back(f);
+  }
+  out.notes = c.notes;
+  out.evaluations = c.evaluations;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace iwb::calibration

@@ -1,0 +1,97 @@
+#pragma once
+// Calibration of the hypoplastic parameters (phi_c, h_s, n, e_c0, e_d0, e_i0, alpha, beta) from
+// soil tests, in the order of Herle & Gudehus (1999), each stage a bounded least-squares fit
+// (src/fitting) of the model driven along the tests' own control (simulate.hpp):
+//   A  phi_c  from the critical state of the simple-shear tests: the residual tau/sigma_n
+//             inverted through the model's own critical-state relation (not tan phi_c);
+//   B  h_s, n from the oedometric compression curves e(sigma_v);
+//   C  e_c0   from the critical void ratios of the simple-shear tests through Bauer's law;
+//             e_i0, e_d0 from e_c0 with the usual factors (kEi0OverEc0, kEd0OverEc0);
+//   D  alpha, beta from all tests (peak and dilatancy of the dense shear tests, the oedometric
+//             stiffness);
+//   E  all eight jointly on all tests, from the staged estimate; Gauss-Newton covariance. A
+//             parameter the data do not determine (singular direction, or one sigma at the
+//             declared scatter above kUnidentifiedShareOfBox of its calibration box) is flagged;
+//             e_d0 and e_i0 so flagged are set from e_c0 by the factors and the rest refitted, and
+//             the output says so.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "calibration/soil_test.hpp"
+#include "models/parameters.hpp"
+
+namespace iwb::calibration {
+
+// Herle & Gudehus (1999): e_i0 ~ 1.2 e_c0 (their e_i0/e_c0 for sands, 1.15-1.2); e_d0 near
+// e_min, taken as 0.6 e_c0 here (Table 5.2 sands: 0.61/0.96 = 0.64 Hostun). Used as the start of
+// the fit and for what the data cannot identify.
+inline constexpr double kEi0OverEc0 = 1.2;
+inline constexpr double kEd0OverEc0 = 0.6;
+
+// Residual scales: a residual is (model - measured) / scale, so one unit is a typical measurement
+// scatter and s^2 of the fit near 1 means a fit to the scatter. tau and sigma_n are scaled by
+// the test's sigma0 (a stress-ratio error), e by itself.
+inline constexpr double kStressRatioScale = 0.01;
+inline constexpr double kVoidRatioScale = 0.002;
+// Residual of a row the model did not reach (inadmissible start, domain left): the penalty that
+// keeps the optimiser away from such parameters.
+inline constexpr double kUnreachedResidual = 1e3;
+// Flag a parameter as not identified when one sigma exceeds this share of its box.
+inline constexpr double kUnidentifiedShareOfBox = 0.25;
+// A shear test is at critical state when over its last fifth tau/sigma_n changes by less than
+// kCriticalRatioChange and e by less than kCriticalVoidChange.
+inline constexpr double kCriticalRatioChange = 0.01;
+inline constexpr double kCriticalVoidChange = 0.002;
+
+struct CalibrationOptions {
+  std::string model = "vw3d";
+  int max_evaluations_per_stage = 300;
+  int max_evaluations_joint = 100;  // BOBYQA's share; Levenberg-Marquardt finishes (fitting/)
+  int polish_iterations = 30;
+};
+
+struct ParameterEstimate {
+  std::string key;  // as in the parameter file: phi_c_deg, hs_kPa, ...
+  double value = 0.0;
+  double sigma = 0.0;  // one standard deviation, s^2 (J^T J)^-1; inf when singular
+  // The same at the declared scatter (s^2 = 1 if the fit is better than that): what decides
+  // `identified`, and what a noisy test of the same design would give.
+  double sigma_at_scatter = 0.0;
+  bool identified = true;
+  std::string how;                  // which stage or rule set it
+  double lower = 0.0, upper = 0.0;  // calibration box
+};
+
+struct ChannelError {
+  std::string column;  // contract column, with its unit
+  double rmse = 0.0;
+};
+
+struct TestFit {
+  std::string name, test, boundary, status;
+  std::size_t rows_reached = 0, rows = 0;
+  std::vector<ChannelError> rmse;
+};
+
+struct CalibrationResult {
+  std::string model;
+  std::vector<ParameterEstimate> parameters;
+  std::vector<TestFit> tests;
+  std::vector<std::string> notes;  // what was assumed, what was not identifiable, stage summaries
+  double s2 = 0.0;                 // residual variance of the joint fit in scatter units
+  int evaluations = 0;
+  double seconds = 0.0;
+  models::ParameterValues values() const;
+};
+
+CalibrationResult calibrate(const std::vector<SoilTest>& tests,
+                            const CalibrationOptions& options = {});
+
+// The parameter file (data/params format, header comment: source and fit quality) and
+// calibration.json next to it.
+void write_calibration(const CalibrationResult& result, const std::filesystem::path& toml_file,
+                       const std::vector<SoilTest>& tests, const std::string& command_line);
+
+}  // namespace iwb::calibration

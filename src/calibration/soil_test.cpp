@@ -1,0 +1,183 @@
+#include "calibration/soil_test.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/errors.hpp"
+#include "io/csv_table.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::calibration {
+
+namespace fs = std::filesystem;
+
+const char* to_string(SoilTestKind k) {
+  return k == SoilTestKind::kOedometer ? "oedometer" : "simpleshear";
+}
+
+std::size_t SoilTest::loading_end() const {
+  return std::size_t(std::max_element(control.begin(), control.end()) - control.begin());
+}
+
+namespace {
+
+nlohmann::json read_manifest(const fs::path& file) {
+  if (!fs::exists(file))
+    throw InputError(fmt::format("{}: missing (not a soil-test directory)", file.string()));
+  try {
+    return nlohmann::json::parse(io::read_file(file));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not valid JSON: {}", file.string(), e.what()));
+  }
+}
+
+template <class T>
+T require(const nlohmann::json& m, const std::string& key, const fs::path& file, const char* what) {
+  if (!m.contains(key))
+    throw InputError(fmt::format("{}: missing key '{}' ({})", file.string(), key, what));
+  try {
+    return m.at(key).get<T>();
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(
+        fmt::format("{}: key '{}' = {} is not {}", file.string(), key, m.at(key).dump(), what));
+  }
+}
+
+double require_positive(const nlohmann::json& m, const std::string& key, const fs::path& file,
+                        const char* what) {
+  const double v = require<double>(m, key, file, what);
+  if (!(v > 0.0) || !std::isfinite(v))
+    throw InputError(
+        fmt::format("{}: key '{}' = {:g} must be positive ({})", file.string(), key, v, what));
+  return v;
+}
+
+void read_header(SoilTest& t, const fs::path& file) {
+  const auto m = read_manifest(file);
+  if (require<std::string>(m, "kind", file, "\"soiltest\"") != "soiltest")
+    throw InputError(
+        fmt::format("{}: key 'kind' = {} should be \"soiltest\"", file.string(), m["kind"].dump()));
+  const auto test = require<std::string>(m, "test", file, "\"oedometer\" or \"simpleshear\"");
+  if (test == "oedometer") {
+    t.kind = SoilTestKind::kOedometer;
+    t.sigma0_kPa = require_positive(m, "sigma_v0_kPa", file, "initial vertical stress, kPa");
+  } else if (test == "simpleshear") {
+    t.kind = SoilTestKind::kSimpleShear;
+    t.sigma0_kPa = require_positive(m, "sigma_n0_kPa", file, "initial normal stress, kPa");
+    t.boundary =
+        driver::parse_boundary_kind(require<std::string>(m, "boundary", file, "\"CNL\" or \"CV\""),
+                                    file.string() + ": key 'boundary'");
+    if (t.boundary == driver::BoundaryKind::kCNS)
+      throw InputError(
+          fmt::format("{}: key 'boundary' = \"CNS\": soil tests are CNL or CV", file.string()));
+  } else {
+    throw InputError(fmt::format(
+        "{}: key 'test' = \"{}\" should be \"oedometer\" or \"simpleshear\"", file.string(), test));
+  }
+  t.e0 = require_positive(m, "e0", file, "initial void ratio");
+  if (m.contains("K0")) t.K0 = require_positive(m, "K0", file, "initial lateral stress ratio");
+  t.source = require<std::string>(m, "source", file, "\"dem:<engine>\" or \"synthetic:<model>\"");
+  if (m.contains("source_parameters")) t.source_parameters = m["source_parameters"];
+  if (m.contains("status") && m["status"] != "complete")
+    throw InputError(
+        fmt::format("{}: status {} is not \"complete\"", file.string(), m["status"].dump()));
+}
+
+// Line of data row i in timeseries.csv: the header is line 1.
+std::size_t line_of(std::size_t row) {
+  return row + 2;
+}
+
+void check_monotonic(const SoilTest& t, const fs::path& file) {
+  const char* column = t.kind == SoilTestKind::kOedometer ? "sigma_v_kPa" : "gamma";
+  const std::size_t peak = t.kind == SoilTestKind::kOedometer ? t.loading_end() : t.rows() - 1;
+  for (std::size_t i = 1; i < t.rows(); ++i) {
+    const bool loading = i <= peak;
+    const bool ok = loading ? t.control[i] > t.control[i - 1] : t.control[i] < t.control[i - 1];
+    if (!ok)
+      throw InputError(
+          fmt::format("{}:{}: column '{}' = {:g} after {:g}: the {} must be strictly {} here ({})",
+                      file.string(), line_of(i), column, t.control[i], t.control[i - 1],
+                      t.kind == SoilTestKind::kOedometer ? "vertical stress" : "shear strain",
+                      loading ? "increasing" : "decreasing",
+                      t.kind == SoilTestKind::kOedometer
+                          ? "one loading branch, then at most one unloading branch"
+                          : "monotonic shear"));
+  }
+}
+
+void read_columns(SoilTest& t, const fs::path& file) {
+  if (!fs::exists(file)) throw InputError(fmt::format("{}: missing", file.string()));
+  const io::CsvTable table = io::read_csv_table(file);
+  const auto need = [&](const std::string& name) { return table.values(name, file.string()); };
+  t.e = need("e");
+  if (t.kind == SoilTestKind::kOedometer) {
+    t.control = need("sigma_v_kPa");
+    t.eps_v = need("eps_v");
+  } else {
+    t.control = need("gamma");
+    t.tau_kPa = need("tau_kPa");
+    t.sigma_n_kPa = need("sigma_n_kPa");
+  }
+  if (t.rows() < kMinimumRows)
+    throw InputError(fmt::format("{}: {} data rows; a soil test needs at least {}", file.string(),
+                                 t.rows(), kMinimumRows));
+  for (std::size_t i = 0; i < t.rows(); ++i)
+    if (!(t.e[i] > 0.0))
+      throw InputError(fmt::format("{}:{}: column 'e' = {:g} is not a void ratio (> 0)",
+                                   file.string(), line_of(i), t.e[i]));
+  check_monotonic(t, file);
+}
+
+std::string timeseries_csv(const SoilTest& t) {
+  io::CsvTable table;
+  if (t.kind == SoilTestKind::kOedometer) {
+    table.columns = {"sigma_v_kPa", "eps_v", "e"};
+    for (std::size_t i = 0; i < t.rows(); ++i)
+      table.rows.push_back({t.control[i], t.eps_v[i], t.e[i]});
+  } else {
+    table.columns = {"gamma", "tau_kPa", "sigma_n_kPa", "e"};
+    for (std::size_t i = 0; i < t.rows(); ++i)
+      table.rows.push_back({t.control[i], t.tau_kPa[i], t.sigma_n_kPa[i], t.e[i]});
+  }
+  return table.to_csv(12);
+}
+
+}  // namespace
+
+SoilTest read_soil_test(const fs::path& dir) {
+  SoilTest t;
+  t.name = dir.string();
+  read_header(t, dir / "manifest.json");
+  read_columns(t, dir / "timeseries.csv");
+  return t;
+}
+
+void write_soil_test(const SoilTest& t, const fs::path& dir, bool force,
+                     const nlohmann::json& extra) {
+  nlohmann::json m = extra;
+  m["kind"] = "soiltest";
+  m["test"] = to_string(t.kind);
+  if (t.kind == SoilTestKind::kOedometer) {
+    m["sigma_v0_kPa"] = t.sigma0_kPa;
+    m["oedometer_path"] = t.loading_end() + 1 < t.rows() ? "loading-unloading" : "loading";
+  } else {
+    m["sigma_n0_kPa"] = t.sigma0_kPa;
+    m["boundary"] = driver::to_string(t.boundary);
+  }
+  m["e0"] = t.e0;
+  if (t.K0 > 0.0) m["K0"] = t.K0;
+  m["source"] = t.source;
+  m["source_parameters"] = t.source_parameters;
+  m["conventions"] = {{"signs", "compression positive (sigma, eps_v); tau has the sign of gamma"},
+                      {"units", "kPa; strains and void ratio dimensionless"}};
+  m["files"] = {"timeseries.csv"};
+  m["status"] = "complete";
+  io::prepare_run_directory(dir, force);
+  io::write_atomically(dir / "timeseries.csv", timeseries_csv(t));
+  io::write_manifest(dir, m);
+}
+
+}  // namespace iwb::calibration

@@ -1,0 +1,52 @@
+#pragma once
+// The soil-test run-directory contract (README.md here): element tests on the soil alone, from a
+// DEM cell or a continuum model, that the hypoplastic parameters are calibrated against.
+//   manifest.json   kind "soiltest", test "oedometer" | "simpleshear", initial state, source
+//   timeseries.csv  named, unit-carrying columns; compression positive (CONVENTIONS.md)
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "driver/control.hpp"
+
+namespace iwb::calibration {
+
+enum class SoilTestKind { kOedometer, kSimpleShear };
+
+const char* to_string(SoilTestKind k);
+
+struct SoilTest {
+  std::string name;  // the directory it was read from or is written to (messages, reports)
+  SoilTestKind kind = SoilTestKind::kOedometer;
+  driver::BoundaryKind boundary = driver::BoundaryKind::kCNL;  // simple shear: CNL or CV
+  double sigma0_kPa = 0.0;  // sigma_v0 (oedometer) or sigma_n0 (simple shear)
+  double e0 = 0.0;
+  double K0 = 0.0;     // lateral / vertical stress at the start; 0 = not given: 1 - sin(phi_c)
+  std::string source;  // "dem:<engine>" or "synthetic:<model>"
+  nlohmann::json source_parameters = nlohmann::json::object();  // what a synthetic source used
+
+  // One entry per row of timeseries.csv. Oedometer: sigma_kPa = sigma_v (the control), e and
+  // eps_v measured. Simple shear: gamma (the control), tau_kPa, sigma_kPa = sigma_n, e measured.
+  std::vector<double> control;  // sigma_v_kPa (oedometer) or gamma (simple shear)
+  std::vector<double> e, eps_v, tau_kPa, sigma_n_kPa;
+
+  std::size_t rows() const { return control.size(); }
+  // Index of the largest sigma_v: the end of the loading branch (oedometer).
+  std::size_t loading_end() const;
+};
+
+// Reads and validates a soil-test directory. InputError naming the file (and line, key, value)
+// for: a missing file, a wrong or missing manifest key, a missing column, a non-number or NaN,
+// fewer than kMinimumRows rows, and a control that is not monotonic (gamma must increase;
+// sigma_v must increase to its maximum and then, if unloaded, decrease).
+SoilTest read_soil_test(const std::filesystem::path& dir);
+
+inline constexpr std::size_t kMinimumRows = 3;
+
+// Writes manifest.json and timeseries.csv atomically (io/run_directory). `extra` is merged into
+// the manifest (command line, workbench version, timing).
+void write_soil_test(const SoilTest& test, const std::filesystem::path& dir, bool force,
+                     const nlohmann::json& extra);
+
+}  // namespace iwb::calibration

@@ -1,0 +1,30 @@
+#pragma once
+// Synthetic soil tests: the contract filled by a continuum model with known parameters, the
+// target on which a calibration must find those parameters again (`iwb soiltest synthetic`).
+#include <optional>
+#include <string>
+
+#include "calibration/simulate.hpp"
+
+namespace iwb::calibration {
+
+struct SyntheticSpec {
+  std::string model = "vw3d";
+  SoilTestKind kind = SoilTestKind::kOedometer;
+  driver::BoundaryKind boundary = driver::BoundaryKind::kCNL;  // simple shear
+  std::optional<double> e0;  // default: the critical void ratio at the initial mean stress
+  double sigma0_kPa = 100.0;
+  // oedometer: loading to sigma_max in geometric steps, then unloading to sigma_end (none if
+  // sigma_end >= sigma_max)
+  double sigma_max_kPa = 2000.0;
+  double sigma_end_kPa = 100.0;
+  double gamma_max = 1.0;  // simple shear: monotonic to this engineering shear strain
+  int rows = 40;           // data rows per branch
+};
+
+// The test `spec` describes, run through `spec.model` with `inputs`; source "synthetic:<model>"
+// and the parameters in source_parameters. InputError if the model refuses the initial state or
+// the run does not complete (a synthetic target must be whole).
+SoilTest synthesise(const SyntheticSpec& spec, const models::ModelInputs& inputs);
+
+}  // namespace iwb::calibration

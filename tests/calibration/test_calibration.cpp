@@ -1,0 +1,122 @@
+// Calibration from soil tests (issue 7, item 2): on synthetic targets made by vw3d with Table 5.2
+// Hostun, the staged fit finds the parameters again within their reported uncertainty, and
+// flags what the tests cannot determine.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <ctime>
+
+#include "calibration/calibrate.hpp"
+#include "calibration/synthetic.hpp"
+#include "support/fixtures.hpp"
+
+using namespace iwb;
+using calibration::SoilTestKind;
+using driver::BoundaryKind;
+
+namespace {
+
+calibration::SoilTest target(SoilTestKind kind, BoundaryKind bc, double e0,
+                             const std::string& name) {
+  calibration::SyntheticSpec s;
+  s.kind = kind;
+  s.boundary = bc;
+  s.e0 = e0;
+  if (kind == SoilTestKind::kOedometer) {
+    s.sigma0_kPa = 10.0;
+    s.sigma_max_kPa = 5000.0;
+    s.sigma_end_kPa = 100.0;
+    s.rows = 30;
+  } else {
+    s.gamma_max = 2.0;
+    s.rows = 40;
+  }
+  auto t = calibration::synthesise(s, test::table_5_2_hostun());
+  t.name = name;
+  return t;
+}
+
+std::vector<calibration::SoilTest> hostun_targets() {
+  return {target(SoilTestKind::kOedometer, BoundaryKind::kCNL, 0.85, "oedometer"),
+          target(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.65, "dense CNL"),
+          target(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.90, "loose CNL"),
+          target(SoilTestKind::kSimpleShear, BoundaryKind::kCV, 0.70, "dense CV"),
+          target(SoilTestKind::kSimpleShear, BoundaryKind::kCV, 0.88, "loose CV")};
+}
+
+void explain(const calibration::CalibrationResult& r, const models::ParameterValues& truth) {
+  for (const auto& n : r.notes) UNSCOPED_INFO(n);
+  UNSCOPED_INFO(r.seconds << " s, " << r.evaluations << " evaluations, s2 " << r.s2);
+  for (const auto& t : r.tests)
+    for (const auto& c : t.rmse)
+      UNSCOPED_INFO(t.name << ": RMSE " << c.column << " " << c.rmse << " (" << t.status << ")");
+  for (const auto& p : r.parameters)
+    UNSCOPED_INFO(p.key << " = " << p.value << " +- " << p.sigma << " (at scatter "
+                        << p.sigma_at_scatter << "; true " << truth.at(p.key) << ") " << p.how);
+}
+
+const calibration::ParameterEstimate& estimate(const calibration::CalibrationResult& r,
+                                               const std::string& key) {
+  for (const auto& p : r.parameters)
+    if (p.key == key) return p;
+  throw std::logic_error(key);
+}
+
+}  // namespace
+
+// Noise-free targets: the fit residual is the integrator's (rtol 1e-7), so the Gauss-Newton sigma
+// is tiny and the stated tolerance kRecoveryTolerance (relative) applies where it is larger than 3
+// sigma.
+TEST_CASE("calibration recovers the Hostun parameters from synthetic vw3d soil tests",
+          "[calibration]") {
+  constexpr double kRecoveryTolerance = 1e-4;
+  const std::clock_t cpu0 = std::clock();
+  const auto tests = hostun_targets();
+  const auto r = calibration::calibrate(tests);
+  const double cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  const auto truth = test::table_5_2_hostun().tables.at("hypoplastic");
+  explain(r, truth);
+  UNSCOPED_INFO("CPU " << cpu_seconds << " s");
+  // CPU, not wall time: about 11 s here, while the wall time on this shared 2-core machine ranged
+  // from 21 s to 58 s with DEM runs and builds beside it.
+  CHECK(cpu_seconds < 30.0);
+  for (const auto& p : r.parameters) {
+    INFO(p.key << " = " << p.value << " +- " << p.sigma << ", true " << truth.at(p.key));
+    CHECK(p.identified);
+    CHECK(std::isfinite(p.sigma));
+    CHECK(std::abs(p.value - truth.at(p.key)) <=
+          std::max(3.0 * p.sigma, kRecoveryTolerance * truth.at(p.key)));
+  }
+  // the staged estimate of phi_c (stage A) already within 0.1 deg: the critical ratio is the
+  // model's
+  CHECK(r.notes.front().find("phi_c = 31.0") != std::string::npos);
+  for (const auto& t : r.tests) {
+    INFO(t.name);
+    CHECK(t.status == "complete");
+    CHECK(t.rows_reached == t.rows);
+    for (const auto& c : t.rmse)
+      CHECK(c.rmse < (c.column == "e" ? 1e-4 : 0.05));  // kPa for stresses
+  }
+}
+
+// Two loose shear tests and no oedometer: the critical state (phi_c, e_c0) and the dilatancy near
+// it (alpha) are there, the compression law (h_s, n), the stiffness exponent beta and the limits
+// e_d0, e_i0 are not. The calibration must flag them rather than print a number, and set the
+// limits from e_c0.
+TEST_CASE("calibration flags what loose-only tests cannot identify", "[calibration]") {
+  std::vector<calibration::SoilTest> tests = {
+      target(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.90, "loose CNL"),
+      target(SoilTestKind::kSimpleShear, BoundaryKind::kCV, 0.88, "loose CV")};
+  const auto r = calibration::calibrate(tests);
+  const auto truth = test::table_5_2_hostun().tables.at("hypoplastic");
+  explain(r, truth);
+  for (const std::string key : {"hs_kPa", "n", "beta", "ed0", "ei0"}) {
+    INFO(key);
+    CHECK_FALSE(estimate(r, key).identified);
+  }
+  CHECK(std::isinf(estimate(r, "ed0").sigma));
+  CHECK(estimate(r, "ed0").how.find("0.6 e_c0") != std::string::npos);
+  CHECK(estimate(r, "ei0").value == Approx(calibration::kEi0OverEc0 * estimate(r, "ec0").value));
+  for (const std::string key : {"phi_c_deg", "ec0", "alpha"}) CHECK(estimate(r, key).identified);
+  CHECK(estimate(r, "phi_c_deg").value == Approx(31.0).margin(0.05));
+  CHECK(estimate(r, "ec0").value == Approx(0.96).margin(0.01));  // traded against h_s, n
+}

@@ -1,0 +1,118 @@
+// The soil-test run-directory contract: a written test reads back as it was, and malformed
+// directories are refused with the file, line, key or column named.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+
+#include "calibration/soil_test.hpp"
+#include "calibration/synthetic.hpp"
+#include "common/errors.hpp"
+#include "support/fixtures.hpp"
+
+using namespace iwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / "soiltest" / name;
+  fs::remove_all(dir);
+  return dir;
+}
+
+calibration::SoilTest small_oedometer() {
+  calibration::SyntheticSpec s;
+  s.sigma0_kPa = 10.0;
+  s.sigma_max_kPa = 400.0;
+  s.sigma_end_kPa = 50.0;
+  s.e0 = 0.85;
+  s.rows = 6;
+  return calibration::synthesise(s, test::table_5_2_hostun());
+}
+
+void write_text(const fs::path& file, const std::string& text) {
+  std::ofstream(file) << text;
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+}  // namespace
+
+TEST_CASE("a synthetic soil test is written and read back row by row", "[calibration]") {
+  const auto t = small_oedometer();
+  const auto dir = fresh_dir("roundtrip");
+  calibration::write_soil_test(t, dir, false, {});
+  const auto back = calibration::read_soil_test(dir);
+  REQUIRE(back.rows() == t.rows());
+  CHECK(back.rows() == 7 + 3);  // 6 loading steps + start, 3 unloading steps
+  CHECK(back.kind == calibration::SoilTestKind::kOedometer);
+  CHECK(back.source == "synthetic:vw3d");
+  CHECK(back.source_parameters["hypoplastic"]["hs_kPa"] == 1e6);
+  CHECK(back.loading_end() == 6);
+  for (std::size_t i = 0; i < t.rows(); ++i) {
+    CHECK(back.e[i] == Approx(t.e[i]).epsilon(1e-11));
+    CHECK(back.control[i] == Approx(t.control[i]).epsilon(1e-11));
+  }
+  CHECK(back.e[6] < back.e[0]);      // compressed
+  CHECK(back.e.back() > back.e[6]);  // swells on unloading
+}
+
+TEST_CASE("malformed soil-test directories are refused naming file, line and column",
+          "[calibration]") {
+  const auto t = small_oedometer();
+  const auto dir = fresh_dir("malformed");
+  calibration::write_soil_test(t, dir, false, {});
+  const std::string csv = read_text(dir / "timeseries.csv");
+  const std::string manifest = read_text(dir / "manifest.json");
+  const auto refused = [&](const std::string& what) {
+    CHECK_THROWS_WITH(calibration::read_soil_test(dir), Catch::Contains(what));
+  };
+  SECTION("missing timeseries") {
+    fs::remove(dir / "timeseries.csv");
+    refused("timeseries.csv: missing");
+  }
+  SECTION("missing manifest") {
+    fs::remove(dir / "manifest.json");
+    refused("manifest.json: missing (not a soil-test directory)");
+  }
+  SECTION("missing column") {
+    write_text(dir / "timeseries.csv",
+               "sigma_v_kPa,eps_v,void_ratio\n10,0,0.8\n20,0.01,0.79\n40,0.02,0.78\n");
+    refused("timeseries.csv: no column 'e'");
+  }
+  SECTION("NaN") {
+    write_text(dir / "timeseries.csv",
+               "sigma_v_kPa,eps_v,e\n10,0,0.8\n20,0.01,nan\n40,0.02,0.78\n");
+    refused("timeseries.csv:3: column 'e' = 'nan' is not a finite number");
+  }
+  SECTION("non-monotonic loading") {
+    write_text(dir / "timeseries.csv",
+               "sigma_v_kPa,eps_v,e\n10,0,0.8\n40,0.01,0.79\n30,0.015,0.795\n50,0.02,0.78\n60,0.03,"
+               "0.77\n");
+    refused(
+        "timeseries.csv:4: column 'sigma_v_kPa' = 30 after 40: the vertical stress must be "
+        "strictly increasing");
+  }
+  SECTION("wrong kind and test") {
+    auto m = nlohmann::json::parse(manifest);
+    m["test"] = "triaxial";
+    write_text(dir / "manifest.json", m.dump());
+    refused("manifest.json: key 'test' = \"triaxial\" should be \"oedometer\" or \"simpleshear\"");
+  }
+  SECTION("simple shear without a boundary") {
+    auto m = nlohmann::json::parse(manifest);
+    m["test"] = "simpleshear";
+    m["sigma_n0_kPa"] = 100;
+    write_text(dir / "manifest.json", m.dump());
+    refused("manifest.json: missing key 'boundary'");
+  }
+  SECTION("negative e0") {
+    auto m = nlohmann::json::parse(manifest);
+    m["e0"] = -0.5;
+    write_text(dir / "manifest.json", m.dump());
+    refused("manifest.json: key 'e0' = -0.5 must be positive");
+  }
+}
