@@ -10,6 +10,7 @@
 
 #include "app/default_job.hpp"
 #include "app/validate.hpp"
+#include "campaign/sweep.hpp"
 #include "comparison/report.hpp"
 #include "dem/crosscheck.hpp"
 #include "dem/engines.hpp"
@@ -147,6 +148,24 @@ int cmd_compare_set(const std::vector<std::string>& runs, const iwb::comparison:
   return 0;
 }
 
+// `iwb sweep`: the campaign, then its verdicts when it names a comparison.
+int cmd_sweep(iwb::campaign::SweepOptions opt) {
+  opt.interrupt = &g_interrupt;
+  opt.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
+  const auto outcome = iwb::campaign::run_sweep(opt);
+  if (opt.emit_slurm) {
+    fmt::print("{} -> submit from {}: sbatch sweep.slurm\n", (outcome.out / "sweep.slurm").string(), outcome.out.string());
+    return 0;
+  }
+  fmt::print("sweep: {} -> {}\n", outcome.record["status"].get<std::string>(), (outcome.out / "sweep.json").string());
+  if (outcome.comparison)
+    for (const auto& check : outcome.comparison->hypotheses["checks"])
+      fmt::print("\n{}\n  {}\n", check["title"].get<std::string>(), check["verdict"].get<std::string>());
+  if (outcome.comparison) fmt::print("\n-> {} (iwb report {})\n", (outcome.out / "compare" / "hypotheses.md").string(),
+                                     (outcome.out / "compare").string());
+  return outcome.complete() ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -158,6 +177,7 @@ int main(int argc, char** argv) {
       "  iwb element data/tests/hvwe_cnl_dense.toml  run one element test into runs/<name>/\n"
       "  iwb run                                     the main job on the embedded default\n"
       "  iwb dem run data/scenes/smoke.toml          a DEM interface-shear scene in LIGGGHTS\n"
+      "  iwb sweep data/sweeps/example.toml -j 2     a campaign of scenes (R_n x d50 x CNL/CNS/CV x seed)\n"
       "  iwb bench element                           cost of the continuum core\n"};
   app.require_subcommand(1);
   const std::string cl = joined(argc, argv);
@@ -242,6 +262,24 @@ int main(int argc, char** argv) {
   compare->add_flag("--allow-partial", copt.allow_partial, "compare a failed or interrupted DEM run");
   compare->add_flag("--force", copt.force, "replace an earlier comparison in the same directory");
 
+  auto* sweep = app.add_subcommand(
+      "sweep",
+      "Run a campaign: the cartesian product of the axes of a sweep file (schema and example: "
+      "data/sweeps/README.md) over a base scene, each job a `dem run` in DIR/runs/<job> with a readable "
+      "name (rn0.5_d2_cnl_s1). Every job's scene is validated first; a bad value refuses the whole sweep. "
+      "At most --jobs run at once with --np ranks each; run it again to continue: complete runs of the same "
+      "scene are reused, stopped ones resumed. DIR/sweep.json tracks every job; Ctrl-C stops cleanly. When the "
+      "sweep names a comparison, the hypothesis checks of `compare --runs` follow into DIR/compare "
+      "(then: iwb report DIR/compare). --emit slurm writes DIR/sweep.slurm (a job array) instead of running.");
+  iwb::campaign::SweepOptions sopt;
+  std::string sweep_file, sweep_out, sweep_emit;
+  sweep->add_option("sweep", sweep_file, "sweep TOML file")->required()->check(CLI::ExistingFile);
+  sweep->add_option("--jobs,-j", sopt.jobs, "jobs at once on this machine (jobs x np should not exceed the cores)")->check(CLI::Range(1, 256))->capture_default_str();
+  sweep->add_option("--np,--threads", sopt.processes, "MPI ranks (LIGGGHTS) or threads (YADE) per job")->check(CLI::Range(1, 256))->capture_default_str();
+  sweep->add_option("--emit", sweep_emit, "write a batch script instead of running: slurm")->check(CLI::IsMember({"slurm"}));
+  sweep->add_option("--out,-o", sweep_out, "campaign directory (default runs/sweep-<sweep file stem>)");
+  sweep->add_option("--stop-after", sopt.stop_after, "stop cleanly once N jobs have ended (running ones are interrupted); run again to continue")->check(CLI::Range(1, 1000000));
+
   auto* report = app.add_subcommand(
       "report", "Write one self-contained HTML report (inline SVG figures, opens offline) from comparison "
                 "directories of `iwb compare`; figures also as SVG and PNG with their data and gnuplot scripts.");
@@ -301,6 +339,13 @@ int main(int argc, char** argv) {
       vopt.engines = split_list(validate_engines);
       vopt.command_line = cl;
       return iwb::app::run_validate(vopt);
+    }
+    if (*sweep) {
+      sopt.sweep_file = sweep_file;
+      sopt.out = sweep_out;
+      sopt.emit_slurm = sweep_emit == "slurm";
+      sopt.command_line = cl;
+      return cmd_sweep(sopt);
     }
     if (*compare && !set_runs.empty()) return cmd_compare_set(set_runs, copt, compare_out, cl);
     if (*compare) {
