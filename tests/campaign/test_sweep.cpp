@@ -59,8 +59,8 @@ TEST_CASE("sweep: a job's scene is the base with its values set in their own tab
 
 TEST_CASE("sweep: [set] keys apply to every job", "[campaign]") {
   const auto jobs = campaign::expand_jobs(campaign::load_sweep("data/sweeps/tiny.toml"));
-  REQUIRE(names(jobs) == std::vector<std::string>{"u0.1", "u0.4", "u0.2"});
-  const std::vector<double> travel_mm = {0.1, 0.4, 0.2};
+  REQUIRE(names(jobs) == std::vector<std::string>{"u0.05", "u10", "u0.1"});  // 10.0 reads as 10
+  const std::vector<double> travel_mm = {0.05, 10.0, 0.1};
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     const auto scene = dem::parse_scene(jobs[i].scene_text, "tiny.toml");
     CHECK(scene.particle_count == 180);
@@ -128,9 +128,9 @@ TEST_CASE("sweep --emit slurm: a job array with one dem run per job, nothing run
   campaign::run_sweep(opt);
   const std::string script = io::read_file(out / "sweep.slurm");
   CHECK_THAT(script, Catch::Contains("#SBATCH --array=0-2\n") && Catch::Contains("#SBATCH --ntasks=2\n"));
-  CHECK_THAT(script, Catch::Contains("  1) \"$IWB\" dem run scenes/u0.4.toml --engine liggghts --np 2 --out runs/u0.4 "
-                                     "$(resume runs/u0.4) ;;"));
-  for (const std::string job : {"u0.1", "u0.4", "u0.2"}) {
+  CHECK_THAT(script, Catch::Contains("  1) \"$IWB\" dem run scenes/u10.toml --engine liggghts --np 2 --out runs/u10 "
+                                     "$(resume runs/u10) ;;"));
+  for (const std::string job : {"u0.05", "u10", "u0.1"}) {
     const std::string text = io::read_file(out / "scenes" / (job + ".toml"));
     CHECK(dem::parse_scene(text, job + ".toml").particle_count == 180);
   }
