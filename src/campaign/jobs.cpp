@@ -85,7 +85,8 @@ std::string job_scene(const SweepSpec& spec, const Job& job) {
   for (const auto& [key, value] : spec.set) io::set_dotted(root, key, value, where);
   for (const auto& [key, value] : job.values) io::set_dotted(root, key, value, where);
   // Comments of the base do not survive re-serialisation; this header says where the text came from.
-  return fmt::format("# {} with {}{}{} (iwb sweep {}, job {})\n", spec.scene_file.string(), describe(spec.set),
+  // File names only: the text's sha256 decides reuse and must not depend on the working directory.
+  return fmt::format("# {} with {}{}{} (iwb sweep {}, job {})\n", spec.scene_file.filename().string(), describe(spec.set),
                      spec.set.empty() || job.values.empty() ? "" : ", ", describe(job.values),
                      spec.file.filename().string(), job.name) +
          io::serialise(root);

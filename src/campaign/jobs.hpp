@@ -17,7 +17,8 @@ struct Job {
   std::string scene_text;       // what the job runs; its sha256 decides reuse
 };
 
-// `source` names the scene in messages and manifests (the job's scenes/<name>.toml).
+// InputError naming the sweep file, the job, its values and the scene's complaint when any job's
+// scene is invalid, or when two jobs would get the same name.
 std::vector<Job> expand_jobs(const SweepSpec& spec);
 
 // Where a job's scene and run live inside the campaign directory.

@@ -139,3 +139,11 @@ TEST_CASE("sweep --emit slurm: a job array with one dem run per job, nothing run
   CHECK_FALSE(fs::exists(out / "sweep.json"));
   CHECK(std::system(("bash -n " + (out / "sweep.slurm").string()).c_str()) == 0);  // the script parses
 }
+
+TEST_CASE("sweep: a job's scene text does not depend on how the sweep file's path is spelled", "[campaign]") {
+  // the text's sha256 decides reuse: running the same sweep from another directory must reuse it
+  const auto relative = campaign::expand_jobs(campaign::load_sweep("data/sweeps/tiny.toml"));
+  const auto absolute = campaign::expand_jobs(campaign::load_sweep(fs::absolute("data/sweeps/tiny.toml")));
+  REQUIRE(relative.size() == absolute.size());
+  for (std::size_t i = 0; i < relative.size(); ++i) CHECK(relative[i].scene_text == absolute[i].scene_text);
+}
