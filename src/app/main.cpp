@@ -12,6 +12,7 @@
 #include "app/default_job.hpp"
 #include "app/stability.hpp"
 #include "app/validate.hpp"
+#include "campaign/sweep.hpp"
 #include "comparison/report.hpp"
 #include "dem/crosscheck.hpp"
 #include "dem/engines.hpp"
@@ -150,6 +151,24 @@ int cmd_compare_set(const std::vector<std::string>& runs, const iwb::comparison:
   return 0;
 }
 
+// `iwb sweep`: the campaign, then its verdicts when it names a comparison.
+int cmd_sweep(iwb::campaign::SweepOptions opt) {
+  opt.interrupt = &g_interrupt;
+  opt.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
+  const auto outcome = iwb::campaign::run_sweep(opt);
+  if (opt.emit_slurm) {
+    fmt::print("{} -> submit from {}: sbatch sweep.slurm\n", (outcome.out / "sweep.slurm").string(), outcome.out.string());
+    return 0;
+  }
+  fmt::print("sweep: {} -> {}\n", outcome.record["status"].get<std::string>(), (outcome.out / "sweep.json").string());
+  if (outcome.comparison)
+    for (const auto& check : outcome.comparison->hypotheses["checks"])
+      fmt::print("\n{}\n  {}\n", check["title"].get<std::string>(), check["verdict"].get<std::string>());
+  if (outcome.comparison) fmt::print("\n-> {} (iwb report {})\n", (outcome.out / "compare" / "hypotheses.md").string(),
+                                     (outcome.out / "compare").string());
+  return outcome.complete() ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -161,6 +180,7 @@ int main(int argc, char** argv) {
       "  iwb element data/tests/hvwe_cnl_dense.toml  run one element test into runs/<name>/\n"
       "  iwb run                                     the main job on the embedded default\n"
       "  iwb dem run data/scenes/smoke.toml          a DEM interface-shear scene in LIGGGHTS\n"
+      "  iwb sweep data/sweeps/example.toml -j 2     a campaign of scenes (R_n x d50 x CNL/CNS/CV x seed)\n"
       "  iwb bench element                           cost of the continuum core\n"
       "  iwb stability hvwe data/params/table_5_1_evaluation.toml   where a model runs and where it stops\n"};
   app.require_subcommand(1);
@@ -246,6 +266,24 @@ int main(int argc, char** argv) {
   compare->add_flag("--allow-partial", copt.allow_partial, "compare a failed or interrupted DEM run");
   compare->add_flag("--force", copt.force, "replace an earlier comparison in the same directory");
 
+  auto* sweep = app.add_subcommand(
+      "sweep",
+      "Run a campaign: the cartesian product of the axes of a sweep file (schema and example: "
+      "data/sweeps/README.md) over a base scene, each job a `dem run` in DIR/runs/<job> with a readable "
+      "name (rn0.5_d2_cnl_s1). Every job's scene is validated first; a bad value refuses the whole sweep. "
+      "At most --jobs run at once with --np ranks each; run it again to continue: complete runs of the same "
+      "scene are reused, stopped ones resumed. DIR/sweep.json tracks every job; Ctrl-C stops cleanly. When the "
+      "sweep names a comparison, the hypothesis checks of `compare --runs` follow into DIR/compare "
+      "(then: iwb report DIR/compare). --emit slurm writes DIR/sweep.slurm (a job array) instead of running.");
+  iwb::campaign::SweepOptions sweep_opt;
+  std::string sweep_file, sweep_out, sweep_emit;
+  sweep->add_option("sweep", sweep_file, "sweep TOML file")->required()->check(CLI::ExistingFile);
+  sweep->add_option("--jobs,-j", sweep_opt.jobs, "jobs at once on this machine (jobs x np should not exceed the cores)")->check(CLI::Range(1, 256))->capture_default_str();
+  sweep->add_option("--np,--threads", sweep_opt.processes, "MPI ranks (LIGGGHTS) or threads (YADE) per job")->check(CLI::Range(1, 256))->capture_default_str();
+  sweep->add_option("--emit", sweep_emit, "write a batch script instead of running: slurm")->check(CLI::IsMember({"slurm"}));
+  sweep->add_option("--out,-o", sweep_out, "campaign directory (default runs/sweep-<sweep file stem>)");
+  sweep->add_option("--stop-after", sweep_opt.stop_after, "stop cleanly once N jobs have ended (running ones are interrupted); run again to continue")->check(CLI::Range(1, 1000000));
+
   auto* report = app.add_subcommand(
       "report", "Write one self-contained HTML report (inline SVG figures, opens offline) from comparison "
                 "directories of `iwb compare`; figures also as SVG and PNG with their data and gnuplot scripts.");
@@ -278,13 +316,13 @@ int main(int argc, char** argv) {
       "density index coloured by the worst outcome). Outcomes: complete, domain error, no convergence, budget "
       "exceeded, inadmissible start, non-finite value, other error. The reduced form takes seconds, --full "
       "(1000-cycle runs) minutes.\n\nExample: iwb stability hvwe data/params/table_5_1_evaluation.toml --full");
-  iwb::app::StabilityOptions sopt;
-  stability->add_option("model", sopt.model, "model name (iwb models)")->required();
-  stability->add_option("params", sopt.params, "parameter file, e.g. data/params/table_5_1_evaluation.toml; "
+  iwb::app::StabilityOptions stability_opt;
+  stability->add_option("model", stability_opt.model, "model name (iwb models)")->required();
+  stability->add_option("params", stability_opt.params, "parameter file, e.g. data/params/table_5_1_evaluation.toml; "
                                                "-igs models need an [intergranular_strain] table (table_5_3_*)")->required();
-  stability->add_flag("--full", sopt.full, "the full sweep (5 values per axis, 1000 cycles) instead of the reduced one");
-  stability->add_option("--out,-o", sopt.out, "output directory (default runs/stability-<model>)");
-  stability->add_option("--budget", sopt.budget_seconds, "wall-clock seconds per point before it is stopped as "
+  stability->add_flag("--full", stability_opt.full, "the full sweep (5 values per axis, 1000 cycles) instead of the reduced one");
+  stability->add_option("--out,-o", stability_opt.out, "output directory (default runs/stability-<model>)");
+  stability->add_option("--budget", stability_opt.budget_seconds, "wall-clock seconds per point before it is stopped as "
                                                           "'budget exceeded' (default 5 reduced, 10 full)")->check(CLI::PositiveNumber);
 
   auto* bench = app.add_subcommand("bench", "Benchmarks that print figures.");
@@ -336,6 +374,13 @@ int main(int argc, char** argv) {
       vopt.command_line = cl;
       return iwb::app::run_validate(vopt);
     }
+    if (*sweep) {
+      sweep_opt.sweep_file = sweep_file;
+      sweep_opt.out = sweep_out;
+      sweep_opt.emit_slurm = sweep_emit == "slurm";
+      sweep_opt.command_line = cl;
+      return cmd_sweep(sweep_opt);
+    }
     if (*compare && !set_runs.empty()) return cmd_compare_set(set_runs, copt, compare_out, cl);
     if (*compare) {
       if (dem_dir.empty()) throw iwb::InputError("compare: give a DEM run directory or --runs DIR...");
@@ -378,7 +423,7 @@ int main(int argc, char** argv) {
       iwb::bench::run_dem_bench(dopt);
       return 0;
     }
-    if (*stability) return iwb::app::run_stability(sopt);
+    if (*stability) return iwb::app::run_stability(stability_opt);
     if (*bench_integrators) {
       iopt.out = iout;
       iwb::bench::run_integrator_bench(iopt);

@@ -1,0 +1,63 @@
+#include "campaign/sweep.hpp"
+
+#include <algorithm>
+#include <fmt/core.h>
+
+#include "campaign/jobs.hpp"
+#include "campaign/pool.hpp"
+#include "campaign/slurm.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::campaign {
+
+namespace fs = std::filesystem;
+
+fs::path default_out(const fs::path& sweep_file) { return fs::path("runs") / ("sweep-" + sweep_file.stem().string()); }
+
+namespace {
+
+void write_scenes(const std::vector<Job>& jobs, const fs::path& out) {
+  fs::create_directories(out / "scenes");
+  for (const auto& job : jobs) io::write_atomically(out / scene_path(job), job.scene_text);
+}
+
+// The hypothesis checks over the runs that completed; failed runs are left out, not compared.
+comparison::RunSetOutcome compare_complete_runs(const Comparison& c, const nlohmann::json& record,
+                                                const SweepOptions& opt, const fs::path& out) {
+  comparison::RunSetOptions set{{}, c.model, c.params.string(), out / "compare", false, true, opt.command_line};
+  // force: DIR/compare belongs to the campaign; a re-run job's comparison is stale, not precious.
+  for (const auto& j : record["jobs"])
+    if (j["status"] == "complete") set.dem_dirs.push_back(out / j["run"].get<std::string>());
+  return comparison::run_hypothesis_set(set);
+}
+
+}  // namespace
+
+SweepOutcome run_sweep(const SweepOptions& opt) {
+  const SweepSpec spec = load_sweep(opt.sweep_file);
+  const std::vector<Job> jobs = expand_jobs(spec);  // refuses the sweep before anything is written
+  SweepOutcome outcome{opt.out.empty() ? default_out(opt.sweep_file) : opt.out, {}, std::nullopt};
+  write_scenes(jobs, outcome.out);
+  if (opt.emit_slurm) {
+    fs::create_directories(outcome.out / "logs");  // Slurm does not create the --output folder
+    io::write_atomically(outcome.out / "sweep.slurm",
+                         slurm_script(jobs, {"iwb-" + opt.sweep_file.stem().string(), opt.processes, spec.slurm_time}));
+    return outcome;
+  }
+  outcome.record = run_jobs(spec, jobs, {outcome.out, opt.jobs, opt.processes, opt.stop_after, opt.command_line,
+                                         opt.interrupt, opt.progress});
+  const bool stopped = outcome.record["status"] == "interrupted";
+  const bool any_complete = std::any_of(outcome.record["jobs"].begin(), outcome.record["jobs"].end(),
+                                        [](const auto& j) { return j["status"] == "complete"; });
+  if (spec.compare && !stopped && any_complete) {
+    if (opt.progress) opt.progress(fmt::format("comparing the complete runs with {} -> {}", spec.compare->model,
+                                               (outcome.out / "compare").string()));
+    outcome.comparison = compare_complete_runs(*spec.compare, outcome.record, opt, outcome.out);
+    outcome.record["compare"] = {{"dir", "compare"}, {"model", spec.compare->model},
+                                 {"params", spec.compare->params.string()}};
+    io::write_atomically(outcome.out / "sweep.json", outcome.record.dump(2) + "\n");
+  }
+  return outcome;
+}
+
+}  // namespace iwb::campaign

@@ -1,0 +1,29 @@
+#pragma once
+// Setting one dotted key of a TOML document: how a campaign derives each job's scene from a base
+// scene. The text is parsed and re-serialised by toml++, so the key lands in its own table
+// whatever the base file's layout (a regex on lines cannot tell [wall] height_d50 from
+// [plate] height_d50). Comments of the base are not kept; callers add a header saying what changed.
+#include <cstdint>
+#include <string>
+#include <toml++/toml.h>
+#include <variant>
+
+namespace iwb::io {
+
+// A single TOML value as a campaign axis may set it (no arrays, tables or dates).
+using TomlScalar = std::variant<std::int64_t, double, bool, std::string>;
+
+// InputError naming `where` when the node is not a plain scalar.
+TomlScalar scalar_of(const toml::node& node, const std::string& where);
+
+// The value as TOML writes it: 0.5, 2, true, "CNL".
+std::string to_toml(const TomlScalar& value);
+
+// `root` with `dotted_key` ("wall.height_d50", "seed") set to `value`; missing tables are created.
+// InputError naming `source` and the key when a part of the path is a value, not a table.
+void set_dotted(toml::table& root, const std::string& dotted_key, const TomlScalar& value,
+                const std::string& source);
+
+std::string serialise(const toml::table& root);
+
+}  // namespace iwb::io

@@ -1,0 +1,149 @@
+// Campaign expansion without an engine: the cartesian product, each job's scene, names, the
+// refusal of a bad value before anything runs, the reuse rule and the Slurm array.
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+
+#include "campaign/job_start.hpp"
+#include "campaign/jobs.hpp"
+#include "campaign/slurm.hpp"
+#include "campaign/sweep.hpp"
+#include "common/errors.hpp"
+#include "dem/scene.hpp"
+#include "io/toml_reader.hpp"
+#include "support/sweep_fixtures.hpp"
+
+using namespace iwb;
+namespace fs = std::filesystem;
+
+namespace {
+std::vector<std::string> names(const std::vector<campaign::Job>& jobs) {
+  std::vector<std::string> out;
+  for (const auto& j : jobs) out.push_back(j.name);
+  return out;
+}
+const campaign::Job& job_named(const std::vector<campaign::Job>& jobs, const std::string& name) {
+  for (const auto& j : jobs)
+    if (j.name == name) return j;
+  FAIL("no job " << name);
+  return jobs.front();
+}
+}  // namespace
+
+TEST_CASE("sweep: the jobs are the cartesian product of the axes, named by their values", "[campaign]") {
+  const auto jobs = campaign::expand_jobs(campaign::load_sweep("data/sweeps/example.toml"));
+  REQUIRE(jobs.size() == 2 * 3 * 2);
+  CHECK(names(jobs) == std::vector<std::string>{
+                           "rn0.25_cnl_s1", "rn0.25_cnl_s2", "rn0.25_cns-50_s1", "rn0.25_cns-50_s2",
+                           "rn0.25_cv_s1",  "rn0.25_cv_s2",  "rn0.5_cnl_s1",     "rn0.5_cnl_s2",
+                           "rn0.5_cns-50_s1", "rn0.5_cns-50_s2", "rn0.5_cv_s1", "rn0.5_cv_s2"});
+  for (const auto& j : jobs) CHECK(j.engine == "liggghts");
+}
+
+TEST_CASE("sweep: a job's scene is the base with its values set in their own tables", "[campaign]") {
+  const auto jobs = campaign::expand_jobs(campaign::load_sweep("data/sweeps/example.toml"));
+  const auto& job = job_named(jobs, "rn0.25_cns-50_s2");
+  const auto scene = dem::parse_scene(job.scene_text, "job.toml");
+  const double d50 = scene.particles.d50_m;
+  CHECK(scene.wall.height_m == Approx(0.25 * d50));
+  CHECK(scene.plate.height_m == Approx(1.0 * d50));  // [plate] height_d50 is another key
+  CHECK(scene.boundary.kind == driver::BoundaryKind::kCNS);
+  CHECK(scene.boundary.K_Pa_per_m == Approx(50e3 / 1e-3));
+  CHECK(scene.seed == 2);
+  CHECK(scene.particle_count == 400);  // untouched keys keep the base's values
+  CHECK(job.scene_text.rfind("# ", 0) == 0);  // a header says where the text came from
+  const auto cv = dem::parse_scene(job_named(jobs, "rn0.5_cv_s1").scene_text, "cv.toml");
+  CHECK(cv.boundary.kind == driver::BoundaryKind::kCV);
+  CHECK(cv.wall.height_m == Approx(0.5 * d50));
+}
+
+TEST_CASE("sweep: [set] keys apply to every job", "[campaign]") {
+  const auto jobs = campaign::expand_jobs(campaign::load_sweep("data/sweeps/tiny.toml"));
+  REQUIRE(names(jobs) == std::vector<std::string>{"u0.05", "u10", "u0.1"});  // 10.0 reads as 10
+  const std::vector<double> travel_mm = {0.05, 10.0, 0.1};
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    const auto scene = dem::parse_scene(jobs[i].scene_text, "tiny.toml");
+    CHECK(scene.particle_count == 180);
+    CHECK(scene.shear.inertial_number == Approx(1e-2));
+    CHECK(scene.shear.displacement_m == Approx(travel_mm[i] * 1e-3));
+  }
+}
+
+TEST_CASE("sweep: a value the scene refuses stops the whole sweep, naming the job, key and value", "[campaign]") {
+  const auto dir = test::campaign_dir("refused");
+  // 5 d50 does not divide the 12 d50 box: the second job is invalid, so none may run
+  const auto file = test::write_sweep(dir, "[[axis]]\nkey = \"wall.pitch_d50\"\nvalues = [2, 5]\n");
+  CHECK_THROWS_MATCHES(campaign::run_sweep(test::sweep_options(file, dir / "out")), InputError,
+                       Catch::Matchers::Predicate<InputError>([](const InputError& e) {
+                         const std::string m = e.what();
+                         return m.find("job pitch_d50-5 (wall.pitch_d50 = 5)") != std::string::npos &&
+                                m.find("does not divide the box length") != std::string::npos &&
+                                m.find("nothing was run") != std::string::npos;
+                       }));
+  CHECK_FALSE(fs::exists(dir / "out"));  // not even the scenes are written
+  const auto typo = test::write_sweep(dir, "[[axis]]\nkey = \"wall.hieght_d50\"\nvalues = [0.5]\n");
+  CHECK_THROWS_WITH(campaign::expand_jobs(campaign::load_sweep(typo)), Catch::Contains("hieght_d50"));
+  const auto not_a_table = test::write_sweep(dir, "[[axis]]\nkey = \"seed.value\"\nvalues = [1]\n");
+  CHECK_THROWS_WITH(campaign::expand_jobs(campaign::load_sweep(not_a_table)),
+                    Catch::Contains("'seed' is a value, not a table"));
+}
+
+TEST_CASE("sweep: unknown engines, missing files and colliding names are refused", "[campaign]") {
+  const auto dir = test::campaign_dir("refused_file");
+  CHECK_THROWS_WITH(campaign::load_sweep(test::write_sweep(dir, "engines = [\"lammps\"]\n")),
+                    Catch::Contains("lammps") && Catch::Contains("liggghts"));
+  CHECK_THROWS_WITH(campaign::load_sweep(test::write_sweep(dir, "[compare]\nparams = \"nope.toml\"\n")),
+                    Catch::Contains("compare.params") && Catch::Contains("no such file"));
+  const auto twins = test::write_sweep(dir, "[[axis]]\nkey = \"seed\"\nvalues = [1, 2]\nlabel = \"x\"\n"
+                                            "[[axis]]\nkey = \"specimen.particles\"\nvalues = [400]\nlabel = \"\"\n"
+                                            "[[axis]]\nkey = \"description\"\nvalues = [\"a b\", \"a-b\"]\n");
+  CHECK_THROWS_WITH(campaign::expand_jobs(campaign::load_sweep(twins)), Catch::Contains("two jobs would be named"));
+  CHECK_THROWS_WITH(campaign::load_sweep(test::write_sweep(dir, "[[axis]]\nkey = \"seed\"\nvalues = []\n")),
+                    Catch::Contains("non-empty list"));
+}
+
+TEST_CASE("sweep: a complete run of the same scene is reused, a stopped one resumed, another scene redone", "[campaign]") {
+  const auto dir = test::campaign_dir("job_start");
+  using campaign::JobStart;
+  CHECK(campaign::how_to_start(dir / "none", "abc") == JobStart::kFresh);
+  const auto manifest = [&](const std::string& status, const std::string& sha) {
+    io::write_manifest(dir, {{"status", status}, {"scene", {{"sha256", sha}}}});
+  };
+  manifest("complete", "abc");
+  CHECK(campaign::how_to_start(dir, "abc") == JobStart::kSkip);
+  CHECK(campaign::how_to_start(dir, "other") == JobStart::kFresh);
+  manifest("interrupted at stage shear", "abc");
+  CHECK(campaign::how_to_start(dir, "abc") == JobStart::kResume);
+  manifest("failed: servo did not converge (stage consolidate)", "abc");
+  CHECK(campaign::how_to_start(dir, "abc") == JobStart::kResume);
+  manifest("running", "abc");  // killed hard: its finished stages are still good
+  CHECK(campaign::how_to_start(dir, "abc") == JobStart::kResume);
+}
+
+TEST_CASE("sweep --emit slurm: a job array with one dem run per job, nothing run", "[campaign]") {
+  const auto out = test::campaign_dir("slurm");
+  auto opt = test::sweep_options("data/sweeps/tiny.toml", out);
+  opt.processes = 2;
+  opt.emit_slurm = true;
+  campaign::run_sweep(opt);
+  const std::string script = io::read_file(out / "sweep.slurm");
+  CHECK_THAT(script, Catch::Contains("#SBATCH --array=0-2\n") && Catch::Contains("#SBATCH --ntasks=2\n"));
+  CHECK_THAT(script, Catch::Contains("  1) \"$IWB\" dem run scenes/u10.toml --engine liggghts --np 2 --out runs/u10 "
+                                     "$(resume runs/u10) ;;"));
+  for (const std::string job : {"u0.05", "u10", "u0.1"}) {
+    const std::string text = io::read_file(out / "scenes" / (job + ".toml"));
+    CHECK(dem::parse_scene(text, job + ".toml").particle_count == 180);
+  }
+  CHECK(fs::is_directory(out / "logs"));
+  CHECK_FALSE(fs::exists(out / "runs"));
+  CHECK_FALSE(fs::exists(out / "sweep.json"));
+  CHECK(std::system(("bash -n " + (out / "sweep.slurm").string()).c_str()) == 0);  // the script parses
+}
+
+TEST_CASE("sweep: a job's scene text does not depend on how the sweep file's path is spelled", "[campaign]") {
+  // the text's sha256 decides reuse: running the same sweep from another directory must reuse it
+  const auto relative = campaign::expand_jobs(campaign::load_sweep("data/sweeps/tiny.toml"));
+  const auto absolute = campaign::expand_jobs(campaign::load_sweep(fs::absolute("data/sweeps/tiny.toml")));
+  REQUIRE(relative.size() == absolute.size());
+  for (std::size_t i = 0; i < relative.size(); ++i) CHECK(relative[i].scene_text == absolute[i].scene_text);
+}
