@@ -1,6 +1,7 @@
 #include "driver/mixed_control.hpp"
 
 #include <cmath>
+#include <optional>
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
@@ -32,11 +33,25 @@ IncrementSolution newton(const models::Model& m, const StateVector& committed,
   const Dual sigma0 = models::normal_stress(start);
   double x = rq.eps_n_guess;
   integration::StepPlan plan;  // first iteration chooses the substeps, later ones replay them
+  std::optional<double> last_integrable;  // the last eps_n whose increment stayed in the domain
   for (out.iterations = 0; out.iterations < ms.max_iterations; ++out.iterations) {
     const Dual X = make_variable(x);
     const models::InterfaceStrainT<Dual> d{X, Dual(rq.gamma_x), Dual(rq.gamma_y)};
-    const auto trial =
-        integration::integrate_increment<Dual>(m, start, d, is, out.counters, first_step, &plan);
+    StateVectorT<Dual> trial;
+    try {
+      trial = integration::integrate_increment<Dual>(m, start, d, is, out.counters, first_step, &plan);
+    } catch (const DomainError&) {
+      // A replayed plan has no cut-backs: let the adaptive scheme choose new substeps at this x.
+      if (plan.replay) {
+        plan.replay = false;
+        continue;
+      }
+      // Newton overshot out of the domain (e.g. past e_d): back off towards the last good x.
+      if (!last_integrable) throw;
+      x = 0.5 * (x + *last_integrable);
+      continue;
+    }
+    last_integrable = x;
     const bool plan_valid = !plan.needs_refresh;
     plan.replay = plan_valid;
     const Dual r = rq.row.a * (models::normal_stress(trial) - sigma0) + rq.row.b * X - rq.row.c;
@@ -47,9 +62,12 @@ IncrementSolution newton(const models::Model& m, const StateVector& committed,
       return out;
     }
     const double slope = derivative_of(r);
-    if (!(std::abs(slope) > 0.0) || !std::isfinite(slope))
-      throw ConvergenceError(fmt::format("mixed control: normal row has slope {:g} at eps_n = {:g}",
-                                         slope, x));
+    if (!std::isfinite(slope))
+      throw ConvergenceError(fmt::format("mixed control: the normal row's derivative is not finite "
+                                         "at eps_n = {:g} (the model's rate is not differentiable "
+                                         "at this state, e.g. e at e_d)", x));
+    if (!(std::abs(slope) > 0.0))
+      throw ConvergenceError(fmt::format("mixed control: normal row has slope 0 at eps_n = {:g}", x));
     x -= r.value() / slope;
   }
   throw ConvergenceError(fmt::format("mixed control: Newton did not reach {:g} in {} iterations "

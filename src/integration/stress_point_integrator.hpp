@@ -144,8 +144,8 @@ inline double error_norm(const models::StateVector& err, const models::StateVect
 // nearby increment, and re-planning on every small excess would make Newton chase the plan.
 inline constexpr double kReplayErrorAllowance = 2.0;
 
-// Replays plan.steps with the embedded pair; a step leaving the domain is an error here, as
-// the plan was accepted for a nearby increment.
+// Replays plan.steps with the embedded pair. A replay cannot cut back, so a step leaving the
+// domain throws; the caller (the driver's Newton) then lets the adaptive scheme re-plan.
 template <class S>
 models::StateVectorT<S> replay_plan(const models::Model& m, const models::StateVectorT<S>& start,
                                     const models::InterfaceStrainT<S>& increment,

@@ -62,3 +62,27 @@ TEST_CASE("Newton with one Euler substep equals the closed form of appendix C", 
     }
   }
 }
+
+// A replayed substep plan cannot cut back; when a Newton iterate's replay leaves the domain the
+// adaptive scheme re-plans at that iterate (found by `iwb bench integrators`: hvwe-igs under CNS at
+// rtol 1e-10 stopped with "replayed substep: ... Matsuoka-Nakai cone").
+TEST_CASE("a replay that leaves the domain is re-planned and not fatal for hvwe-igs under CNS at tight tolerance",
+          "[driver][igs]") {
+  test::ShearSpec s;
+  s.model = "hvwe-igs";
+  s.inputs = test::table_5_3_toyoura();
+  s.K0 = 1.0 - std::sin(30.0 * M_PI / 180.0);
+  s.bc = {driver::BoundaryKind::kCNS, 1000.0};
+  s.e0 = 0.75;
+  s.gamma = 0.1;
+  s.increments = 20;
+  s.settings.integrator.pair = "rk54";
+  s.settings.integrator.rtol = 1e-10;
+  s.settings.mixed.tolerance = 1e-13;
+  const auto r = test::shear(s);
+  INFO(r.result.status);
+  REQUIRE(r.result.complete());
+  // CNS with dilation: sigma_n rises from 100 kPa while the medium-dense sample dilates.
+  CHECK(std::isfinite(r.last().sigma_n));
+  CHECK(r.last().sigma_n > 100.0);
+}
