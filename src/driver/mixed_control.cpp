@@ -1,7 +1,7 @@
 #include "driver/mixed_control.hpp"
 
 #include <cmath>
-#include <optional>
+#include <string>
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
@@ -16,6 +16,8 @@ namespace {
 // Relative residual a root of the closed form may leave in the true rate: round-off of the four
 // rate evaluations it is assembled from.
 constexpr double kClosedFormRootTolerance = 1e-8;
+// Newton iterates whose replayed plan left the domain and were re-planned, per increment.
+constexpr int kMaxReplans = 2;
 
 double residual_scale(const NormalControlRow& row, const StateVector& s, double shear) {
   constexpr double kStressFloor_kPa = 1.0;  // keeps the relative residual meaningful near 0 kPa
@@ -33,25 +35,24 @@ IncrementSolution newton(const models::Model& m, const StateVector& committed,
   const Dual sigma0 = models::normal_stress(start);
   double x = rq.eps_n_guess;
   integration::StepPlan plan;  // first iteration chooses the substeps, later ones replay them
-  std::optional<double> last_integrable;  // the last eps_n whose increment stayed in the domain
+  int replans = 0;
+  std::string last_domain_error;  // why the last re-planned iterate left the domain
   for (out.iterations = 0; out.iterations < ms.max_iterations; ++out.iterations) {
     const Dual X = make_variable(x);
     const models::InterfaceStrainT<Dual> d{X, Dual(rq.gamma_x), Dual(rq.gamma_y)};
     StateVectorT<Dual> trial;
     try {
       trial = integration::integrate_increment<Dual>(m, start, d, is, out.counters, first_step, &plan);
-    } catch (const DomainError&) {
+    } catch (const DomainError& e) {
+      last_domain_error = e.what();
       // A replayed plan has no cut-backs: let the adaptive scheme choose new substeps at this x.
-      if (plan.replay) {
-        plan.replay = false;
-        continue;
-      }
-      // Newton overshot out of the domain (e.g. past e_d): back off towards the last good x.
-      if (!last_integrable) throw;
-      x = 0.5 * (x + *last_integrable);
+      // Without a plan the adaptive scheme itself found no way through: the domain error stands
+      // (backing x off instead turned "void ratio at e_d" into a bare "Newton did not converge").
+      // Repeated failures mean the increment runs into the domain's edge (e at e_d): say that.
+      if (!plan.replay || ++replans > kMaxReplans) throw;
+      plan.replay = false;
       continue;
     }
-    last_integrable = x;
     const bool plan_valid = !plan.needs_refresh;
     plan.replay = plan_valid;
     const Dual r = rq.row.a * (models::normal_stress(trial) - sigma0) + rq.row.b * X - rq.row.c;
@@ -70,9 +71,13 @@ IncrementSolution newton(const models::Model& m, const StateVector& committed,
       throw ConvergenceError(fmt::format("mixed control: normal row has slope 0 at eps_n = {:g}", x));
     x -= r.value() / slope;
   }
-  throw ConvergenceError(fmt::format("mixed control: Newton did not reach {:g} in {} iterations "
-                                     "(last residual {:.3g})", ms.tolerance, ms.max_iterations,
-                                     out.residuals.back()));
+  const std::string msg = fmt::format("mixed control: Newton did not reach {:g} in {} iterations "
+                                      "(last residual {:.3g})", ms.tolerance, ms.max_iterations,
+                                      out.residuals.empty() ? INFINITY : out.residuals.back());
+  // Iterates that left the domain mean the root lies at its edge: that is the cause to report.
+  if (!last_domain_error.empty())
+    throw DomainError(fmt::format("{}; iterates left the domain: {}", msg, last_domain_error));
+  throw ConvergenceError(msg);
 }
 
 // The closed form reads L and N off the rate assuming T_rate = L:D + N||D||. A rate that is not of

@@ -196,10 +196,16 @@ models::StateVectorT<S> integrate_adaptive(const models::Model& m,
   models::StateVectorT<S> k0 = st.rate(y);
   models::StateVector err;
   std::string last_rejection = "none";
+  bool last_rejection_left_domain = false;
   for (int n = 0; t < 1.0; ++n) {
-    if (n >= set.max_substeps)
-      throw ConvergenceError(fmt::format("adaptive integration needed more than {} substeps "
-                                         "(last rejection: {})", set.max_substeps, last_rejection));
+    if (n >= set.max_substeps) {
+      const std::string msg = fmt::format("adaptive integration needed more than {} substeps "
+                                          "(last rejection: {})", set.max_substeps, last_rejection);
+      // Creeping along the domain's edge (e towards e_d) is the domain's limit, not the error
+      // controller's: classify it as the domain error it approaches.
+      if (last_rejection_left_domain) throw DomainError(msg);
+      throw ConvergenceError(msg);
+    }
     h = std::min(h, 1.0 - t);
     st.k.assign(1, k0);
     double factor;
@@ -215,6 +221,7 @@ models::StateVectorT<S> integrate_adaptive(const models::Model& m,
       ++count.rejected_substeps;
       ++count.domain_cutbacks;
       last_rejection = why;
+      last_rejection_left_domain = true;
       factor = 0.25;
     } else {
       const double e_norm = detail::error_norm(err, m.error_scale(values_of<S>(y)), set.rtol);
@@ -229,6 +236,7 @@ models::StateVectorT<S> integrate_adaptive(const models::Model& m,
       } else {
         ++count.rejected_substeps;
         last_rejection = fmt::format("error {:.3g} x tolerance", e_norm);
+        last_rejection_left_domain = false;
         factor = std::clamp(0.9 * std::pow(e_norm, -exponent), 0.1, 0.9);
       }
     }
