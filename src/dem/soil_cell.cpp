@@ -7,7 +7,6 @@
 
 #include "common/errors.hpp"
 #include "dem/liggghts/liggghts_engine.hpp"
-#include "dem/numerics.hpp"
 #include "dem/summary.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_override.hpp"

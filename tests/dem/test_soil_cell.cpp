@@ -10,6 +10,7 @@
 
 #include "calibration/soil_test.hpp"
 #include "dem/soil_cell.hpp"
+#include "io/csv_table.hpp"
 #include "io/run_directory.hpp"
 
 using namespace iwb;
@@ -36,11 +37,9 @@ double index(const calibration::SoilTest& t, std::size_t i, std::size_t j) {
   return -(t.e[j] - t.e[i]) / std::log(t.control[j] / t.control[i]);
 }
 
+// An extra column of the cell's timeseries.csv (read_soil_test reads only the contract's columns).
 double extra(const calibration::SoilTest& t, const std::string& name, std::size_t row) {
-  for (const auto& [n, v] : t.extra_columns)
-    if (n == name) return v.at(row);
-  FAIL("no column " << name);
-  return 0.0;
+  return io::read_csv_table(fs::path(t.name) / "timeseries.csv").values(name).at(row);
 }
 
 dem::SoilCellSpec small_cell(SoilTestKind test) {
@@ -89,8 +88,9 @@ TEST_CASE(
     "DEM soil cell simple shear keeps its boundary condition and dense dilates more than loose",
     "[dem][soil][heavy]") {
   auto c = small_cell(SoilTestKind::kSimpleShear);
-  c.gamma = 0.6;
-  c.inertial_number = 2e-3;
+  // I = 1e-3 (DEM.md): at 2e-3 the servo trailed a dense 602-grain cell's dilation by 6 %.
+  c.gamma = 0.5;
+  c.inertial_number = 1e-3;
   std::map<std::string, calibration::SoilTest> t;
   for (const auto bc : {driver::BoundaryKind::kCNL, driver::BoundaryKind::kCV})
     for (const auto density : {dem::SoilDensity::kDense, dem::SoilDensity::kLoose}) {
@@ -101,7 +101,7 @@ TEST_CASE(
     }
   for (const auto& [name, s] : t) {
     INFO(name);
-    CHECK(s.control.back() > 0.5);
+    CHECK(s.control.back() > 0.45);
     if (name.rfind("CV", 0) == 0) {
       for (std::size_t i = 0; i < s.rows(); ++i)
         CHECK(std::abs(s.e[i] - s.e0) < 0.005);  // volume held
