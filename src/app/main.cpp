@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "app/calibration_commands.hpp"
+#include "app/dem_soiltest.hpp"
 #include "app/default_job.hpp"
 #include "app/stability.hpp"
 #include "app/validate.hpp"
@@ -225,6 +226,8 @@ int main(int argc, char** argv) {
   dem_run->add_flag("--resume", resume, "continue an interrupted run of the same scene from its last finished stage");
   dem_run->add_flag("--force", force, "replace an earlier run in the same directory");
 
+  const auto dem_soiltest = iwb::app::add_dem_soiltest(*dem);
+
   auto* dem_cross = dem->add_subcommand(
       "crosscheck",
       "Run one scene in both engines with K seeds each (seed = 1..K) and put peak and residual "
@@ -362,6 +365,7 @@ int main(int argc, char** argv) {
     if (*models) return cmd_models(as_json);
     if (*run) return iwb::app::run_default_job(run_out, force, cl);
     if (*dem_run) return cmd_dem_run(scene_file, engine_name, np, out, resume, force, cl);
+    if (const auto code = iwb::app::run_dem_soiltest(*dem_soiltest, cl, &g_interrupt, engine_progress())) return *code;
     if (*report) {
       std::vector<std::filesystem::path> dirs(compare_dirs.begin(), compare_dirs.end());
       const auto figures = iwb::comparison::write_report(dirs, report_out);

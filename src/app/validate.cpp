@@ -29,6 +29,42 @@ std::pair<std::string, std::string> scene_source(const std::string& scene) {
   throw InputError(fmt::format("--scene {}: neither an embedded scene ({}) nor a file", scene, names));
 }
 
+// Parameter sets calibrated on soil tests of one scene's grains (`iwb dem soiltest` + `iwb
+// calibrate`, data/calibration/<name>/README.md): the set for a scene whose [particles] are those
+// grains, and never a stand-in for other grains in the phi_c match below.
+struct CalibratedGrains {
+  const char* scene;  // embedded scene whose particles were calibrated
+  const char* file;   // in the parameter directory
+};
+constexpr CalibratedGrains kCalibratedGrains[] = {{"default", "dem_default_grains.toml"}};
+
+bool calibrated_set(const fs::path& file) {
+  for (const auto& c : kCalibratedGrains)
+    if (file.filename() == c.file) return true;
+  return false;
+}
+
+bool same_grains(const dem::Particles& a, const dem::Particles& b) {
+  const auto key = [](const dem::Particles& p) {
+    std::vector<double> k{p.d50_m, p.density_kg_m3, p.youngs_modulus_Pa, p.poisson, p.friction, p.rolling_friction,
+                          p.restitution};
+    for (const auto& c : p.sizes) k.insert(k.end(), {c.diameter_m, c.mass_fraction});
+    return k;
+  };
+  return key(a) == key(b);
+}
+
+// The calibrated set for the scene's grains, or empty if there is none.
+fs::path calibrated_parameters(const fs::path& dir, const dem::Scene& scene, std::string& why) {
+  for (const auto& c : kCalibratedGrains) {
+    const auto base = dem::parse_scene(dem::embedded_scenes().at(std::string(c.scene) + ".toml"), c.scene);
+    if (!same_grains(base.particles, scene.particles) || !fs::exists(dir / c.file)) continue;
+    why = fmt::format("calibrated on DEM soil tests of the {} scene's grains (data/calibration/)", c.scene);
+    return dir / c.file;
+  }
+  return {};
+}
+
 // The shipped parameter set whose critical friction angle is closest to the DEM's residual
 // interface friction angle atan(tau/sigma_n): the only property of the grains a DEM run tells
 // without calibration (issue 7 calibrates properly).
@@ -40,7 +76,7 @@ fs::path matching_parameters(const fs::path& dir, double residual_friction, std:
   double best_gap = INFINITY;
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().extension() == ".toml") files.push_back(e.path());
+    if (e.path().extension() == ".toml" && !calibrated_set(e.path())) files.push_back(e.path());
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
     const auto tables = io::load_parameter_file(f.string());
@@ -91,6 +127,7 @@ int run_validate(const ValidateOptions& opt) {
     if (!run_dem(scene, text, source, engine, opt, dem_dir, fmt::format("{}/{}", ++step, steps))) return 1;
     // One parameter set for every engine, chosen on the first, so that the engines are compared
     // through the same continuum model.
+    if (params.empty()) params = calibrated_parameters(opt.params_dir, scene, why);
     if (params.empty()) {
       const auto summary = nlohmann::json::parse(io::read_file(dem_dir / "summary.json"));
       params = matching_parameters(opt.params_dir, summary["residual_friction"].get<double>(), why);

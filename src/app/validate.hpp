@@ -1,7 +1,9 @@
 #pragma once
 // `iwb validate`, the README's main job (issue 6): run a scene in each DEM engine asked for (the
-// embedded default scene in LIGGGHTS unless told otherwise), replay it through hvwe with the shipped parameter set that best
-// matches the DEM's grains, and write the HTML report.
+// embedded default scene in LIGGGHTS unless told otherwise), replay it through hvwe with the
+// parameter set calibrated on the scene's grains if there is one (data/params/dem_default_grains.toml
+// for the default scene's grains, issue 7), else the shipped set whose phi_c is closest to the
+// DEM's residual friction angle, and write the HTML report.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -142,6 +142,10 @@ std::string timeseries_csv(const SoilTest& t) {
     for (std::size_t i = 0; i < t.rows(); ++i)
       table.rows.push_back({t.control[i], t.tau_kPa[i], t.sigma_n_kPa[i], t.e[i]});
   }
+  for (const auto& [name, values] : t.extra_columns) {
+    table.columns.push_back(name);
+    for (std::size_t i = 0; i < t.rows(); ++i) table.rows[i].push_back(values.at(i));
+  }
   return table.to_csv(12);
 }
 
@@ -157,6 +161,11 @@ SoilTest read_soil_test(const fs::path& dir) {
 
 void write_soil_test(const SoilTest& t, const fs::path& dir, bool force,
                      const nlohmann::json& extra) {
+  io::prepare_run_directory(dir, force);
+  write_soil_test_files(t, dir, extra);
+}
+
+void write_soil_test_files(const SoilTest& t, const fs::path& dir, const nlohmann::json& extra) {
   nlohmann::json m = extra;
   m["kind"] = "soiltest";
   m["test"] = to_string(t.kind);
@@ -173,9 +182,8 @@ void write_soil_test(const SoilTest& t, const fs::path& dir, bool force,
   m["source_parameters"] = t.source_parameters;
   m["conventions"] = {{"signs", "compression positive (sigma, eps_v); tau has the sign of gamma"},
                       {"units", "kPa; strains and void ratio dimensionless"}};
-  m["files"] = {"timeseries.csv"};
+  if (!m.contains("files")) m["files"] = {"timeseries.csv"};
   m["status"] = "complete";
-  io::prepare_run_directory(dir, force);
   io::write_atomically(dir / "timeseries.csv", timeseries_csv(t));
   io::write_manifest(dir, m);
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "driver/control.hpp"
@@ -30,6 +31,8 @@ struct SoilTest {
   // eps_v measured. Simple shear: gamma (the control), tau_kPa, sigma_kPa = sigma_n, e measured.
   std::vector<double> control;  // sigma_v_kPa (oedometer) or gamma (simple shear)
   std::vector<double> e, eps_v, tau_kPa, sigma_n_kPa;
+  // Written after the contract's columns, not read back (a DEM cell's sigma_h, K0, coordination).
+  std::vector<std::pair<std::string, std::vector<double>>> extra_columns;
 
   std::size_t rows() const { return control.size(); }
   // Index of the largest sigma_v: the end of the loading branch (oedometer).
@@ -48,5 +51,9 @@ inline constexpr std::size_t kMinimumRows = 3;
 // the manifest (command line, workbench version, timing).
 void write_soil_test(const SoilTest& test, const std::filesystem::path& dir, bool force,
                      const nlohmann::json& extra);
+// The same into a directory the caller has prepared (a DEM cell's run directory, which holds the
+// engine's work files and a manifest with status "running" until this replaces it).
+void write_soil_test_files(const SoilTest& test, const std::filesystem::path& dir,
+                           const nlohmann::json& extra);
 
 }  // namespace iwb::calibration

@@ -35,46 +35,48 @@ nlohmann::json fresh_manifest(const Scene& scene, const std::string& text, Engin
           {"status", "running"}};
 }
 
-// The manifest of an earlier run of the same scene, for --resume.
-nlohmann::json earlier_manifest(const fs::path& dir, const std::string& sha) {
+// The manifest of an earlier run of the same scene, for --resume; `key` points at the hash of the
+// scene text the engine ran.
+nlohmann::json earlier_manifest(const fs::path& dir, const std::string& sha, const nlohmann::json::json_pointer& key) {
   const auto path = dir / "manifest.json";
   if (!fs::exists(path))
     throw InputError(fmt::format("{}: nothing to resume (no manifest.json)", dir.string()));
   auto m = nlohmann::json::parse(io::read_file(path));
-  if (m.value("/scene/sha256"_json_pointer, std::string()) != sha)
+  if (m.value(key, std::string()) != sha)
     throw InputError(fmt::format("{}: the earlier run used a different scene (sha256 {}); "
                                  "--resume needs the same scene file", dir.string(),
-                                 m.value("/scene/sha256"_json_pointer, std::string("?"))));
+                                 m.value(key, std::string("?"))));
   return m;
 }
 
 }  // namespace
 
-RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine,
-                     const RunOptions& opt) {
-  RunOutcome out;
+std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text, Engine& engine,
+                                   const RunOptions& opt, const nlohmann::json& fresh, RunOutcome& out,
+                                   const std::string& sha_key) {
   auto& m = out.manifest;
   const std::string sha = io::sha256_hex(text);
   if (opt.resume) {
-    m = earlier_manifest(opt.out, sha);
+    m = earlier_manifest(opt.out, sha, nlohmann::json::json_pointer(sha_key));
     m["status"] = "running";
     m["resumed"].push_back(io::utc_timestamp());
   } else {
     io::prepare_run_directory(opt.out, opt.force);
-    m = fresh_manifest(scene, text, engine, opt);
+    m = fresh;
   }
   const fs::path work = opt.out / engine.name();
   fs::create_directories(work);
   fs::create_directories(opt.out / "vtk");
   io::write_manifest(opt.out, m);
 
-  StageContext ctx{scene, opt.out, work, opt.processes, opt.interrupt, opt.progress};
-  nlohmann::json facts = nlohmann::json::object();
+  StagedRun run{StageContext{scene, opt.out, work, opt.processes, opt.interrupt, opt.progress},
+                nlohmann::json::object()};
+  auto& facts = run.facts;
   for (const auto& [name, stage] : m["stages"].items()) facts[name] = stage.value("facts", nlohmann::json::object());
   for (const auto& stage : engine.stages()) {
     if (m["stages"].contains(stage) && m["stages"][stage].value("status", "") == "done") continue;
     const auto t0 = std::chrono::steady_clock::now();
-    const StageResult r = engine.run_stage(stage, ctx, facts);
+    const StageResult r = engine.run_stage(stage, run.ctx, facts);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     m["stages"][stage] = {{"status", r.ok ? "done" : (r.interrupted ? "interrupted" : "failed")},
                           {"wall_seconds", seconds}, {"facts", r.facts}};
@@ -85,11 +87,21 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
       m["status"] = out.status;
       m["finished"] = io::utc_timestamp();
       io::write_manifest(opt.out, m);
-      return out;
+      return std::nullopt;
     }
     io::write_manifest(opt.out, m);  // a finished stage is never lost
   }
+  return run;
+}
 
+RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine,
+                     const RunOptions& opt) {
+  RunOutcome out;
+  const auto run = run_stages(scene, text, engine, opt, fresh_manifest(scene, text, engine, opt), out);
+  if (!run) return out;
+  auto& m = out.manifest;
+  const auto& ctx = run->ctx;
+  const auto& facts = run->facts;
   const ContractTables tables = engine.assemble(ctx, facts);
   io::write_atomically(opt.out / "timeseries.csv", tables.timeseries.to_csv());
   io::write_atomically(opt.out / "profiles.csv", tables.profiles.to_csv());

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "dem/engine.hpp"
@@ -28,6 +29,19 @@ struct RunOutcome {
   nlohmann::json manifest;
   bool complete() const { return status == "complete"; }
 };
+
+// What every kind of DEM run directory shares (a scene's interface run, a soil cell): the
+// manifest `fresh` (or, with --resume, the earlier one of the same scene text) written before and
+// after each stage, stages already done skipped. Returns the context and every stage's facts, or
+// nothing when a stage failed or was interrupted (out.status and the manifest then say so).
+// `sha_key` points at the manifest's hash of scene_text (what --resume must find again).
+struct StagedRun {
+  StageContext ctx;
+  nlohmann::json facts;  // by stage name
+};
+std::optional<StagedRun> run_stages(const Scene& scene, const std::string& scene_text, Engine& engine,
+                                   const RunOptions& options, const nlohmann::json& fresh, RunOutcome& out,
+                                   const std::string& sha_key = "/scene/sha256");
 
 RunOutcome run_scene(const Scene& scene, const std::string& scene_text, Engine& engine,
                      const RunOptions& options);

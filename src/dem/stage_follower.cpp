@@ -54,6 +54,9 @@ struct Follower {
       result.facts["z0_m"] = std::stod(w[4]);
     }
     if (w[0] == "IWB_PROGRESS" && w.size() >= 3 && ctx.progress) progress(std::stod(w[1]), std::stod(w[2]));
+    if (w[0] == "IWB_FACT" && w.size() >= 3) result.facts[w[1]] = std::stod(w[2]);
+    if (w[0] == "IWB_ROW" && w.size() >= 3) row(w);
+    if (w[0] == "IWB_LEVEL" && w.size() >= 4 && ctx.progress) level(std::stol(w[1]), std::stol(w[2]), std::stod(w[3]));
     if (w[0] == "IWB_STAGE_DONE" && w.size() >= 2) {
       if (w.size() >= 6 && w[1] == "consolidate") {
         result.facts["zplate_m"] = std::stod(w[3]);
@@ -71,6 +74,22 @@ struct Follower {
       result.failure = fmt::format("particle count short: {} of {} inserted (the insertion under-filled "
                                    "the region; lower specimen.solid_fraction_estimate or particles)",
                                    got, want);
+  }
+
+  // "IWB_ROW table v1 v2 ...": a row of numbers the stage measured (a soil cell's states), kept
+  // in the stage's facts so that the manifest holds them and a resumed run needs no raw file.
+  void row(const std::vector<std::string>& w) {
+    nlohmann::json r = nlohmann::json::array();
+    for (std::size_t i = 2; i < w.size(); ++i) r.push_back(std::stod(w[i]));
+    result.facts["rows"][w[1]].push_back(r);
+  }
+
+  // A soil cell's stress level (oedometer): level i of n, its target stress.
+  void level(long i, long n, double sigma_Pa) {
+    const double f = double(i - 1) / double(n);
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ctx.progress(fmt::format("oedometer: level {} of {}, sigma_v -> {:.1f} kPa, ETA {:.0f} s", i, n,
+                             sigma_Pa / 1e3, f > 0.01 ? t * (1 - f) / f : 0.0));
   }
 
   void progress(double u, double total) {

@@ -1,7 +1,8 @@
 #pragma once
 // Runs one engine stage as a child process and follows its output: both engines' scripts print
 // the same IWB_ lines (particle count, consolidation windows, shear progress, stage ends,
-// failures, cost), so reading them, logging and turning the process's end into a StageResult is
+// failures, cost; IWB_FACT key value, IWB_ROW table values..., IWB_LEVEL i n sigma_Pa for the
+// soil cell), so reading them, logging and turning the process's end into a StageResult is
 // one piece of code. An engine adds only what its own output says beyond that (`extra`).
 #include <functional>
 #include <string>

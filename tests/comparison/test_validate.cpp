@@ -38,4 +38,6 @@ TEST_CASE("iwb validate on the smoke scene writes a self-contained report with i
       CHECK(fs::exists(fs::path(e.path()).replace_extension(".gp")));
     }
   CHECK(pngs == 4);
+  // the smoke scene has the default scene's grains: the replay uses the set calibrated on them
+  CHECK(iwb::io::read_file(out / "compare-hvwe" / "manifest.json").find("dem_default_grains.toml") != std::string::npos);
 }

@@ -197,10 +197,9 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
   const Numerics n = derive(s);
   write_scene_meshes(s, n.plate_z, ctx.work_dir);
   const std::string input = stage + ".in";
-  io::write_atomically(ctx.work_dir / input,
-                       render_template(liggghts_templates().at(input),
-                                       values_of(s, n, facts.value("/consolidate/zplate_m"_json_pointer, n.plate_z)),
-                                       input));
+  TemplateValues values = values_of(s, n, facts.value("/consolidate/zplate_m"_json_pointer, n.plate_z));
+  values.insert(extra_.begin(), extra_.end());
+  io::write_atomically(ctx.work_dir / input, render_template(liggghts_templates().at(input), values, input));
   const double generation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   StageResult r = run_followed_stage(command(input, ctx.processes), stage, ctx, read_loop_time);
   r.facts["generation_seconds"] = generation;

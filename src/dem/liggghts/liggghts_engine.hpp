@@ -6,19 +6,29 @@
 #include <map>
 #include <string>
 
+#include "common/template.hpp"
 #include "dem/engine.hpp"
 
 namespace iwb::dem {
 
 class LiggghtsEngine final : public Engine {
  public:
+  LiggghtsEngine() = default;
+  // Other stages than consolidate + shear, each the template `<stage>.in` of dem-scripts/liggghts/
+  // (the soil cell's oedometer), with the values they need beyond the scene's.
+  LiggghtsEngine(std::vector<std::string> stages, TemplateValues extra)
+      : stages_(std::move(stages)), extra_(std::move(extra)) {}
   std::string name() const override { return "liggghts"; }
   std::string version() const override;
-  std::vector<std::string> stages() const override { return {"consolidate", "shear"}; }
+  std::vector<std::string> stages() const override { return stages_; }
   nlohmann::json numerics(const Scene& scene) const override;
   StageResult run_stage(const std::string& stage, const StageContext& ctx,
                         const nlohmann::json& facts) override;
   ContractTables assemble(const StageContext& ctx, const nlohmann::json& facts) override;
+
+ private:
+  std::vector<std::string> stages_ = {"consolidate", "shear"};
+  TemplateValues extra_;
 };
 
 // The stage templates as shipped in dem-scripts/liggghts/ (generated at build time).

@@ -1,0 +1,125 @@
+#include "app/dem_soiltest.hpp"
+
+#include <fmt/core.h>
+
+#include "dem/soil_cell.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::app {
+
+struct DemSoiltestCommand {
+  CLI::App* command = nullptr;
+  std::string scene, test = "oedometer", bc = "CNL", density = "dense", out;
+  dem::SoilCellSpec spec;
+  int np = 1;
+  bool resume = false, force = false;
+};
+
+std::shared_ptr<DemSoiltestCommand> add_dem_soiltest(CLI::App& dem) {
+  auto c = std::make_shared<DemSoiltestCommand>();
+  auto* s = c->command = dem.add_subcommand(
+      "soiltest",
+      "A soil element test on a DEM cell of a scene's grains (same particles, contact law and "
+      "seed; no "
+      "wall under test), in LIGGGHTS, into the soil-test contract that `iwb calibrate` reads "
+      "(src/calibration/README.md). The cell is periodic in x and y between two rough sawtooth "
+      "plates "
+      "(ridges 1 d50, pitch 2 d50; plate friction = grain friction); the specimen is prepared at "
+      "the "
+      "first stress with friction 0 (dense) or 1 (loose).\n"
+      "  oedometer:   the box never widens (zero lateral strain); the top plate's servo ramps "
+      "sigma_v "
+      "from --sigma (10 kPa) to --sigma-max in --load-levels geometric steps and back in "
+      "--unload-levels, each ramp and hold --level-windows consolidation windows long; rows "
+      "sigma_v_kPa, eps_v, e, sigma_h_kPa, K0 (stress tensor), coordination, estimated mean "
+      "overlap\n"
+      "  simpleshear: the bottom plate moves in +x to --gamma (travel / target height) at "
+      "--inertial-number; CNL keeps sigma_n (--sigma, 50 kPa) by the servo, CV holds the plate; "
+      "rows "
+      "gamma, tau_kPa, sigma_n_kPa, e (+ profiles.csv: is the shear homogeneous?)\n"
+      "Example: iwb dem soiltest data/scenes/default.toml --test simpleshear --bc CV --density "
+      "loose "
+      "--out runs/soil/loose-cv");
+  s->add_option("scene", c->scene,
+                "scene TOML file (its [particles], seed and [consolidation] are used)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  s->add_option("--test", c->test, "oedometer or simpleshear")
+      ->check(CLI::IsMember({"oedometer", "simpleshear"}))
+      ->capture_default_str();
+  s->add_option("--bc", c->bc, "simple shear: CNL or CV")
+      ->check(CLI::IsMember({"CNL", "CV"}))
+      ->capture_default_str();
+  s->add_option("--density", c->density, "dense (preparation friction 0) or loose (1)")
+      ->check(CLI::IsMember({"dense", "loose"}))
+      ->capture_default_str();
+  s->add_option("--sigma", c->spec.sigma0_kPa,
+                "first sigma_v (oedometer, default 10) or sigma_n (simple shear, 50), kPa")
+      ->check(CLI::PositiveNumber);
+  s->add_option("--sigma-max", c->spec.sigma_max_kPa, "oedometer: largest sigma_v, kPa")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  s->add_option("--gamma", c->spec.gamma, "simple shear: final shear strain")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  s->add_option("--height", c->spec.height_d50, "target cell height (z) in d50")
+      ->check(CLI::Range(4.0, 100.0))
+      ->capture_default_str();
+  s->add_option("--length", c->spec.length_d50, "cell length (x) in d50, at least 10 d_max")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  s->add_option("--width", c->spec.width_d50, "cell width (y) in d50, at least 3 d_max")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  s->add_option("--inertial-number", c->spec.inertial_number,
+                "simple shear: gamma_dot d50 sqrt(rho/sigma_n)")
+      ->check(CLI::Range(1e-6, 1e-1))
+      ->capture_default_str();
+  s->add_option("--load-levels", c->spec.load_levels, "oedometer: loading levels")
+      ->check(CLI::Range(2, 100))
+      ->capture_default_str();
+  s->add_option("--unload-levels", c->spec.unload_levels, "oedometer: unloading levels (0: none)")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
+  s->add_option("--level-windows", c->spec.level_windows,
+                "oedometer: ramp and hold length in consolidation windows")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  s->add_option("--np", c->np, "MPI ranks")->check(CLI::Range(1, 256))->capture_default_str();
+  s->add_option("--out,-o", c->out,
+                "run directory (default runs/soil-<scene>-<test>[-<bc>]-<density>)");
+  s->add_flag("--resume", c->resume,
+              "continue an interrupted run of the same cell from its last finished stage");
+  s->add_flag("--force", c->force, "replace an earlier run in the same directory");
+  return c;
+}
+
+std::optional<int> run_dem_soiltest(const DemSoiltestCommand& c, const std::string& command_line,
+                                    const std::atomic<bool>* interrupt,
+                                    std::function<void(const std::string&)> progress) {
+  if (!*c.command) return std::nullopt;
+  dem::SoilCellSpec spec = c.spec;
+  spec.test = c.test == "oedometer" ? calibration::SoilTestKind::kOedometer
+                                    : calibration::SoilTestKind::kSimpleShear;
+  spec.boundary = driver::parse_boundary_kind(c.bc, "--bc");
+  spec.density = dem::parse_soil_density(c.density, "--density");
+  const bool oed = spec.test == calibration::SoilTestKind::kOedometer;
+  const std::filesystem::path dir =
+      !c.out.empty()
+          ? std::filesystem::path(c.out)
+          : std::filesystem::path("runs") /
+                fmt::format("soil-{}-{}{}-{}", std::filesystem::path(c.scene).stem().string(),
+                            c.test, oed ? "" : "-" + c.bc, c.density);
+  dem::RunOptions opt{dir, c.np, c.resume, c.force, command_line, interrupt, std::move(progress)};
+  fmt::print(
+      stderr,
+      "iwb dem soiltest: {} of {} ({}, {:g} kPa, cell {:g} x {:g} x {:g} d50, {} rank(s)) -> {}\n",
+      oed ? "oedometer" : "simple shear " + c.bc, c.scene, c.density, spec.initial_stress_kPa(),
+      spec.length_d50, spec.width_d50, spec.height_d50, c.np, dir.string());
+  const auto outcome = dem::run_soil_test(io::read_file(c.scene), c.scene, spec, opt);
+  fmt::print("{}: {} ({} particles) -> {}\n", c.scene, outcome.status,
+             outcome.manifest.value("particle_count", 0), dir.string());
+  return outcome.complete() ? 0 : 1;
+}
+
+}  // namespace iwb::app

@@ -1,0 +1,320 @@
+#include "dem/soil_cell.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/errors.hpp"
+#include "dem/liggghts/liggghts_engine.hpp"
+#include "dem/summary.hpp"
+#include "io/run_directory.hpp"
+#include "io/toml_override.hpp"
+#include "io/toml_reader.hpp"
+
+namespace iwb::dem {
+
+namespace fs = std::filesystem;
+using calibration::SoilTest;
+using calibration::SoilTestKind;
+
+namespace {
+
+constexpr double kOedometerStartKPa = 10.0;
+constexpr double kSimpleShearStartKPa = 50.0;
+constexpr double kTimeseriesRows = 200.0;  // simple shear: rows over the whole travel
+constexpr int kVtkSnapshots = 4;
+constexpr int kProfileWindows = 4;
+constexpr double kGravity = 9.81;  // m/s2, as in the templates
+
+bool oedometer(const SoilCellSpec& c) {
+  return c.test == SoilTestKind::kOedometer;
+}
+
+double preparation_friction(SoilDensity d) {
+  return d == SoilDensity::kDense ? kDenseConsolidationFriction : kLooseConsolidationFriction;
+}
+
+// Height between the mean surfaces of wall and plate, with the plate's reference at z (m): the
+// same as the interface runs' specimen height (contract_outputs.cpp).
+double cell_height(const Scene& s, double zplate) {
+  return zplate - s.plate.mean_height_m() - s.wall.mean_height_m();
+}
+
+// Mean overlap / d50 of a Hertz contact carrying the cell's mean contact force: p = sum(f l)/(3V)
+// with branch length l ~ d50 over N Z / 2 contacts gives f = 6 p V / (N Z d50); for two d50
+// spheres F = (4/3) E* sqrt(d50/4) delta^1.5 with E* = E / (2 (1 - nu^2)). An estimate (sizes
+// and contact forces vary), to say how far the grains' softness reaches into the results.
+double mean_overlap_over_d50(double p_Pa, double volume, double particles, double coordination,
+                             const Particles& g) {
+  if (!(coordination > 0.0) || !(p_Pa > 0.0)) return 0.0;
+  const double f = 6.0 * p_Pa * volume / (particles * coordination * g.d50_m);
+  const double e_star = g.youngs_modulus_Pa / (2.0 * (1.0 - g.poisson * g.poisson));
+  const double delta = std::pow(f / (4.0 / 3.0 * e_star * std::sqrt(0.25 * g.d50_m)), 2.0 / 3.0);
+  return delta / g.d50_m;
+}
+
+// Stresses from the grains' summed stress x volume (stress/atom: compression negative), kPa.
+struct TensorStress {
+  double zz, h, mean;
+};
+TensorStress tensor_stress(double sxx, double syy, double szz, double volume) {
+  return {-szz / volume / 1e3, -0.5 * (sxx + syy) / volume / 1e3,
+          -(sxx + syy + szz) / (3.0 * volume) / 1e3};
+}
+
+// One level: the target force ramps linearly over the first run (LIGGGHTS's ramp() spans a run)
+// and is held during the second; then the row.
+std::string level_block(int k, int n, double from_Pa, double to_Pa, long ramp, long hold) {
+  return fmt::format(
+      "# level {k} of {n}: sigma_v -> {to:.6g} Pa\n"
+      "print \"IWB_LEVEL {k} {n} {to:.10g}\"\n"
+      "variable Ftarget equal v_area*ramp({from:.10g},{to:.10g})\n"
+      "run {ramp}\n"
+      "variable Ftarget equal v_area*{to:.10g}\n"
+      "run {hold}\n"
+      "print \"IWB_ROW oedometer {k} ${{r1}} ${{r2}} ${{r3}} ${{r4}} ${{r5}} ${{r6}} ${{r7}} "
+      "${{r8}} ${{r9}}\"\n",
+      fmt::arg("k", k), fmt::arg("n", n), fmt::arg("from", from_Pa), fmt::arg("to", to_Pa),
+      fmt::arg("ramp", ramp), fmt::arg("hold", hold));
+}
+
+TemplateValues oedometer_values(const Scene& cell, const SoilCellSpec& c) {
+  const long steps = long(c.level_windows) * cell.consolidation.window_steps;
+  const auto levels = oedometer_levels_kPa(c);
+  std::string program;
+  for (std::size_t k = 1; k < levels.size(); ++k)
+    program += level_block(int(k), int(levels.size() - 1), levels[k - 1] * 1e3, levels[k] * 1e3,
+                           steps, steps);
+  // ave/time: every 10 steps over the last half of each window (oedometer.in)
+  const long repeat = std::max(1L, cell.consolidation.window_steps / 20L);
+  return {{"oedometer_levels", program},
+          {"ramp_steps", std::to_string(steps)},
+          {"hold_steps", std::to_string(steps)},
+          {"avg_repeat", std::to_string(repeat)}};
+}
+
+SoilTest oedometer_result(const Scene& cell, const nlohmann::json& facts) {
+  SoilTest t;
+  t.kind = SoilTestKind::kOedometer;
+  const double particles = facts.at("consolidate").at("particles").get<double>();
+  const auto& rows = facts.at("oedometer").at("rows").at("oedometer");
+  double h0 = 0.0;
+  std::vector<double> sigma_h, k0, coordination, overlap;
+  for (const auto& r : rows) {
+    const double h = cell_height(cell, r[3].get<double>()), volume = cell.area_m2() * h;
+    if (t.rows() == 0) h0 = h;
+    const auto ts =
+        tensor_stress(r[5].get<double>(), r[6].get<double>(), r[7].get<double>(), volume);
+    // The bottom wall's stress less half the grains' weight: the mid-height vertical stress. (The
+    // plate's own force output, f_P[3], reported twice the grains' load through a whole run after
+    // the restart on LIGGGHTS 3.8.0 while the wall and the stress tensor agreed: it is not used.)
+    const double half_weight =
+        0.5 * cell.particles.density_kg_m3 * kGravity * r[4].get<double>() / cell.area_m2();
+    t.control.push_back((r[1].get<double>() - half_weight) / 1e3);
+    t.eps_v.push_back(1.0 - h / h0);
+    t.e.push_back(volume / r[4].get<double>() - 1.0);
+    sigma_h.push_back(ts.h);
+    k0.push_back(ts.h / ts.zz);
+    coordination.push_back(r[8].get<double>());
+    overlap.push_back(mean_overlap_over_d50(ts.mean * 1e3, volume, particles, r[8].get<double>(),
+                                            cell.particles));
+  }
+  if (t.rows() == 0) throw InputError("oedometer: the engine reported no rows");
+  t.sigma0_kPa = t.control.front();
+  t.e0 = t.e.front();
+  t.K0 = k0.front();
+  t.extra_columns = {{"sigma_h_kPa", sigma_h},
+                     {"K0", k0},
+                     {"coordination", coordination},
+                     {"overlap_mean_over_d50_estimate", overlap}};
+  return t;
+}
+
+// R^2 of a straight line through vx/v_wall against height in the last profile window: 1 for the
+// homogeneous shear a simple-shear cell should have, lower where shear localises.
+double profile_linearity(const io::CsvTable& profiles) {
+  if (profiles.rows.empty()) return 0.0;
+  const double last = profiles.rows.back()[0];
+  std::vector<std::pair<double, double>> p;
+  for (const auto& r : profiles.rows)
+    if (r[0] == last) p.emplace_back(r[1], r[2]);
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+  const double n = double(p.size());
+  for (const auto& [x, y] : p) sx += x, sy += y, sxx += x * x, sxy += x * y, syy += y * y;
+  const double cov = sxy - sx * sy / n, vx = sxx - sx * sx / n, vy = syy - sy * sy / n;
+  return vx > 0.0 && vy > 0.0 ? cov * cov / (vx * vy) : 0.0;
+}
+
+SoilTest simple_shear_result(const Scene& cell, const ContractTables& tables,
+                             const nlohmann::json& facts) {
+  SoilTest t;
+  t.kind = SoilTestKind::kSimpleShear;
+  t.boundary = cell.boundary.kind;
+  const auto& sh = facts.at("shear");
+  const double h0 = cell_height(cell, sh.at("z0_m").get<double>());
+  const auto ts = tensor_stress(sh.value("stress_volume_xx_Pa_m3", 0.0),
+                                sh.value("stress_volume_yy_Pa_m3", 0.0),
+                                sh.value("stress_volume_zz_Pa_m3", 0.0), cell.area_m2() * h0);
+  const auto& ts_table = tables.timeseries;
+  const auto col = [&](const char* name) { return ts_table.values(name, "timeseries"); };
+  const auto ux = col("u_x_mm"), un = col("u_n_mm"), sn = col("sigma_n_kPa"), tau = col("tau_kPa"),
+             e = col("e_specimen"), plate = col("sigma_plate_kPa");
+  std::vector<double> ux_out, un_out, plate_out;
+  for (std::size_t i = 0; i < ux.size(); ++i) {
+    const double gamma = ux[i] * 1e-3 / h0;
+    if (!t.control.empty() && !(gamma > t.control.back()))
+      continue;  // the contract: gamma increases
+    t.control.push_back(gamma);
+    t.tau_kPa.push_back(tau[i]);
+    t.sigma_n_kPa.push_back(sn[i]);
+    t.e.push_back(e[i]);
+    ux_out.push_back(ux[i]), un_out.push_back(un[i]), plate_out.push_back(plate[i]);
+  }
+  if (t.rows() == 0) throw InputError("simple shear: the engine reported no rows");
+  t.sigma0_kPa = cell.boundary.sigma_n_Pa / 1e3;
+  t.e0 = t.e.front();
+  if (ts.zz > 0.0 && ts.h > 0.0) t.K0 = ts.h / ts.zz;
+  t.extra_columns = {{"u_x_mm", ux_out}, {"u_n_mm", un_out}, {"sigma_plate_kPa", plate_out}};
+  return t;
+}
+
+nlohmann::json fresh_manifest(const std::string& text, const std::string& source,
+                              const std::string& cell_text, const Scene& cell,
+                              const SoilCellSpec& c, Engine& engine, const RunOptions& opt) {
+  return {
+      {"kind", "soiltest"},
+      {"test", calibration::to_string(c.test)},
+      {"source", "dem:" + engine.name()},
+      {"workbench", {{"name", "iwb"}, {"version", IWB_VERSION}}},
+      {"engine",
+       {{"name", engine.name()}, {"version", engine.version()}, {"processes", opt.processes}}},
+      {"command_line", opt.command_line},
+      {"scene", {{"source", source}, {"sha256", io::sha256_hex(text)}, {"text", text}}},
+      {"cell_scene",
+       {{"sha256", io::sha256_hex(cell_text)}, {"text", cell_text}, {"resolved", cell.resolved}}},
+      {"density", to_string(c.density)},
+      {"consolidation_friction", cell.consolidation.friction},
+      {"seed", cell.seed},
+      {"numerics", engine.numerics(cell)},
+      {"stiffness_level", cell.stiffness_level()},
+      {"warnings", cell.warnings},
+      {"stages", nlohmann::json::object()},
+      {"started", io::utc_timestamp()},
+      {"status", "running"}};
+}
+
+}  // namespace
+
+SoilDensity parse_soil_density(const std::string& text, const std::string& where) {
+  if (text == "dense") return SoilDensity::kDense;
+  if (text == "loose") return SoilDensity::kLoose;
+  throw InputError(fmt::format("{} = '{}': allowed dense or loose", where, text));
+}
+
+const char* to_string(SoilDensity d) {
+  return d == SoilDensity::kDense ? "dense" : "loose";
+}
+
+double SoilCellSpec::initial_stress_kPa() const {
+  if (sigma0_kPa > 0.0) return sigma0_kPa;
+  return test == SoilTestKind::kOedometer ? kOedometerStartKPa : kSimpleShearStartKPa;
+}
+
+std::vector<double> oedometer_levels_kPa(const SoilCellSpec& c) {
+  const double s0 = c.initial_stress_kPa();
+  if (!(c.sigma_max_kPa > s0))
+    throw InputError(fmt::format("--sigma-max = {:g} kPa: must exceed the first level, {:g} kPa",
+                                 c.sigma_max_kPa, s0));
+  std::vector<double> out{s0};
+  for (int k = 1; k <= c.load_levels; ++k)
+    out.push_back(s0 * std::pow(c.sigma_max_kPa / s0, double(k) / c.load_levels));
+  for (int k = 1; k <= c.unload_levels; ++k)
+    out.push_back(c.sigma_max_kPa * std::pow(s0 / c.sigma_max_kPa, double(k) / c.unload_levels));
+  return out;
+}
+
+std::string cell_scene_text(const std::string& text, const std::string& source,
+                            const SoilCellSpec& c) {
+  const Scene base = parse_scene(text, source);  // the scene must be valid as given
+  toml::table root = io::parse_toml_text(text, source);
+  for (const char* table : {"specimen", "wall", "plate", "boundary", "shear", "output"})
+    root.erase(table);
+  const double d50_mm = base.particles.d50_m * 1e3;
+  const double travel_mm = oedometer(c) ? d50_mm : c.gamma * c.height_d50 * d50_mm;
+  const std::string what =
+      oedometer(c) ? "oedometer" : fmt::format("simple shear {}", driver::to_string(c.boundary));
+  const auto set = [&](const std::string& key, const io::TomlScalar& v) {
+    io::set_dotted(root, key, v, source);
+  };
+  set("description",
+      fmt::format("soil cell ({}, {}) of {}: {:g} x {:g} x {:g} d50 between rough plates", what,
+                  to_string(c.density), source, c.length_d50, c.width_d50, c.height_d50));
+  set("specimen.length_d50", c.length_d50);
+  set("specimen.width_d50", c.width_d50);
+  set("specimen.height_d50", c.height_d50);
+  set("specimen.consolidation_friction", preparation_friction(c.density));
+  for (const std::string side : {"wall", "plate"}) {
+    set(side + ".profile", std::string("sawtooth"));
+    set(side + ".pitch_d50", kCellPitchD50);
+    set(side + ".height_d50", kCellRidgeD50);
+  }
+  set("boundary.type", std::string(oedometer(c) ? "CNL" : driver::to_string(c.boundary)));
+  set("boundary.sigma_n_kPa", c.initial_stress_kPa());
+  set("shear.inertial_number", c.inertial_number);
+  set("shear.displacement_mm", travel_mm);  // the oedometer does not shear: a placeholder of 1 d50
+  set("output.timeseries_every_mm", travel_mm / kTimeseriesRows);
+  set("output.profile_windows", std::int64_t(kProfileWindows));
+  set("output.profile_bin_d50", 0.5);
+  set("output.vtk_every_mm", travel_mm / kVtkSnapshots);
+  return fmt::format(
+      "# Soil cell derived by `iwb dem soiltest` from {}: its particles, seed and\n"
+      "# consolidation with the cell's geometry and loading (src/dem/soil_cell.hpp).\n{}",
+      source, io::serialise(root));
+}
+
+RunOutcome run_soil_test(const std::string& text, const std::string& source, const SoilCellSpec& c,
+                         const RunOptions& opt) {
+  const std::string cell_text = cell_scene_text(text, source, c);
+  const Scene cell = parse_scene(cell_text, source + " (soil cell)");
+  LiggghtsEngine engine =
+      oedometer(c) ? LiggghtsEngine({"consolidate", "oedometer"}, oedometer_values(cell, c))
+                   : LiggghtsEngine();
+  RunOutcome out;
+  const auto run = run_stages(cell, cell_text, engine, opt,
+                              fresh_manifest(text, source, cell_text, cell, c, engine, opt), out,
+                              "/cell_scene/sha256");
+  if (!run) return out;
+  auto& m = out.manifest;
+  try {
+    SoilTest t;
+    if (oedometer(c)) {
+      t = oedometer_result(cell, run->facts);
+    } else {
+      const ContractTables tables = engine.assemble(run->ctx, run->facts);
+      t = simple_shear_result(cell, tables, run->facts);
+      io::write_atomically(opt.out / "profiles.csv", tables.profiles.to_csv());
+      auto summary = to_json(summarize(cell, tables.timeseries, tables.profiles));
+      summary["profile_linearity_r2"] = profile_linearity(tables.profiles);
+      m["cell_summary"] = summary;
+      m["engine_facts"] = tables.facts;
+      m["gamma_reached"] = t.control.back();
+      m["files"] = {"timeseries.csv", "profiles.csv", "vtk/particles.pvd", "vtk/walls.pvd"};
+    }
+    t.name = opt.out.string();
+    t.source = "dem:" + engine.name();
+    m["particle_count"] = run->facts.value("/consolidate/particles"_json_pointer, 0);
+    m["finished"] = io::utc_timestamp();
+    calibration::write_soil_test_files(t, opt.out, m);
+    calibration::read_soil_test(opt.out);  // what calibrate will read: the contract must hold
+    m = nlohmann::json::parse(io::read_file(opt.out / "manifest.json"));
+    out.status = "complete";
+  } catch (const std::exception& e) {
+    out.status = fmt::format("failed: {}", e.what());
+    m["status"] = out.status;
+    io::write_manifest(opt.out, m);
+  }
+  return out;
+}
+
+}  // namespace iwb::dem
