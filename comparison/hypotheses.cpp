@@ -146,7 +146,56 @@ KappaCheck check_kappa_r(const std::vector<RunRecord>& runs) {
   return c;
 }
 
+namespace {
+
+// The runs of one R_n group split by d50 (scene inputs: equal within kSameD50Relative).
+std::vector<std::vector<std::size_t>> split_by_d50(const std::vector<RunRecord>& runs,
+                                                   const std::vector<std::size_t>& idx) {
+  std::vector<std::vector<std::size_t>> sets;
+  for (const auto& local :
+       group_close(collect(runs, idx, [](const RunRecord& r) { return r.d50_mm; }),
+                   kSameD50Relative, 0.0)) {
+    sets.push_back({});
+    for (auto k : local) sets.back().push_back(idx[k]);
+  }
+  return sets;
+}
+
 // ---- 2. band thickness
+
+bool has_wall_band(const RunRecord& r) {
+  return r.shear_mode != "distributed shear" && r.band_d50.has_value();
+}
+
+BandGroup band_group(const std::vector<RunRecord>& runs, const std::vector<std::size_t>& idx) {
+  BandGroup g;
+  g.R_n = scatter_of(collect(runs, idx, [](const RunRecord& r) { return r.R_n; })).mean;
+  g.d50_mm = runs[idx.front()].d50_mm;
+  std::vector<double> bands;
+  for (auto i : idx) {
+    g.runs.push_back(runs[i].name);
+    if (!has_wall_band(runs[i])) {
+      ++g.without_band;
+      continue;
+    }
+    bands.push_back(*runs[i].band_d50);
+    g.inside += bands.back() >= kBandMinD50 && bands.back() <= kBandMaxD50;
+  }
+  g.band = scatter_of(bands);
+  return g;
+}
+
+std::string band_groups_text(const std::vector<BandGroup>& groups) {
+  std::string s;
+  for (const auto& g : groups)
+    s += fmt::format(
+        "{}{}, d50 {:g} mm: {}", s.empty() ? "" : "; ", rn_label(g.R_n), g.d50_mm,
+        g.band.n == 0 ? std::string("no band")
+                      : fmt::format("{} d50, {} of {} inside", pm(g.band, 2), g.inside, g.band.n));
+  return s;
+}
+
+}  // namespace
 
 BandCheck check_band_thickness(const std::vector<RunRecord>& runs) {
   BandCheck c;
@@ -184,6 +233,9 @@ BandCheck check_band_thickness(const std::vector<RunRecord>& runs) {
     v += fmt::format("; {} run(s) without a wall band", c.without_wall_band.size());
   if (!runs.empty())
     v += fmt::format("; fitted d_s {} d50 over all {} run(s)", pm(c.d_s_fit_d50, 1), runs.size());
+  for (const auto& idx : by_R_n(runs))
+    for (const auto& set : split_by_d50(runs, idx)) c.groups.push_back(band_group(runs, set));
+  if (!c.bands.empty()) v += ". Per R_n and d50: " + band_groups_text(c.groups);
   c.verdict = v;
   return c;
 }
@@ -230,14 +282,8 @@ CollapseGroup collapse_group(const std::vector<RunRecord>& runs,
                              const std::vector<std::size_t>& idx) {
   CollapseGroup g;
   g.R_n = scatter_of(collect(runs, idx, [](const RunRecord& r) { return r.R_n; })).mean;
-  std::vector<std::vector<std::size_t>> sets;
-  for (const auto& local :
-       group_close(collect(runs, idx, [](const RunRecord& r) { return r.d50_mm; }),
-                   kSameD50Relative, 0.0)) {
-    sets.push_back({});
-    for (auto k : local) sets.back().push_back(idx[k]);
-    g.d50s_mm.push_back(runs[sets.back().front()].d50_mm);
-  }
+  const auto sets = split_by_d50(runs, idx);
+  for (const auto& set : sets) g.d50s_mm.push_back(runs[set.front()].d50_mm);
   if (sets.size() < 2) return g;
   g.quantities = {
       compare_sets(

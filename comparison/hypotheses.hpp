@@ -82,6 +82,15 @@ struct KappaCheck {
 KappaCheck check_kappa_r(const std::vector<RunRecord>& runs);
 
 // --- 2. band thickness against d_s = k d50, k in [5, 10].
+// The seeds of one wall and grain size: their bands with scatter (roughness decides whether the
+// wall drags the grains or slips, so a pooled mean mixes different mechanisms).
+struct BandGroup {
+  double R_n = 0.0, d50_mm = 0.0;
+  std::vector<std::string> runs;
+  Scatter band;          // over the runs with a wall band
+  int inside = 0;        // bands in [kBandMinD50, kBandMaxD50]
+  int without_band = 0;  // distributed shear or no wall band
+};
 struct BandCheck {
   std::vector<std::pair<std::string, double>> bands;  // localised runs: name, wall band in d50
   std::vector<std::string> distributed;               // "distributed shear": no band, no thickness
@@ -89,6 +98,8 @@ struct BandCheck {
   Scatter band;
   int inside = 0;       // bands in [kBandMinD50, kBandMaxD50]
   Scatter d_s_fit_d50;  // the fitted d_s of every run, for comparison
+  // per R_n and d50, ascending
+  std::vector<BandGroup> groups;
   std::string outcome;  // "holds", "holds on average", "does not hold", "not testable"
   std::string verdict;
 };

@@ -77,6 +77,19 @@ json band_json(const BandCheck& c, const std::vector<RunRecord>& runs) {
          fmt::format("{:.1f}", r.d_s_fit_d50)});
   json bands = json::array();
   for (const auto& [name, b] : c.bands) bands.push_back({{"run", name}, {"band_d50", b}});
+  json groups = json::array(), group_rows = json::array();
+  for (const auto& g : c.groups) {
+    groups.push_back({{"R_n", g.R_n},
+                      {"d50_mm", g.d50_mm},
+                      {"runs", g.runs},
+                      {"band", scatter_json(g.band)},
+                      {"inside", g.inside},
+                      {"without_band", g.without_band}});
+    group_rows.push_back({fmt::format("{:.3g}", g.R_n), fmt::format("{:g}", g.d50_mm),
+                          std::to_string(g.runs.size()), g.band.n > 0 ? pm_cell(g.band, 2) : "-",
+                          fmt::format("{} of {}", g.inside, g.band.n),
+                          std::to_string(g.without_band)});
+  }
   return {{"id", "band_thickness"},
           {"title", "Band thickness against d_s = k d50, k in [5, 10]"},
           {"assumption",
@@ -90,6 +103,13 @@ json band_json(const BandCheck& c, const std::vector<RunRecord>& runs) {
           {"distributed", c.distributed},
           {"without_wall_band", c.without_wall_band},
           {"d_s_fit_d50", scatter_json(c.d_s_fit_d50)},
+          {"groups", groups},
+          {"group_table",
+           {{"columns",
+             {"R_n", "d50 (mm)", "runs", "wall band (d50): mean ± SD over seeds",
+              fmt::format("inside [{:g}, {:g}]", kBandMinD50, kBandMaxD50),
+              "distributed or no wall band"}},
+            {"rows", group_rows}}},
           {"table",
            {{"columns",
              {"run", "R_n", "d50 (mm)", "shear mode", "wall band (d50)", "fitted d_s (d50)"}},
@@ -198,6 +218,7 @@ std::string to_markdown(const json& h) {
     s += fmt::format("\n## {}. {}\n\nAssumption: {}.\n\n**Verdict:** {}\n\n", ++k,
                      c["title"].get<std::string>(), c["assumption"].get<std::string>(),
                      c["verdict"].get<std::string>());
+    if (c.contains("group_table")) s += markdown_table(c["group_table"]) + "\n";
     s += markdown_table(c["table"]);
     if (c.contains("notes")) s += fmt::format("\n{}\n", c["notes"].get<std::string>());
   }

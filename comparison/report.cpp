@@ -116,21 +116,28 @@ std::string summary_table(const nlohmann::json& s) {
 }
 
 // The hypothesis checks of a `--runs` set: verdicts and their tables, as hypotheses.json has them.
+// A table of strings of hypotheses.json (columns, rows) as HTML.
+std::string html_table(const nlohmann::json& t) {
+  std::string s = "<table><tr>";
+  for (const auto& col : t["columns"]) s += "<th>" + escape_html(col) + "</th>";
+  s += "</tr>\n";
+  for (const auto& row : t["rows"]) {
+    s += "<tr>";
+    for (const auto& cell : row) s += "<td>" + escape_html(cell) + "</td>";
+    s += "</tr>\n";
+  }
+  return s + "</table>\n";
+}
+
 std::string hypotheses_section(const fs::path& file) {
   const auto h = nlohmann::json::parse(io::read_file(file));
   std::string s = fmt::format("<section><h2>Hypothesis checks over {} DEM runs</h2>\n<p>From {}.</p>\n", h["runs"].size(),
                               escape_html(file.string()));
   for (const auto& c : h["checks"]) {
-    s += fmt::format("<h3>{}</h3>\n<p>Assumption: {}.</p>\n<p><strong>Verdict:</strong> {}</p>\n<table><tr>",
+    s += fmt::format("<h3>{}</h3>\n<p>Assumption: {}.</p>\n<p><strong>Verdict:</strong> {}</p>\n",
                      escape_html(c["title"]), escape_html(c["assumption"]), escape_html(c["verdict"]));
-    for (const auto& col : c["table"]["columns"]) s += "<th>" + escape_html(col) + "</th>";
-    s += "</tr>\n";
-    for (const auto& row : c["table"]["rows"]) {
-      s += "<tr>";
-      for (const auto& cell : row) s += "<td>" + escape_html(cell) + "</td>";
-      s += "</tr>\n";
-    }
-    s += "</table>\n";
+    if (c.contains("group_table")) s += html_table(c["group_table"]);
+    s += html_table(c["table"]);
     if (c.contains("notes")) s += "<p>" + escape_html(c["notes"]) + "</p>\n";
   }
   return s + "</section>\n";

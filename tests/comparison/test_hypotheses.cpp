@@ -130,6 +130,41 @@ TEST_CASE("band thickness: 7 +- 1 d50 holds, distributed shear is counted apart 
   CHECK(comparison::check_band_thickness(none).outcome == "not testable");
 }
 
+TEST_CASE("band thickness per R_n and d50: each wall and grain size with its own seed scatter",
+          "[comparison][hypotheses]") {
+  auto slipping = seeds("flat", 0.0, 2.0, {0.5, 0.5, 0.5});
+  for (std::size_t i = 0; i < 2; ++i) slipping[i].band_d50 = 2.0 + double(i) * 2.0;  // 2, 4
+  slipping[2].shear_mode = "distributed shear";
+  auto rough = seeds("rough", 0.5, 2.0, {0.8, 0.8, 0.8});
+  for (std::size_t i = 0; i < 3; ++i) rough[i].band_d50 = 6.0 + double(i);  // 6, 7, 8
+  auto fine = seeds("fine", 0.5, 1.0, {0.8, 0.8});
+  fine[0].band_d50 = 9.0, fine[1].band_d50 = 11.0;
+  const auto runs = joined(joined(slipping, rough), fine);
+  const auto c = comparison::check_band_thickness(runs);
+  REQUIRE(c.groups.size() == 3);  // R_n 0; R_n 0.5 at d50 1 mm and 2 mm
+  CHECK(c.groups[0].R_n == 0.0);
+  CHECK(c.groups[0].band.mean == Approx(3.0));
+  CHECK(c.groups[0].band.sd == Approx(std::sqrt(2.0)));
+  CHECK(c.groups[0].inside == 0);
+  CHECK(c.groups[0].without_band == 1);
+  CHECK(c.groups[1].d50_mm == 1.0);
+  CHECK(c.groups[1].band.mean == Approx(10.0));
+  CHECK(c.groups[1].inside == 1);  // 9 in, 11 out
+  CHECK(c.groups[2].d50_mm == 2.0);
+  CHECK(c.groups[2].band.sd == Approx(1.0));
+  CHECK(c.groups[2].inside == 3);
+  CHECK_THAT(c.verdict,
+             Catch::Contains("R_n = 0 (flat), d50 2 mm: 3.00 +- 1.41 d50, 0 of 2 inside") &&
+                 Catch::Contains("R_n = 0.5, d50 2 mm: 7.00 +- 1.00 d50, 3 of 3 inside"));
+  const auto h = comparison::to_json(comparison::check_hypotheses(runs), runs);
+  const auto& rows = h["checks"][1]["group_table"]["rows"];
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[2][3] == "7.00 ± 1.00");
+  CHECK(rows[0][5] == "1");
+  CHECK_THAT(comparison::to_markdown(h),
+             Catch::Contains("| wall band (d50): mean ± SD over seeds |"));
+}
+
 TEST_CASE(
     "collapse over d50: equal friction collapses, 20 % apart does not, one d50 is not testable",
     "[comparison][hypotheses]") {

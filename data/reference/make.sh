@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Reproduces data/reference/ (README.md there): the reference campaign (two sweeps, 36 LIGGGHTS
+# runs), the copy of what is committed, the comparison of every run with hvwe and the hypothesis
+# checks, and the report. Run from the repository root after building:  data/reference/make.sh
+# Stages: sweeps | copy | compare | report (default: all, in that order). The sweeps are
+# resumable (run again to continue); the rest takes under a minute and can be rerun alone, e.g.
+# with another parameter set:  PARAMS=data/params/other.toml data/reference/make.sh compare report
+set -euo pipefail
+IWB=${IWB:-build/iwb}
+PARAMS=${PARAMS:-data/params/table_5_1_evaluation.toml}  # the hvwe set every run is compared with
+MODEL=${MODEL:-hvwe}
+JOBS=${JOBS:-2}
+WORK=${WORK:-runs/reference}  # the full campaigns (VTK, engine inputs and logs): not committed
+DEST=data/reference
+SWEEPS=(reference_rn reference_d50)
+stages=("$@")
+[ ${#stages[@]} -eq 0 ] && stages=(sweeps copy compare report)
+
+# The committed part of a campaign: sweep.json, the job scenes, and per run the contract files
+# without VTK and without liggghts/ (inputs, logs, restart files).
+copy_campaign() {
+  local from=$1 to=$2
+  rm -rf "$to"
+  mkdir -p "$to/scenes"
+  cp "$from/sweep.json" "$to/"
+  cp "$from"/scenes/*.toml "$to/scenes/"
+  for run in "$from"/runs/*/; do
+    local name; name=$(basename "$run")
+    if ! grep -q '"status": "complete"' "$run/manifest.json"; then
+      echo "make.sh: $run is not complete; not copied (run the sweeps again to finish it)" >&2
+      continue
+    fi
+    mkdir -p "$to/runs/$name"
+    cp "$run"/{manifest.json,summary.json,timeseries.csv,profiles.csv} "$to/runs/$name/"
+  done
+}
+
+# The committed runs of both sweeps, optionally only one boundary type (cnl, cns).
+runs_of() {
+  for s in "${SWEEPS[@]}"; do
+    for r in "$DEST/$s"/runs/*; do
+      case "$1" in all) echo "$r" ;; *) [[ $(basename "$r") == *_"$1"* ]] && echo "$r" ;; esac
+    done
+  done
+}
+
+for stage in "${stages[@]}"; do
+  case $stage in
+  sweeps)
+    for s in "${SWEEPS[@]}"; do "$IWB" sweep "data/sweeps/$s.toml" -j "$JOBS" -o "$WORK/$s"; done ;;
+  copy)
+    for s in "${SWEEPS[@]}"; do copy_campaign "$WORK/$s" "$DEST/$s"; done ;;
+  compare)
+    # All runs together, and CNL and CNS apart: the checks group runs by R_n and d50 only, and a
+    # CNS run dilates less than a CNL run, which would widen the seed scatter of a mixed group.
+    for set in all cnl cns; do
+      mapfile -t runs < <(runs_of $set)
+      "$IWB" compare --runs "${runs[@]}" --model "$MODEL" --params "$PARAMS" -o "$DEST/compare/$set" --force
+    done
+    # the per-run comparisons of the CNL and CNS sets are those of the set of all runs (same DEM
+    # run, parameters and model): keep them once
+    for set in cnl cns; do find "$DEST/compare/$set" -mindepth 1 -maxdepth 1 -type d -exec rm -r {} +; done ;;
+  report)
+    # One page: the verdicts of the three sets, then every run (from the set of all runs) once.
+    rm -rf "$DEST/report"
+    "$IWB" report "$DEST/compare/all" "$DEST/compare/cnl/hypotheses.json" "$DEST/compare/cns/hypotheses.json" \
+      -o "$DEST/report/report.html"
+    # the PNGs repeat the SVGs (inline in the page, and beside their CSV and gnuplot script):
+    # dropped to keep the committed campaign small; `gnuplot <figure>.gp` redraws any of them
+    find "$DEST/report" -name '*.png' -delete ;;
+  *) echo "make.sh: unknown stage '$stage' (sweeps, copy, compare, report)" >&2; exit 2 ;;
+  esac
+done
