@@ -7,7 +7,7 @@
 # with another parameter set:  PARAMS=data/params/other.toml data/reference/make.sh compare report
 set -euo pipefail
 IWB=${IWB:-build/iwb}
-PARAMS=${PARAMS:-data/params/table_5_1_evaluation.toml}  # the hvwe set every run is compared with
+PARAMS=${PARAMS:-data/params/dem_default_grains.toml}  # the hvwe set every run is compared with: calibrated on these grains (data/calibration/dem_default_grains)
 MODEL=${MODEL:-hvwe}
 JOBS=${JOBS:-2}
 WORK=${WORK:-runs/reference}  # the full campaigns (VTK, engine inputs and logs): not committed

@@ -7,7 +7,7 @@ set ylabel 'sigma_n (kPa)'
 
 set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'
 set output 'sigman_ux.svg'
-plot 'sigman_ux.csv' using 1:2 skip 1 with lines lw 3 title 'DEM', 'sigman_ux.csv' using 1:3 skip 1 with lines lw 1.5 title 'kappa_r = 1.000 (eq. 5.35, R_n = 1), d_s = 5 d50', 'sigman_ux.csv' using 1:4 skip 1 with lines lw 1.5 title 'kappa_r = 1.000 (eq. 5.35, R_n = 1), d_s = 10 d50', 'sigman_ux.csv' using 1:5 skip 1 with lines lw 1.5 title 'fitted: kappa_r = 0.794 +- 0.001, d_s = 46.42 +- 0.63 mm (23.2 d50)'
+plot 'sigman_ux.csv' using 1:2 skip 1 with lines lw 3 title 'DEM', 'sigman_ux.csv' using 1:3 skip 1 with lines lw 1.5 title 'kappa_r = 1.000 (eq. 5.35, R_n = 1), d_s = 5 d50', 'sigman_ux.csv' using 1:4 skip 1 with lines lw 1.5 title 'kappa_r = 1.000 (eq. 5.35, R_n = 1), d_s = 10 d50', 'sigman_ux.csv' using 1:5 skip 1 with lines lw 1.5 title 'fitted: kappa_r = 0.992 +- 0.002, d_s = 15.54 +- 0.21 mm (7.8 d50)'
 set terminal pngcairo size 900,560 font 'sans,10' noenhanced
 set output 'sigman_ux.png'
 replot

@@ -7,7 +7,7 @@ set ylabel 'u_n (mm), dilation positive'
 
 set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'
 set output 'un_ux.svg'
-plot 'un_ux.csv' using 1:2 skip 1 with lines lw 3 title 'DEM', 'un_ux.csv' using 1:3 skip 1 with lines lw 1.5 title 'kappa_r = 0.899 (eq. 5.35, R_n = 0.25), d_s = 5 d50', 'un_ux.csv' using 1:4 skip 1 with lines lw 1.5 title 'kappa_r = 0.899 (eq. 5.35, R_n = 0.25), d_s = 10 d50', 'un_ux.csv' using 1:5 skip 1 with lines lw 1.5 title 'kappa_r = 0.899 (eq. 5.35, R_n = 0.25), d_s = measured wall band (5.4 d50)', 'un_ux.csv' using 1:6 skip 1 with lines lw 1.5 title 'fitted: kappa_r = 0.755 +- 0.001, d_s = 49.78 +- 0.64 mm (24.9 d50)'
+plot 'un_ux.csv' using 1:2 skip 1 with lines lw 3 title 'DEM', 'un_ux.csv' using 1:3 skip 1 with lines lw 1.5 title 'kappa_r = 0.899 (eq. 5.35, R_n = 0.25), d_s = 5 d50', 'un_ux.csv' using 1:4 skip 1 with lines lw 1.5 title 'kappa_r = 0.899 (eq. 5.35, R_n = 0.25), d_s = 10 d50', 'un_ux.csv' using 1:5 skip 1 with lines lw 1.5 title 'kappa_r = 0.899 (eq. 5.35, R_n = 0.25), d_s = measured wall band (5.4 d50)', 'un_ux.csv' using 1:6 skip 1 with lines lw 1.5 title 'fitted: kappa_r = 0.954 +- 0.001, d_s = 16.57 +- 0.20 mm (8.3 d50)'
 set terminal pngcairo size 900,560 font 'sans,10' noenhanced
 set output 'un_ux.png'
 replot
