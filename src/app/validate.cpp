@@ -29,6 +29,26 @@ std::pair<std::string, std::string> scene_source(const std::string& scene) {
   throw InputError(fmt::format("--scene {}: neither an embedded scene ({}) nor a file", scene, names));
 }
 
+// Runs the scene in one engine into out/dem-<engine>; false (and says why) if it did not complete.
+bool run_dem(const dem::Scene& scene, const std::string& text, const std::string& source, const std::string& engine_name,
+             const ValidateOptions& opt, const fs::path& dem_dir, const std::string& step) {
+  const auto engine = dem::make_engine(engine_name);
+  fmt::print(stderr, "iwb validate: {} DEM run of {} in {} ({} processes) -> {}\n", step, source, engine_name,
+             opt.processes, dem_dir.string());
+  auto last = std::chrono::steady_clock::now();
+  const auto outcome = dem::run_scene(scene, text, *engine,
+                                      {dem_dir, opt.processes, false, opt.force, opt.command_line, nullptr,
+                                       [&last](const std::string& l) {
+                                         if (std::chrono::steady_clock::now() - last < std::chrono::seconds(3)) return;
+                                         last = std::chrono::steady_clock::now();
+                                         fmt::print(stderr, "  {}\n", l);
+                                       }});
+  if (!outcome.complete()) fmt::print(stderr, "iwb validate: the {} run did not complete: {}\n", engine_name, outcome.status);
+  return outcome.complete();
+}
+
+}  // namespace
+
 // The shipped parameter set whose critical friction angle is closest to the DEM's residual
 // interface friction angle atan(tau/sigma_n): the only property of the grains a DEM run tells
 // without calibration (issue 7 calibrates properly).
@@ -53,26 +73,6 @@ fs::path matching_parameters(const fs::path& dir, double residual_friction, std:
   why = fmt::format("phi_c closest to the DEM's residual friction angle atan({:.3f}) = {:.1f} deg", residual_friction, phi_dem);
   return best;
 }
-
-// Runs the scene in one engine into out/dem-<engine>; false (and says why) if it did not complete.
-bool run_dem(const dem::Scene& scene, const std::string& text, const std::string& source, const std::string& engine_name,
-             const ValidateOptions& opt, const fs::path& dem_dir, const std::string& step) {
-  const auto engine = dem::make_engine(engine_name);
-  fmt::print(stderr, "iwb validate: {} DEM run of {} in {} ({} processes) -> {}\n", step, source, engine_name,
-             opt.processes, dem_dir.string());
-  auto last = std::chrono::steady_clock::now();
-  const auto outcome = dem::run_scene(scene, text, *engine,
-                                      {dem_dir, opt.processes, false, opt.force, opt.command_line, nullptr,
-                                       [&last](const std::string& l) {
-                                         if (std::chrono::steady_clock::now() - last < std::chrono::seconds(3)) return;
-                                         last = std::chrono::steady_clock::now();
-                                         fmt::print(stderr, "  {}\n", l);
-                                       }});
-  if (!outcome.complete()) fmt::print(stderr, "iwb validate: the {} run did not complete: {}\n", engine_name, outcome.status);
-  return outcome.complete();
-}
-
-}  // namespace
 
 int run_validate(const ValidateOptions& opt) {
   if (opt.engines.empty()) throw InputError("--engines: name at least one engine (liggghts, yade)");

@@ -20,4 +20,8 @@ struct ValidateOptions {
 
 int run_validate(const ValidateOptions& options);
 
+// The shipped parameter set in `dir` whose critical friction angle is closest to the DEM's
+// residual interface friction angle atan(residual_friction); `why` says so. Also `iwb plan`'s default.
+std::filesystem::path matching_parameters(const std::filesystem::path& dir, double residual_friction, std::string& why);
+
 }  // namespace iwb::app
