@@ -140,9 +140,10 @@ json analyse(const json& rows) {
     return out;
   }
   out["reference"] = {{"name", (*reference)["name"]}, {"settings", (*reference)["settings"]},
-                      {"why", "every knob at its refining factor at once (larger box, stiffer grains, smaller "
-                              "step, slower shear): the most resolved setting run, nearest the quasi-static, "
-                              "rigid-grain, large-specimen limit; one seed, so its own scatter is the noise floor"}};
+                      {"why", "every knob of the tradeoff at its refining factor at once (of box, kappa, dt, I: a "
+                              "larger box, stiffer grains, a smaller step, slower shear): the most resolved setting "
+                              "run, nearest the quasi-static, rigid-grain, large-specimen limit; one seed, so its "
+                              "own scatter is of the size of the noise floor"}};
   const json ref = *reference;
   for (auto& s : out["settings"])
     if (complete(s)) score(s, ref, noise);
