@@ -57,7 +57,8 @@ void add_plan(CLI::App& app, TradeoffCommands& c) {
       "hvwe-igs too for cyclic paths) whose errors against the tradeoff's reference run, replayed along its own "
       "path with kappa_r and d_s fitted, meet them. Prints the decision and which setting or model failed which "
       "tolerance by how much; writes plan.json.\n"
-      "Example: iwb plan data/scenes/default.toml --tradeoff data/tradeoff/default");
+      "It needs the tradeoff's run directories (the reference run is replayed), not only its tables.\n"
+      "Example: iwb plan data/scenes/default.toml --tradeoff runs/tradeoff-default");
   c.plan->add_option("scene", c.plan_scene, "scene TOML file with a [requirements] table")->required()->check(CLI::ExistingFile);
   c.plan->add_option("--tradeoff", c.plan_tradeoff, "tradeoff directory (default runs/tradeoff-<scene stem>)");
   c.plan->add_option("--params", c.plan_params,
