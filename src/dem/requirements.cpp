@@ -33,15 +33,17 @@ Requirements read_requirements(io::TableReader t) {
     if (n == nullptr) continue;
     if (const auto s = n->value<std::string>()) {
       if (*s != "not needed")
-        throw InputError(fmt::format("{} = {}: a tolerance is a number in (0, 1] (0.05 = 5 %) or \"not needed\"",
-                                     t.where(q.key), io::describe(*n)));
+        throw InputError(
+            fmt::format("{} = {}: a tolerance is a number in (0, 1] (0.05 = 5 %) or \"not needed\"",
+                        t.where(q.key), io::describe(*n)));
       r[q.key] = std::nullopt;
       continue;
     }
     const auto v = n->value<double>();
     if (!v || !(*v > 0.0 && *v <= 1.0))
-      throw InputError(fmt::format("{} = {}: a tolerance is a number in (0, 1] (0.05 = 5 %) or \"not needed\"",
-                                   t.where(q.key), io::describe(*n)));
+      throw InputError(
+          fmt::format("{} = {}: a tolerance is a number in (0, 1] (0.05 = 5 %) or \"not needed\"",
+                      t.where(q.key), io::describe(*n)));
     r[q.key] = *v;
   }
   try {

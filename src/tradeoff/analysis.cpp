@@ -1,6 +1,7 @@
 // analyse(): errors against the reference, the seed noise floor, knob effects, tolerances met.
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
 
 #include "dem/crosscheck.hpp"
 #include "dem/requirements.hpp"
@@ -14,7 +15,9 @@ namespace {
 
 const std::vector<double> kTolerances = {0.05, 0.01};
 
-bool complete(const json& r) { return r.value("status", "") == "complete"; }
+bool complete(const json& r) {
+  return r.value("status", "") == "complete";
+}
 
 std::optional<double> qoi(const json& row, const std::string& key) {
   const auto it = row.find("qoi");
@@ -22,19 +25,26 @@ std::optional<double> qoi(const json& row, const std::string& key) {
   return (*it)[key].get<double>();
 }
 
-json optional_json(std::optional<double> v) { return v ? json(*v) : json(nullptr); }
+json optional_json(std::optional<double> v) {
+  return v ? json(*v) : json(nullptr);
+}
 
 // The base setting as one row: the mean of its seeds, their mean cost, and each QoI's scatter.
 json base_setting(const json& rows, json& noise) {
-  json base = {{"name", "base"}, {"kind", "base"}, {"knob", ""}, {"factor", 1.0}, {"status", "complete"},
-               {"qoi", json::object()}, {"settings", "the scene as given (mean over the seeds)"}};
+  json base = {{"name", "base"},
+               {"kind", "base"},
+               {"knob", ""},
+               {"factor", 1.0},
+               {"status", "complete"},
+               {"qoi", json::object()},
+               {"settings", "the scene as given (mean over the seeds)"}};
   std::vector<const json*> seeds;
   for (const auto& r : rows)
     if (r["kind"] == "base" && complete(r)) seeds.push_back(&r);
   base["seeds_complete"] = seeds.size();
   if (seeds.empty()) return base["status"] = "no complete seed", base;
-  for (const char* cost : {"particle_steps", "wall_seconds", "particles", "timestep_s", "stiffness_level",
-                           "inertial_number"}) {
+  for (const char* cost : {"particle_steps", "wall_seconds", "particles", "timestep_s",
+                           "stiffness_level", "inertial_number"}) {
     double sum = 0.0;
     for (const auto* r : seeds) sum += (*r)[cost].get<double>();
     base[cost] = sum / double(seeds.size());
@@ -46,7 +56,9 @@ json base_setting(const json& rows, json& noise) {
     const auto s = dem::scatter_of(v);
     base["qoi"][q.key] = v.empty() ? json(nullptr) : json(s.mean);
     const bool known = s.n >= 2 && s.mean != 0.0;
-    noise[q.key] = {{"mean", v.empty() ? json(nullptr) : json(s.mean)}, {"sd", s.sd}, {"n", s.n},
+    noise[q.key] = {{"mean", v.empty() ? json(nullptr) : json(s.mean)},
+                    {"sd", s.sd},
+                    {"n", s.n},
                     {"relative", known ? json(s.sd / std::abs(s.mean)) : json(nullptr)}};
   }
   return base;
@@ -78,17 +90,22 @@ json knob_effects(const json& settings, const json& base, const json& noise) {
   json out = json::array();
   for (const auto& s : settings) {
     if (s["kind"] != "knob" || !complete(s)) continue;
-    json e = {{"knob", s["knob"]}, {"factor", s["factor"]}, {"name", s["name"]}, {"shift", json::object()},
-              {"shift_in_noise", json::object()},
-              {"cost_ratio", s["particle_steps"].get<double>() / base.value("particle_steps", 1.0)}};
+    json e = {
+        {"knob", s["knob"]},
+        {"factor", s["factor"]},
+        {"name", s["name"]},
+        {"shift", json::object()},
+        {"shift_in_noise", json::object()},
+        {"cost_ratio", s["particle_steps"].get<double>() / base.value("particle_steps", 1.0)}};
     for (const auto& q : dem::quantities_of_interest()) {
       const auto v = qoi(s, q.key), b = qoi(base, q.key);
       const bool ok = v && b && *b != 0.0;
       const double shift = ok ? (*v - *b) / std::abs(*b) : 0.0;
       e["shift"][q.key] = ok ? json(shift) : json(nullptr);
       const auto n = noise[q.key]["relative"];
-      e["shift_in_noise"][q.key] = ok && !n.is_null() && n.get<double>() > 0 ? json(std::abs(shift) / n.get<double>())
-                                                                             : json(nullptr);
+      e["shift_in_noise"][q.key] = ok && !n.is_null() && n.get<double>() > 0
+                                       ? json(std::abs(shift) / n.get<double>())
+                                       : json(nullptr);
     }
     out.push_back(e);
   }
@@ -107,7 +124,8 @@ json cheapest_meeting(const json& settings) {
         if (complete(s) && s.contains("meets") && meets(s["meets"][t]) &&
             (!best || s["particle_steps"].get<double>() < (*best)["particle_steps"].get<double>()))
           best = &s;
-      return best ? json{{"name", (*best)["name"]}, {"particle_steps", (*best)["particle_steps"]},
+      return best ? json{{"name", (*best)["name"]},
+                         {"particle_steps", (*best)["particle_steps"]},
                          {"wall_seconds", (*best)["wall_seconds"]}}
                   : json(nullptr);
     };
@@ -139,11 +157,14 @@ json analyse(const json& rows) {
     out["reference"] = nullptr;
     return out;
   }
-  out["reference"] = {{"name", (*reference)["name"]}, {"settings", (*reference)["settings"]},
-                      {"why", "every knob of the tradeoff at its refining factor at once (of box, kappa, dt, I: a "
-                              "larger box, stiffer grains, a smaller step, slower shear): the most resolved setting "
-                              "run, nearest the quasi-static, rigid-grain, large-specimen limit; one seed, so its "
-                              "own scatter is of the size of the noise floor"}};
+  out["reference"] = {
+      {"name", (*reference)["name"]},
+      {"settings", (*reference)["settings"]},
+      {"why",
+       "every knob of the tradeoff at its refining factor at once (of box, kappa, dt, I: a "
+       "larger box, stiffer grains, a smaller step, slower shear): the most resolved setting "
+       "run, nearest the quasi-static, rigid-grain, large-specimen limit; one seed, so its "
+       "own scatter is of the size of the noise floor"}};
   const json ref = *reference;
   for (auto& s : out["settings"])
     if (complete(s)) score(s, ref, noise);

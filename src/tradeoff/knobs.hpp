@@ -31,12 +31,14 @@ std::vector<std::string> parse_knob_list(const std::string& comma_separated);
 // dt: numerics.dt_fraction x f. I: shear.inertial_number (or velocity_mm_s) x f. Where the
 // timestep changes (dt, kappa), consolidation.window_steps scales with 1/dt so that a window lasts
 // as long as the base's; in a taller box consolidation.max_windows scales with the height.
-std::vector<campaign::Setting> knob_settings(const dem::Scene& base, const std::string& base_text,
-                                             const std::vector<std::pair<std::string, double>>& knob_factors);
+std::vector<campaign::Setting> knob_settings(
+    const dem::Scene& base, const std::string& base_text,
+    const std::vector<std::pair<std::string, double>>& knob_factors);
 
 // The base scene text with `settings` applied and a header naming them; validated (InputError
 // naming the variant and the scene's complaint).
 std::string derived_scene(const std::string& base_text, const std::string& base_name,
-                          const std::vector<campaign::Setting>& settings, const std::string& variant);
+                          const std::vector<campaign::Setting>& settings,
+                          const std::string& variant);
 
 }  // namespace iwb::tradeoff

@@ -1,8 +1,9 @@
 #include "tradeoff/plan.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
@@ -27,21 +28,26 @@ std::vector<std::string> model_ladder(bool cyclic) {
 namespace {
 
 // The stated tolerances a candidate fails: error + noise above the tolerance, or not measured.
-json failures(const std::map<std::string, std::optional<double>>& error, const dem::Requirements& req,
-              const json& noise_floor) {
+json failures(const std::map<std::string, std::optional<double>>& error,
+              const dem::Requirements& req, const json& noise_floor) {
   json out = json::array();
   for (const auto& [q, tol] : req) {
     if (!tol) continue;  // "not needed"
     const auto it = error.find(q);
     const json n = noise_floor.contains(q) ? noise_floor[q].value("relative", json()) : json();
     if (it == error.end() || !it->second || !n.is_number()) {
-      out.push_back({{"qoi", q}, {"tolerance", *tol}, {"error", nullptr},
+      out.push_back({{"qoi", q},
+                     {"tolerance", *tol},
+                     {"error", nullptr},
                      {"why", !n.is_number() ? "no noise floor" : "not measured"}});
       continue;
     }
     const double total = *it->second + n.get<double>();
     if (total > *tol)
-      out.push_back({{"qoi", q}, {"tolerance", *tol}, {"error", *it->second}, {"noise", n.get<double>()},
+      out.push_back({{"qoi", q},
+                     {"tolerance", *tol},
+                     {"error", *it->second},
+                     {"noise", n.get<double>()},
                      {"by", total - *tol}});
   }
   return out;
@@ -66,8 +72,10 @@ json choose_dem(const json& tradeoff, const dem::Requirements& req) {
   });
   json out = {{"chosen", nullptr}, {"candidates", json::array()}};
   for (const json* s : candidates) {
-    json c = {{"name", (*s)["name"]}, {"settings", s->value("settings", "")},
-              {"particle_steps", (*s)["particle_steps"]}, {"wall_seconds", (*s)["wall_seconds"]},
+    json c = {{"name", (*s)["name"]},
+              {"settings", s->value("settings", "")},
+              {"particle_steps", (*s)["particle_steps"]},
+              {"wall_seconds", (*s)["wall_seconds"]},
               {"error", s->value("error", json::object())},
               {"fails", failures(errors_of(*s), req, tradeoff.at("noise_floor"))}};
     if (out["chosen"].is_null() && c["fails"].empty()) out["chosen"] = c;
@@ -76,10 +84,14 @@ json choose_dem(const json& tradeoff, const dem::Requirements& req) {
   return out;
 }
 
-json choose_model(const std::vector<ModelErrors>& models, const dem::Requirements& req, const json& noise_floor) {
+json choose_model(const std::vector<ModelErrors>& models, const dem::Requirements& req,
+                  const json& noise_floor) {
   json out = {{"chosen", nullptr}, {"candidates", json::array()}};
   for (const auto& m : models) {
-    json c = {{"name", m.model}, {"note", m.note}, {"error", json::object()}, {"fails", failures(m.error, req, noise_floor)}};
+    json c = {{"name", m.model},
+              {"note", m.note},
+              {"error", json::object()},
+              {"fails", failures(m.error, req, noise_floor)}};
     for (const auto& [q, e] : m.error) c["error"][q] = e ? json(*e) : json(nullptr);
     if (out["chosen"].is_null() && c["fails"].empty()) out["chosen"] = c;
     out["candidates"].push_back(c);
@@ -107,7 +119,8 @@ std::optional<double> relative(double model, double dem) {
 
 }  // namespace
 
-ModelErrors evaluate_model(const fs::path& reference_run, const std::string& model, const std::string& params) {
+ModelErrors evaluate_model(const fs::path& reference_run, const std::string& model,
+                           const std::string& params) {
   ModelErrors r{model, {}, ""};
   try {
     const auto dem = comparison::load_dem_run(reference_run);
@@ -115,7 +128,8 @@ ModelErrors evaluate_model(const fs::path& reference_run, const std::string& mod
     inputs.tables = io::load_parameter_file(params);
     inputs.source = params;
     auto start = comparison::standard_variants(dem, model, inputs).front();
-    const auto fit = comparison::fit_kappa_and_ds(dem, start);  // the model at its best kappa_r and d_s
+    const auto fit =
+        comparison::fit_kappa_and_ds(dem, start);  // the model at its best kappa_r and d_s
     start.inputs.roughness.kappa_r = fit.kappa_r;
     start.d_s_mm = fit.d_s_mm;
     const auto replay = comparison::replay(dem, start);
@@ -125,11 +139,13 @@ ModelErrors evaluate_model(const fs::path& reference_run, const std::string& mod
     const std::size_t n = replay.u_x_mm.size();  // the DEM rows the replay reached
     const std::vector<double> dem_ux(dem.u_x_mm.begin(), dem.u_x_mm.begin() + long(n)),
         dem_un(dem.u_n_mm.begin(), dem.u_n_mm.begin() + long(n));
-    r.error["dilation_rate"] = relative(slope_last_fifth(replay.u_x_mm, replay.u_n_mm), slope_last_fifth(dem_ux, dem_un));
+    r.error["dilation_rate"] =
+        relative(slope_last_fifth(replay.u_x_mm, replay.u_n_mm), slope_last_fifth(dem_ux, dem_un));
     r.error["band_thickness"] = std::nullopt;
-    r.note = fmt::format("fitted kappa_r = {:.3f}, d_s = {:.2f} mm; replay {}; a continuum model takes the band "
-                         "thickness d_s as input, it does not predict it",
-                         fit.kappa_r, fit.d_s_mm, replay.status);
+    r.note = fmt::format(
+        "fitted kappa_r = {:.3f}, d_s = {:.2f} mm; replay {}; a continuum model takes the band "
+        "thickness d_s as input, it does not predict it",
+        fit.kappa_r, fit.d_s_mm, replay.status);
   } catch (const std::exception& e) {
     r.note = fmt::format("could not be evaluated: {}", e.what());
   }
@@ -142,17 +158,20 @@ json load_tradeoff(const PlanOptions& opt) {
   const fs::path dir = opt.tradeoff_dir.empty() ? default_out(opt.scene_file) : opt.tradeoff_dir;
   const fs::path file = dir / "tradeoff.json";
   if (!fs::is_regular_file(file))
-    throw InputError(fmt::format("{}: no tradeoff data for {}; run `iwb tradeoff {} -o {}` first", file.string(),
-                                 opt.scene_file.string(), opt.scene_file.string(), dir.string()));
+    throw InputError(fmt::format("{}: no tradeoff data for {}; run `iwb tradeoff {} -o {}` first",
+                                 file.string(), opt.scene_file.string(), opt.scene_file.string(),
+                                 dir.string()));
   const json t = json::parse(io::read_file(file));
   if (t.value("dem_scene_sha256", "") != dem_scene_sha256(opt.scene_file))
-    throw InputError(fmt::format("{}: this tradeoff was run on another version of {} (the scene's DEM settings "
-                                 "changed); run `iwb tradeoff` again",
-                                 file.string(), opt.scene_file.string()));
+    throw InputError(
+        fmt::format("{}: this tradeoff was run on another version of {} (the scene's DEM settings "
+                    "changed); run `iwb tradeoff` again",
+                    file.string(), opt.scene_file.string()));
   if (t["reference"].is_null())
-    throw InputError(fmt::format("{}: the reference run has not completed (status {}); run `iwb tradeoff` again "
-                                 "to continue it",
-                                 file.string(), t.value("status", "?")));
+    throw InputError(
+        fmt::format("{}: the reference run has not completed (status {}); run `iwb tradeoff` again "
+                    "to continue it",
+                    file.string(), t.value("status", "?")));
   return t;
 }
 
@@ -167,20 +186,27 @@ fs::path reference_run(const PlanOptions& opt) {
 json run_plan(const PlanOptions& opt) {
   const dem::Scene scene = dem::load_scene(opt.scene_file.string());
   if (scene.requirements.empty())
-    throw InputError(fmt::format("{}: the scene states no [requirements] (data/scenes/README.md); nothing to plan",
-                                 opt.scene_file.string()));
+    throw InputError(fmt::format(
+        "{}: the scene states no [requirements] (data/scenes/README.md); nothing to plan",
+        opt.scene_file.string()));
   const json t = load_tradeoff(opt);
   const fs::path ref = reference_run(opt);
   std::vector<ModelErrors> models;
-  for (const auto& m : model_ladder(scene.shear.cyclic())) models.push_back(evaluate_model(ref, m, opt.params));
+  for (const auto& m : model_ladder(scene.shear.cyclic()))
+    models.push_back(evaluate_model(ref, m, opt.params));
   json req = json::object();
   for (const auto& [q, tol] : scene.requirements) req[q] = tol ? json(*tol) : json("not needed");
-  json plan = {{"kind", "plan"}, {"scene", opt.scene_file.string()}, {"requirements", req},
+  json plan = {{"kind", "plan"},
+               {"scene", opt.scene_file.string()},
+               {"requirements", req},
                {"tradeoff", (ref.parent_path().parent_path() / "tradeoff.json").string()},
-               {"reference", t["reference"]}, {"noise_floor", t["noise_floor"]},
+               {"reference", t["reference"]},
+               {"noise_floor", t["noise_floor"]},
                {"dem", choose_dem(t, scene.requirements)},
                {"continuum", choose_model(models, scene.requirements, t["noise_floor"])},
-               {"params", opt.params}, {"params_why", opt.params_why}, {"command_line", opt.command_line}};
+               {"params", opt.params},
+               {"params_why", opt.params_why},
+               {"command_line", opt.command_line}};
   const fs::path out = opt.out.empty() ? ref.parent_path().parent_path() : opt.out;
   fs::create_directories(out);
   io::write_atomically(out / "plan.json", plan.dump(2) + "\n");
@@ -196,9 +222,10 @@ std::string fails_text(const json& fails) {
     if (f["error"].is_null())
       s += fmt::format("{}: {}", f["qoi"].get<std::string>(), f["why"].get<std::string>());
     else
-      s += fmt::format("{} {:.1f} % + noise {:.1f} % > {:.0f} % by {:.1f} points", f["qoi"].get<std::string>(),
-                       100 * f["error"].get<double>(), 100 * f["noise"].get<double>(),
-                       100 * f["tolerance"].get<double>(), 100 * f["by"].get<double>());
+      s += fmt::format("{} {:.1f} % + noise {:.1f} % > {:.0f} % by {:.1f} points",
+                       f["qoi"].get<std::string>(), 100 * f["error"].get<double>(),
+                       100 * f["noise"].get<double>(), 100 * f["tolerance"].get<double>(),
+                       100 * f["by"].get<double>());
   }
   return s;
 }
@@ -209,7 +236,8 @@ std::string stated_errors(const json& c, const json& requirements) {
   for (const auto& [q, tol] : requirements.items()) {
     if (!tol.is_number()) continue;
     const json e = c.value("error", json::object()).value(q, json());
-    s += fmt::format("{}{} {}", s.empty() ? "" : ", ", q, e.is_number() ? fmt::format("{:.1f} %", 100 * e.get<double>()) : "n/a");
+    s += fmt::format("{}{} {}", s.empty() ? "" : ", ", q,
+                     e.is_number() ? fmt::format("{:.1f} %", 100 * e.get<double>()) : "n/a");
   }
   return s;
 }
@@ -222,23 +250,26 @@ std::string verdict(const json& c, const json& requirements) {
 }  // namespace
 
 std::string plan_text(const json& p) {
-  std::string s = fmt::format("plan for {}: requirements {}\n", p["scene"].get<std::string>(), p["requirements"].dump());
-  s += fmt::format("reference: {} ({})\n\nDEM settings, cheapest first:\n", p["reference"]["name"].get<std::string>(),
+  std::string s = fmt::format("plan for {}: requirements {}\n", p["scene"].get<std::string>(),
+                              p["requirements"].dump());
+  s += fmt::format("reference: {} ({})\n\nDEM settings, cheapest first:\n",
+                   p["reference"]["name"].get<std::string>(),
                    p["reference"]["settings"].get<std::string>());
   for (const auto& c : p["dem"]["candidates"])
-    s += fmt::format("  {:<12} {:>10.3g} particle-steps {:>6.0f} s  {}\n", c["name"].get<std::string>(),
-                     c["particle_steps"].get<double>(), c["wall_seconds"].get<double>(),
-                     verdict(c, p["requirements"]));
+    s += fmt::format("  {:<12} {:>10.3g} particle-steps {:>6.0f} s  {}\n",
+                     c["name"].get<std::string>(), c["particle_steps"].get<double>(),
+                     c["wall_seconds"].get<double>(), verdict(c, p["requirements"]));
   const auto& d = p["dem"]["chosen"];
-  s += d.is_null() ? "DEM: no setting of the tradeoff meets every tolerance\n"
-                   : fmt::format("DEM: {} ({}), {:.3g} particle-steps, {:.0f} s\n", d["name"].get<std::string>(),
-                                 d["settings"].get<std::string>(), d["particle_steps"].get<double>(),
-                                 d["wall_seconds"].get<double>());
+  s += d.is_null()
+           ? "DEM: no setting of the tradeoff meets every tolerance\n"
+           : fmt::format("DEM: {} ({}), {:.3g} particle-steps, {:.0f} s\n",
+                         d["name"].get<std::string>(), d["settings"].get<std::string>(),
+                         d["particle_steps"].get<double>(), d["wall_seconds"].get<double>());
   s += fmt::format("\ncontinuum models, simplest first (against {}, parameters {}):\n",
                    p["reference"]["name"].get<std::string>(), p["params"].get<std::string>());
   for (const auto& c : p["continuum"]["candidates"])
-    s += fmt::format("  {:<9} {}\n            ({})\n", c["name"].get<std::string>(), verdict(c, p["requirements"]),
-                     c["note"].get<std::string>());
+    s += fmt::format("  {:<9} {}\n            ({})\n", c["name"].get<std::string>(),
+                     verdict(c, p["requirements"]), c["note"].get<std::string>());
   const auto& m = p["continuum"]["chosen"];
   s += m.is_null() ? "continuum: no model meets every tolerance\n"
                    : fmt::format("continuum: {}\n", m["name"].get<std::string>());

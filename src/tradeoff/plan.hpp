@@ -33,7 +33,8 @@ struct ModelErrors {
 
 // Pure decision: the first model (in the order given) whose error + the DEM's noise floor meets
 // every stated tolerance; each model with its failures, as choose_dem.
-nlohmann::json choose_model(const std::vector<ModelErrors>& models, const dem::Requirements& requirements,
+nlohmann::json choose_model(const std::vector<ModelErrors>& models,
+                            const dem::Requirements& requirements,
                             const nlohmann::json& noise_floor);
 
 struct PlanOptions {

@@ -16,21 +16,31 @@ namespace iwb::tradeoff {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-fs::path default_out(const fs::path& scene_file) { return fs::path("runs") / ("tradeoff-" + scene_file.stem().string()); }
+fs::path default_out(const fs::path& scene_file) {
+  return fs::path("runs") / ("tradeoff-" + scene_file.stem().string());
+}
 
 std::string dem_scene_sha256(const fs::path& scene_file) {
-  return io::sha256_hex(derived_scene(io::read_file(scene_file), scene_file.filename().string(), {}, "base_s1"));
+  return io::sha256_hex(
+      derived_scene(io::read_file(scene_file), scene_file.filename().string(), {}, "base_s1"));
 }
 
 namespace {
 
-std::string factor_name(double f) { return f < 1.0 ? "x0.5" : "x2"; }
+std::string factor_name(double f) {
+  return f < 1.0 ? "x0.5" : "x2";
+}
 
-Variant make_variant(const dem::Scene& base, const std::string& text, const std::string& source, std::string name,
-                     std::string kind, const std::vector<std::pair<std::string, double>>& knob_factors, int seed) {
+Variant make_variant(const dem::Scene& base, const std::string& text, const std::string& source,
+                     std::string name, std::string kind,
+                     const std::vector<std::pair<std::string, double>>& knob_factors, int seed) {
   auto settings = knob_settings(base, text, knob_factors);
   if (seed != base.seed) settings.push_back({"seed", std::int64_t(seed)});
-  Variant v{{name, "liggghts", settings, derived_scene(text, source, settings, name)}, std::move(kind), "", 1.0, seed};
+  Variant v{{name, "liggghts", settings, derived_scene(text, source, settings, name)},
+            std::move(kind),
+            "",
+            1.0,
+            seed};
   if (v.kind == "knob") v.knob = knob_factors.front().first, v.factor = knob_factors.front().second;
   return v;
 }
@@ -44,7 +54,8 @@ double estimated_cost(const Variant& v) {
          (double(dem::derive(s).shear_steps) + kTypicalWindows * s.consolidation.window_steps);
 }
 
-std::vector<std::pair<std::string, double>> all_at(const std::vector<std::string>& knobs, bool refined) {
+std::vector<std::pair<std::string, double>> all_at(const std::vector<std::string>& knobs,
+                                                   bool refined) {
   std::vector<std::pair<std::string, double>> out;
   for (const auto& k : knobs) {
     const double f = find_knob(k).refining_factor;
@@ -56,27 +67,35 @@ std::vector<std::pair<std::string, double>> all_at(const std::vector<std::string
 }  // namespace
 
 std::vector<Variant> expand_variants(const TradeoffOptions& opt) {
-  if (opt.seeds < 2) throw InputError(fmt::format("--seeds {}: the noise floor needs at least 2 seeds", opt.seeds));
+  if (opt.seeds < 2)
+    throw InputError(fmt::format("--seeds {}: the noise floor needs at least 2 seeds", opt.seeds));
   if (opt.knobs.empty()) throw InputError("--knobs: name at least one knob");
   const std::string text = io::read_file(opt.scene_file);
   const std::string source = opt.scene_file.filename().string();
   const dem::Scene base = dem::parse_scene(text, opt.scene_file.string());
   if (base.shear.cyclic())
-    throw InputError(fmt::format("{}: a cyclic scene; the tradeoff measures monotonic shear (peak, residual, "
-                                 "dilation, band)", opt.scene_file.string()));
+    throw InputError(
+        fmt::format("{}: a cyclic scene; the tradeoff measures monotonic shear (peak, residual, "
+                    "dilation, band)",
+                    opt.scene_file.string()));
   std::vector<Variant> v;
   v.push_back(make_variant(base, text, source, "base_s1", "base", {}, base.seed));
-  v.push_back(make_variant(base, text, source, "refined", "refined", all_at(opt.knobs, true), base.seed));
+  v.push_back(
+      make_variant(base, text, source, "refined", "refined", all_at(opt.knobs, true), base.seed));
   for (int s = 2; s <= opt.seeds; ++s)
-    v.push_back(make_variant(base, text, source, fmt::format("base_s{}", s), "base", {}, base.seed + s - 1));
+    v.push_back(make_variant(base, text, source, fmt::format("base_s{}", s), "base", {},
+                             base.seed + s - 1));
   const std::size_t first_knob = v.size();
   for (const auto& k : opt.knobs)
     for (const double f : {0.5, 2.0})
-      v.push_back(make_variant(base, text, source, k + factor_name(f), "knob", {{k, f}}, base.seed));
-  v.push_back(make_variant(base, text, source, "coarsened", "coarsened", all_at(opt.knobs, false), base.seed));
+      v.push_back(
+          make_variant(base, text, source, k + factor_name(f), "knob", {{k, f}}, base.seed));
+  v.push_back(make_variant(base, text, source, "coarsened", "coarsened", all_at(opt.knobs, false),
+                           base.seed));
   // The rest cheapest first: a tradeoff stopped early then lacks the fewest settings.
-  std::stable_sort(v.begin() + long(first_knob), v.end(),
-                   [](const Variant& a, const Variant& b) { return estimated_cost(a) < estimated_cost(b); });
+  std::stable_sort(v.begin() + long(first_knob), v.end(), [](const Variant& a, const Variant& b) {
+    return estimated_cost(a) < estimated_cost(b);
+  });
   return v;
 }
 
@@ -84,7 +103,8 @@ namespace {
 
 double stage_sum(const json& manifest, const char* key, bool fact) {
   double s = 0.0;
-  const json stages = manifest.value("stages", json::object());  // named: items() must not outlive it
+  const json stages =
+      manifest.value("stages", json::object());  // named: items() must not outlive it
   for (const auto& [name, stage] : stages.items())
     s += fact ? stage.value("facts", json::object()).value(key, 0.0) : stage.value(key, 0.0);
   return s;
@@ -92,8 +112,9 @@ double stage_sum(const json& manifest, const char* key, bool fact) {
 
 // One run's row: what it varies, its status, cost and quantities of interest.
 json row_of(const Variant& v, const fs::path& dir) {
-  json r = {{"name", v.job.name}, {"kind", v.kind}, {"knob", v.knob}, {"factor", v.factor}, {"seed", v.seed},
-            {"settings", campaign::describe(v.job.values)}, {"status", "not run"}};
+  json r = {{"name", v.job.name}, {"kind", v.kind}, {"knob", v.knob},
+            {"factor", v.factor}, {"seed", v.seed}, {"settings", campaign::describe(v.job.values)},
+            {"status", "not run"}};
   if (!fs::exists(dir / "manifest.json")) return r;
   const auto m = json::parse(io::read_file(dir / "manifest.json"));
   r["status"] = m.value("status", "?");
@@ -105,7 +126,8 @@ json row_of(const Variant& v, const fs::path& dir) {
   r["inertial_number"] = m.value("inertial_number", 0.0);
   r["particle_steps"] = stage_sum(m, "particle_steps", true);
   r["wall_seconds"] = stage_sum(m, "wall_seconds", false);
-  // the shear stage alone: its steps follow from dt and the wall speed (consolidation runs fixed windows)
+  // the shear stage alone: its steps follow from dt and the wall speed (consolidation runs fixed
+  // windows)
   r["shear_particle_steps"] = m.value("/stages/shear/facts/particle_steps"_json_pointer, 0.0);
   r["shear_steps"] = m.value("/numerics/shear_steps"_json_pointer, 0);
   r["qoi"] = {{"peak_friction", s["peak_friction"]},
@@ -130,8 +152,9 @@ json run_tradeoff(const TradeoffOptions& opt) {
   spec.file = opt.scene_file;
   spec.text = io::read_file(opt.scene_file);
   spec.scene_file = opt.scene_file;
-  const json record = campaign::run_jobs(
-      spec, jobs, {out, opt.jobs, opt.processes, opt.stop_after, opt.command_line, opt.interrupt, opt.progress});
+  const json record = campaign::run_jobs(spec, jobs,
+                                         {out, opt.jobs, opt.processes, opt.stop_after,
+                                          opt.command_line, opt.interrupt, opt.progress});
   json rows = json::array();
   for (const auto& v : variants) rows.push_back(row_of(v, out / campaign::run_path(v.job)));
   json result = analyse(rows);

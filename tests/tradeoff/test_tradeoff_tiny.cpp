@@ -1,8 +1,8 @@
-// A real tradeoff (LIGGGHTS) on the smoke scene cut to 180 grains and I = 1e-2 (as data/sweeps/tiny.toml
-// cuts it for the campaign tests), with the knobs dt and I and 2 seeds: 8 runs, two at once.
-// Asserts the cost model (particle-steps of the shear stage are particles x steps of the run's
-// numerics, twice as many at half the dt), convergence in dt of the residual friction against the
-// seed scatter, and that a second invocation reuses every complete run.
+// A real tradeoff (LIGGGHTS) on the smoke scene cut to 180 grains and I = 1e-2 (as
+// data/sweeps/tiny.toml cuts it for the campaign tests), with the knobs dt and I and 2 seeds: 8
+// runs, two at once. Asserts the cost model (particle-steps of the shear stage are particles x
+// steps of the run's numerics, twice as many at half the dt), convergence in dt of the residual
+// friction against the seed scatter, and that a second invocation reuses every complete run.
 #include <catch2/catch.hpp>
 #include <filesystem>
 
@@ -22,13 +22,17 @@ namespace {
 fs::path tiny_scene(const fs::path& dir) {
   auto root = io::parse_toml_text(io::read_file("data/scenes/smoke.toml"), "smoke.toml");
   const std::vector<std::pair<std::string, io::TomlScalar>> cut = {
-      {"specimen.height_d50", 4.0},           {"specimen.particles", std::int64_t(180)},
-      {"shear.inertial_number", 1e-2},        {"output.profile_windows", std::int64_t(1)},
-      {"output.vtk_every_mm", 5.0},           {"consolidation.window_steps", std::int64_t(500)},
+      {"specimen.height_d50", 4.0},
+      {"specimen.particles", std::int64_t(180)},
+      {"shear.inertial_number", 1e-2},
+      {"output.profile_windows", std::int64_t(1)},
+      {"output.vtk_every_mm", 5.0},
+      {"consolidation.window_steps", std::int64_t(500)},
       {"consolidation.windows_required", std::int64_t(2)}};
   for (const auto& [key, value] : cut) io::set_dotted(root, key, value, "tiny");
   fs::create_directories(dir);
-  io::write_atomically(dir / "tiny.toml", "# smoke cut to 180 grains at I = 1e-2\n" + io::serialise(root));
+  io::write_atomically(dir / "tiny.toml",
+                       "# smoke cut to 180 grains at I = 1e-2\n" + io::serialise(root));
   return dir / "tiny.toml";
 }
 
@@ -41,8 +45,10 @@ const json& setting(const json& t, const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("tradeoff on a tiny scene: cost follows particles and 1/dt, halving dt converges the residual friction",
-          "[tradeoff][dem]") {
+TEST_CASE(
+    "tradeoff on a tiny scene: cost follows particles and 1/dt, halving dt converges the residual "
+    "friction",
+    "[tradeoff][dem]") {
   const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / "tradeoff" / "tiny";
   fs::remove_all(dir);
   tradeoff::TradeoffOptions opt;
@@ -54,7 +60,8 @@ TEST_CASE("tradeoff on a tiny scene: cost follows particles and 1/dt, halving dt
   opt.command_line = "iwb_tests";
   const json t = tradeoff::run_tradeoff(opt);
   // coarsened (dt doubled too) may fail to settle; the settings asserted on must not
-  for (const char* name : {"dtx0.5", "dtx2", "Ix0.5", "refined"}) REQUIRE(setting(t, name)["status"] == "complete");
+  for (const char* name : {"dtx0.5", "dtx2", "Ix0.5", "refined"})
+    REQUIRE(setting(t, name)["status"] == "complete");
   REQUIRE(t["runs"][0]["status"] == "complete");
   REQUIRE(t["runs"][2]["status"] == "complete");
   REQUIRE(t["reference"]["name"] == "refined");
@@ -73,9 +80,12 @@ TEST_CASE("tradeoff on a tiny scene: cost follows particles and 1/dt, halving dt
       CHECK(r["shear_particle_steps"].get<double>() == Approx(expected(r["name"])).epsilon(0.10));
   const double base_cost = t["runs"][0]["shear_particle_steps"];  // base_s1
   // halving dt halves every step, the relaxation included: twice the cost
-  CHECK(setting(t, "dtx0.5")["shear_particle_steps"].get<double>() == Approx(2.0 * base_cost).epsilon(0.10));
-  CHECK(setting(t, "dtx2")["shear_particle_steps"].get<double>() == Approx(0.5 * base_cost).epsilon(0.10));
-  CHECK(setting(t, "Ix0.5")["shear_particle_steps"].get<double>() > 1.5 * base_cost);  // the relaxation is not slowed
+  CHECK(setting(t, "dtx0.5")["shear_particle_steps"].get<double>() ==
+        Approx(2.0 * base_cost).epsilon(0.10));
+  CHECK(setting(t, "dtx2")["shear_particle_steps"].get<double>() ==
+        Approx(0.5 * base_cost).epsilon(0.10));
+  CHECK(setting(t, "Ix0.5")["shear_particle_steps"].get<double>() >
+        1.5 * base_cost);  // the relaxation is not slowed
 
   // Convergence in dt: the base (dt = 0.15 of the Rayleigh time) is several seed scatters from
   // the reference in residual friction; halving dt alone brings it within one (measured here:
@@ -87,8 +97,9 @@ TEST_CASE("tradeoff on a tiny scene: cost follows particles and 1/dt, halving dt
   // run again: every complete run is reused, nothing is run
   const json again = tradeoff::run_tradeoff(opt);
   for (const auto& j : json::parse(io::read_file(opt.out / "sweep.json"))["jobs"])
-    if (setting(t, j["name"] == "base_s1" || j["name"] == "base_s2" ? "base" : j["name"].get<std::string>())["status"] ==
-        "complete")
+    if (setting(t, j["name"] == "base_s1" || j["name"] == "base_s2"
+                       ? "base"
+                       : j["name"].get<std::string>())["status"] == "complete")
       CHECK(j["start"] == "reused");
   CHECK(again["settings"][0] == t["settings"][0]);
   CHECK(setting(again, "refined") == setting(t, "refined"));
