@@ -13,6 +13,7 @@
 #include "app/default_job.hpp"
 #include "app/stability.hpp"
 #include "app/validate.hpp"
+#include "app/tradeoff_commands.hpp"
 #include "campaign/sweep.hpp"
 #include "comparison/report.hpp"
 #include "dem/crosscheck.hpp"
@@ -182,6 +183,7 @@ int main(int argc, char** argv) {
       "  iwb run                                     the main job on the embedded default\n"
       "  iwb dem run data/scenes/smoke.toml          a DEM interface-shear scene in LIGGGHTS\n"
       "  iwb sweep data/sweeps/example.toml -j 2     a campaign of scenes (R_n x d50 x CNL/CNS/CV x seed)\n"
+      "  iwb tradeoff data/scenes/default.toml -j 2  DEM speed against accuracy, knob by knob\n"
       "  iwb bench element                           cost of the continuum core\n"
       "  iwb stability hvwe data/params/table_5_1_evaluation.toml   where a model runs and where it stops\n"};
   app.require_subcommand(1);
@@ -355,6 +357,7 @@ int main(int argc, char** argv) {
   bench_dem->add_option("--ranks", dopt.ranks, "rank counts to measure")->capture_default_str();
 
   const auto calibration_commands = iwb::app::add_calibration_commands(app);
+  const auto tradeoff_commands = iwb::app::add_tradeoff_commands(app);
 
   CLI11_PARSE(app, argc, argv);
   std::signal(SIGINT, on_signal);
@@ -362,6 +365,7 @@ int main(int argc, char** argv) {
   try {
     if (*element) return cmd_element(test_file, out, force, cl);
     if (const auto code = iwb::app::run_calibration_commands(*calibration_commands, cl)) return *code;
+    if (const auto code = iwb::app::run_tradeoff_commands(*tradeoff_commands, cl, &g_interrupt)) return *code;
     if (*models) return cmd_models(as_json);
     if (*run) return iwb::app::run_default_job(run_out, force, cl);
     if (*dem_run) return cmd_dem_run(scene_file, engine_name, np, out, resume, force, cl);

@@ -65,6 +65,26 @@ fs::path calibrated_parameters(const fs::path& dir, const dem::Scene& scene, std
   return {};
 }
 
+// Runs the scene in one engine into out/dem-<engine>; false (and says why) if it did not complete.
+bool run_dem(const dem::Scene& scene, const std::string& text, const std::string& source, const std::string& engine_name,
+             const ValidateOptions& opt, const fs::path& dem_dir, const std::string& step) {
+  const auto engine = dem::make_engine(engine_name);
+  fmt::print(stderr, "iwb validate: {} DEM run of {} in {} ({} processes) -> {}\n", step, source, engine_name,
+             opt.processes, dem_dir.string());
+  auto last = std::chrono::steady_clock::now();
+  const auto outcome = dem::run_scene(scene, text, *engine,
+                                      {dem_dir, opt.processes, false, opt.force, opt.command_line, nullptr,
+                                       [&last](const std::string& l) {
+                                         if (std::chrono::steady_clock::now() - last < std::chrono::seconds(3)) return;
+                                         last = std::chrono::steady_clock::now();
+                                         fmt::print(stderr, "  {}\n", l);
+                                       }});
+  if (!outcome.complete()) fmt::print(stderr, "iwb validate: the {} run did not complete: {}\n", engine_name, outcome.status);
+  return outcome.complete();
+}
+
+}  // namespace
+
 // The shipped parameter set whose critical friction angle is closest to the DEM's residual
 // interface friction angle atan(tau/sigma_n): the only property of the grains a DEM run tells
 // without calibration (issue 7 calibrates properly).
@@ -90,25 +110,10 @@ fs::path matching_parameters(const fs::path& dir, double residual_friction, std:
   return best;
 }
 
-// Runs the scene in one engine into out/dem-<engine>; false (and says why) if it did not complete.
-bool run_dem(const dem::Scene& scene, const std::string& text, const std::string& source, const std::string& engine_name,
-             const ValidateOptions& opt, const fs::path& dem_dir, const std::string& step) {
-  const auto engine = dem::make_engine(engine_name);
-  fmt::print(stderr, "iwb validate: {} DEM run of {} in {} ({} processes) -> {}\n", step, source, engine_name,
-             opt.processes, dem_dir.string());
-  auto last = std::chrono::steady_clock::now();
-  const auto outcome = dem::run_scene(scene, text, *engine,
-                                      {dem_dir, opt.processes, false, opt.force, opt.command_line, nullptr,
-                                       [&last](const std::string& l) {
-                                         if (std::chrono::steady_clock::now() - last < std::chrono::seconds(3)) return;
-                                         last = std::chrono::steady_clock::now();
-                                         fmt::print(stderr, "  {}\n", l);
-                                       }});
-  if (!outcome.complete()) fmt::print(stderr, "iwb validate: the {} run did not complete: {}\n", engine_name, outcome.status);
-  return outcome.complete();
+fs::path parameters_for(const fs::path& dir, const dem::Scene& scene, double residual_friction, std::string& why) {
+  const auto calibrated = calibrated_parameters(dir, scene, why);
+  return calibrated.empty() ? matching_parameters(dir, residual_friction, why) : calibrated;
 }
-
-}  // namespace
 
 int run_validate(const ValidateOptions& opt) {
   if (opt.engines.empty()) throw InputError("--engines: name at least one engine (liggghts, yade)");
@@ -127,10 +132,9 @@ int run_validate(const ValidateOptions& opt) {
     if (!run_dem(scene, text, source, engine, opt, dem_dir, fmt::format("{}/{}", ++step, steps))) return 1;
     // One parameter set for every engine, chosen on the first, so that the engines are compared
     // through the same continuum model.
-    if (params.empty()) params = calibrated_parameters(opt.params_dir, scene, why);
     if (params.empty()) {
       const auto summary = nlohmann::json::parse(io::read_file(dem_dir / "summary.json"));
-      params = matching_parameters(opt.params_dir, summary["residual_friction"].get<double>(), why);
+      params = parameters_for(opt.params_dir, scene, summary["residual_friction"].get<double>(), why);
     }
     fmt::print(stderr, "iwb validate: {}/{} replay of the {} run through hvwe with {} ({})\n", ++step, steps, engine,
                params.string(), why);

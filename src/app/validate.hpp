@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "dem/scene.hpp"
+
 namespace iwb::app {
 
 struct ValidateOptions {
@@ -21,5 +23,14 @@ struct ValidateOptions {
 };
 
 int run_validate(const ValidateOptions& options);
+
+// The shipped parameter set in `dir` whose critical friction angle is closest to the DEM's
+// residual interface friction angle atan(residual_friction); `why` says so. Also `iwb plan`'s default.
+std::filesystem::path matching_parameters(const std::filesystem::path& dir, double residual_friction, std::string& why);
+
+// The set for a DEM run of `scene`: the one calibrated on the scene's grains if there is one
+// (data/calibration/), else matching_parameters. `iwb validate` and `iwb plan` choose with it.
+std::filesystem::path parameters_for(const std::filesystem::path& dir, const dem::Scene& scene, double residual_friction,
+                                     std::string& why);
 
 }  // namespace iwb::app

@@ -7,7 +7,6 @@ namespace iwb::dem {
 
 namespace {
 
-constexpr double kRayleighFraction = 0.15;  // dt = 15 % of the Rayleigh time of the smallest grain
 constexpr double kSkinD50 = 0.3;
 constexpr double kLooseSolidFraction = 0.30;  // insert/pack fills a region reliably this loosely
 constexpr int kProfileEvery = 10;             // ave/spatial samples every 10 steps
@@ -22,7 +21,7 @@ double rayleigh_time(const Particles& p) {
 Numerics derive(const Scene& s) {
   Numerics n{};
   n.d50 = s.particles.d50_m;
-  n.dt = kRayleighFraction * rayleigh_time(s.particles);
+  n.dt = s.dt_fraction * rayleigh_time(s.particles);  // [numerics] dt_fraction, default 0.15
   n.skin = kSkinD50 * n.d50;
   const double dmax = s.particles.d_max();
   n.wall_top = s.wall.height_m;

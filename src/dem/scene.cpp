@@ -17,6 +17,8 @@ constexpr double kMm = 1e-3;
 constexpr double kMinBoxLengthInDmax = 10.0;    // DEM.md: box length at least 10 d_max
 constexpr double kMinWidthInDmax = 3.0;         // periodic images must not touch
 constexpr double kRecommendedHeightInD50 = 20.0;  // DEM.md: ~7 d50 gives no band
+constexpr double kDefaultDtFraction = 0.15;  // of the Rayleigh time: the usual DEM choice
+constexpr double kMaxDtFraction = 0.5;       // beyond this Hertz contacts lose energy balance
 
 void require(bool ok, const std::string& message) {
   if (!ok) throw InputError(message);
@@ -329,6 +331,13 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     s.servo.kp_shear = sv->optional_positive("kp_shear").value_or(2.0);
     sv->finish();
   }
+  if (auto nu = top.table("numerics")) {
+    s.dt_fraction = nu->optional_positive("dt_fraction").value_or(kDefaultDtFraction);
+    require(s.dt_fraction <= kMaxDtFraction,
+            range_error(*nu, "dt_fraction", s.dt_fraction, fmt::format("(0, {:g}]", kMaxDtFraction)));
+    nu->finish();
+  }
+  if (auto rq = top.table("requirements")) s.requirements = read_requirements(*rq);
   top.finish();
 
   s.resolved = {
@@ -347,6 +356,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
                  {"amplitude_mm", s.shear.amplitude_m / kMm}, {"cycles", s.shear.cycles},
                  {"travel_mm", s.shear.travel_m() / kMm}, {"inertial_number", s.shear.inertial_number}}},
       {"stiffness_level", s.stiffness_level()},
+      {"numerics", {{"dt_fraction", s.dt_fraction}}},
       {"seed", s.seed}};
   return s;
 }

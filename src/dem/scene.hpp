@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "dem/requirements.hpp"
 #include "driver/control.hpp"  // BoundaryKind: the same CNL/CNS/CV in DEM and continuum
 
 namespace iwb::dem {
@@ -110,6 +111,8 @@ struct Scene {
   Consolidation consolidation;
   Outputs outputs;
   Servo servo;
+  double dt_fraction = 0.15;  // [numerics]: timestep as a fraction of the smallest grain's Rayleigh time
+  Requirements requirements;  // [requirements]: empty when the scene states none
   nlohmann::json resolved;  // every value after defaults and conversions, for the manifest
   std::vector<std::string> warnings;
 

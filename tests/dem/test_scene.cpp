@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "common/errors.hpp"
+#include "dem/numerics.hpp"
 #include "dem/scene.hpp"
 #include "io/run_directory.hpp"
 
@@ -94,4 +95,36 @@ TEST_CASE("broken scenes are refused with file, key and value", "[dem]") {
   CHECK_THAT(error_of(replaced(smoke(), "profile = \"sawtooth\"", "profile = \"knurled\"")),
              Catch::Contains("key 'wall.profile' = \"knurled\"; allowed \"flat\", \"sawtooth\", \"sinusoid\""));
   CHECK_THAT(error_of(smoke() + "\n[shaer]\nx = 1\n"), Catch::Contains("key 'shaer' is not a known key"));
+}
+
+TEST_CASE("numerics dt_fraction sets the timestep as a fraction of the Rayleigh time, validated", "[dem]") {
+  const auto base = dem::parse_scene(smoke(), "scene.toml");
+  const auto finer = dem::parse_scene(smoke() + "\n[numerics]\ndt_fraction = 0.075\n", "scene.toml");
+  CHECK(base.dt_fraction == 0.15);
+  CHECK(dem::derive(finer).dt == Approx(0.5 * dem::derive(base).dt).epsilon(1e-12));
+  CHECK(dem::derive(base).dt == Approx(0.15 * dem::rayleigh_time(base.particles)).epsilon(1e-12));
+  CHECK_THAT(error_of(smoke() + "\n[numerics]\ndt_fraction = 0.8\n"),
+             Catch::Contains("scene.toml: key 'numerics.dt_fraction' = 0.8 is out of range; allowed (0, 0.5]"));
+  CHECK_THAT(error_of(smoke() + "\n[numerics]\ndt_fraction = -0.1\n"),
+             Catch::Contains("key 'numerics.dt_fraction' = -0.1 is out of range"));
+}
+
+TEST_CASE("requirements name quantities of interest with tolerances or not needed", "[dem]") {
+  const auto s = dem::parse_scene(smoke() + "\n[requirements]\nresidual_friction = 0.05\npeak_friction = 0.1\n"
+                                            "band_thickness = \"not needed\"\n", "scene.toml");
+  REQUIRE(s.requirements.size() == 3);
+  CHECK(*s.requirements.at("residual_friction") == 0.05);
+  CHECK(*s.requirements.at("peak_friction") == 0.1);
+  CHECK_FALSE(s.requirements.at("band_thickness").has_value());
+  CHECK(dem::parse_scene(smoke(), "scene.toml").requirements.empty());
+  CHECK_THAT(error_of(smoke() + "\n[requirements]\nresidual_fricton = 0.05\n"),
+             Catch::Contains("scene.toml: key 'requirements.residual_fricton' is not a known key (value 0.05") &&
+                 Catch::Contains("peak_friction, residual_friction, dilation_rate, band_thickness"));
+  CHECK_THAT(error_of(smoke() + "\n[requirements]\npeak_friction = 1.5\n"),
+             Catch::Contains("scene.toml: key 'requirements.peak_friction' = 1.5: a tolerance is a number in (0, 1]"));
+  CHECK_THAT(error_of(smoke() + "\n[requirements]\ndilation_rate = 0\n"),
+             Catch::Contains("key 'requirements.dilation_rate' = 0: a tolerance"));
+  CHECK_THAT(error_of(smoke() + "\n[requirements]\ndilation_rate = \"roughly\"\n"),
+             Catch::Contains("key 'requirements.dilation_rate' = \"roughly\": a tolerance is a number in (0, 1] "
+                             "(0.05 = 5 %) or \"not needed\""));
 }

@@ -182,7 +182,7 @@ std::string LiggghtsEngine::version() const {
 nlohmann::json LiggghtsEngine::numerics(const Scene& s) const {
   const Numerics n = derive(s);
   return {{"timestep_s", n.dt},
-          {"timestep_rule", "0.15 x Rayleigh time of the smallest particle"},
+          {"timestep_rule", fmt::format("{:g} x Rayleigh time of the smallest particle", s.dt_fraction)},
           {"rayleigh_time_s", rayleigh_time(s.particles)},
           {"shear_steps", n.shear_steps},
           {"wall_velocity_mm_s", s.shear.velocity_m_s * 1e3},

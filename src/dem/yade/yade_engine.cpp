@@ -116,7 +116,7 @@ std::string YadeEngine::version() const {
 nlohmann::json YadeEngine::numerics(const Scene& s) const {
   const Numerics n = derive(s);
   return {{"timestep_s", n.dt},
-          {"timestep_rule", "0.15 x Rayleigh time of the smallest particle (the LIGGGHTS runner's rule)"},
+          {"timestep_rule", fmt::format("{:g} x Rayleigh time of the smallest particle (the LIGGGHTS runner's rule)", s.dt_fraction)},
           {"rayleigh_time_s", rayleigh_time(s.particles)},
           {"shear_steps", n.shear_steps},
           {"wall_velocity_mm_s", s.shear.velocity_m_s * 1e3},

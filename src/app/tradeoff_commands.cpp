@@ -1,0 +1,155 @@
+#include "app/tradeoff_commands.hpp"
+
+#include <fmt/core.h>
+
+#include "app/validate.hpp"
+#include "io/run_directory.hpp"
+#include "tradeoff/knobs.hpp"
+#include "tradeoff/plan.hpp"
+#include "tradeoff/tradeoff.hpp"
+
+namespace iwb::app {
+
+namespace fs = std::filesystem;
+
+struct TradeoffCommands {
+  CLI::App* tradeoff = nullptr;
+  CLI::App* plan = nullptr;
+  std::string scene, out, knobs = "box,kappa,dt,I";
+  int jobs = 1, np = 1, seeds = 3, stop_after = 0;
+  std::string plan_scene, plan_tradeoff, plan_params, plan_out;
+};
+
+namespace {
+
+void add_tradeoff(CLI::App& app, TradeoffCommands& c) {
+  c.tradeoff = app.add_subcommand(
+      "tradeoff",
+      "Speed against accuracy of a DEM scene. Runs the scene with K seeds (their scatter is the "
+      "noise floor), each "
+      "knob halved and doubled one at a time, every knob refined at once (the reference: larger "
+      "box, stiffer "
+      "grains, smaller step, slower shear) and coarsened at once. Knobs: box (length and height in "
+      "d50; the "
+      "particle count scales with the volume; where the length cannot shrink, the height alone), "
+      "kappa (the "
+      "stiffness level, through Young's modulus), dt (numerics.dt_fraction of the Rayleigh time), "
+      "I (the inertial "
+      "number). Measures peak and residual friction, dilation rate and band thickness against the "
+      "reference, with "
+      "cost in particle-steps and wall time: DIR/tradeoff.md, .csv, .json and pareto.svg/.png. The "
+      "runs are a "
+      "campaign (as iwb sweep): N at once, complete runs reused and stopped ones resumed when run "
+      "again; Ctrl-C "
+      "stops cleanly.\n"
+      "Example: iwb tradeoff data/scenes/default.toml -o runs/tradeoff-default --jobs 2\n"
+      "then:    iwb plan data/scenes/default.toml --tradeoff runs/tradeoff-default");
+  c.tradeoff->add_option("scene", c.scene, "scene TOML file (data/scenes/)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  c.tradeoff->add_option("--out,-o", c.out,
+                         "tradeoff directory (default runs/tradeoff-<scene stem>)");
+  c.tradeoff
+      ->add_option("--jobs,-j", c.jobs, "runs at once (jobs x np should not exceed the cores)")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  c.tradeoff->add_option("--np", c.np, "MPI ranks per run")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  c.tradeoff
+      ->add_option("--seeds", c.seeds,
+                   "seeds of the base setting (>= 2; 3 or more for a usable noise floor)")
+      ->check(CLI::Range(2, 100))
+      ->capture_default_str();
+  c.tradeoff->add_option("--knobs", c.knobs, "comma-separated knobs to vary: box, kappa, dt, I")
+      ->capture_default_str();
+  c.tradeoff
+      ->add_option("--stop-after", c.stop_after,
+                   "stop cleanly once N runs have ended; run again to continue")
+      ->check(CLI::Range(1, 1000000));
+}
+
+void add_plan(CLI::App& app, TradeoffCommands& c) {
+  c.plan = app.add_subcommand(
+      "plan",
+      "Choose from a scene's [requirements] (data/scenes/README.md: a relative tolerance per "
+      "quantity of "
+      "interest, or \"not needed\") and its tradeoff (run `iwb tradeoff` first): the cheapest DEM "
+      "setting whose "
+      "errors plus the seed noise floor meet every tolerance, and the simplest continuum model "
+      "(hp1d, ah, hvwe; "
+      "hvwe-igs too for cyclic paths) whose errors against the tradeoff's reference run, replayed "
+      "along its own "
+      "path with kappa_r and d_s fitted, meet them. Prints the decision and which setting or model "
+      "failed which "
+      "tolerance by how much; writes plan.json.\n"
+      "It needs the tradeoff's run directories (the reference run is replayed), not only its "
+      "tables.\n"
+      "Example: iwb plan data/scenes/default.toml --tradeoff runs/tradeoff-default");
+  c.plan->add_option("scene", c.plan_scene, "scene TOML file with a [requirements] table")
+      ->required()
+      ->check(CLI::ExistingFile);
+  c.plan->add_option("--tradeoff", c.plan_tradeoff,
+                     "tradeoff directory (default runs/tradeoff-<scene stem>)");
+  c.plan->add_option(
+      "--params", c.plan_params,
+      "parameter file of the continuum models (default: data/params/dem_default_grains.toml if "
+      "present, else the set iwb validate chooses: phi_c closest to the reference's residual "
+      "friction)");
+  c.plan->add_option("--out,-o", c.plan_out,
+                     "where plan.json goes (default: the tradeoff directory)");
+}
+
+int run_tradeoff_command(const TradeoffCommands& c, const std::string& cl,
+                         const std::atomic<bool>* interrupt) {
+  tradeoff::TradeoffOptions opt;
+  opt.scene_file = c.scene;
+  opt.out = c.out.empty() ? tradeoff::default_out(c.scene) : fs::path(c.out);
+  opt.knobs = tradeoff::parse_knob_list(c.knobs);
+  opt.seeds = c.seeds, opt.jobs = c.jobs, opt.processes = c.np, opt.stop_after = c.stop_after;
+  opt.command_line = cl;
+  opt.interrupt = interrupt;
+  opt.progress = [](const std::string& line) { fmt::print(stderr, "  {}\n", line); };
+  fmt::print(stderr, "iwb tradeoff: {} ({} variants, {} at once) -> {}\n", c.scene,
+             tradeoff::expand_variants(opt).size(), c.jobs, opt.out.string());
+  const auto result = tradeoff::run_tradeoff(opt);
+  fmt::print("{}\n-> {}\n", io::read_file(opt.out / "tradeoff.md"),
+             (opt.out / "tradeoff.md").string());
+  return result["status"] == "complete" ? 0 : 1;
+}
+
+int run_plan_command(const TradeoffCommands& c, const std::string& cl) {
+  tradeoff::PlanOptions opt{c.plan_scene,          c.plan_tradeoff, c.plan_params,
+                            "given with --params", c.plan_out,      cl};
+  if (opt.params.empty()) {
+    const auto summary =
+        nlohmann::json::parse(io::read_file(tradeoff::reference_run(opt) / "summary.json"));
+    const auto scene = dem::parse_scene(io::read_file(opt.scene_file), opt.scene_file.string());
+    opt.params = parameters_for("data/params", scene, summary["residual_friction"].get<double>(),
+                                opt.params_why)
+                     .string();
+  }
+  const auto plan = tradeoff::run_plan(opt);
+  fmt::print("{}parameters: {} ({})\n-> {}\n", tradeoff::plan_text(plan), opt.params,
+             opt.params_why,
+             (fs::path(plan["tradeoff"].get<std::string>()).parent_path() / "plan.json").string());
+  return 0;
+}
+
+}  // namespace
+
+std::shared_ptr<TradeoffCommands> add_tradeoff_commands(CLI::App& app) {
+  auto c = std::make_shared<TradeoffCommands>();
+  add_tradeoff(app, *c);
+  add_plan(app, *c);
+  return c;
+}
+
+std::optional<int> run_tradeoff_commands(const TradeoffCommands& c, const std::string& cl,
+                                         const std::atomic<bool>* interrupt) {
+  if (*c.tradeoff) return run_tradeoff_command(c, cl, interrupt);
+  if (*c.plan) return run_plan_command(c, cl);
+  return std::nullopt;
+}
+
+}  // namespace iwb::app

@@ -1,0 +1,61 @@
+#pragma once
+// `iwb tradeoff`: speed against accuracy of a DEM scene (issue 7, item 4). The scene is run at its
+// own setting with K seeds (the seed scatter is the noise floor), with each knob (knobs.hpp)
+// halved and doubled one at a time, with every knob refined at once (the reference) and coarsened
+// at once. The runs are jobs of a campaign (src/campaign/pool.hpp): at most N at once, complete
+// runs reused and stopped ones resumed when the tradeoff is run again. Each quantity of interest
+// (dem/requirements.hpp) is measured against the reference, with its cost in particle-steps and
+// wall time: tradeoff.json, tradeoff.csv, tradeoff.md and pareto.svg/.png.
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "campaign/jobs.hpp"
+
+namespace iwb::tradeoff {
+
+struct TradeoffOptions {
+  std::filesystem::path scene_file;
+  std::filesystem::path out;  // empty: runs/tradeoff-<scene stem>
+  std::vector<std::string> knobs = {"box", "kappa", "dt", "I"};
+  int seeds = 3;  // of the base setting
+  int jobs = 1;
+  int processes = 1;
+  int stop_after = 0;  // stop cleanly once this many jobs have ended (tests of the resume)
+  std::string command_line;
+  const std::atomic<bool>* interrupt = nullptr;
+  std::function<void(const std::string&)> progress;
+};
+
+// One setting of the scene: a campaign job plus what it varies.
+struct Variant {
+  campaign::Job job;
+  std::string kind;  // "base", "knob", "refined" (the reference), "coarsened"
+  std::string knob;  // kind "knob": which
+  double factor = 1.0;
+  int seed = 1;
+};
+
+// Every variant, the base seeds first and the reference (most expensive) next, so that the
+// longest job starts early. InputError (nothing run) when a variant is not a valid scene.
+std::vector<Variant> expand_variants(const TradeoffOptions& options);
+
+// Runs (or reuses) the variants, then analyses what completed. The returned tradeoff.json has
+// "status" "complete" when every run completed.
+nlohmann::json run_tradeoff(const TradeoffOptions& options);
+
+// The analysis over run rows (each {name, kind, knob, factor, seed, status, cost, qoi}): the
+// reference, the noise floor, every setting's relative errors and which tolerances it meets, and
+// per knob how far each QoI moves. Pure: tested on hand-built rows.
+nlohmann::json analyse(const nlohmann::json& rows);
+
+// sha256 of the scene the DEM runs for `scene_file` (its [requirements] left out): plan checks
+// that a tradeoff belongs to the scene.
+std::string dem_scene_sha256(const std::filesystem::path& scene_file);
+
+std::filesystem::path default_out(const std::filesystem::path& scene_file);
+
+}  // namespace iwb::tradeoff

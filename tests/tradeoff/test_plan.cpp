@@ -1,0 +1,104 @@
+// The decisions of `iwb tradeoff` and `iwb plan` on hand-built run rows (made-up numbers: these
+// test the functions, they are not results): errors against the reference, the seed noise floor,
+// tolerances met, the cheapest DEM setting and the simplest model that meet a scene's requirements.
+#include <catch2/catch.hpp>
+
+#include "tradeoff/plan.hpp"
+#include "tradeoff/tradeoff.hpp"
+
+using namespace iwb;
+using nlohmann::json;
+
+namespace {
+json row(const std::string& name, const std::string& kind, double steps, double peak,
+         double residual, const std::string& knob = "", double factor = 1.0) {
+  return {{"name", name},
+          {"kind", kind},
+          {"knob", knob},
+          {"factor", factor},
+          {"seed", 1},
+          {"status", "complete"},
+          {"settings", ""},
+          {"particles", 1000.0},
+          {"particle_steps", steps},
+          {"wall_seconds", steps / 1e6},
+          {"timestep_s", 1e-6},
+          {"stiffness_level", 200.0},
+          {"inertial_number", 1e-3},
+          {"qoi",
+           {{"peak_friction", peak},
+            {"residual_friction", residual},
+            {"dilation_rate", 0.1},
+            {"band_thickness", nullptr}}}};
+}
+
+// Base seeds 0.50 and 0.52 (mean 0.51, sd 0.01414: 2.77 % noise), a reference at 0.50.
+json rows() {
+  return json::array(
+      {row("base_s1", "base", 1e8, 0.70, 0.50), row("base_s2", "base", 1.2e8, 0.70, 0.52),
+       row("refined", "refined", 1e9, 0.70, 0.50), row("dtx2", "knob", 5e7, 0.70, 0.60, "dt", 2.0),
+       row("dtx0.5", "knob", 2e8, 0.70, 0.505, "dt", 0.5),
+       row("coarsened", "coarsened", 1e7, 0.90, 0.80)});
+}
+}  // namespace
+
+TEST_CASE(
+    "tradeoff analysis: noise floor from the seeds, errors against the refined run, tolerances met",
+    "[tradeoff]") {
+  const json t = tradeoff::analyse(rows());
+  REQUIRE(t["reference"]["name"] == "refined");
+  const double noise = t["noise_floor"]["residual_friction"]["relative"];
+  CHECK(noise == Approx(std::sqrt(0.0002) / 0.51).epsilon(1e-9));
+  const auto& base = t["settings"][0];
+  CHECK(base["name"] == "base");
+  CHECK(base["particle_steps"].get<double>() == Approx(1.1e8));  // mean cost over the seeds
+  CHECK(base["error"]["residual_friction"].get<double>() == Approx(0.02));
+  CHECK(base["meets"]["0.05"]["residual_friction"].get<bool>());  // 2 % + 2.77 % noise <= 5 %
+  CHECK_FALSE(base["meets"]["0.01"]["residual_friction"].get<bool>());
+  CHECK(t["noise_floor"]["band_thickness"]["relative"].is_null());
+  CHECK(t["cheapest"]["0.05"]["band_thickness"].is_null());
+  const auto& effects = t["knob_effects"];
+  REQUIRE(effects.size() == 2);
+  CHECK(effects[0]["shift"]["residual_friction"].get<double>() ==
+        Approx(0.09 / 0.51));  // dt x2 moved it +17.6 %
+  CHECK(effects[0]["cost_ratio"].get<double>() == Approx(5e7 / 1.1e8));
+}
+
+TEST_CASE("plan: the cheapest DEM setting whose error plus noise meets every stated tolerance",
+          "[tradeoff]") {
+  const json t = tradeoff::analyse(rows());
+  // residual friction to 5 %: dtx2 (20 % off) and coarsened fail; base (2 % + 2.8 %) is the
+  // cheapest that meets it
+  const auto d =
+      tradeoff::choose_dem(t, {{"residual_friction", 0.05}, {"band_thickness", std::nullopt}});
+  REQUIRE_FALSE(d["chosen"].is_null());
+  CHECK(d["chosen"]["name"] == "base");
+  CHECK(d["candidates"][0]["name"] == "coarsened");
+  CHECK(d["candidates"][1]["name"] == "dtx2");
+  const auto& fail = d["candidates"][1]["fails"][0];
+  CHECK(fail["qoi"] == "residual_friction");
+  CHECK(fail["by"].get<double>() == Approx(0.2 + std::sqrt(0.0002) / 0.51 - 0.05));
+  // 1 %: the noise floor alone (2.8 %) is above it, so nothing meets it, the reference included
+  CHECK(tradeoff::choose_dem(t, {{"residual_friction", 0.01}})["chosen"].is_null());
+  // a needed QoI no run measured fails every setting
+  CHECK(tradeoff::choose_dem(t, {{"band_thickness", 0.5}})["chosen"].is_null());
+}
+
+TEST_CASE("plan: the simplest model that meets the tolerances, and why the simpler ones did not",
+          "[tradeoff]") {
+  const json noise = {{"residual_friction", {{"relative", 0.01}}},
+                      {"peak_friction", {{"relative", 0.02}}}};
+  const std::vector<tradeoff::ModelErrors> models = {
+      {"hp1d", {{"residual_friction", 0.08}, {"peak_friction", 0.01}}, ""},
+      {"ah", {{"residual_friction", 0.03}, {"peak_friction", 0.04}}, ""},
+      {"hvwe", {{"residual_friction", 0.01}, {"peak_friction", 0.01}}, ""}};
+  const auto only_residual = tradeoff::choose_model(models, {{"residual_friction", 0.05}}, noise);
+  CHECK(only_residual["chosen"]["name"] == "ah");
+  CHECK(only_residual["candidates"][0]["fails"][0]["by"].get<double>() == Approx(0.04));
+  const auto both =
+      tradeoff::choose_model(models, {{"residual_friction", 0.05}, {"peak_friction", 0.05}}, noise);
+  CHECK(both["chosen"]["name"] == "hvwe");  // ah: 4 % + 2 % noise > 5 % in the peak
+  CHECK(both["candidates"][1]["fails"][0]["qoi"] == "peak_friction");
+  CHECK(tradeoff::model_ladder(false) == std::vector<std::string>{"hp1d", "ah", "hvwe"});
+  CHECK(tradeoff::model_ladder(true).back() == "hvwe-igs");
+}
