@@ -46,7 +46,7 @@ nlohmann::json run_dem_bench(const DemBenchOptions& opt) {
                    {"workbench_seconds", workbench}, {"generation_seconds", generation}});
   }
   std::filesystem::remove_all(tmp);
-  fmt::print("\nengine loop: LIGGGHTS' own 'Loop time' lines; total: the whole `iwb dem run`; workbench: total\n"
+  fmt::print("\nengine loop: the engine's own time in its run loops (IWB_COST: LIGGGHTS' 'Loop time', YADE's O.run); total: the whole `iwb dem run`; workbench: total\n"
              "minus the engine processes (input generation, output parsing, contract assembly, summary)\n");
   return out;
 }
