@@ -175,8 +175,8 @@ int cmd_sweep(iwb::campaign::SweepOptions opt) {
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "iwb, the interface workbench: continuum hypoplastic interface models (and, as they land,\n"
-      "DEM interface-shear scenes) run side by side.\n\n"
+      "iwb, the interface workbench: DEM interface-shear scenes (LIGGGHTS, YADE) and continuum\n"
+      "hypoplastic interface models run side by side on the same path.\n\n"
       "Examples:\n"
       "  iwb models                                  list models, parameters, units, bounds\n"
       "  iwb element data/tests/hvwe_cnl_dense.toml  run one element test into runs/<name>/\n"
@@ -300,7 +300,8 @@ int main(int argc, char** argv) {
 
   auto* validate = app.add_subcommand(
       "validate", "The main job: run a DEM scene (the embedded default unless --scene), replay it through hvwe "
-                  "with the shipped parameter set closest to the DEM's residual friction angle, and write "
+                  "with the set calibrated on the scene's grains (data/calibration/) or else the shipped set "
+                  "closest to the DEM's residual friction angle, and write "
                   "report.html (a few minutes on 2 cores).");
   iwb::app::ValidateOptions vopt;
   std::string vout = "runs/validate";

@@ -78,12 +78,12 @@ void add_plan(CLI::App& app, TradeoffCommands& c) {
       "setting whose "
       "errors plus the seed noise floor meet every tolerance, and the simplest continuum model "
       "(hp1d, ah, hvwe; "
-      "hvwe-igs too for cyclic paths) whose errors against the tradeoff's reference run, replayed "
-      "along its own "
-      "path with kappa_r and d_s fitted, meet them. Prints the decision and which setting or model "
+      "hvwe-igs too for cyclic paths) whose errors, averaged over the scene's own runs (the base "
+      "seeds) replayed along their own "
+      "paths with kappa_r and d_s fitted, meet them. Prints the decision and which setting or model "
       "failed which "
       "tolerance by how much; writes plan.json.\n"
-      "It needs the tradeoff's run directories (the reference run is replayed), not only its "
+      "It needs the tradeoff's run directories (the base runs are replayed), not only its "
       "tables.\n"
       "Example: iwb plan data/scenes/default.toml --tradeoff runs/tradeoff-default");
   c.plan->add_option("scene", c.plan_scene, "scene TOML file with a [requirements] table")
