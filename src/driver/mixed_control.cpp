@@ -45,10 +45,9 @@ IncrementSolution newton(const models::Model& m, const StateVector& committed,
       trial = integration::integrate_increment<Dual>(m, start, d, is, out.counters, first_step, &plan);
     } catch (const DomainError& e) {
       last_domain_error = e.what();
-      // A replayed plan has no cut-backs: let the adaptive scheme choose new substeps at this x.
-      // Without a plan the adaptive scheme itself found no way through: the domain error stands
-      // (backing x off instead turned "void ratio at e_d" into a bare "Newton did not converge").
-      // Repeated failures mean the increment runs into the domain's edge (e at e_d): say that.
+      // A replayed plan cannot cut back: let the adaptive scheme choose new substeps at this x.
+      // If the adaptive scheme itself failed, or replays keep failing, the increment runs into
+      // the domain's edge (e.g. e at e_d), and that domain error is the answer.
       if (!plan.replay || ++replans > kMaxReplans) throw;
       plan.replay = false;
       continue;
