@@ -191,21 +191,23 @@ std::vector<fs::path> base_runs(const PlanOptions& opt, const json& t) {
 // evaluate_model on every run, each QoI's error averaged over the runs (unknown if one lacks it).
 ModelErrors evaluate_model_on(const std::vector<fs::path>& runs, const std::string& model,
                               const std::string& params) {
+  std::vector<ModelErrors> each;
   ModelErrors mean{model, {}, ""};
   for (const auto& run : runs) {
-    const auto e = evaluate_model(run, model, params);
-    mean.note += fmt::format("{}{}: {}", mean.note.empty() ? "" : "; ",
-                             run.filename().string(), e.note);
-    for (const auto& q : dem::quantities_of_interest()) {
-      const auto it = e.error.find(q.key);
-      const bool known = it != e.error.end() && it->second;
-      auto& acc = mean.error[q.key];
-      if (&run == &runs.front()) acc = known ? it->second : std::nullopt;
-      else if (acc) acc = known ? std::optional<double>(*acc + *it->second) : std::nullopt;
-    }
+    each.push_back(evaluate_model(run, model, params));
+    mean.note += fmt::format("{}{}: {}", mean.note.empty() ? "" : "; ", run.filename().string(),
+                             each.back().note);
   }
-  for (auto& [q, v] : mean.error)
-    if (v) *v /= double(runs.size());
+  for (const auto& q : dem::quantities_of_interest()) {
+    double sum = 0.0;
+    bool known = !each.empty();
+    for (const auto& e : each) {
+      const auto it = e.error.find(q.key);
+      known = known && it != e.error.end() && it->second;
+      if (known) sum += *it->second;
+    }
+    mean.error[q.key] = known ? std::optional<double>(sum / double(each.size())) : std::nullopt;
+  }
   return mean;
 }
 
