@@ -3,6 +3,8 @@
 # Run headless from the stage's work directory:  yade -n -x -jN interface_shear.py PARAMS STAGE
 #   STAGE consolidate: generate, settle, consolidate to sigma_n0 under the servo plate, save.
 #   STAGE shear:       load, switch to test friction, relax, shear the bottom wall, write raw outputs.
+#   STAGE oedometer:   a soil cell's (`iwb dem soiltest --engine yade`): load, test friction, relax,
+#                      then ramp and hold the plate's target at each level, a row per level.
 # Lines starting IWB_ are read by the runner (progress, stage ends, failures, cost), exactly as
 # from the LIGGGHTS templates; the raw files have the LIGGGHTS runner's columns so that one C++
 # routine turns either engine's output into the contract.
@@ -174,10 +176,14 @@ def stiffness_on(ids):
 # one rattling contact from kicking the plate.
 
 SERVO = {"on": False, "kn": 0.0, "z0": None, "shear": False, "t0": 0.0, "updates": 0, "integral": 0.0,
-         "vel_max": P["servo"]["vel_max"]}
+         "vel_max": P["servo"]["vel_max"], "ramp": None, "integrate": False,
+         "layers": 1.0}
 
 
 def target_force():
+    if SERVO["ramp"] is not None:  # oedometer: (first step, steps, from, to), then held at `to`
+        i0, n, f0, f1 = SERVO["ramp"]
+        return f0 + (f1 - f0) * min(1.0, (O.iter - i0) / float(n))
     if P["bc"] == "CNS" and SERVO["z0"] is not None:
         return P["F0"] + P["K_Pa_per_m"] * P["area"] * (zplate() - SERVO["z0"])
     return P["F0"]
@@ -200,8 +206,10 @@ def control():
         if SERVO["kn"] <= 0.0:
             v = -vmax
         else:
-            closing = err / (SERVO["kn"] * every * O.dt)  # the velocity that closes the error in one update
-            if SERVO["shear"]:  # the integral follows steady dilation, which a P servo only trails
+            # the velocity that closes the error in one update, the plate's contacts in series with
+            # `layers` grain layers (1: the contacts alone)
+            closing = err * SERVO["layers"] / (SERVO["kn"] * every * O.dt)
+            if SERVO["integrate"]:  # the integral follows steady dilation or creep, which a P servo only trails
                 SERVO["integral"] = max(-vmax, min(vmax, SERVO["integral"] + P["servo"]["integral_gain"] * closing))
             v = P["servo"]["gain"] * closing + SERVO["integral"]
         v = max(-vmax, min(vmax, v))
@@ -274,6 +282,12 @@ def set_friction(mu):
             c.phys.tangensOfFrictionAngle = mu
 
 
+def coordination(grain_set):
+    # Grain-grain contacts per grain (LIGGGHTS's contact/atom averaged).
+    n = sum(1 for c in O.interactions if c.isReal and c.id1 in grain_set and c.id2 in grain_set)
+    return 2.0 * n / max(1, len(grain_set))
+
+
 def grain_volumes():
     return [(4.0 / 3.0) * math.pi * O.bodies[i].shape.radius ** 3 for i in IDS["grains"]]
 
@@ -290,8 +304,7 @@ class Outputs:
         self.grain_set = set(IDS["grains"])
 
     def coordination(self):
-        n = sum(1 for c in O.interactions if c.isReal and c.id1 in self.grain_set and c.id2 in self.grain_set)
-        return 2.0 * n / max(1, len(IDS["grains"]))
+        return coordination(self.grain_set)
 
     def timeseries(self, t):
         zlo, zhi = P["band_zlo"] + ZS, P["band_zhi"] + ZS
@@ -336,14 +349,31 @@ class Outputs:
         self.samples = []
 
 
-def shear():
+def load_consolidated():
+    # Stage 1's specimen at test friction, under the servo plate.
     O.load("consolidated.yade.gz")
     ids_from_tags()
     P["plate_ref_z"] = float(O.tags["iwb_plate_ref_z"])
     O.engines = engines()
     set_friction(P["mu_test"])
     SERVO["on"] = True
+
+
+def stress_volume_sums():
+    # The grains' summed stress x volume (compression negative), as LIGGGHTS's stress/atom reduced.
+    stress = bodyStressTensors()
+    sums = [0.0, 0.0, 0.0]
+    for i, v in zip(IDS["grains"], grain_volumes()):
+        for k in range(3):
+            sums[k] += stress[i][k, k] * v
+    return sums
+
+
+def shear():
+    load_consolidated()
     run(P["relax_steps"])
+    for axis, value in zip("xyz", stress_volume_sums()):  # the soil cell's K0 when shear starts
+        say("IWB_FACT stress_volume_%s%s_Pa_m3 %.10g" % (axis, axis, value))
     z0 = zplate()
     SERVO["z0"] = z0
     say("IWB_STAGE_DONE relax zplate_m %.10g" % z0)
@@ -353,7 +383,7 @@ def shear():
     step0 = O.iter
     say("IWB_SHEAR_START step %d zplate_m %.10g" % (step0, z0))
     REF["wall_x"] = O.bodies[IDS["wall"][0]].state.pos[0]
-    SERVO["shear"], SERVO["t0"] = True, O.time
+    SERVO["shear"], SERVO["integrate"], SERVO["t0"] = True, True, O.time
     SERVO["vel_max"] = min(SERVO["vel_max"], 20.0 * sh["velocity"])
     out = Outputs()
     # One loop over the shear in chunks of the smallest output period; outputs fall on chunk ends.
@@ -384,7 +414,48 @@ def shear():
     say("IWB_STAGE_DONE shear ux_m %.9g" % ux)
 
 
-STAGES = {"consolidate": consolidate, "shear": shear}
+# --- soil cell: oedometer --------------------------------------------------------------------
+
+def oedometer_row(k, steps):
+    """Holds for `steps` and prints the row of level k: the mean over the last avg_steps (the
+    LIGGGHTS template's ave/time over the last half window: a stiff, dense cell rattles by tens
+    of percent around the servo's target). Columns as oedometer.in's: sigma on the bottom wall
+    and on the plate (Pa), plate height (m), solid volume (m3), summed stress x volume xx yy zz
+    (Pa m3), coordination, kinetic energy (J)."""
+    oe = P["oedometer"]
+    run(steps - oe["avg_steps"])
+    grain_set, vsolid = set(IDS["grains"]), sum(grain_volumes())
+    sums, n = [0.0] * 9, 0
+    for _ in range(max(1, oe["avg_steps"] // oe["avg_every"])):
+        run(oe["avg_every"])
+        row = [wall_forces()[0] / P["area"], plate_force() / P["area"], zplate(), vsolid]
+        row += stress_volume_sums() + [coordination(grain_set), kinetic_energy()]
+        sums = [a + b for a, b in zip(sums, row)]
+        n += 1
+    say("IWB_ROW oedometer %d %s" % (k, " ".join("%.10g" % (v / n) for v in sums)))
+
+
+def oedometer():
+    load_consolidated()
+    # The plate's contact stiffness alone is several times the cell's (its grain layers are in
+    # series): a 6 d50 cell was held 9 % under a level's target on loading and 24 % over it on
+    # unloading. Counting the layers, and the shear stage's integral term for creep, the rows
+    # land within ~1 % of their targets.
+    SERVO["layers"] = P["oedometer"]["layers"]
+    SERVO["integrate"] = True
+    oe = P["oedometer"]
+    oedometer_row(0, P["relax_steps"])
+    levels = oe["levels_Pa"]
+    for k in range(1, len(levels)):
+        say("IWB_LEVEL %d %d %.10g" % (k, len(levels) - 1, levels[k]))
+        SERVO["ramp"] = (O.iter, oe["ramp_steps"], levels[k - 1] * P["area"], levels[k] * P["area"])
+        run(oe["ramp_steps"])
+        oedometer_row(k, oe["hold_steps"])
+    report_cost()
+    say("IWB_STAGE_DONE oedometer")
+
+
+STAGES = {"consolidate": consolidate, "shear": shear, "oedometer": oedometer}
 if STAGE not in STAGES:
     fail("unknown stage " + STAGE)
 try:

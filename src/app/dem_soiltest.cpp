@@ -21,7 +21,7 @@ std::shared_ptr<DemSoiltestCommand> add_dem_soiltest(CLI::App& dem) {
       "soiltest",
       "A soil element test on a DEM cell of a scene's grains (same particles, contact law and "
       "seed; no "
-      "wall under test), in LIGGGHTS, into the soil-test contract that `iwb calibrate` reads "
+      "wall under test), in LIGGGHTS or YADE (--engine), into the soil-test contract that `iwb calibrate` reads "
       "(src/calibration/README.md). The cell is periodic in x and y between two rough sawtooth "
       "plates "
       "(ridges 1 d50, pitch 2 d50; plate friction = grain friction); the specimen is prepared at "
@@ -46,6 +46,11 @@ std::shared_ptr<DemSoiltestCommand> add_dem_soiltest(CLI::App& dem) {
       ->check(CLI::ExistingFile);
   s->add_option("--test", c->test, "oedometer or simpleshear")
       ->check(CLI::IsMember({"oedometer", "simpleshear"}))
+      ->capture_default_str();
+  s->add_option("--engine", c->spec.engine,
+                "DEM engine: liggghts or yade (the same cell, stress program and rows; YADE is "
+                "~7x slower per particle-step)")
+      ->check(CLI::IsMember({"liggghts", "yade"}))
       ->capture_default_str();
   s->add_option("--bc", c->bc, "simple shear: CNL or CV")
       ->check(CLI::IsMember({"CNL", "CV"}))
@@ -85,9 +90,9 @@ std::shared_ptr<DemSoiltestCommand> add_dem_soiltest(CLI::App& dem) {
                 "oedometer: ramp and hold length in consolidation windows")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
-  s->add_option("--np", c->np, "MPI ranks")->check(CLI::Range(1, 256))->capture_default_str();
+  s->add_option("--np", c->np, "MPI ranks (LIGGGHTS) or OpenMP threads (YADE)")->check(CLI::Range(1, 256))->capture_default_str();
   s->add_option("--out,-o", c->out,
-                "run directory (default runs/soil-<scene>-<test>[-<bc>]-<density>)");
+                "run directory (default runs/soil-<scene>-<test>[-<bc>]-<density>[-yade])");
   s->add_flag("--resume", c->resume,
               "continue an interrupted run of the same cell from its last finished stage");
   s->add_flag("--force", c->force, "replace an earlier run in the same directory");
@@ -108,14 +113,17 @@ std::optional<int> run_dem_soiltest(const DemSoiltestCommand& c, const std::stri
       !c.out.empty()
           ? std::filesystem::path(c.out)
           : std::filesystem::path("runs") /
-                fmt::format("soil-{}-{}{}-{}", std::filesystem::path(c.scene).stem().string(),
-                            c.test, oed ? "" : "-" + c.bc, c.density);
+                fmt::format("soil-{}-{}{}-{}{}", std::filesystem::path(c.scene).stem().string(),
+                            c.test, oed ? "" : "-" + c.bc, c.density,
+                            spec.engine == "liggghts" ? "" : "-" + spec.engine);
   dem::RunOptions opt{dir, c.np, c.resume, c.force, command_line, interrupt, std::move(progress)};
   fmt::print(
       stderr,
-      "iwb dem soiltest: {} of {} ({}, {:g} kPa, cell {:g} x {:g} x {:g} d50, {} rank(s)) -> {}\n",
-      oed ? "oedometer" : "simple shear " + c.bc, c.scene, c.density, spec.initial_stress_kPa(),
-      spec.length_d50, spec.width_d50, spec.height_d50, c.np, dir.string());
+      "iwb dem soiltest: {} of {} in {} ({}, {:g} kPa, cell {:g} x {:g} x {:g} d50, {} rank(s)) -> "
+      "{}\n",
+      oed ? "oedometer" : "simple shear " + c.bc, c.scene, spec.engine, c.density,
+      spec.initial_stress_kPa(), spec.length_d50, spec.width_d50, spec.height_d50, c.np,
+      dir.string());
   const auto outcome = dem::run_soil_test(io::read_file(c.scene), c.scene, spec, opt);
   fmt::print("{}: {} ({} particles) -> {}\n", c.scene, outcome.status,
              outcome.manifest.value("particle_count", 0), dir.string());

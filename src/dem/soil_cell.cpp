@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "dem/engines.hpp"
 #include "dem/liggghts/liggghts_engine.hpp"
+#include "dem/yade/yade_engine.hpp"
 #include "dem/summary.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_override.hpp"
@@ -79,7 +81,8 @@ std::string level_block(int k, int n, double from_Pa, double to_Pa, long ramp, l
       fmt::arg("ramp", ramp), fmt::arg("hold", hold));
 }
 
-TemplateValues oedometer_values(const Scene& cell, const SoilCellSpec& c) {
+// The oedometer's stress program for LIGGGHTS: its levels written into oedometer.in.
+TemplateValues liggghts_oedometer(const Scene& cell, const SoilCellSpec& c) {
   const long steps = long(c.level_windows) * cell.consolidation.window_steps;
   const auto levels = oedometer_levels_kPa(c);
   std::string program;
@@ -92,6 +95,31 @@ TemplateValues oedometer_values(const Scene& cell, const SoilCellSpec& c) {
           {"ramp_steps", std::to_string(steps)},
           {"hold_steps", std::to_string(steps)},
           {"avg_repeat", std::to_string(repeat)}};
+}
+
+// The same program for YADE (interface_shear.py's oedometer stage): levels, ramp and hold steps,
+// rows averaged every 10 steps over the last half window, as LIGGGHTS's ave/time; the servo counts
+// the cell's grain layers (one per d50 of height) in series with the plate's contacts.
+nlohmann::json yade_oedometer(const Scene& cell, const SoilCellSpec& c) {
+  const long steps = long(c.level_windows) * cell.consolidation.window_steps;
+  nlohmann::json levels = nlohmann::json::array();
+  for (const double kPa : oedometer_levels_kPa(c)) levels.push_back(kPa * 1e3);
+  return {{"oedometer",
+           {{"levels_Pa", levels},
+            {"ramp_steps", steps},
+            {"hold_steps", steps},
+            {"avg_every", 10},
+            {"avg_steps", cell.consolidation.window_steps / 2},
+            {"layers", c.height_d50}}}};
+}
+
+std::unique_ptr<Engine> cell_engine(const Scene& cell, const SoilCellSpec& c) {
+  if (!oedometer(c)) return make_engine(c.engine);
+  const std::vector<std::string> stages{"consolidate", "oedometer"};
+  if (c.engine == "yade") return std::make_unique<YadeEngine>(stages, yade_oedometer(cell, c));
+  if (c.engine == "liggghts")
+    return std::make_unique<LiggghtsEngine>(stages, liggghts_oedometer(cell, c));
+  return make_engine(c.engine);  // names the engines available
 }
 
 SoilTest oedometer_result(const Scene& cell, const nlohmann::json& facts) {
@@ -277,9 +305,8 @@ RunOutcome run_soil_test(const std::string& text, const std::string& source, con
                          const RunOptions& opt) {
   const std::string cell_text = cell_scene_text(text, source, c);
   const Scene cell = parse_scene(cell_text, source + " (soil cell)");
-  LiggghtsEngine engine =
-      oedometer(c) ? LiggghtsEngine({"consolidate", "oedometer"}, oedometer_values(cell, c))
-                   : LiggghtsEngine();
+  const auto engine_ptr = cell_engine(cell, c);
+  Engine& engine = *engine_ptr;
   RunOutcome out;
   const auto run = run_stages(cell, cell_text, engine, opt,
                               fresh_manifest(text, source, cell_text, cell, c, engine, opt), out,

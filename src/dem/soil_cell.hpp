@@ -5,9 +5,10 @@
 // The cell is the scene with its geometry replaced: a box periodic in x and y (fixed: zero lateral
 // strain) between two rough sawtooth meshes, the bottom one fixed (oedometer) or moved in +x
 // (simple shear), the top one servo-controlled (oedometer, CNL) or held (CV). Same grains, same
-// contact law (walls carry the grains' friction), same engine templates: consolidate.in prepares
-// the specimen at the first stress with a preparation friction that sets the density (0: dense,
-// high: loose), shear.in shears it, oedometer.in loads and unloads it in ramped and held steps.
+// contact law (walls carry the grains' friction), same engine inputs: LIGGGHTS's consolidate.in
+// (YADE: interface_shear.py's consolidate stage) prepares the specimen at the first stress with a
+// preparation friction that sets the density (0: dense, high: loose), shear.in (shear) shears it,
+// oedometer.in (oedometer) loads and unloads it in ramped and held steps.
 #include <string>
 
 #include "calibration/soil_test.hpp"
@@ -31,6 +32,7 @@ inline constexpr double kCellPitchD50 = 2.0;
 inline constexpr double kCellRidgeD50 = 1.0;
 
 struct SoilCellSpec {
+  std::string engine = "liggghts";  // or "yade" (dem/engines.hpp)
   calibration::SoilTestKind test = calibration::SoilTestKind::kOedometer;
   driver::BoundaryKind boundary = driver::BoundaryKind::kCNL;  // simple shear: CNL or CV
   SoilDensity density = SoilDensity::kDense;
@@ -56,9 +58,9 @@ std::string cell_scene_text(const std::string& scene_text, const std::string& so
 // unloading levels down to sigma0.
 std::vector<double> oedometer_levels_kPa(const SoilCellSpec& spec);
 
-// Runs the cell into options.out: manifest.json (kind "soiltest", source "dem:liggghts", the
+// Runs the cell into options.out: manifest.json (kind "soiltest", source "dem:<engine>", the
 // scene and the cell with their sha256, status), timeseries.csv, for simple shear profiles.csv
-// and vtk/, the engine's inputs and logs in liggghts/. --resume continues from the last finished
+// and vtk/, the engine's inputs and logs in <engine>/. --resume continues from the last finished
 // stage of the same cell.
 RunOutcome run_soil_test(const std::string& scene_text, const std::string& source,
                          const SoilCellSpec& spec, const RunOptions& options);

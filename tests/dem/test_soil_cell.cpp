@@ -1,6 +1,6 @@
-// The DEM soil cell (`iwb dem soiltest`) with real LIGGGHTS runs on the smoke scene's grains: the
-// physical facts of an oedometer and of simple shear, and that `read_soil_test` (what `iwb
-// calibrate` reads) accepts the output.
+// The DEM soil cell (`iwb dem soiltest`) with real LIGGGHTS and YADE runs on the smoke scene's
+// grains: the physical facts of an oedometer and of simple shear, and that `read_soil_test` (what
+// `iwb calibrate` reads) accepts the output.
 #include <fmt/core.h>
 
 #include <catch2/catch.hpp>
@@ -22,12 +22,12 @@ namespace {
 const std::string kScene = "data/scenes/smoke.toml";
 
 calibration::SoilTest run_cell(const dem::SoilCellSpec& spec, const std::string& name) {
-  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "soil" / name;
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "soil" / spec.engine / name;
   const dem::RunOptions opt{dir, 1, false, true, "tests", nullptr, nullptr};
   const auto outcome = dem::run_soil_test(io::read_file(kScene), kScene, spec, opt);
   REQUIRE(outcome.status == "complete");
   const auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
-  CHECK(m["source"] == "dem:liggghts");
+  CHECK(m["source"] == "dem:" + spec.engine);
   CHECK(m["scene"]["sha256"] == io::sha256_hex(io::read_file(kScene)));
   return calibration::read_soil_test(dir);  // throws if the contract does not hold
 }
@@ -49,14 +49,11 @@ dem::SoilCellSpec small_cell(SoilTestKind test) {
   return c;
 }
 
-}  // namespace
-
-TEST_CASE("DEM soil cell oedometer compresses on loading and swells less on unloading",
-          "[dem][soil]") {
-  // Loose: a dense cell of these soft grains (E = 1e8 Pa) is nearly elastic, and its unloading
-  // branch is only ~5 % stiffer than its loading branch (measured); a loose one compacts
-  // plastically.
+// Loose: a dense cell of these soft grains (E = 1e8 Pa) is nearly elastic, and its unloading
+// branch is only ~5 % stiffer than its loading branch (measured); a loose one compacts plastically.
+void check_oedometer(const std::string& engine) {
   auto c = small_cell(SoilTestKind::kOedometer);
+  c.engine = engine;
   c.density = dem::SoilDensity::kLoose;
   c.sigma_max_kPa = 160.0;
   c.load_levels = 4;
@@ -68,6 +65,7 @@ TEST_CASE("DEM soil cell oedometer compresses on loading and swells less on unlo
   REQUIRE(top == 4);
   CHECK(t.control.front() == Approx(10.0).epsilon(0.05));  // the servo reached the levels
   CHECK(t.control[top] == Approx(160.0).epsilon(0.05));
+  CHECK(t.control.back() == Approx(10.0).epsilon(0.05));
   for (std::size_t i = 1; i <= top; ++i) CHECK(t.e[i] < t.e[i - 1]);  // loading compresses
   for (std::size_t i = top + 1; i < t.rows(); ++i)
     CHECK(t.e[i] >= t.e[i - 1] - 1e-4);  // no further compaction
@@ -82,6 +80,18 @@ TEST_CASE("DEM soil cell oedometer compresses on loading and swells less on unlo
   CHECK(k0 > 0.25);
   CHECK(k0 < 0.9);
   CHECK(extra(t, "overlap_mean_over_d50_estimate", top) < 0.03);
+}
+
+}  // namespace
+
+TEST_CASE("DEM soil cell oedometer compresses on loading and swells less on unloading",
+          "[dem][soil]") {
+  check_oedometer("liggghts");
+}
+
+TEST_CASE("YADE soil cell oedometer compresses on loading and swells less on unloading",
+          "[dem][soil][yade]") {
+  check_oedometer("yade");
 }
 
 TEST_CASE(

@@ -131,7 +131,9 @@ StageResult YadeEngine::run_stage(const std::string& stage, const StageContext& 
   const Scene& s = ctx.scene;
   const Numerics n = derive(s);
   write_scene_meshes(s, n.plate_z, ctx.work_dir);
-  io::write_atomically(ctx.work_dir / "yade_params.json", yade_parameters(s, n).dump(2) + "\n");
+  nlohmann::json params = yade_parameters(s, n);
+  params.update(extra_);
+  io::write_atomically(ctx.work_dir / "yade_params.json", params.dump(2) + "\n");
   io::write_atomically(ctx.work_dir / kScript, yade_scripts().at(kScript));
   const double generation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   StageResult r = run_followed_stage(command(stage, ctx.processes), stage, ctx);

@@ -6,6 +6,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "dem/engine.hpp"
 #include "dem/numerics.hpp"
@@ -14,13 +15,22 @@ namespace iwb::dem {
 
 class YadeEngine final : public Engine {
  public:
+  YadeEngine() = default;
+  // Other stages than consolidate + shear (the soil cell's oedometer), with the parameters they
+  // need beyond the scene's, merged into yade_params.json.
+  YadeEngine(std::vector<std::string> stages, nlohmann::json extra)
+      : stages_(std::move(stages)), extra_(std::move(extra)) {}
   std::string name() const override { return "yade"; }
   std::string version() const override;
-  std::vector<std::string> stages() const override { return {"consolidate", "shear"}; }
+  std::vector<std::string> stages() const override { return stages_; }
   nlohmann::json numerics(const Scene& scene) const override;
   StageResult run_stage(const std::string& stage, const StageContext& ctx,
                         const nlohmann::json& facts) override;
   ContractTables assemble(const StageContext& ctx, const nlohmann::json& facts) override;
+
+ private:
+  std::vector<std::string> stages_ = {"consolidate", "shear"};
+  nlohmann::json extra_ = nlohmann::json::object();
 };
 
 // The YADE parameters of a scene: geometry and step counts of `derive`, materials, the rolling
