@@ -97,7 +97,8 @@ TEST_CASE("YADE soil cell oedometer compresses on loading and swells less on unl
 
 namespace {
 
-void check_simple_shear(const std::string& engine) {
+// max_row_deviation: how far one row's sigma_n may stray from the CNL target.
+void check_simple_shear(const std::string& engine, double max_row_deviation) {
   auto c = small_cell(SoilTestKind::kSimpleShear);
   c.engine = engine;
   // I = 1e-3 (DEM.md): at 2e-3 the servo trailed a dense 602-grain cell's dilation by 6 %.
@@ -118,8 +119,15 @@ void check_simple_shear(const std::string& engine) {
       for (std::size_t i = 0; i < s.rows(); ++i)
         CHECK(std::abs(s.e[i] - s.e0) < 0.005);  // volume held
     } else {
-      for (std::size_t i = s.rows() / 10; i < s.rows(); ++i)
-        CHECK(std::abs(s.sigma_n_kPa[i] / 50.0 - 1.0) < 0.05);
+      // sigma_n held on average, in its scatter and in every row (one row is one instant).
+      double sum = 0.0, squares = 0.0, n = 0.0;
+      for (std::size_t i = s.rows() / 10; i < s.rows(); ++i, n += 1.0) {
+        const double deviation = s.sigma_n_kPa[i] / 50.0 - 1.0;
+        CHECK(std::abs(deviation) < max_row_deviation);
+        sum += deviation, squares += deviation * deviation;
+      }
+      CHECK(std::abs(sum / n) < 0.02);
+      CHECK(std::sqrt(squares / n) < 0.03);
     }
   }
   CHECK(t["CNL-dense"].e0 < t["CNL-loose"].e0);
@@ -141,11 +149,13 @@ void check_simple_shear(const std::string& engine) {
 TEST_CASE(
     "DEM soil cell simple shear keeps its boundary condition and dense dilates more than loose",
     "[dem][soil][heavy]") {
-  check_simple_shear("liggghts");
+  check_simple_shear("liggghts", 0.05);
 }
 
 TEST_CASE(
     "YADE soil cell simple shear keeps its boundary condition and dense dilates more than loose",
     "[dem][soil][yade][heavy]") {
-  check_simple_shear("yade");
+  // YADE's Python servo updates every 10 steps: its rows scatter by 1.6-1.7 % RMS around a mean
+  // within 0.4 % of the target, single rows up to 10 % (measured, smoke cell).
+  check_simple_shear("yade", 0.12);
 }
