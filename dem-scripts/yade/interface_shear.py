@@ -359,11 +359,12 @@ def load_consolidated():
     SERVO["on"] = True
 
 
-def stress_volume_sums():
-    # The grains' summed stress x volume (compression negative), as LIGGGHTS's stress/atom reduced.
+def stress_volume_sums(volumes):
+    # The grains' summed stress x volume (compression negative), as LIGGGHTS's stress/atom reduced;
+    # volumes: grain_volumes(), which do not change during a stage.
     stress = bodyStressTensors()
     sums = [0.0, 0.0, 0.0]
-    for i, v in zip(IDS["grains"], grain_volumes()):
+    for i, v in zip(IDS["grains"], volumes):
         for k in range(3):
             sums[k] += stress[i][k, k] * v
     return sums
@@ -372,7 +373,7 @@ def stress_volume_sums():
 def shear():
     load_consolidated()
     run(P["relax_steps"])
-    for axis, value in zip("xyz", stress_volume_sums()):  # the soil cell's K0 when shear starts
+    for axis, value in zip("xyz", stress_volume_sums(grain_volumes())):  # the soil cell's K0 when shear starts
         say("IWB_FACT stress_volume_%s%s_Pa_m3 %.10g" % (axis, axis, value))
     z0 = zplate()
     SERVO["z0"] = z0
@@ -424,12 +425,13 @@ def oedometer_row(k, steps):
     (Pa m3), coordination, kinetic energy (J)."""
     oe = P["oedometer"]
     run(steps - oe["avg_steps"])
-    grain_set, vsolid = set(IDS["grains"]), sum(grain_volumes())
+    grain_set, volumes = set(IDS["grains"]), grain_volumes()
+    vsolid = sum(volumes)
     sums, n = [0.0] * 9, 0
     for _ in range(max(1, oe["avg_steps"] // oe["avg_every"])):
         run(oe["avg_every"])
         row = [wall_forces()[0] / P["area"], plate_force() / P["area"], zplate(), vsolid]
-        row += stress_volume_sums() + [coordination(grain_set), kinetic_energy()]
+        row += stress_volume_sums(volumes) + [coordination(grain_set), kinetic_energy()]
         sums = [a + b for a, b in zip(sums, row)]
         n += 1
     say("IWB_ROW oedometer %d %s" % (k, " ".join("%.10g" % (v / n) for v in sums)))
