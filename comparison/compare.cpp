@@ -2,12 +2,16 @@
 
 #include <fmt/core.h>
 
-#include "comparison/fit.hpp"
+#include "comparison/feasibility.hpp"
 #include "comparison/metrics.hpp"
+#include "comparison/verdicts.hpp"
 #include "io/parameter_file.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::comparison {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
 
 namespace {
 
@@ -30,6 +34,77 @@ std::string curves_csv(const DemRun& dem, const std::vector<Replay>& replays) {
   return s;
 }
 
+// The DEM's seed band per row (mean +- SD over the seeds, on the rows every seed has), for the
+// report's figures: seed_band.csv.
+std::string seed_band_csv(const DemRun& dem, const std::vector<DemRun>& seeds, std::size_t rows) {
+  std::string s = "u_x_mm,tau_mean_kPa,tau_sd_kPa,sigma_n_mean_kPa,sigma_n_sd_kPa,u_n_mean_mm,u_n_sd_mm\n";
+  auto stats = [&](auto member, std::size_t i) {
+    double m = (dem.*member)[i], q = m * m;
+    for (const auto& r : seeds) m += (r.*member)[i], q += (r.*member)[i] * (r.*member)[i];
+    const double n = double(seeds.size() + 1);
+    m /= n;
+    return std::pair{m, std::sqrt(std::max(0.0, (q - n * m * m) / (n - 1)))};
+  };
+  for (std::size_t i = 0; i < rows; ++i) {
+    const auto [t, ts] = stats(&DemRun::tau_kPa, i);
+    const auto [sn, sns] = stats(&DemRun::sigma_n_kPa, i);
+    const auto [un, uns] = stats(&DemRun::u_n_mm, i);
+    s += fmt::format("{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", dem.u_x_mm[i], t, ts, sn, sns, un, uns);
+  }
+  return s;
+}
+
+Variant fitted_variant(const Variant& start, const FitResult& fit, const std::string& what, double d50) {
+  Variant v = start;
+  v.inputs.roughness.kappa_r = fit.kappa_r;
+  v.d_s_mm = fit.d_s_mm;
+  v.label = fmt::format("fitted to {}: kappa_r = {:.3f} +- {:.3f}, d_s = {:.2f} +- {:.2f} mm ({:.1f} d50)", what,
+                        fit.kappa_r, fit.sigma_kappa_r, fit.d_s_mm, fit.sigma_d_s_mm, fit.d_s_mm / d50);
+  return v;
+}
+
+json fit_json(const FitResult& fit, const DemRun& dem, const Metrics& at_optimum) {
+  return {{"kappa_r", fit.kappa_r},         {"sigma_kappa_r", fit.sigma_kappa_r},
+          {"d_s_mm", fit.d_s_mm},           {"sigma_d_s_mm", fit.sigma_d_s_mm},
+          {"d_s_over_d50", fit.d_s_mm / dem.d50_mm},
+          {"rmse_tau_kPa", at_optimum.rmse_tau_kPa},
+          {"rms_scaled_residual", fit.rms_scaled},
+          {"evaluations", fit.evaluations}, {"at_bound", fit.at_bound},
+          {"algorithm", fit.algorithm}, {"stop", fit.stop_reason}};
+}
+
+std::vector<DemRun> load_seeds(const CompareOptions& opt) {
+  std::vector<DemRun> seeds;
+  for (const auto& d : opt.seed_dirs) seeds.push_back(load_dem_run(d, opt.allow_partial));
+  return seeds;
+}
+
+json manifest_of(const CompareOptions& opt) {
+  json seeds = json::array();
+  for (const auto& d : opt.seed_dirs) seeds.push_back(d.string());
+  return {{"kind", "comparison"},
+          {"workbench", {{"name", "iwb"}, {"version", IWB_VERSION}}},
+          {"command_line", opt.command_line},
+          {"inputs", {{"dem_run", opt.dem_dir.string()},
+                      {"dem_manifest_sha256", io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json"))},
+                      {"seed_runs", seeds},
+                      {"parameters", opt.params},
+                      {"parameters_sha256", io::sha256_hex(io::read_file(opt.params))},
+                      {"predicted_d_s_over_d50", opt.predicted_ds_d50}}},
+          {"started", io::utc_timestamp()},
+          {"status", "running"}};
+}
+
+// The headline: which quantities the predicted and the jointly fitted model hold, and the scan.
+json headline(const json& predicted, const json& fitted, const Feasibility& scan) {
+  auto summary = [](const json& verdicts) {
+    json s = {{"holds", json::array()}, {"fails", json::array()}};
+    for (const auto& v : verdicts) s[v["verdict"] == "holds" ? "holds" : "fails"].push_back(v["quantity"]);
+    return s;
+  };
+  return {{"predicted", summary(predicted)}, {"fitted", summary(fitted)}, {"scan", to_json(scan)}};
+}
+
 }  // namespace
 
 double gutjahr_kappa_r(double R_n, double log_base) {
@@ -38,10 +113,12 @@ double gutjahr_kappa_r(double R_n, double log_base) {
 }
 
 std::vector<Variant> standard_variants(const DemRun& dem, const std::string& model,
-                                       const models::ModelInputs& parameters) {
+                                       const models::ModelInputs& parameters, double predicted_ds_d50) {
   const auto [kappa, kappa_label] = gutjahr_kappa(dem.R_n);
-  std::vector<std::pair<double, std::string>> thicknesses = {{5.0 * dem.d50_mm, "d_s = 5 d50"},
-                                                             {10.0 * dem.d50_mm, "d_s = 10 d50"}};
+  std::vector<std::pair<double, std::string>> thicknesses = {
+      {predicted_ds_d50 * dem.d50_mm, fmt::format("d_s = {:g} d50", predicted_ds_d50)}};
+  for (double k : {5.0, 10.0})
+    if (k != predicted_ds_d50) thicknesses.push_back({k * dem.d50_mm, fmt::format("d_s = {:g} d50", k)});
   if (const auto band = dem.band_d50())
     thicknesses.push_back({*band * dem.d50_mm, fmt::format("d_s = measured wall band ({:.2g} d50)", *band)});
   std::vector<Variant> out;
@@ -50,38 +127,34 @@ std::vector<Variant> standard_variants(const DemRun& dem, const std::string& mod
     v.inputs.roughness = {models::RoughnessScheme::kGutjahr, kappa};
     out.push_back(v);
   }
+  out.front().label = "predicted: " + out.front().label;
   return out;
 }
 
 nlohmann::json run_comparison(const CompareOptions& opt) {
   const DemRun dem = load_dem_run(opt.dem_dir, opt.allow_partial);
+  const std::vector<DemRun> seeds = load_seeds(opt);
+  const SeedScatter scatter = seed_scatter(dem, seeds);  // InputError for a seed of another scene
+  const Tolerances tolerances = tolerances_for(dem);
   models::ModelInputs params;
   params.tables = io::load_parameter_file(opt.params);
   params.source = opt.params;
   models::find_model(opt.model).make(params);  // parameters validated before anything runs
   io::prepare_run_directory(opt.out, opt.force);
-  nlohmann::json manifest = {{"kind", "comparison"},
-                             {"workbench", {{"name", "iwb"}, {"version", IWB_VERSION}}},
-                             {"command_line", opt.command_line},
-                             {"inputs", {{"dem_run", opt.dem_dir.string()},
-                                         {"dem_manifest_sha256", io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json"))},
-                                         {"parameters", opt.params},
-                                         {"parameters_sha256", io::sha256_hex(io::read_file(opt.params))}}},
-                             {"started", io::utc_timestamp()},
-                             {"status", "running"}};
+  json manifest = manifest_of(opt);
   io::write_manifest(opt.out, manifest);
 
+  auto candidates = standard_variants(dem, opt.model, params, opt.predicted_ds_d50);
+  const Variant predicted = candidates.front();
+  const FitResult tau_fit = fit_kappa_and_ds(dem, predicted, tau_only_targets());
+  const FitTargets joint = joint_targets(dem, scatter);
+  const FitResult fit = fit_kappa_and_ds(dem, predicted, joint);
+  candidates.push_back(fitted_variant(predicted, tau_fit, "tau alone", dem.d50_mm));
+  candidates.push_back(fitted_variant(predicted, fit, dem.boundary == driver::BoundaryKind::kCNL ? "tau and u_n" : "tau and sigma_n", dem.d50_mm));
+  const std::size_t fitted_index = candidates.size() - 1;
+
   std::vector<Replay> replays;
-  nlohmann::json variants = nlohmann::json::array();
-  auto candidates = standard_variants(dem, opt.model, params);
-  // the fitted variant, started from the first standard one
-  const FitResult fit = fit_kappa_and_ds(dem, candidates.front());
-  Variant fitted = candidates.front();
-  fitted.inputs.roughness.kappa_r = fit.kappa_r;
-  fitted.d_s_mm = fit.d_s_mm;
-  fitted.label = fmt::format("fitted: kappa_r = {:.3f} +- {:.3f}, d_s = {:.2f} +- {:.2f} mm ({:.1f} d50)", fit.kappa_r,
-                             fit.sigma_kappa_r, fit.d_s_mm, fit.sigma_d_s_mm, fit.d_s_mm / dem.d50_mm);
-  candidates.push_back(fitted);
+  json variants = json::array();
   for (const auto& v : candidates) {
     replays.push_back(replay(dem, v));
     variants.push_back({{"index", replays.size() - 1},
@@ -89,27 +162,37 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
                         {"kappa_r", v.inputs.roughness.kappa_r},
                         {"d_s_mm", v.d_s_mm},
                         {"status", replays.back().status},
-                        {"metrics", to_json(compare(dem, replays.back()))}});
+                        {"metrics", to_json(compare(dem, replays.back()))},
+                        {"verdicts", to_json(judge(dem, scatter, replays.back(), tolerances))}});
   }
-  const nlohmann::json result = {
+  const Feasibility scan = scan_feasibility(dem, scatter, predicted, tolerances, kScanPoints);
+  json tol = json::object();
+  for (const auto& [k, t] : tolerances) tol[k] = t;
+  const json result = {
       {"dem", {{"dir", opt.dem_dir.string()}, {"engine", dem.engine}, {"status", dem.status},
                {"boundary", driver::to_string(dem.boundary)}, {"R_n", dem.R_n}, {"d50_mm", dem.d50_mm},
                {"sigma_n0_kPa", dem.sigma_n_kPa.front()}, {"e0_band", dem.e_band.front()}}},
       {"model", opt.model},
+      {"seeds", {{"runs", scatter.runs}, {"rows", scatter.rows}, {"tau_sd_kPa", scatter.tau_kPa},
+                 {"u_n_sd_mm", scatter.u_n_mm}, {"sigma_n_sd_kPa", scatter.sigma_n_kPa}}},
+      {"tolerances", tol},
+      {"verdicts", {{"predicted_variant", 0}, {"fitted_variant", fitted_index},
+                    {"summary", headline(variants[0]["verdicts"], variants[fitted_index]["verdicts"], scan)}}},
       {"variants", variants},
-      {"fit", {{"kappa_r", fit.kappa_r}, {"sigma_kappa_r", fit.sigma_kappa_r}, {"d_s_mm", fit.d_s_mm},
-               {"sigma_d_s_mm", fit.sigma_d_s_mm}, {"d_s_over_d50", fit.d_s_mm / dem.d50_mm},
-               {"rmse_tau_kPa", fit.rmse_tau_kPa}, {"evaluations", fit.evaluations},
-               {"algorithm", fit.algorithm}, {"stop", fit.stop_reason},
-               {"kappa_r_gutjahr", candidates.front().inputs.roughness.kappa_r}}},
+      {"fit", fit_json(fit, dem, compare(dem, replays[fitted_index]))},
+      {"fit_tau_only", fit_json(tau_fit, dem, compare(dem, replays[fitted_index - 1]))},
       {"replay", {{"normal_control", "the DEM's boundary condition: CNL with its measured sigma_n(t), CNS with its K, CV"},
                   {"initial_state", "DEM sigma_n and band void ratio of the first row; K0 = 1 - sin(phi_c)"},
                   {"strain_increment", kReplayStrainIncrement}}}};
   io::write_atomically(opt.out / "compare.json", result.dump(2) + "\n");
   io::write_atomically(opt.out / "compare.csv", curves_csv(dem, replays));
+  manifest["files"] = {"compare.json", "compare.csv"};
+  if (scatter.from_seeds()) {
+    io::write_atomically(opt.out / "seed_band.csv", seed_band_csv(dem, seeds, scatter.rows));
+    manifest["files"].push_back("seed_band.csv");
+  }
   manifest["finished"] = io::utc_timestamp();
   manifest["status"] = "complete";
-  manifest["files"] = {"compare.json", "compare.csv"};
   io::write_manifest(opt.out, manifest);
   return result;
 }

@@ -1,15 +1,26 @@
 #pragma once
-// `iwb compare`: one DEM run against a continuum model, in labelled variants of kappa_r and d_s
-// (eq. 5.35 with the wall's R_n at d_s = 5 d50, 10 d50 and the measured band, and both fitted),
-// into a directory with manifest.json, compare.json (variants, metrics, fit) and compare.csv.
+// `iwb compare`: one DEM run against a continuum model (issues 6, 14), into a directory with
+// manifest.json, compare.json and compare.csv. Variants of kappa_r and d_s: predicted without
+// fitting (kappa_r from eq. 5.35 with the wall's R_n, d_s a given multiple of d50; also 5 and 10
+// d50 and the measured wall band), fitted to tau alone (for contrast), and fitted jointly to tau
+// and the free normal quantity. Each variant is judged per quantity of interest
+// (comparison/verdicts.hpp), and a scan of the (kappa_r, d_s) box says whether any pair makes
+// every quantity hold: where none does, that is a finding about the model, not a failed fit.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "comparison/fit.hpp"
 #include "comparison/replay.hpp"
 
 namespace iwb::comparison {
+
+// The d_s of the predicted variant, in d50, when none is given (the low end of the 5-10 d50 the
+// seed's interface models assume).
+inline constexpr double kDefaultPredictedDsD50 = 5.0;
+// Points per axis of the feasibility scan of the (kappa_r, ln d_s) box.
+inline constexpr int kScanPoints = 12;
 
 struct CompareOptions {
   std::filesystem::path dem_dir;
@@ -19,16 +30,20 @@ struct CompareOptions {
   bool allow_partial = false;
   bool force = false;
   std::string command_line;
+  std::vector<std::filesystem::path> seed_dirs;  // runs of the same scene with other seeds
+  double predicted_ds_d50 = kDefaultPredictedDsD50;
 };
 
 // kappa_r from the wall's R_n by Gutjahr's eq. 5.35 in the given log base; a flat wall (R_n = 0)
 // gets the floor models::kKappaRFloor.
 double gutjahr_kappa_r(double R_n, double log_base = 10.0);
 
-// The variants of issue 6 that need no fitting: kappa_r from Gutjahr's eq. 5.35 with the wall's
-// R_n (base 10), d_s = 5 d50, 10 d50 and the measured wall band when the DEM has one.
+// The variants that need no fitting, kappa_r from eq. 5.35 with the wall's R_n (base 10): first
+// the prediction at d_s = `predicted_ds_d50` d50, then 5 and 10 d50 (where they differ from it)
+// and the measured wall band when the DEM has one.
 std::vector<Variant> standard_variants(const DemRun& dem, const std::string& model,
-                                       const models::ModelInputs& parameters);
+                                       const models::ModelInputs& parameters,
+                                       double predicted_ds_d50 = kDefaultPredictedDsD50);
 
 nlohmann::json run_comparison(const CompareOptions& options);
 

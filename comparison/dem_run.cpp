@@ -59,6 +59,9 @@ DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
   r.K_kPa_per_mm = m.value("/scene/resolved/boundary/K_kPa_per_mm"_json_pointer, 0.0);
   r.d50_mm = field<double>(m, "/scene/resolved/particles/d50_mm", manifest_path);
   r.R_n = field<double>(m, "/R_n", manifest_path);
+  r.scene_but_seed = m.at("/scene/resolved"_json_pointer);
+  r.scene_but_seed.erase("seed");
+  r.scene_text = m.value("/scene/text"_json_pointer, std::string());
 
   const fs::path ts_path = dir / "timeseries.csv";
   if (!fs::exists(ts_path)) throw InputError(fmt::format("{}: missing", ts_path.string()));

@@ -23,6 +23,10 @@ struct DemRun {
   // the time series, contract units
   std::vector<double> t_s, u_x_mm, u_n_mm, sigma_n_kPa, tau_kPa, e_band;
   nlohmann::json summary;  // may be empty (partial runs)
+  // manifest /scene/resolved without its seed (runs of one scene with other seeds have equal
+  // ones) and /scene/text (its [requirements] state the tolerances a model is judged by)
+  nlohmann::json scene_but_seed;
+  std::string scene_text;
 
   std::optional<double> band_d50() const;  // the measured wall band, if the run localised there
 };

@@ -1,5 +1,8 @@
 #include "comparison/fit.hpp"
 
+#include <fmt/core.h>
+
+#include <algorithm>
 #include <cmath>
 
 #include "fitting/least_squares.hpp"
@@ -8,23 +11,61 @@ namespace iwb::comparison {
 
 namespace {
 
-// tau residuals (kPa) at every DEM row; rows a replay did not reach count as tau_model = 0,
-// so that a parameter set leaving the model's domain is penalised, not rewarded
-Eigen::VectorXd tau_residuals(const DemRun& dem, Variant variant, double kappa, double log_ds) {
-  variant.inputs.roughness.kappa_r = kappa;
-  variant.d_s_mm = std::exp(log_ds);
-  const Replay r = replay(dem, variant);
-  Eigen::VectorXd res(Eigen::Index(dem.tau_kPa.size()));
-  for (std::size_t i = 0; i < dem.tau_kPa.size(); ++i)
-    res(Eigen::Index(i)) = (i < r.tau_kPa.size() ? r.tau_kPa[i] : 0.0) - dem.tau_kPa[i];
-  return res;
+// An optimum within this share of the box width from a bound sits on it.
+constexpr double kAtBound = 1e-3;
+
+double range(const std::vector<double>& x) {
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  return *hi - *lo;
+}
+
+// A scale that is never 0: a DEM series without scatter or range (a CV run's u_n) gets a tiny
+// one relative to its magnitude, so a residual stays finite.
+double usable(double scale, double magnitude) { return std::max(scale, 1e-9 * std::max(magnitude, 1.0)); }
+
+void append(std::vector<double>& res, const std::vector<double>& dem, const std::vector<double>& model,
+            double scale) {
+  for (std::size_t i = 0; i < dem.size(); ++i) res.push_back(((i < model.size() ? model[i] : 0.0) - dem[i]) / scale);
 }
 
 }  // namespace
 
-FitResult fit_kappa_and_ds(const DemRun& dem, const Variant& start, const FitBounds& b) {
+FitTargets tau_only_targets() { return {1.0, 0.0, 0.0, "tau alone, in kPa"}; }
+
+FitTargets joint_targets(const DemRun& dem, const SeedScatter& s) {
+  const bool seeds = s.from_seeds();
+  const double tau = seeds ? s.tau_kPa : range(dem.tau_kPa);
+  FitTargets t{usable(tau, range(dem.tau_kPa)), 0.0, 0.0, ""};
+  const char* what = seeds ? "seed scatter (RMS over rows of the SD across seeds)" : "range over the run (no seeds given)";
+  if (dem.boundary == driver::BoundaryKind::kCNL) {
+    t.u_n_scale_mm = usable(seeds ? s.u_n_mm : range(dem.u_n_mm), range(dem.u_n_mm));
+    t.weighting = fmt::format("tau / {:.3g} kPa and u_n / {:.3g} mm: each by its {}", t.tau_scale_kPa,
+                              t.u_n_scale_mm, what);
+  } else {
+    t.sigma_n_scale_kPa = usable(seeds ? s.sigma_n_kPa : range(dem.sigma_n_kPa), range(dem.sigma_n_kPa));
+    t.weighting = fmt::format("tau / {:.3g} kPa and sigma_n / {:.3g} kPa: each by its {}", t.tau_scale_kPa,
+                              t.sigma_n_scale_kPa, what);
+  }
+  return t;
+}
+
+Eigen::VectorXd fit_residuals(const DemRun& dem, const Replay& r, const FitTargets& t) {
+  std::vector<double> res;
+  append(res, dem.tau_kPa, r.tau_kPa, t.tau_scale_kPa);
+  if (t.u_n_scale_mm > 0.0) append(res, dem.u_n_mm, r.u_n_mm, t.u_n_scale_mm);
+  if (t.sigma_n_scale_kPa > 0.0) append(res, dem.sigma_n_kPa, r.sigma_n_kPa, t.sigma_n_scale_kPa);
+  return Eigen::Map<Eigen::VectorXd>(res.data(), Eigen::Index(res.size()));
+}
+
+FitResult fit_kappa_and_ds(const DemRun& dem, const Variant& start, const FitTargets& targets,
+                           const FitBounds& b) {
   fitting::LeastSquaresProblem p;
-  p.residuals = [&](const Eigen::VectorXd& x) { return tau_residuals(dem, start, x(0), x(1)); };
+  p.residuals = [&](const Eigen::VectorXd& x) {
+    Variant v = start;
+    v.inputs.roughness.kappa_r = x(0);
+    v.d_s_mm = std::exp(x(1));
+    return fit_residuals(dem, replay(dem, v), targets);
+  };
   p.lower = Eigen::Vector2d(b.kappa_min, std::log(b.d_s_min_d50 * dem.d50_mm));
   p.upper = Eigen::Vector2d(b.kappa_max, std::log(b.d_s_max_d50 * dem.d50_mm));
   p.start = Eigen::Vector2d(start.inputs.roughness.kappa_r, std::log(start.d_s_mm));
@@ -35,8 +76,13 @@ FitResult fit_kappa_and_ds(const DemRun& dem, const Variant& start, const FitBou
   out.d_s_mm = std::exp(r.x(1));
   out.sigma_kappa_r = r.sigma(0);
   out.sigma_d_s_mm = out.d_s_mm * r.sigma(1);
-  out.rmse_tau_kPa = r.rmse;
+  out.rms_scaled = r.rmse;
   out.evaluations = r.evaluations;
+  for (int k = 0; k < 2; ++k)
+    if (std::abs(r.x(k) - p.lower(k)) < kAtBound * (p.upper(k) - p.lower(k)) ||
+        std::abs(r.x(k) - p.upper(k)) < kAtBound * (p.upper(k) - p.lower(k)))
+      out.at_bound.push_back(k == 0 ? "kappa_r" : "d_s");
+  out.algorithm = "NLopt LN_BOBYQA on (kappa_r, ln d_s); residuals: " + targets.weighting;
   out.stop_reason = r.stop_reason;
   return out;
 }

@@ -5,6 +5,8 @@
 
 #include "common/errors.hpp"
 #include "comparison/figure.hpp"
+#include "comparison/quantities.hpp"
+#include "comparison/verdict_table.hpp"
 #include "io/csv_table.hpp"
 #include "io/run_directory.hpp"
 
@@ -28,9 +30,34 @@ std::string escape_html(const std::string& s) {
   return out;
 }
 
+// The DEM's seed band of one quantity (mean - SD, mean + SD per row), from the comparison's
+// seed_band.csv; empty without seeds.
+std::vector<std::pair<double, double>> seed_band(const fs::path& compare_dir, const std::string& mean_col,
+                                                 const std::string& sd_col) {
+  std::vector<std::pair<double, double>> band;
+  if (!fs::exists(compare_dir / "seed_band.csv")) return band;
+  const auto t = io::read_csv_table(compare_dir / "seed_band.csv");
+  for (const auto& r : t.rows) band.push_back({r[t.column(mean_col)] - r[t.column(sd_col)], r[t.column(mean_col)] + r[t.column(sd_col)]});
+  return band;
+}
+
+// Lines of the variants, the seed band under them and the DEM drawn last, thick and black, so
+// that no model curve hides it.
+std::string dem_on_top_plot(const Figure& f, std::size_t variants, bool band) {
+  const std::string data = gnuplot_string(f.name + ".csv");
+  std::string plot = "plot ";
+  if (band)
+    plot += fmt::format("{} using 1:{}:{} skip 1 with filledcurves fc rgb '#d8d8d8' fs solid 0.6 title 'DEM, mean ± SD over seeds', ",
+                        data, variants + 3, variants + 4);
+  for (std::size_t v = 0; v < variants; ++v)
+    plot += fmt::format("{} using 1:{} skip 1 with lines lw 1.5 title {}, ", data, v + 3, gnuplot_string(f.titles[v + 1]));
+  return plot + fmt::format("{} using 1:2 skip 1 with lines lw 3 lc rgb '#000000' title 'DEM (this run)'", data);
+}
+
 // One figure of `column` (tau, sigma_n or u_n) against u_x: the DEM and every variant.
 Figure versus_u_x(const std::string& name, const std::string& what, const std::string& dem_col,
-                  const std::string& model_col, const io::CsvTable& curves, const nlohmann::json& variants) {
+                  const std::string& model_col, const io::CsvTable& curves, const nlohmann::json& variants,
+                  const std::vector<std::pair<double, double>>& band) {
   Figure f{name, what + " against u_x", "u_x (mm)", what, {}, {"DEM"}, "", ""};
   f.data.columns = {"u_x_mm", "dem"};
   std::size_t nv = variants.size();
@@ -38,6 +65,7 @@ Figure versus_u_x(const std::string& name, const std::string& what, const std::s
     f.data.columns.push_back(fmt::format("variant_{}", v));
     f.titles.push_back(variants[v]["label"].get<std::string>());
   }
+  f.data.columns.insert(f.data.columns.end(), {"dem_seed_low", "dem_seed_high"});
   const int vc = curves.column("variant"), xc = curves.column("u_x_mm");
   const int dc = curves.column(dem_col), mc = curves.column(model_col);
   // compare.csv lists each variant's rows in DEM row order: the k-th row of variant v is DEM row k
@@ -46,14 +74,16 @@ Figure versus_u_x(const std::string& name, const std::string& what, const std::s
   for (const auto& r : curves.rows) {
     const std::size_t v = std::size_t(r[vc]);
     if (v == 0) {
-      rows.push_back(std::vector<double>(nv + 2, NAN));
+      rows.push_back(std::vector<double>(nv + 4, NAN));
       rows.back()[0] = r[xc];
       rows.back()[1] = r[dc];
+      if (rows.size() <= band.size()) std::tie(rows.back()[nv + 2], rows.back()[nv + 3]) = band[rows.size() - 1];
     }
     if (next[v] < rows.size()) rows[next[v]][v + 2] = r[mc];
     ++next[v];
   }
   f.data.rows = rows;
+  f.plot = dem_on_top_plot(f, nv, !band.empty());
   return f;
 }
 
@@ -105,14 +135,56 @@ std::string metrics_table(const nlohmann::json& cmp) {
   return h + "</table>\n";
 }
 
+// summary.json's keys as a reader names them, with units (src/dem/summary.cpp defines them).
+struct SummaryRow {
+  const char* key;
+  const char* name;
+  const char* unit;
+  const char* when_null;  // what a null means
+};
+
+const std::vector<SummaryRow>& summary_rows() {
+  static const std::vector<SummaryRow> r = {
+      {"peak_friction", "peak friction tau/sigma_n", "", ""},
+      {"u_x_at_peak_mm", "displacement to the peak", "mm", ""},
+      {"residual_friction", "residual friction (mean of the last fifth)", "", ""},
+      {"residual_is", "residual", "", ""},
+      {"residual_drift_over_last_fifth", "drift of the friction over the last fifth", "", ""},
+      {"dilation_mm", "total dilation u_n", "mm", ""},
+      {"dilatancy_angle_deg", "dilatancy angle (last fifth)", "deg", ""},
+      {"sigma_n_mean_kPa", "mean normal stress", "kPa", ""},
+      {"sigma_n_max_relative_deviation", "largest deviation of sigma_n from the target", "", ""},
+      {"shear_mode", "where the specimen shears", "", ""},
+      {"wall_band_d50", "wall band thickness", "d50", "none: the far field moves with the wall"},
+      {"band_thickness_d50", "band thickness, 0.9 to 0.1 of the wall layer's speed", "d50", "none: shear not localised at the wall"},
+      {"band_thickness_erfc_fit_d50", "band thickness, erfc fit", "d50", "none: no wall band to fit"},
+      {"plate_band_d50", "band under the plate", "d50", "none: no shear under the plate"},
+      {"far_field_speed", "far-field speed / first layer's speed", "", ""},
+      {"wall_share_of_velocity_drop", "wall band's share of the velocity drop", "", ""},
+      {"wall_slip", "wall slip (1 - first layer's speed / wall speed)", "", ""},
+      {"e_band", "void ratio in the band", "", "none: no porosity profile"},
+  };
+  return r;
+}
+
 std::string summary_table(const nlohmann::json& s) {
-  std::string h = "<table>";
-  for (const auto& [k, v] : s.items()) {
-    if (k == "definitions" || k == "cycles") continue;
-    h += fmt::format("<tr><th>{}</th><td>{}</td></tr>", escape_html(k),
-                     v.is_number_float() ? fmt::format("{:.4g}", v.get<double>()) : escape_html(v.dump()));
+  std::string h = "<table><tr><th>quantity</th><th>value</th></tr>";
+  for (const auto& r : summary_rows()) {
+    if (!s.contains(r.key)) continue;
+    const auto& v = s[r.key];
+    const std::string unit = *r.unit ? std::string(" ") + r.unit : "";
+    const std::string text = v.is_number()   ? fmt::format("{:.4g}{}", v.get<double>(), unit)
+                             : v.is_string() ? v.get<std::string>()
+                                             : std::string(r.when_null);
+    h += fmt::format("<tr><th>{}</th><td>{}</td></tr>", escape_html(r.name), escape_html(text));
   }
-  return h + "</table>\n";
+  h += "</table>\n";
+  if (s.contains("definitions")) {
+    h += "<p>Definitions: ";
+    for (const auto& [k, d] : s["definitions"].items()) h += fmt::format("<em>{}</em>: {}. ", escape_html(k), escape_html(d.get<std::string>()));
+    h += "</p>\n";
+  }
+  return h;
 }
 
 // The hypothesis checks of a `--runs` set: verdicts and their tables, as hypotheses.json has them.
@@ -141,6 +213,11 @@ std::string hypotheses_section(const fs::path& file) {
     if (c.contains("notes")) s += "<p>" + escape_html(c["notes"]) + "</p>\n";
   }
   return s + "</section>\n";
+}
+
+std::string table_html(const Table& t) {
+  nlohmann::json j = {{"columns", t.columns}, {"rows", t.rows}};
+  return html_table(j);
 }
 
 // The files a `--runs` set writes beside its comparison directories.
@@ -184,51 +261,120 @@ ReportInputs resolve(const std::vector<fs::path>& paths) {
   return in;
 }
 
+// One comparison directory's section: its verdicts first, then the figures, every variant's
+// metrics, the DEM's derived quantities and the provenance.
+struct Section {
+  std::string html;
+  std::vector<fs::path> figures;
+};
+
+nlohmann::json read_comparison(const fs::path& dir) {
+  if (!fs::exists(dir / "compare.json"))
+    throw InputError(fmt::format("{}: no compare.json (not a directory of `iwb compare`)", dir.string()));
+  auto cmp = nlohmann::json::parse(io::read_file(dir / "compare.json"));
+  if (!cmp.contains("verdicts"))
+    throw InputError(fmt::format("{}: made by an earlier iwb without verdicts; run `iwb compare` again",
+                                 (dir / "compare.json").string()));
+  return cmp;
+}
+
+std::string verdict_section(const nlohmann::json& cmp) {
+  std::string h = "<h3>Verdicts</h3>\n" + table_html(verdict_table(cmp)) + "<ul>";
+  for (const auto& f : verdict_findings(cmp)) h += "<li>" + escape_html(f) + "</li>";
+  return h + fmt::format("</ul><p>Fit weights: {}. Relative errors against max(|DEM|, a floor); "
+                         "<em>within DEM scatter</em>: over the tolerance by less than twice the standard error of the DEM's seed mean (SD/&radic;seeds).</p>\n",
+                         escape_html(cmp["fit"]["algorithm"].get<std::string>()));
+}
+
+Section comparison_section(const fs::path& dir, std::size_t k, const fs::path& files, const fs::path& html) {
+  const auto cmp = read_comparison(dir);
+  const fs::path dem_dir = cmp["dem"]["dir"].get<std::string>();
+  const auto curves = io::read_csv_table(dir / "compare.csv");
+  const auto summary = nlohmann::json::parse(io::read_file(dem_dir / "summary.json"));
+  const fs::path fig_dir = files / fmt::format("{}-{}", k, dir.filename().string());
+  fs::create_directories(fig_dir);
+  const auto& vs = cmp["variants"];
+  std::vector<Figure> figs = {
+      versus_u_x("tau_ux", "tau (kPa)", "tau_dem_kPa", "tau_model_kPa", curves, vs, seed_band(dir, "tau_mean_kPa", "tau_sd_kPa")),
+      versus_u_x("un_ux", "u_n (mm), dilation positive", "u_n_dem_mm", "u_n_model_mm", curves, vs,
+                 seed_band(dir, "u_n_mean_mm", "u_n_sd_mm")),
+      versus_u_x("sigman_ux", "sigma_n (kPa)", "sigma_n_dem_kPa", "sigma_n_model_kPa", curves, vs,
+                 seed_band(dir, "sigma_n_mean_kPa", "sigma_n_sd_kPa")),
+      velocity_profile(dem_dir, summary)};
+  std::vector<std::string> notes(figs.size());
+  if (cmp["dem"]["boundary"] == "CNL")
+    notes[2] = ". Under CNL every model follows the DEM's measured sigma_n by construction: its curves lie under the DEM's";
+  Section out;
+  std::string& body = out.html;
+  body += fmt::format("<section id=\"run-{}\"><h2>{} against {} ({} engine, {})</h2>\n", k, escape_html(cmp["model"].get<std::string>()),
+                      escape_html(dem_dir.string()), escape_html(cmp["dem"]["engine"].get<std::string>()),
+                      escape_html(cmp["dem"]["boundary"].get<std::string>()));
+  body += fmt::format("<p>Wall R_n = {:.3g}, d50 = {:g} mm, initial sigma_n = {:.1f} kPa, band void ratio e0 = {:.3f}. "
+                      "The model is driven along the DEM's own path: {}.</p>\n",
+                      cmp["dem"]["R_n"].get<double>(), cmp["dem"]["d50_mm"].get<double>(),
+                      cmp["dem"]["sigma_n0_kPa"].get<double>(), cmp["dem"]["e0_band"].get<double>(),
+                      escape_html(cmp["replay"]["normal_control"].get<std::string>()));
+  body += verdict_section(cmp) + "<div class=\"figures\">\n";
+  for (std::size_t i = 0; i < figs.size(); ++i) {
+    const auto svg = draw(figs[i], fig_dir);
+    out.figures.push_back(svg);
+    body += fmt::format("<figure>{}<figcaption>{}{} (data: {})</figcaption></figure>\n", inline_svg(svg),
+                        escape_html(figs[i].title), escape_html(notes[i]),
+                        escape_html(fs::relative(fig_dir / (figs[i].name + ".csv"), html.parent_path()).string()));
+  }
+  body += "</div>\n<h3>Every variant</h3>\n" + metrics_table(cmp);
+  body += "<h3>DEM derived quantities</h3>\n" + summary_table(summary);
+  body += fmt::format("<details><summary>Provenance: DEM manifest</summary><pre>{}</pre></details>\n",
+                      escape_html(nlohmann::json::parse(io::read_file(dem_dir / "manifest.json")).dump(2)));
+  body += fmt::format("<details><summary>Provenance: comparison manifest</summary><pre>{}</pre></details></section>\n",
+                      escape_html(io::read_file(dir / "manifest.json")));
+  return out;
+}
+
+// One line per comparison: per quantity, the predicted and the fitted verdict as marks.
+std::string glance_table(const std::vector<fs::path>& dirs) {
+  auto mark = [](const nlohmann::json& verdicts, const std::string& key) {
+    for (const auto& v : verdicts)
+      if (v["quantity"] == key)
+        return v["verdict"] == "holds" ? std::string("✔") : v["verdict"] == "breaks" ? std::string("✘")
+               : v["verdict"] == "within DEM scatter" ? std::string("≈") : std::string("–");
+    return std::string("");
+  };
+  std::string h = "<table><tr><th>run</th><th>boundary</th>";
+  for (const auto& q : quantity_table()) h += fmt::format("<th>{}</th>", escape_html(q.name));
+  h += "</tr>\n";
+  for (std::size_t k = 0; k < dirs.size(); ++k) {
+    const auto cmp = read_comparison(dirs[k]);
+    const auto& p = cmp["variants"][cmp["verdicts"]["predicted_variant"].get<std::size_t>()]["verdicts"];
+    const auto& f = cmp["variants"][cmp["verdicts"]["fitted_variant"].get<std::size_t>()]["verdicts"];
+    h += fmt::format("<tr><td><a href=\"#run-{}\">{}</a></td><td>{}</td>", k,
+                     escape_html(fs::path(cmp["dem"]["dir"].get<std::string>()).lexically_normal().filename().string()),
+                     escape_html(cmp["dem"]["boundary"].get<std::string>()));
+    for (const auto& q : quantity_table()) {
+      const std::string a = mark(p, q.key), b = mark(f, q.key);
+      h += a.empty() ? "<td></td>" : fmt::format("<td>{} · {}</td>", a, b);
+    }
+    h += "</tr>\n";
+  }
+  return h + "</table>\n<p>Each cell: predicted · fitted (joint fit). ✔ holds, ✘ breaks, ≈ misses the tolerance "
+             "by less than the DEM's seed scatter, – the model did not reach the end; blank: not judged under "
+             "this boundary condition.</p>\n";
+}
+
 }  // namespace
 
 std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs::path& html) {
+  const auto [compare_dirs, hypotheses] = resolve(paths);
+  for (const auto& dir : compare_dirs) read_comparison(dir);  // refuse before writing anything
   const fs::path files = html.parent_path() / (html.stem().string() + "_files");
   fs::create_directories(files);
   std::vector<fs::path> figures;
-  std::string body;
-  const auto [compare_dirs, hypotheses] = resolve(paths);
+  std::string body = "<section><h2>Verdicts at a glance</h2>\n" + glance_table(compare_dirs) + "</section>\n";
   for (const auto& h : hypotheses) body += hypotheses_section(h);
   for (std::size_t k = 0; k < compare_dirs.size(); ++k) {
-    const fs::path& dir = compare_dirs[k];
-    if (!fs::exists(dir / "compare.json"))
-      throw InputError(fmt::format("{}: no compare.json (not a directory of `iwb compare`)", dir.string()));
-    const auto cmp = nlohmann::json::parse(io::read_file(dir / "compare.json"));
-    const fs::path dem_dir = cmp["dem"]["dir"].get<std::string>();
-    const auto curves = io::read_csv_table(dir / "compare.csv");
-    const auto summary = nlohmann::json::parse(io::read_file(dem_dir / "summary.json"));
-    const fs::path fig_dir = files / fmt::format("{}-{}", k, dir.filename().string());
-    fs::create_directories(fig_dir);
-    const auto& vs = cmp["variants"];
-    std::vector<Figure> figs = {versus_u_x("tau_ux", "tau (kPa)", "tau_dem_kPa", "tau_model_kPa", curves, vs),
-                                versus_u_x("un_ux", "u_n (mm), dilation positive", "u_n_dem_mm", "u_n_model_mm", curves, vs),
-                                versus_u_x("sigman_ux", "sigma_n (kPa)", "sigma_n_dem_kPa", "sigma_n_model_kPa", curves, vs),
-                                velocity_profile(dem_dir, summary)};
-    body += fmt::format("<section><h2>{} against {} ({} engine, {})</h2>\n", escape_html(cmp["model"].get<std::string>()),
-                        escape_html(dem_dir.string()), escape_html(cmp["dem"]["engine"].get<std::string>()),
-                        escape_html(cmp["dem"]["boundary"].get<std::string>()));
-    body += fmt::format("<p>Wall R_n = {:.3g}, d50 = {:g} mm, initial sigma_n = {:.1f} kPa, band void ratio e0 = {:.3f}. "
-                        "The model is driven along the DEM's own path: {}.</p>\n",
-                        cmp["dem"]["R_n"].get<double>(), cmp["dem"]["d50_mm"].get<double>(),
-                        cmp["dem"]["sigma_n0_kPa"].get<double>(), cmp["dem"]["e0_band"].get<double>(),
-                        escape_html(cmp["replay"]["normal_control"].get<std::string>()));
-    body += "<h3>Metrics</h3>\n" + metrics_table(cmp);
-    body += "<div class=\"figures\">\n";
-    for (const auto& f : figs) {
-      const auto svg = draw(f, fig_dir);
-      figures.push_back(svg);
-      body += fmt::format("<figure>{}<figcaption>{} (data: {})</figcaption></figure>\n", inline_svg(svg),
-                          escape_html(f.title), escape_html(fs::relative(fig_dir / (f.name + ".csv"), html.parent_path()).string()));
-    }
-    body += "</div>\n<h3>DEM derived quantities</h3>\n" + summary_table(summary);
-    body += fmt::format("<details><summary>Provenance: DEM manifest</summary><pre>{}</pre></details>\n",
-                        escape_html(nlohmann::json::parse(io::read_file(dem_dir / "manifest.json")).dump(2)));
-    body += fmt::format("<details><summary>Provenance: comparison manifest</summary><pre>{}</pre></details></section>\n",
-                        escape_html(io::read_file(dir / "manifest.json")));
+    auto section = comparison_section(compare_dirs[k], k, files, html);
+    body += section.html;
+    figures.insert(figures.end(), section.figures.begin(), section.figures.end());
   }
   const std::string page = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>iwb validation report</title>\n"

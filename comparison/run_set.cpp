@@ -5,6 +5,7 @@
 #include <set>
 
 #include "common/errors.hpp"
+#include "comparison/seed_scatter.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::comparison {
@@ -41,8 +42,12 @@ Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
   const auto m = read_json(dir / "manifest.json");
   if (m.value("status", "") != "complete" || !fs::exists(dir / "compare.json"))
     return Earlier::kIncomplete;
+  json seeds = json::array();
+  for (const auto& d : opt.seed_dirs) seeds.push_back(d.string());
   const bool same = m.value("/inputs/dem_manifest_sha256"_json_pointer, std::string()) ==
                         io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json")) &&
+                    m.value("/inputs/seed_runs"_json_pointer, json()) == seeds &&
+                    m.value("/inputs/predicted_d_s_over_d50"_json_pointer, json()) == json(opt.predicted_ds_d50) &&
                     m.value("/inputs/parameters_sha256"_json_pointer, std::string()) ==
                         io::sha256_hex(io::read_file(opt.params)) &&
                     read_json(dir / "compare.json").value("model", "") == opt.model;
@@ -123,9 +128,14 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
   RunSetOutcome outcome;
   std::vector<RunRecord> records;
   try {
+    // the other seeds of each run's scene in the set: their scatter weighs its fit and verdicts
+    std::vector<DemRun> dems;
+    for (const auto& d : opt.dem_dirs) dems.push_back(load_dem_run(d, opt.allow_partial));
     for (std::size_t i = 0; i < names.size(); ++i) {
       CompareOptions c{opt.dem_dirs[i],   opt.model, opt.params,      opt.out / names[i],
                        opt.allow_partial, opt.force, opt.command_line};
+      c.predicted_ds_d50 = opt.predicted_ds_d50;
+      for (const auto& seed : seeds_of(dems[i], dems)) c.seed_dirs.push_back(seed.dir);
       if (compare_or_reuse(c)) outcome.reused.push_back(names[i]);
       outcome.compare_dirs.push_back(c.out);
       records.push_back(load_run_record(c.out));

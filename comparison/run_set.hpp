@@ -1,6 +1,7 @@
 #pragma once
 // `iwb compare --runs DIR...`: every DEM run of a set compared (or an earlier complete comparison
-// of the same inputs reused) into OUT/<run name>, then the hypothesis checks over the set into
+// of the same inputs reused) into OUT/<run name>, with the runs of the set that are its scene with
+// other seeds as its seeds (comparison/seed_scatter.hpp), then the hypothesis checks over the set into
 // OUT/hypotheses.json and OUT/hypotheses.md, with OUT/manifest.json saying what was done.
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -20,6 +21,7 @@ struct RunSetOptions {
   bool allow_partial = false;
   bool force = false;  // replace complete comparisons of other inputs
   std::string command_line;
+  double predicted_ds_d50 = kDefaultPredictedDsD50;
 };
 
 struct RunSetOutcome {

@@ -24,6 +24,7 @@
 #include "bench/integrator_bench.hpp"
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
+#include "comparison/verdict_table.hpp"
 #include "comparison/run_set.hpp"
 #include "io/element_run.hpp"
 #include "io/run_directory.hpp"
@@ -144,6 +145,7 @@ int cmd_compare_set(const std::vector<std::string>& runs, const iwb::comparison:
                     const std::string& out, const std::string& cl) {
   iwb::comparison::RunSetOptions opt{{runs.begin(), runs.end()}, c.model, c.params,
                                      out.empty() ? "runs/hypotheses" : out, c.allow_partial, c.force, cl};
+  opt.predicted_ds_d50 = c.predicted_ds_d50;
   const auto outcome = iwb::comparison::run_hypothesis_set(opt);
   fmt::print("{} run(s) compared ({} reused) -> {}\n", outcome.compare_dirs.size(), outcome.reused.size(),
              opt.out.string());
@@ -253,18 +255,34 @@ int main(int argc, char** argv) {
 
   auto* compare = app.add_subcommand(
       "compare",
-      "Replay a DEM run through a continuum model along the DEM's own path (measured u_x(t); CNL with "
-      "the measured sigma_n(t), CNS with the scene's K, CV) from the DEM's first state, in labelled "
-      "variants of kappa_r (eq. 5.35 from the wall's R_n) and d_s (5 d50, 10 d50, the measured wall "
-      "band); writes compare.json (metrics per variant) and compare.csv (curves).");
+      "Judge a continuum model against a DEM run. The model is replayed along the DEM's own path "
+      "(measured u_x(t); CNL with the measured sigma_n(t), CNS with the scene's K, CV) from the "
+      "DEM's first state, in variants of kappa_r and d_s: predicted without fitting (kappa_r from "
+      "eq. 5.35 with the wall's R_n, d_s = --predict-ds-d50 x d50; also 5 and 10 d50 and the "
+      "measured wall band), fitted to tau alone, and fitted to tau and u_n (CNL) or tau and sigma_n "
+      "(CNS, CV) together, each weighted by the DEM's seed scatter (--seeds; without seeds, by its "
+      "range). Per quantity (peak and residual friction, u_x at the peak, total dilation, dilation "
+      "rate, sigma_n change) the DEM +- seed SD, the model, the error, the tolerance (the scene's "
+      "[requirements], else 10, 5, 30, 20, 20, 20 %) and a verdict: holds, breaks, or within DEM "
+      "scatter. A scan of the (kappa_r, d_s) box says whether any pair makes every quantity hold. "
+      "Writes compare.json, compare.csv (curves) and seed_band.csv.\n"
+      "Example: iwb compare data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s1 --seeds "
+      "data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s{2,3} --params "
+      "data/params/dem_default_grains.toml -o runs/cmp");
   iwb::comparison::CompareOptions copt;
   std::string dem_dir, compare_out;
-  std::vector<std::string> set_runs;
+  std::vector<std::string> set_runs, seed_runs;
   auto* single_run = compare->add_option("dem_run", dem_dir, "a run directory of `iwb dem run`")->check(CLI::ExistingDirectory);
   compare->add_option("--runs", set_runs, "a set of DEM run directories: each is compared (or its complete comparison "
-                                          "in OUT/<run> reused), then the hypothesis checks of DEM.md over the set "
+                                          "in OUT/<run> reused), with the set's runs of its scene and other seeds as "
+                                          "its seeds, then the hypothesis checks of DEM.md over the set "
                                           "into OUT/hypotheses.json and .md")
       ->check(CLI::ExistingDirectory)->excludes(single_run);
+  compare->add_option("--seeds", seed_runs, "runs of the same scene with other seeds: their scatter weighs the joint "
+                                            "fit and the verdicts")
+      ->check(CLI::ExistingDirectory)->excludes("--runs");
+  compare->add_option("--predict-ds-d50", copt.predicted_ds_d50, "d_s of the predicted variant, in d50")
+      ->capture_default_str()->check(CLI::Range(0.5, 100.0));
   compare->add_option("--model", copt.model, "continuum model (iwb models)")->capture_default_str();
   compare->add_option("--params", copt.params, "parameter file (data/params/)")->required()->check(CLI::ExistingFile);
   compare->add_option("--out,-o", compare_out, "output directory (default runs/compare-<dem run>)");
@@ -398,16 +416,11 @@ int main(int argc, char** argv) {
                      ? std::filesystem::path("runs") / ("compare-" + std::filesystem::path(dem_dir).filename().string())
                      : std::filesystem::path(compare_out);
       copt.command_line = cl;
+      copt.seed_dirs.assign(seed_runs.begin(), seed_runs.end());
       const auto result = iwb::comparison::run_comparison(copt);
-      fmt::print("{:<70} {:>10} {:>9} {:>9} {:>9}\n", "variant", "RMSE tau", "peak", "resid.", "status");
-      fmt::print("{:<70} {:>10} {:>9.3f} {:>9.3f}\n", "DEM", "", result["variants"][0]["metrics"]["peak_friction"]["dem"].get<double>(),
-                 result["variants"][0]["metrics"]["residual_friction"]["dem"].get<double>());
-      for (const auto& v : result["variants"])
-        fmt::print("{:<70} {:>7.2f} kPa {:>9.3f} {:>9.3f} {:>9}\n", v["label"].get<std::string>(),
-                   v["metrics"]["rmse_tau_kPa"].get<double>(), v["metrics"]["peak_friction"]["model"].get<double>(),
-                   v["metrics"]["residual_friction"]["model"].get<double>(),
-                   v["status"] == "complete" ? "ok" : "stopped");
-      fmt::print("-> {}\n", copt.out.string());
+      fmt::print("{}", iwb::comparison::to_text(iwb::comparison::verdict_table(result)));
+      for (const auto& f : iwb::comparison::verdict_findings(result)) fmt::print("{}\n", f);
+      fmt::print("-> {} (iwb report {})\n", copt.out.string(), copt.out.string());
       return 0;
     }
     if (*dem_cross) {

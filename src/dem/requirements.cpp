@@ -16,11 +16,21 @@ const std::vector<Qoi>& quantities_of_interest() {
   return q;
 }
 
+const std::vector<Qoi>& compared_only_quantities() {
+  static const std::vector<Qoi> q = {
+      {"u_x_at_peak", "displacement to the peak"},
+      {"total_dilation", "total dilation u_n at the end"},
+      {"sigma_n_change", "normal stress change at the end (CNS, CV)"},
+  };
+  return q;
+}
+
 namespace {
 
 std::string known_keys() {
   std::string s;
-  for (const auto& q : quantities_of_interest()) s += (s.empty() ? "" : ", ") + std::string(q.key);
+  for (const auto* list : {&quantities_of_interest(), &compared_only_quantities()})
+    for (const auto& q : *list) s += (s.empty() ? "" : ", ") + std::string(q.key);
   return s;
 }
 
@@ -28,24 +38,9 @@ std::string known_keys() {
 
 Requirements read_requirements(io::TableReader t) {
   Requirements r;
-  for (const auto& q : quantities_of_interest()) {
-    const toml::node* n = t.node(q.key);
-    if (n == nullptr) continue;
-    if (const auto s = n->value<std::string>()) {
-      if (*s != "not needed")
-        throw InputError(
-            fmt::format("{} = {}: a tolerance is a number in (0, 1] (0.05 = 5 %) or \"not needed\"",
-                        t.where(q.key), io::describe(*n)));
-      r[q.key] = std::nullopt;
-      continue;
-    }
-    const auto v = n->value<double>();
-    if (!v || !(*v > 0.0 && *v <= 1.0))
-      throw InputError(
-          fmt::format("{} = {}: a tolerance is a number in (0, 1] (0.05 = 5 %) or \"not needed\"",
-                      t.where(q.key), io::describe(*n)));
-    r[q.key] = *v;
-  }
+  for (const auto* list : {&quantities_of_interest(), &compared_only_quantities()})
+    for (const auto& q : *list)
+      if (const auto tolerance = io::read_tolerance(t, q.key)) r[q.key] = *tolerance;
   try {
     t.finish();
   } catch (const InputError& e) {

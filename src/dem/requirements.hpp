@@ -17,6 +17,9 @@ struct Qoi {
   const char* label;  // for people
 };
 const std::vector<Qoi>& quantities_of_interest();
+// Quantities that only `iwb compare` judges (a model against the DEM; comparison/quantities.hpp
+// holds their default tolerances): a scene may state tolerances for them too.
+const std::vector<Qoi>& compared_only_quantities();
 
 // QoI key -> relative tolerance (0.05 = 5 %); nullopt: "not needed". QoIs not named are not needed.
 using Requirements = std::map<std::string, std::optional<double>>;

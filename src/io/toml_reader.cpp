@@ -190,4 +190,15 @@ toml::table parse_toml_file(const std::string& path) {
   }
 }
 
+std::optional<std::optional<double>> read_tolerance(TableReader& t, const std::string& key) {
+  const toml::node* n = t.node(key);
+  if (n == nullptr) return std::nullopt;
+  const auto s = n->value<std::string>();
+  const auto v = n->value<double>();
+  if (s && *s == "not needed") return std::optional<double>();
+  if (!s && v && *v > 0.0 && *v <= 1.0) return std::optional<double>(*v);
+  throw InputError(fmt::format("{} = {}: a tolerance is a number in (0, 1] (0.05 = 5 %) or \"not needed\"",
+                               t.where(key), describe(*n)));
+}
+
 }  // namespace iwb::io

@@ -52,6 +52,11 @@ class TableReader {
 
 std::string describe(const toml::node& node);  // the value as the user wrote it, for messages
 
+// A relative tolerance under `key` of a [requirements] table: absent -> nullopt; the string
+// "not needed" -> an empty inner optional; a number in (0, 1] (0.05 = 5 %) -> that number.
+// Anything else is an InputError naming the file, the key and the value.
+std::optional<std::optional<double>> read_tolerance(TableReader& table, const std::string& key);
+
 // Parses `path`; InputError naming the file and the line on syntax errors or a missing file.
 toml::table parse_toml_file(const std::string& path);
 toml::table parse_toml_text(const std::string& text, const std::string& name);

@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <random>
 
 #include "dem/summary.hpp"
 #include "io/run_directory.hpp"
@@ -26,6 +27,10 @@ struct SyntheticDem {
   bool distributed = false;  // velocity profile over the whole specimen instead of a wall band
   int increments = 250;
   int output_every = 5;
+  // Seed noise: each row's tau and u_n plus Gaussian noise of these SDs, drawn with `seed`
+  // (runs that differ only in the seed are seeds of one scene to the comparison layer).
+  int seed = 0;
+  double tau_noise_kPa = 0.0, u_n_noise_mm = 0.0;
 };
 
 inline constexpr double kSyntheticHeightD50 = 20.0;  // specimen height of the synthetic profile
@@ -54,12 +59,16 @@ inline std::filesystem::path write_synthetic_dem(const SyntheticDem& spec) {
       std::filesystem::path(IWB_TEST_RUNS_DIR) / "comparison" / spec.name;
   std::filesystem::create_directories(dir);
   std::string ts = "t_s,u_x_mm,u_n_mm,sigma_n_kPa,tau_kPa,e_specimen,e_band,coordination\n";
+  std::mt19937 random(std::uint32_t(spec.seed));
+  std::normal_distribution<double> noise(0.0, 1.0);
   for (std::size_t i = 0; i < run.result.rows.size(); ++i) {
     const auto& r = run.result.rows[i];
     const auto st = run.model->stress(r.state);
     const double e = run.model->void_ratio(r.state);
+    const double dtau = i == 0 ? 0.0 : spec.tau_noise_kPa * noise(random);
+    const double dun = i == 0 ? 0.0 : spec.u_n_noise_mm * noise(random);
     ts += fmt::format("{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},4\n", 0.01 * double(i),
-                      r.gamma_x * spec.d_s_mm, r.eps_n * spec.d_s_mm, st.sigma_n, st.tau_x, e, e);
+                      r.gamma_x * spec.d_s_mm, r.eps_n * spec.d_s_mm + dun, st.sigma_n, st.tau_x + dtau, e, e);
   }
   io::write_atomically(dir / "timeseries.csv", ts);
   io::write_atomically(dir / "profiles.csv",
@@ -73,7 +82,14 @@ inline std::filesystem::path write_synthetic_dem(const SyntheticDem& spec) {
                                  {{"type", driver::to_string(spec.bc.kind)},
                                   {"sigma_n_kPa", 100.0},
                                   {"K_kPa_per_mm", spec.K_per_mm}}},
-                                {"particles", {{"d50_mm", spec.d50_mm}}}}}}}};
+                                {"particles", {{"d50_mm", spec.d50_mm}}},
+                                {"seed", spec.seed},
+                                {"generator",
+                                 {{"kappa_r", spec.kappa_r},
+                                  {"d_s_mm", spec.d_s_mm},
+                                  {"R_n", spec.R_n},
+                                  {"distributed", spec.distributed},
+                                  {"increments", spec.increments}}}}}}}};
   io::write_manifest(dir, m);
   dem::Scene scene{};
   scene.boundary.sigma_n_Pa = 100e3;

@@ -1,0 +1,91 @@
+#include "comparison/quantities.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/errors.hpp"
+
+namespace iwb::comparison {
+
+namespace {
+
+// The residual window: the last fifth of the travelled displacement, as the DEM summary has it
+// (src/dem/summary.cpp), so that the DEM's numbers here equal its summary.json.
+constexpr double kLastFraction = 0.2;
+
+std::vector<double> travel(const std::vector<double>& u_x, std::size_t n) {
+  std::vector<double> s(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + std::abs(u_x[i] - u_x[i - 1]);
+  return s;
+}
+
+// Least-squares slope of y against x over the rows where `in` holds.
+std::optional<double> slope(const std::vector<double>& x, const std::vector<double>& y,
+                            const std::vector<bool>& in) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < in.size(); ++i)
+    if (in[i]) n += 1, sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
+  const double d = n * sxx - sx * sx;
+  if (n < 2 || !(d > 0.0)) return std::nullopt;
+  return (n * sxy - sx * sy) / d;
+}
+
+}  // namespace
+
+const std::vector<QuantityInfo>& quantity_table() {
+  static const std::vector<QuantityInfo> t = {
+      {"peak_friction", "peak friction tau/sigma_n", "", 0.10, 0.01, false},
+      {"u_x_at_peak", "displacement to the peak u_x", "mm", 0.30, 0.05, true},
+      {"residual_friction", "residual friction tau/sigma_n (last fifth)", "", 0.05, 0.01, false},
+      {"total_dilation", "total dilation u_n at the end", "mm", 0.20, 0.02, true},
+      {"dilation_rate", "dilation rate du_n/du_x (last fifth)", "", 0.20, 0.01, false},
+      {"sigma_n_change", "normal stress change at the end", "kPa", 0.20, 1.0, false},
+  };
+  return t;
+}
+
+const QuantityInfo& quantity(const std::string& key) {
+  for (const auto& q : quantity_table())
+    if (key == q.key) return q;
+  throw std::logic_error(fmt::format("no quantity of interest '{}'", key));
+}
+
+std::vector<std::string> judged_quantities(driver::BoundaryKind boundary) {
+  std::vector<std::string> k = {"peak_friction", "u_x_at_peak", "residual_friction"};
+  if (boundary != driver::BoundaryKind::kCV) k.insert(k.end(), {"total_dilation", "dilation_rate"});
+  if (boundary != driver::BoundaryKind::kCNL) k.push_back("sigma_n_change");
+  return k;
+}
+
+std::map<std::string, std::optional<double>> evaluate_quantities(const Curve& c,
+                                                                 const std::vector<std::string>& keys) {
+  std::map<std::string, std::optional<double>> out;
+  for (const auto& k : keys) out[k] = std::nullopt;
+  const std::size_t n = std::min({c.u_x_mm.size(), c.tau_kPa.size(), c.sigma_n_kPa.size(), c.u_n_mm.size()});
+  if (n < 2) return out;
+  std::vector<double> friction(n);
+  for (std::size_t i = 0; i < n; ++i) friction[i] = std::abs(c.tau_kPa[i]) / c.sigma_n_kPa[i];
+  const auto s = travel(c.u_x_mm, n);
+  std::vector<bool> last(n);
+  double sum = 0.0;
+  int count = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if ((last[i] = s[i] >= (1.0 - kLastFraction) * s.back())) sum += friction[i], ++count;
+  std::size_t peak = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (friction[i] > friction[peak]) peak = i;
+  const std::map<std::string, std::optional<double>> all = {
+      {"peak_friction", friction[peak]},
+      {"u_x_at_peak", c.u_x_mm[peak]},
+      {"residual_friction", count > 0 ? std::optional<double>(sum / count) : std::nullopt},
+      {"total_dilation", c.u_n_mm[n - 1] - c.u_n_mm[0]},
+      {"dilation_rate", slope(s, c.u_n_mm, last)},
+      {"sigma_n_change", c.sigma_n_kPa[n - 1] - c.sigma_n_kPa[0]},
+  };
+  for (const auto& k : keys) out[k] = all.at(k);
+  return out;
+}
+
+}  // namespace iwb::comparison

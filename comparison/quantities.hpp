@@ -1,0 +1,47 @@
+#pragma once
+// The quantities of interest by which a continuum model is judged against the DEM (issue 14):
+// shear stress (peak, its displacement, residual) and dilation (total and its rate) under CNL and
+// CNS, the normal-stress change under CNS and CV. Each is computed the same way from a DEM curve
+// and from a model's replay of it, so that their difference is the model's error alone.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "driver/control.hpp"
+
+namespace iwb::comparison {
+
+struct QuantityInfo {
+  const char* key;     // as in a scene's [requirements] and in compare.json
+  const char* name;    // for people
+  const char* unit;    // of the value; "" for ratios
+  double tolerance;    // default relative tolerance (issue 14), overridden by [requirements]
+  // Relative errors are taken against max(|DEM value|, floor): a DEM value near zero (a flat
+  // wall that barely dilates) would otherwise turn a small absolute miss into an infinite one.
+  double floor;
+  bool floor_in_d50;   // the floor is in grain diameters (lengths), else in the value's unit
+};
+
+// In the order reports list them.
+const std::vector<QuantityInfo>& quantity_table();
+const QuantityInfo& quantity(const std::string& key);
+
+// The quantities that a boundary condition leaves free to judge: CV fixes u_n, CNL fixes sigma_n.
+std::vector<std::string> judged_quantities(driver::BoundaryKind boundary);
+
+// A response along u_x in contract units (compression positive, u_n > 0 dilation); `rows` of
+// each series are used (a replay that stopped early has fewer than the DEM).
+struct Curve {
+  const std::vector<double>& u_x_mm;
+  const std::vector<double>& tau_kPa;
+  const std::vector<double>& sigma_n_kPa;
+  const std::vector<double>& u_n_mm;
+};
+
+// Each quantity of `keys` from the curve; nullopt where the curve cannot give it (fewer than two
+// rows, or no rows in the last fifth).
+std::map<std::string, std::optional<double>> evaluate_quantities(const Curve& curve,
+                                                                 const std::vector<std::string>& keys);
+
+}  // namespace iwb::comparison

@@ -1,0 +1,102 @@
+#include "comparison/verdict_table.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+
+namespace iwb::comparison {
+
+using nlohmann::json;
+
+namespace {
+
+// A value in its unit with digits that suit it: frictions and rates to 3 decimals, lengths to
+// 3 significant digits, stresses to 0.1 kPa.
+std::string value(const json& v, const std::string& unit) {
+  if (!v.is_number()) return "-";
+  const double x = v.get<double>();
+  if (unit == "kPa") return fmt::format("{:.1f} kPa", x);
+  if (unit == "mm") return fmt::format("{:.3g} mm", x);
+  return fmt::format("{:.3f}", x);
+}
+
+std::string with_sd(const json& v, const json& sd, const std::string& unit, std::size_t seeds) {
+  if (!sd.is_number()) return value(v, unit) + " (1 run)";
+  const std::string s = value(sd, unit);
+  return fmt::format("{} ± {} (mean ± SD, {} seeds)", value(v, unit), s.substr(0, s.find(' ')), seeds);
+}
+
+std::string model_cell(const json& verdict) {
+  if (!verdict["model"].is_number()) return "not reached";
+  const std::string unit = verdict["unit"];
+  return fmt::format("{} ({:+.0f} %)", value(verdict["model"], unit), 100 * verdict["relative_error"].get<double>());
+}
+
+std::string holds_list(const json& s) {
+  std::string out;
+  for (const auto& q : s) out += (out.empty() ? "" : ", ") + q.get<std::string>();
+  return out.empty() ? "none" : out;
+}
+
+// Where the joint fit stops on the box's bound, the data ask for more than the model allows.
+std::string bound_note(const json& fit) {
+  if (!fit.contains("at_bound") || fit["at_bound"].empty()) return "The joint fit's optimum is inside the box.";
+  std::string which;
+  for (const auto& b : fit["at_bound"]) which += (which.empty() ? "" : " and ") + b.get<std::string>();
+  return fmt::format("The joint fit stops on the bound of {}: the DEM asks for more than the model's range allows "
+                     "(kappa_r <= 1 is fully rough).", which);
+}
+
+}  // namespace
+
+Table verdict_table(const json& cmp) {
+  Table t{{"quantity", "DEM", "predicted model", "fitted model", "tolerance", "predicted", "fitted"}, {}};
+  const auto& v = cmp["variants"];
+  const auto& pred = v[cmp["verdicts"]["predicted_variant"].get<std::size_t>()]["verdicts"];
+  const auto& fit = v[cmp["verdicts"]["fitted_variant"].get<std::size_t>()]["verdicts"];
+  for (std::size_t i = 0; i < pred.size(); ++i) {
+    const auto& p = pred[i];
+    const std::string unit = p["unit"];
+    t.rows.push_back({p["name"].get<std::string>() + (unit.empty() ? "" : " (" + unit + ")"),
+                      with_sd(p["dem"], p["dem_seed_sd"], unit, p["seeds"].get<std::size_t>()), model_cell(p),
+                      model_cell(fit[i]), fmt::format("{:.0f} %", 100 * p["tolerance"].get<double>()),
+                      p["verdict"].get<std::string>(), fit[i]["verdict"].get<std::string>()});
+  }
+  return t;
+}
+
+std::vector<std::string> verdict_findings(const json& cmp) {
+  const auto& s = cmp["verdicts"]["summary"];
+  const auto& v = cmp["variants"];
+  const auto label = [&](const char* which) {
+    return v[cmp["verdicts"][which].get<std::size_t>()]["label"].get<std::string>();
+  };
+  return {fmt::format("Predicted ({}): holds on {}; does not hold on {}.", label("predicted_variant"),
+                      holds_list(s["predicted"]["holds"]), holds_list(s["predicted"]["fails"])),
+          fmt::format("Fitted ({}): holds on {}; does not hold on {}.", label("fitted_variant"),
+                      holds_list(s["fitted"]["holds"]), holds_list(s["fitted"]["fails"])),
+          fmt::format("Scan of the (kappa_r, d_s) box: {}.", s["scan"]["finding"].get<std::string>()),
+          bound_note(cmp["fit"])};
+}
+
+std::string to_text(const Table& t) {
+  std::vector<std::size_t> w(t.columns.size());
+  // UTF-8 "±" is two bytes and one column wide: count code points, not bytes
+  auto width = [](const std::string& s) {
+    return std::size_t(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+  };
+  for (std::size_t c = 0; c < w.size(); ++c) {
+    w[c] = width(t.columns[c]);
+    for (const auto& r : t.rows) w[c] = std::max(w[c], width(r[c]));
+  }
+  auto line = [&](const std::vector<std::string>& cells) {
+    std::string s;
+    for (std::size_t c = 0; c < cells.size(); ++c) s += cells[c] + std::string(w[c] - width(cells[c]) + 2, ' ');
+    return s.substr(0, s.find_last_not_of(' ') + 1) + "\n";
+  };
+  std::string out = line(t.columns);
+  for (const auto& r : t.rows) out += line(r);
+  return out;
+}
+
+}  // namespace iwb::comparison

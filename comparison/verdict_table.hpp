@@ -1,0 +1,26 @@
+#pragma once
+// The verdict table of one comparison (issue 14), as cells with units, for the terminal and the
+// report alike: rows are the quantities of interest; columns the DEM (value +- seed SD), the
+// predicted model (value, error), the jointly fitted model (value, error), the tolerance and the
+// two verdicts.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace iwb::comparison {
+
+struct Table {
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+};
+
+// From compare.json.
+Table verdict_table(const nlohmann::json& compare);
+
+// The sentences under the table: what the predicted and fitted models hold, and the scan.
+std::vector<std::string> verdict_findings(const nlohmann::json& compare);
+
+// Fixed-width text, for the terminal.
+std::string to_text(const Table& table);
+
+}  // namespace iwb::comparison

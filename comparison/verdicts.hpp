@@ -1,0 +1,50 @@
+#pragma once
+// Per quantity of interest, whether a model holds against the DEM (issue 14): the DEM value (the
+// mean over its seeds when there are seeds, else the run's own) with its seed standard deviation,
+// the model's value, the relative error and the tolerance, and a verdict:
+//   holds                 |error| <= tolerance;
+//   breaks                the miss exceeds the tolerance by more than twice the standard error
+//                         of the DEM's seed mean, SD/sqrt(seeds) (the DEM is sure enough to
+//                         convict; with a single run, any miss beyond the tolerance);
+//   within DEM scatter    in between: the model misses the tolerance, but by no more than the
+//                         DEM's own uncertainty;
+//   not reached           the model stopped before the DEM's end, and the quantity needs the end.
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "comparison/replay.hpp"
+#include "comparison/seed_scatter.hpp"
+
+namespace iwb::comparison {
+
+// Quantity key -> relative tolerance; quantities absent are not judged.
+using Tolerances = std::map<std::string, double>;
+
+// The defaults of comparison/quantities.hpp for the quantities `dem`'s boundary condition leaves
+// free, overridden by the [requirements] of the scene it ran ("not needed" drops a quantity).
+Tolerances tolerances_for(const DemRun& dem);
+
+struct Verdict {
+  std::string key;
+  std::optional<double> dem;     // the seed mean, or the run's own value without seeds
+  std::optional<double> dem_sd;  // seed standard deviation (none with a single run)
+  std::size_t seeds = 1;
+  std::optional<double> model;
+  std::optional<double> error;   // (model - DEM) / max(|DEM|, floor), signed
+  double tolerance = 0.0;
+  std::string verdict;
+};
+
+std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const Replay& replay,
+                           const Tolerances& tolerances);
+
+bool all_hold(const std::vector<Verdict>& verdicts);
+// The keys of the verdicts that do not hold ("breaks" or "within DEM scatter" or "not reached").
+std::vector<std::string> failing(const std::vector<Verdict>& verdicts);
+
+nlohmann::json to_json(const std::vector<Verdict>& verdicts);
+
+}  // namespace iwb::comparison

@@ -1,0 +1,164 @@
+// Verdicts on shear stress and dilation (issue 14): the quantities of interest of a curve whose
+// values are known in closed form, the verdict rule on constructed numbers, tolerances from a
+// scene's [requirements], seed groups, and a joint fit that recovers the kappa_r and d_s of a
+// noisy synthetic run made by the model itself.
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "common/errors.hpp"
+#include "comparison/compare.hpp"
+#include "comparison/fit.hpp"
+#include "comparison/quantities.hpp"
+#include "comparison/verdicts.hpp"
+#include "io/run_directory.hpp"
+#include "support/fixtures.hpp"
+#include "support/synthetic_dem.hpp"
+
+using namespace iwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A curve with known quantities: friction rises linearly to 0.6 at u_x = 1 mm, falls linearly to
+// 0.5 at 2 mm and stays; sigma_n = 100 kPa + 10 kPa/mm u_x; u_n = 0.05 u_x (rate 0.05 exactly).
+struct KnownCurve {
+  std::vector<double> u_x, tau, sigma, u_n;
+  explicit KnownCurve(double u_end = 5.0, int rows = 501) {
+    for (int i = 0; i < rows; ++i) {
+      const double u = u_end * i / (rows - 1);
+      const double f = u < 1.0 ? 0.6 * u : u < 2.0 ? 0.6 - 0.1 * (u - 1.0) : 0.5;
+      u_x.push_back(u), sigma.push_back(100.0 + 10.0 * u), tau.push_back(f * sigma.back()), u_n.push_back(0.05 * u);
+    }
+  }
+};
+
+comparison::DemRun dem_of(const KnownCurve& c, driver::BoundaryKind b = driver::BoundaryKind::kCNL) {
+  comparison::DemRun d;
+  d.boundary = b;
+  d.d50_mm = 0.2;
+  d.u_x_mm = c.u_x, d.tau_kPa = c.tau, d.sigma_n_kPa = c.sigma, d.u_n_mm = c.u_n;
+  return d;
+}
+
+comparison::Replay replay_of(const KnownCurve& c) {
+  comparison::Replay r;
+  r.u_x_mm = c.u_x, r.tau_kPa = c.tau, r.sigma_n_kPa = c.sigma, r.u_n_mm = c.u_n;
+  return r;
+}
+
+const comparison::Verdict& find(const std::vector<comparison::Verdict>& v, const std::string& key) {
+  for (const auto& x : v)
+    if (x.key == key) return x;
+  FAIL("no verdict " << key);
+  throw;
+}
+
+}  // namespace
+
+TEST_CASE("quantities of a curve known in closed form", "[comparison][verdicts]") {
+  const KnownCurve c;
+  const auto q = comparison::evaluate_quantities(
+      {c.u_x, c.tau, c.sigma, c.u_n}, {"peak_friction", "u_x_at_peak", "residual_friction", "total_dilation",
+                                       "dilation_rate", "sigma_n_change"});
+  CHECK(*q.at("peak_friction") == Approx(0.6).epsilon(1e-12));
+  CHECK(*q.at("u_x_at_peak") == Approx(1.0).epsilon(1e-12));
+  CHECK(*q.at("residual_friction") == Approx(0.5).epsilon(1e-12));  // the last fifth is on the plateau
+  CHECK(*q.at("total_dilation") == Approx(0.25).epsilon(1e-12));    // 0.05 x 5 mm
+  CHECK(*q.at("dilation_rate") == Approx(0.05).epsilon(1e-9));
+  CHECK(*q.at("sigma_n_change") == Approx(50.0).epsilon(1e-12));
+}
+
+TEST_CASE("each boundary condition judges what it leaves free", "[comparison][verdicts]") {
+  using driver::BoundaryKind;
+  const auto cnl = comparison::judged_quantities(BoundaryKind::kCNL);
+  const auto cv = comparison::judged_quantities(BoundaryKind::kCV);
+  const auto cns = comparison::judged_quantities(BoundaryKind::kCNS);
+  auto has = [](const std::vector<std::string>& v, const char* k) { return std::find(v.begin(), v.end(), k) != v.end(); };
+  CHECK(has(cnl, "total_dilation"));
+  CHECK(has(cnl, "dilation_rate"));
+  CHECK_FALSE(has(cnl, "sigma_n_change"));  // CNL prescribes sigma_n
+  CHECK_FALSE(has(cv, "total_dilation"));   // CV prescribes u_n = 0
+  CHECK(has(cv, "sigma_n_change"));
+  CHECK(has(cns, "total_dilation"));
+  CHECK(has(cns, "sigma_n_change"));
+}
+
+TEST_CASE("verdict rule: holds within the tolerance, breaks beyond it and the DEM's scatter", "[comparison][verdicts]") {
+  const KnownCurve dem_curve;
+  const auto dem = dem_of(dem_curve);
+  KnownCurve model = dem_curve;
+  for (auto& u : model.u_n) u *= 1.15;  // 15 % more dilation: total and rate alike
+  comparison::SeedScatter single;
+  const comparison::Tolerances tol = {{"total_dilation", 0.20}, {"dilation_rate", 0.10}};
+  const auto v = comparison::judge(dem, single, replay_of(model), tol);
+  CHECK(find(v, "total_dilation").error.value() == Approx(0.15).epsilon(1e-9));
+  CHECK(find(v, "total_dilation").verdict == "holds");  // 15 % <= 20 %
+  CHECK(find(v, "dilation_rate").verdict == "breaks");  // 15 % > 10 %, no scatter to excuse it
+  // a seed SD of the rate of 0.003 over 3 seeds: the miss over the tolerance (5 % of 0.05 =
+  // 0.0025) is within twice the standard error of the mean, 2 x 0.003 / sqrt(3) = 0.0035
+  comparison::SeedScatter seeds;
+  seeds.runs = {"a", "b", "c"};
+  seeds.quantity_mean = {{"dilation_rate", 0.05}, {"total_dilation", 0.25}};  // the DEM's own values
+  seeds.quantity_sd = {{"dilation_rate", 0.003}, {"total_dilation", 0.01}};
+  CHECK(find(comparison::judge(dem, seeds, replay_of(model), tol), "dilation_rate").verdict == "within DEM scatter");
+  seeds.quantity_sd["dilation_rate"] = 0.001;  // 2 x 0.001 / sqrt(3) = 0.0012 < 0.0025: breaks
+  CHECK(find(comparison::judge(dem, seeds, replay_of(model), tol), "dilation_rate").verdict == "breaks");
+}
+
+TEST_CASE("a model that stops early is not reached on the quantities of the end", "[comparison][verdicts]") {
+  const KnownCurve c;
+  auto r = replay_of(c);
+  for (auto* s : {&r.u_x_mm, &r.tau_kPa, &r.sigma_n_kPa, &r.u_n_mm}) s->resize(300);  // stopped at 3 mm
+  const auto v = comparison::judge(dem_of(c), {}, r, {{"peak_friction", 0.1}, {"residual_friction", 0.05}});
+  CHECK(find(v, "peak_friction").verdict == "holds");  // the peak at 1 mm was reached
+  CHECK(find(v, "residual_friction").verdict == "not reached");
+}
+
+TEST_CASE("tolerances: defaults, the scene's [requirements], 'not needed', bad values named", "[comparison][verdicts]") {
+  auto dem = dem_of(KnownCurve());
+  CHECK(comparison::tolerances_for(dem).at("residual_friction") == 0.05);
+  CHECK(comparison::tolerances_for(dem).at("total_dilation") == 0.20);
+  dem.dir = "run";
+  dem.scene_text = "[requirements]\ntotal_dilation = 0.4\ndilation_rate = \"not needed\"\n";
+  const auto t = comparison::tolerances_for(dem);
+  CHECK(t.at("total_dilation") == 0.4);
+  CHECK(t.count("dilation_rate") == 0);
+  dem.scene_text = "[requirements]\ntotal_dilation = 1.5\n";
+  CHECK_THROWS_WITH(comparison::tolerances_for(dem),
+                    Catch::Contains("requirements.total_dilation") && Catch::Contains("1.5"));
+}
+
+TEST_CASE("seeds: a run of another scene is refused, seeds of one scene are found", "[comparison][verdicts]") {
+  const auto a = comparison::load_dem_run(test::write_synthetic_dem({.name = "seed_a", .seed = 1, .tau_noise_kPa = 0.5}));
+  const auto b = comparison::load_dem_run(test::write_synthetic_dem({.name = "seed_b", .seed = 2, .tau_noise_kPa = 0.5}));
+  const auto other = comparison::load_dem_run(test::write_synthetic_dem({.name = "seed_other", .kappa_r = 0.5, .seed = 3}));
+  CHECK(comparison::seeds_of(a, {a, b, other}).size() == 1);
+  CHECK_THROWS_WITH(comparison::seed_scatter(a, {other}), Catch::Contains("not a seed of"));
+  const auto s = comparison::seed_scatter(a, {b});
+  // two seeds with independent noise of SD 0.5 kPa: per-row SD of a pair has RMS ~0.5 kPa
+  CHECK(s.tau_kPa == Approx(0.5).epsilon(0.25));
+  CHECK(s.u_n_mm == Approx(0.0).margin(1e-12));
+}
+
+TEST_CASE("joint fit recovers a known kappa_r and d_s from noisy seeds of the model itself", "[comparison][verdicts]") {
+  // hvwe with kappa_r = 0.7, d_s = 2 mm; three seeds with noise of 1 kPa on tau and 2 um on u_n
+  std::vector<comparison::DemRun> runs;
+  for (int seed : {1, 2, 3})
+    runs.push_back(comparison::load_dem_run(test::write_synthetic_dem(
+        {.name = fmt::format("joint_s{}", seed), .kappa_r = 0.7, .d_s_mm = 2.0, .seed = seed, .tau_noise_kPa = 1.0,
+         .u_n_noise_mm = 0.002})));
+  const auto scatter = comparison::seed_scatter(runs[0], {runs[1], runs[2]});
+  const auto targets = comparison::joint_targets(runs[0], scatter);
+  CHECK(targets.u_n_scale_mm > 0.0);  // CNL: u_n is fitted with tau
+  comparison::Variant start{"start", "hvwe", test::table_5_1(1.0), 1.0};
+  const auto fit = comparison::fit_kappa_and_ds(runs[0], start, targets);
+  INFO("kappa_r " << fit.kappa_r << " +- " << fit.sigma_kappa_r << ", d_s " << fit.d_s_mm << " +- " << fit.sigma_d_s_mm
+                  << " mm, scaled RMS " << fit.rms_scaled << ", " << fit.stop_reason);
+  CHECK(std::abs(fit.kappa_r - 0.7) < 3.0 * fit.sigma_kappa_r + 0.005);
+  CHECK(std::abs(fit.d_s_mm - 2.0) < 3.0 * fit.sigma_d_s_mm + 0.01);
+  CHECK(fit.kappa_r == Approx(0.7).epsilon(0.05));
+  CHECK(fit.d_s_mm == Approx(2.0).epsilon(0.05));
+  // residuals in units of the seed scatter: a right model leaves about one scatter (noise of
+  // one run against the pooled per-row SD, which underestimates with three seeds)
+  CHECK(fit.rms_scaled < 2.0);
+}
