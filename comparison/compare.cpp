@@ -34,24 +34,14 @@ std::string curves_csv(const DemRun& dem, const std::vector<Replay>& replays) {
   return s;
 }
 
-// The DEM's seed band per row (mean +- SD over the seeds, on the rows every seed has), for the
-// report's figures: seed_band.csv.
-std::string seed_band_csv(const DemRun& dem, const std::vector<DemRun>& seeds, std::size_t rows) {
-  std::string s = "u_x_mm,tau_mean_kPa,tau_sd_kPa,sigma_n_mean_kPa,sigma_n_sd_kPa,u_n_mean_mm,u_n_sd_mm\n";
-  auto stats = [&](auto member, std::size_t i) {
-    double m = (dem.*member)[i], q = m * m;
-    for (const auto& r : seeds) m += (r.*member)[i], q += (r.*member)[i] * (r.*member)[i];
-    const double n = double(seeds.size() + 1);
-    m /= n;
-    return std::pair{m, std::sqrt(std::max(0.0, (q - n * m * m) / (n - 1)))};
-  };
-  for (std::size_t i = 0; i < rows; ++i) {
-    const auto [t, ts] = stats(&DemRun::tau_kPa, i);
-    const auto [sn, sns] = stats(&DemRun::sigma_n_kPa, i);
-    const auto [un, uns] = stats(&DemRun::u_n_mm, i);
-    s += fmt::format("{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", dem.u_x_mm[i], t, ts, sn, sns, un, uns);
-  }
-  return s;
+// The DEM's seed band per row (mean and SD over the seeds, on the compared run's rows every seed
+// covers), for the report's figures.
+std::string seed_band_csv(const DemRun& dem, const SeedScatter& s) {
+  std::string out = "u_x_mm,tau_mean_kPa,tau_sd_kPa,sigma_n_mean_kPa,sigma_n_sd_kPa,u_n_mean_mm,u_n_sd_mm\n";
+  for (std::size_t i = 0; i < s.rows; ++i)
+    out += fmt::format("{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", dem.u_x_mm[i], s.tau.mean[i], s.tau.sd[i],
+                       s.sigma_n.mean[i], s.sigma_n.sd[i], s.u_n.mean[i], s.u_n.sd[i]);
+  return out;
 }
 
 Variant fitted_variant(const Variant& start, const FitResult& fit, const std::string& what, double d50) {
@@ -173,8 +163,8 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
                {"boundary", driver::to_string(dem.boundary)}, {"R_n", dem.R_n}, {"d50_mm", dem.d50_mm},
                {"sigma_n0_kPa", dem.sigma_n_kPa.front()}, {"e0_band", dem.e_band.front()}}},
       {"model", opt.model},
-      {"seeds", {{"runs", scatter.runs}, {"rows", scatter.rows}, {"tau_sd_kPa", scatter.tau_kPa},
-                 {"u_n_sd_mm", scatter.u_n_mm}, {"sigma_n_sd_kPa", scatter.sigma_n_kPa}}},
+      {"seeds", {{"runs", scatter.runs}, {"rows", scatter.rows}, {"tau_rms_sd_kPa", scatter.tau.rms_sd},
+                 {"u_n_rms_sd_mm", scatter.u_n.rms_sd}, {"sigma_n_rms_sd_kPa", scatter.sigma_n.rms_sd}}},
       {"tolerances", tol},
       {"verdicts", {{"predicted_variant", 0}, {"fitted_variant", fitted_index},
                     {"summary", headline(variants[0]["verdicts"], variants[fitted_index]["verdicts"], scan)}}},
@@ -188,7 +178,7 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
   io::write_atomically(opt.out / "compare.csv", curves_csv(dem, replays));
   manifest["files"] = {"compare.json", "compare.csv"};
   if (scatter.from_seeds()) {
-    io::write_atomically(opt.out / "seed_band.csv", seed_band_csv(dem, seeds, scatter.rows));
+    io::write_atomically(opt.out / "seed_band.csv", seed_band_csv(dem, scatter));
     manifest["files"].push_back("seed_band.csv");
   }
   manifest["finished"] = io::utc_timestamp();

@@ -34,15 +34,15 @@ FitTargets tau_only_targets() { return {1.0, 0.0, 0.0, "tau alone, in kPa"}; }
 
 FitTargets joint_targets(const DemRun& dem, const SeedScatter& s) {
   const bool seeds = s.from_seeds();
-  const double tau = seeds ? s.tau_kPa : range(dem.tau_kPa);
+  const double tau = seeds ? s.tau.rms_sd : range(dem.tau_kPa);
   FitTargets t{usable(tau, range(dem.tau_kPa)), 0.0, 0.0, ""};
   const char* what = seeds ? "seed scatter (RMS over rows of the SD across seeds)" : "range over the run (no seeds given)";
   if (dem.boundary == driver::BoundaryKind::kCNL) {
-    t.u_n_scale_mm = usable(seeds ? s.u_n_mm : range(dem.u_n_mm), range(dem.u_n_mm));
+    t.u_n_scale_mm = usable(seeds ? s.u_n.rms_sd : range(dem.u_n_mm), range(dem.u_n_mm));
     t.weighting = fmt::format("tau / {:.3g} kPa and u_n / {:.3g} mm: each by its {}", t.tau_scale_kPa,
                               t.u_n_scale_mm, what);
   } else {
-    t.sigma_n_scale_kPa = usable(seeds ? s.sigma_n_kPa : range(dem.sigma_n_kPa), range(dem.sigma_n_kPa));
+    t.sigma_n_scale_kPa = usable(seeds ? s.sigma_n.rms_sd : range(dem.sigma_n_kPa), range(dem.sigma_n_kPa));
     t.weighting = fmt::format("tau / {:.3g} kPa and sigma_n / {:.3g} kPa: each by its {}", t.tau_scale_kPa,
                               t.sigma_n_scale_kPa, what);
   }

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -12,10 +13,6 @@ namespace iwb::comparison {
 
 namespace {
 
-// Rows of two seeds are the same instant of shear when their u_x agree to a fraction of the
-// output spacing (the same scene writes at the same u_x; the engine's step quantises it).
-constexpr double kRowMatchShare = 0.25;
-
 void check_same_scene(const DemRun& run, const DemRun& seed) {
   if (seed.scene_but_seed != run.scene_but_seed)
     throw InputError(fmt::format("{}: not a seed of {}: its scene differs in more than the seed "
@@ -23,13 +20,22 @@ void check_same_scene(const DemRun& run, const DemRun& seed) {
                                  seed.dir.string(), run.dir.string()));
 }
 
-void check_rows(const DemRun& run, const DemRun& seed, std::size_t rows) {
-  const double spacing = (run.u_x_mm[rows - 1] - run.u_x_mm[0]) / double(rows - 1);
-  for (std::size_t i = 0; i < rows; ++i)
-    if (std::abs(seed.u_x_mm[i] - run.u_x_mm[i]) > kRowMatchShare * std::abs(spacing))
-      throw InputError(fmt::format("{}/timeseries.csv:{}: u_x_mm = {:g} where {} has {:g}: seeds must "
-                                   "write their rows at the same u_x",
-                                   seed.dir.string(), i + 2, seed.u_x_mm[i], run.dir.string(), run.u_x_mm[i]));
+// The displacement travelled since the start of shear (u_x = 0) at each row: cyclic paths
+// return through the same u_x, the travel keeps increasing.
+std::vector<double> travel(const std::vector<double>& u_x) {
+  std::vector<double> s(u_x.size(), std::abs(u_x.front()));
+  for (std::size_t i = 1; i < u_x.size(); ++i) s[i] = s[i - 1] + std::abs(u_x[i] - u_x[i - 1]);
+  return s;
+}
+
+// y at travel x by linear interpolation in (xs, ys); held at the first value before it.
+double at(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+  const auto hi = std::upper_bound(xs.begin(), xs.end(), x);
+  if (hi == xs.begin()) return ys.front();
+  if (hi == xs.end()) return ys.back();
+  const std::size_t j = std::size_t(hi - xs.begin());
+  const double w = (x - xs[j - 1]) / (xs[j] - xs[j - 1]);
+  return ys[j - 1] + w * (ys[j] - ys[j - 1]);
 }
 
 struct MeanSd {
@@ -44,15 +50,19 @@ MeanSd mean_sd(const std::vector<double>& x) {
   return {m, x.size() > 1 ? std::sqrt(v / double(x.size() - 1)) : 0.0};
 }
 
-// RMS over rows of the standard deviation across seeds of one series.
-double row_scatter(const std::vector<const std::vector<double>*>& series, std::size_t rows) {
+// Per row of the compared run (`where`, its travel), mean and SD over the seeds of one series.
+SeriesScatter series_scatter(const std::vector<const DemRun*>& all, const std::vector<double>& where,
+                             std::size_t rows, std::vector<double> DemRun::*member) {
+  SeriesScatter out;
   double sum = 0.0;
   for (std::size_t i = 0; i < rows; ++i) {
-    std::vector<double> at;
-    for (const auto* s : series) at.push_back((*s)[i]);
-    sum += std::pow(mean_sd(at).sd, 2);
+    std::vector<double> values;
+    for (const auto* r : all) values.push_back(at(travel(r->u_x_mm), r->*member, where[i]));
+    const auto ms = mean_sd(values);
+    out.mean.push_back(ms.mean), out.sd.push_back(ms.sd), sum += ms.sd * ms.sd;
   }
-  return std::sqrt(sum / double(rows));
+  out.rms_sd = rows > 0 ? std::sqrt(sum / double(rows)) : 0.0;
+  return out;
 }
 
 void quantity_scatter(const std::vector<const DemRun*>& all, SeedScatter& out) {
@@ -73,24 +83,17 @@ void quantity_scatter(const std::vector<const DemRun*>& all, SeedScatter& out) {
 SeedScatter seed_scatter(const DemRun& run, const std::vector<DemRun>& other_seeds) {
   SeedScatter out;
   std::vector<const DemRun*> all = {&run};
-  out.rows = run.u_x_mm.size();
-  for (const auto& s : other_seeds) {
-    check_same_scene(run, s);
-    all.push_back(&s);
-    out.rows = std::min(out.rows, s.u_x_mm.size());
-  }
-  for (const auto* r : all) {
-    out.runs.push_back(r->dir.string());
-    check_rows(run, *r, out.rows);
-  }
-  auto series = [&](auto member) {
-    std::vector<const std::vector<double>*> s;
-    for (const auto* r : all) s.push_back(&(r->*member));
-    return row_scatter(s, out.rows);
-  };
-  out.tau_kPa = series(&DemRun::tau_kPa);
-  out.u_n_mm = series(&DemRun::u_n_mm);
-  out.sigma_n_kPa = series(&DemRun::sigma_n_kPa);
+  for (const auto& s : other_seeds) check_same_scene(run, s), all.push_back(&s);
+  const auto where = travel(run.u_x_mm);
+  double covered = where.back();
+  for (const auto* r : all) out.runs.push_back(r->dir.string()), covered = std::min(covered, travel(r->u_x_mm).back());
+  // the run's rows up to the shortest seed's end (to half an output interval: the same end
+  // displacement, written a fraction of an interval apart)
+  const double half_row = 0.5 * where.back() / double(where.size());
+  out.rows = std::size_t(std::upper_bound(where.begin(), where.end(), covered + half_row) - where.begin());
+  out.tau = series_scatter(all, where, out.rows, &DemRun::tau_kPa);
+  out.u_n = series_scatter(all, where, out.rows, &DemRun::u_n_mm);
+  out.sigma_n = series_scatter(all, where, out.rows, &DemRun::sigma_n_kPa);
   quantity_scatter(all, out);
   return out;
 }
@@ -98,8 +101,7 @@ SeedScatter seed_scatter(const DemRun& run, const std::vector<DemRun>& other_see
 std::vector<DemRun> seeds_of(const DemRun& run, const std::vector<DemRun>& candidates) {
   std::vector<DemRun> out;
   for (const auto& c : candidates)
-    if (c.scene_but_seed == run.scene_but_seed &&
-        !std::filesystem::equivalent(c.dir, run.dir))
+    if (c.scene_but_seed == run.scene_but_seed && !std::filesystem::equivalent(c.dir, run.dir))
       out.push_back(c);
   return out;
 }

@@ -12,19 +12,27 @@
 
 namespace iwb::comparison {
 
+// One series (tau, u_n or sigma_n) over the seeds, on the compared run's rows.
+struct SeriesScatter {
+  std::vector<double> mean, sd;  // per row
+  double rms_sd = 0.0;           // RMS over the rows of sd; 0 with a single run
+};
+
 struct SeedScatter {
   std::vector<std::string> runs;  // the run compared first, then its other seeds
-  std::size_t rows = 0;           // rows every seed has (the shortest run's)
-  // RMS over the common rows of the per-row standard deviation across seeds (contract units);
-  // 0 with a single run
-  double tau_kPa = 0.0, u_n_mm = 0.0, sigma_n_kPa = 0.0;
-  // per quantity of interest: mean and standard deviation over the seeds
+  std::size_t rows = 0;           // the compared run's rows that every seed covers
+  // contract units (kPa, mm, kPa). Seeds write their rows at other u_x (the output fires on
+  // whole multiples of its interval counted from the engine's step 0, and consolidation takes a
+  // different number of steps per seed): each seed is interpolated linearly in the travelled
+  // displacement onto the compared run's rows.
+  SeriesScatter tau, u_n, sigma_n;
+  // per quantity of interest: mean and standard deviation over the seeds, each from its own curve
   std::map<std::string, double> quantity_mean, quantity_sd;
   bool from_seeds() const { return runs.size() >= 2; }
 };
 
 // `run` and its other seeds (possibly none). InputError when a seed's scene differs from run's in
-// anything but the seed, or its rows are not at the same u_x (a different output spacing).
+// anything but the seed.
 SeedScatter seed_scatter(const DemRun& run, const std::vector<DemRun>& other_seeds);
 
 // The runs among `candidates` (other than `run` itself) whose scene is run's but for the seed.

@@ -136,8 +136,9 @@ TEST_CASE("seeds: a run of another scene is refused, seeds of one scene are foun
   CHECK_THROWS_WITH(comparison::seed_scatter(a, {other}), Catch::Contains("not a seed of"));
   const auto s = comparison::seed_scatter(a, {b});
   // two seeds with independent noise of SD 0.5 kPa: per-row SD of a pair has RMS ~0.5 kPa
-  CHECK(s.tau_kPa == Approx(0.5).epsilon(0.25));
-  CHECK(s.u_n_mm == Approx(0.0).margin(1e-12));
+  CHECK(s.tau.rms_sd == Approx(0.5).epsilon(0.25));
+  CHECK(s.u_n.rms_sd == Approx(0.0).margin(1e-12));
+  CHECK(s.rows == a.u_x_mm.size());
 }
 
 TEST_CASE("joint fit recovers a known kappa_r and d_s from noisy seeds of the model itself", "[comparison][verdicts]") {
