@@ -339,6 +339,11 @@ int main(int argc, char** argv) {
   iwb::bench::ElementBenchOptions bopt;
   bench_element->add_option("--repeats", bopt.repeats, "runs per model; the best is reported")
       ->check(CLI::Range(1, 1000))->capture_default_str();
+  bench_element
+      ->add_option("--igs-params", bopt.igs_params,
+                   "parameter set of the -igs models (Table 5.1 has no [intergranular_strain]); "
+                   "they are skipped when it is not there")
+      ->capture_default_str();
 
   auto* bench_integrators = bench->add_subcommand(
       "integrators", "Integration error against cost (rate evaluations, wall time) of explicit Euler with "
