@@ -173,6 +173,66 @@ int cmd_sweep(iwb::campaign::SweepOptions opt) {
   return outcome.complete() ? 0 : 1;
 }
 
+// The deepest subcommand the parser had reached ("dem run" in `iwb dem run ...`), and its path.
+const CLI::App& reached(const CLI::App& app, std::string& path) {
+  path = "iwb";
+  const CLI::App* sub = &app;
+  while (!sub->get_subcommands().empty()) {
+    sub = sub->get_subcommands().front();
+    path += " " + sub->get_name();
+  }
+  return *sub;
+}
+
+// What was wrong with the command line. CLI11 reports `iwb` and `iwb bogus` alike as "A subcommand
+// is required"; say instead which word is not a command, and what the commands are.
+std::string parse_error_message(const CLI::App& sub, const CLI::ParseError& e) {
+  // Option groups are unnamed subcommands in CLI11: not commands.
+  const auto commands =
+      sub.get_subcommands([](const CLI::App* c) { return !c->get_name().empty(); });
+  if (e.get_name() != "RequiredError" || sub.get_require_subcommand_min() == 0) return e.what();
+  std::string known;
+  for (const auto* c : commands) known += (known.empty() ? "" : ", ") + c->get_name();
+  const auto extra = sub.remaining();
+  if (extra.empty()) return fmt::format("give a command: {}", known);
+  return fmt::format("unknown command '{}'; the commands are {}", extra.front(), known);
+}
+
+// CLI11 ends a bad command line with its own codes (105 validator, 106 required, 109 extras, ...);
+// the README promises 2 for every bad input, so all parse errors but --help map to 2.
+int parse_error_exit(const CLI::App& app, const CLI::ParseError& e) {
+  if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+  std::string path;
+  const auto& sub = reached(app, path);
+  fmt::print(stderr, "error: {}: {}\nRun `{} --help` for the options.\n", path,
+             parse_error_message(sub, e), path);
+  return 2;
+}
+
+// The message and exit code of an exception that ended a command: 2 for bad input (the README's
+// promise: the message names the file, key or value), 1 for a run that failed.
+int exit_for(const std::exception_ptr& error) {
+  const auto fail = [](const std::string& message, int code) {
+    fmt::print(stderr, "error: {}\n", message);
+    return code;
+  };
+  try {
+    std::rethrow_exception(error);
+  } catch (const iwb::InputError& e) {
+    return fail(e.what(), 2);
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path given to the command (--out under a file, an unreadable directory); what() names it.
+    return fail(e.what(), 2);
+  } catch (const nlohmann::json::parse_error& e) {
+    // Every JSON file iwb parses is in a run or comparison directory given to the command.
+    return fail(fmt::format("a JSON file in the given directories is not JSON: {}", e.what()), 2);
+  } catch (const std::exception& e) {
+    return fail(e.what(), 1);
+  } catch (...) {
+    return fail("unknown exception", 1);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -357,6 +417,11 @@ int main(int argc, char** argv) {
   iwb::bench::ElementBenchOptions bopt;
   bench_element->add_option("--repeats", bopt.repeats, "runs per model; the best is reported")
       ->check(CLI::Range(1, 1000))->capture_default_str();
+  bench_element
+      ->add_option("--igs-params", bopt.igs_params,
+                   "parameter set of the -igs models (Table 5.1 has no [intergranular_strain]); "
+                   "they are skipped when it is not there")
+      ->capture_default_str();
 
   auto* bench_integrators = bench->add_subcommand(
       "integrators", "Integration error against cost (rate evaluations, wall time) of explicit Euler with "
@@ -378,7 +443,11 @@ int main(int argc, char** argv) {
   const auto calibration_commands = iwb::app::add_calibration_commands(app);
   const auto tradeoff_commands = iwb::app::add_tradeoff_commands(app);
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return parse_error_exit(app, e);
+  }
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   try {
@@ -455,12 +524,8 @@ int main(int argc, char** argv) {
       iwb::bench::run_element_bench(bopt);
       return 0;
     }
-  } catch (const iwb::InputError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return 1;
+  } catch (...) {
+    return exit_for(std::current_exception());
   }
   return 0;
 }
