@@ -10,6 +10,7 @@
 #include "comparison/fit.hpp"
 #include "comparison/quantities.hpp"
 #include "comparison/verdicts.hpp"
+#include "io/parameter_file.hpp"
 #include "io/run_directory.hpp"
 #include "support/fixtures.hpp"
 #include "support/synthetic_dem.hpp"
@@ -162,4 +163,51 @@ TEST_CASE("joint fit recovers a known kappa_r and d_s from noisy seeds of the mo
   // residuals in units of the seed scatter: a right model leaves about one scatter (noise of
   // one run against the pooled per-row SD, which underestimates with three seeds)
   CHECK(fit.rms_scaled < 2.0);
+}
+
+namespace {
+const fs::path kRunDir = "data/reference/reference_rn/runs";
+}
+
+TEST_CASE("quantities of a committed DEM run equal its summary.json (two codes, one definition)",
+          "[comparison][verdicts][reference]") {
+  for (const auto* name : {"sawtooth-2-0.5_cnl_s1", "flat_cns-50_s2"}) {
+    INFO(name);
+    const auto dem = comparison::load_dem_run(kRunDir / name);
+    const auto q = comparison::evaluate_quantities({dem.u_x_mm, dem.tau_kPa, dem.sigma_n_kPa, dem.u_n_mm},
+                                                   {"peak_friction", "u_x_at_peak", "residual_friction", "total_dilation"});
+    CHECK(*q.at("peak_friction") == Approx(dem.summary["peak_friction"].get<double>()).epsilon(1e-9));
+    CHECK(*q.at("u_x_at_peak") == Approx(dem.summary["u_x_at_peak_mm"].get<double>()).epsilon(1e-9));
+    CHECK(*q.at("residual_friction") == Approx(dem.summary["residual_friction"].get<double>()).epsilon(1e-6));
+    // the summary's dilation is u_n at the end; the quantity counts from the first row (u_n ~ 1e-5 mm)
+    CHECK(*q.at("total_dilation") == Approx(dem.summary["dilation_mm"].get<double>()).margin(1e-3));
+  }
+}
+
+TEST_CASE("the joint fit trades tau for u_n: never a worse u_n, never a better tau than the fit to tau alone",
+          "[comparison][verdicts][reference]") {
+  // At the optimum of J = |r_tau|^2 + |r_un|^2 the tau part is no smaller than at the optimum of
+  // |r_tau|^2 alone, so the u_n part is no larger: a fact of the two objectives, whatever the model.
+  std::vector<comparison::DemRun> runs;
+  for (int s : {1, 2, 3}) runs.push_back(comparison::load_dem_run(kRunDir / fmt::format("sawtooth-2-0.5_cnl_s{}", s)));
+  const auto scatter = comparison::seed_scatter(runs[0], {runs[1], runs[2]});
+  models::ModelInputs params;
+  params.tables = io::load_parameter_file("data/params/dem_default_grains.toml");
+  const auto start = comparison::standard_variants(runs[0], "hvwe", params).front();
+  const auto joint = comparison::joint_targets(runs[0], scatter);
+  auto rms = [&](const comparison::FitResult& f, bool u_n) {
+    comparison::Variant v = start;
+    v.inputs.roughness.kappa_r = f.kappa_r, v.d_s_mm = f.d_s_mm;
+    const auto r = comparison::replay(runs[0], v);
+    const auto res = comparison::fit_residuals(runs[0], r, joint);
+    const Eigen::Index n = Eigen::Index(runs[0].tau_kPa.size());
+    return (u_n ? res.tail(n) : res.head(n)).norm();
+  };
+  const auto tau_fit = comparison::fit_kappa_and_ds(runs[0], start, comparison::tau_only_targets());
+  const auto joint_fit = comparison::fit_kappa_and_ds(runs[0], start, joint);
+  INFO("tau alone: kappa_r " << tau_fit.kappa_r << ", d_s " << tau_fit.d_s_mm << "; joint: " << joint_fit.kappa_r << ", "
+                             << joint_fit.d_s_mm);
+  CHECK(rms(joint_fit, true) <= rms(tau_fit, true) * (1 + 1e-6));
+  CHECK(rms(joint_fit, false) >= rms(tau_fit, false) * (1 - 1e-3));  // BOBYQA's optimum, to its tolerance
+  CHECK(rms(joint_fit, true) < 0.9 * rms(tau_fit, true));  // and here the trade is visible
 }
