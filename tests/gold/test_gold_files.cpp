@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include "io/element_run.hpp"
@@ -59,15 +60,21 @@ io::ElementTestSpec spec_of(const GoldCase& c) {
 }
 
 // A run directory as `iwb element` writes it, kept under build/test-runs/gold/ for inspection.
-fs::path run(const GoldCase& c) {
+// Empty, with the reason in `why`, when the run did not complete: a gold file of a failed run
+// would pin the failure, and one broken case must not hide the others.
+std::optional<fs::path> run(const GoldCase& c, std::string& why) {
   io::ElementRunOptions opt;
   opt.out = fs::path(IWB_TEST_RUNS_DIR) / "gold" / c.model / c.path;
   opt.force = true;
   opt.command_line = "iwb_tests [gold]";
-  const auto outcome = io::run_element_to_directory(spec_of(c), opt);
-  INFO(c.model << " on " << c.path << ": " << outcome.result.status);
-  REQUIRE(outcome.result.complete());  // a gold file of a failed run would pin a failure
-  return opt.out / "history.csv";
+  try {
+    const auto outcome = io::run_element_to_directory(spec_of(c), opt);
+    why = outcome.result.status;
+    if (outcome.result.complete()) return opt.out / "history.csv";
+  } catch (const std::exception& e) {
+    why = e.what();
+  }
+  return std::nullopt;
 }
 
 bool regenerating() {
@@ -75,26 +82,32 @@ bool regenerating() {
   return v != nullptr && std::string(v) == "1";
 }
 
+void regenerate(const GoldCase& c, const fs::path& history) {
+  fs::create_directories(c.gold_file().parent_path());
+  fs::copy_file(history, c.gold_file(), fs::copy_options::overwrite_existing);
+  WARN("regenerated " << c.gold_file().string());
+}
+
+// Every model on `path`, each failure reported and the next model run.
 void check_path(const std::string& path) {
   const auto tolerances = test::read_tolerances(config(), (kGoldDir / "gold.toml").string());
-  int checked = 0;
+  int cases = 0;
   for (const auto& c : all_cases()) {
     if (c.path != path) continue;
-    const fs::path history = run(c);
-    ++checked;
-    if (regenerating()) {
-      fs::create_directories(c.gold_file().parent_path());
-      fs::copy_file(history, c.gold_file(), fs::copy_options::overwrite_existing);
-      WARN("regenerated " << c.gold_file().string());
-      continue;
+    ++cases;
+    std::string why;
+    const auto history = run(c, why);
+    if (!history) {
+      FAIL_CHECK(c.model << " on " << path << ": the run did not complete: " << why);
+    } else if (regenerating()) {
+      regenerate(c, *history);
+    } else if (const auto d = test::diff_csv_files(c.gold_file(), *history, tolerances); d.failed) {
+      FAIL_CHECK(c.model << " on " << path << ": " << d.message
+                         << "\n(if the change is intended: data/gold/regenerate.sh, then review "
+                            "the diff)");
     }
-    const auto d = test::diff_csv_files(c.gold_file(), history, tolerances);
-    if (d.failed)
-      FAIL_CHECK(c.model
-                 << " on " << path << ": " << d.message
-                 << "\n(if the change is intended: data/gold/regenerate.sh, then review the diff)");
   }
-  CHECK(checked > 0);
+  CHECK(cases > 0);
 }
 
 }  // namespace
