@@ -1,0 +1,13 @@
+#!/bin/sh
+# Rewrites every gold file data/gold/<model>/<path>.csv from the current build, for when a change
+# of a model's response is intended. The runs are the gold tests' own (tests/gold/), so what is
+# written is exactly what they compare. Review `git diff --stat data/gold` and say in the commit
+# which models moved and why.
+#   data/gold/regenerate.sh [BUILD_DIR]    (default: build)
+set -eu
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=${1:-build}
+cd "$root"
+cmake --build "$build" --target iwb_tests
+IWB_GOLD_REGENERATE=1 "$build/tests/iwb_tests" "[gold-files]"
+git status --short data/gold
