@@ -4,6 +4,7 @@
 // noisy synthetic run made by the model itself.
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <set>
 
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
@@ -210,4 +211,28 @@ TEST_CASE("the joint fit trades tau for u_n: never a worse u_n, never a better t
   CHECK(rms(joint_fit, true) <= rms(tau_fit, true) * (1 + 1e-6));
   CHECK(rms(joint_fit, false) >= rms(tau_fit, false) * (1 - 1e-3));  // BOBYQA's optimum, to its tolerance
   CHECK(rms(joint_fit, true) < 0.9 * rms(tau_fit, true));  // and here the trade is visible
+}
+
+TEST_CASE("iwb compare on a committed reference run judges dilation, predicted and fitted", "[comparison][verdicts][reference]") {
+  comparison::CompareOptions opt;
+  opt.dem_dir = kRunDir / "sawtooth-2-0.5_cnl_s1";
+  opt.seed_dirs = {kRunDir / "sawtooth-2-0.5_cnl_s2", kRunDir / "sawtooth-2-0.5_cnl_s3"};
+  opt.params = "data/params/dem_default_grains.toml";
+  opt.out = fs::path(IWB_TEST_RUNS_DIR) / "comparison" / "reference_verdicts";
+  opt.force = true;
+  const auto r = comparison::run_comparison(opt);
+  for (const char* which : {"predicted_variant", "fitted_variant"}) {
+    const auto& verdicts = r["variants"][r["verdicts"][which].get<std::size_t>()]["verdicts"];
+    std::set<std::string> judged;
+    for (const auto& v : verdicts) {
+      INFO(which << " " << v.dump());
+      judged.insert(v["quantity"].get<std::string>());
+      CHECK(v["dem_seed_sd"].is_number());
+      CHECK(v["relative_error"].is_number());
+      CHECK((v["verdict"] == "holds" || v["verdict"] == "breaks" || v["verdict"] == "within DEM scatter"));
+    }
+    CHECK(judged == std::set<std::string>{"peak_friction", "u_x_at_peak", "residual_friction", "total_dilation", "dilation_rate"});
+  }
+  CHECK(fs::exists(opt.out / "seed_band.csv"));
+  CHECK(r["verdicts"]["summary"]["scan"]["points"] == comparison::kScanPoints * comparison::kScanPoints);
 }
