@@ -244,6 +244,19 @@ def report_cost():
 
 # --- stage 1 ----------------------------------------------------------------------------------
 
+def approach():
+    """Windows until the plate bears on the grains (sigma above approach_sigma), at most
+    approach_windows, apart from the acceptance windows: as the LIGGGHTS template does."""
+    for a in range(1, P["approach_windows"] + 1):
+        run(P["window_steps"])
+        s = plate_force() / P["area"]
+        say("IWB_APPROACH %d sigma_Pa %.8g" % (a, s))
+        if s > P["approach_sigma"]:
+            return
+    report_cost()
+    fail("servo did not converge: the plate did not reach the grains in %d windows" % P["approach_windows"])
+
+
 def consolidate():
     build_scene()
     O.engines = engines()
@@ -252,6 +265,7 @@ def consolidate():
     O.tags["iwb_plate_ref_z"] = repr(REF["plate_z"])
     run(P["settle_steps"])  # settle under gravity with the plate held
     SERVO["on"] = True
+    approach()
     good, zprev = 0, zplate()
     for w in range(1, P["max_windows"] + 1):
         run(P["window_steps"])

@@ -11,7 +11,15 @@ struct Numerics {
   double band_zlo, band_zhi;
   long shear_steps, ts_every, progress_every, profile_every, profile_repeat, vtk_every, relax_steps;
   long settle_steps;
+  // Windows the servo may spend bringing the plate onto the grains (sigma below
+  // kApproachSigmaShare of the target), counted apart from the max_windows of acceptance: the
+  // approach takes a time (the gap over the plate's top speed), and in steps it grows as the
+  // timestep shrinks with stiffer grains (issue 20: E = 1e9 used 55 of 60 windows approaching).
+  long approach_windows;
 };
+
+// The plate has reached the grains once sigma exceeds this share of the target.
+inline constexpr double kApproachSigmaShare = 0.5;
 
 double rayleigh_time(const Particles& p);
 Numerics derive(const Scene& s);

@@ -46,6 +46,9 @@ struct Follower {
       cost.particle_steps += std::stod(w[4]);
     }
     if (w[0] == "IWB_PARTICLES" && w.size() >= 4) particles(std::stol(w[1]), std::stol(w[3]));
+    if (w[0] == "IWB_APPROACH" && w.size() >= 4 && ctx.progress)
+      ctx.progress(fmt::format("consolidating: the plate approaches the grains, window {}, sigma {:.2f} kPa", w[1],
+                               std::stod(w[3]) / 1e3));
     if (w[0] == "IWB_WINDOW" && w.size() >= 10 && ctx.progress)
       ctx.progress(fmt::format("consolidating: window {}, sigma {:.1f} kPa, {} of {} windows accepted",
                                w[1], std::stod(w[3]) / 1e3, w[9], ctx.scene.consolidation.windows_required));

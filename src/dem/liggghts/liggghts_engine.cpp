@@ -123,6 +123,8 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
       {"windows_required", std::to_string(s.consolidation.windows_required)},
       {"max_windows", std::to_string(s.consolidation.max_windows)},
       {"window_steps", std::to_string(s.consolidation.window_steps)},
+      {"approach_windows", std::to_string(n.approach_windows)},
+      {"approach_sigma", g(kApproachSigmaShare * s.boundary.sigma_n_Pa)},
       {"sigma_n0", g(s.boundary.sigma_n_Pa)}, {"sigma_tol", g(s.consolidation.sigma_tolerance)},
       {"plate_tol", g(s.consolidation.plate_tolerance_d50 * n.d50)},
       {"ke_tol", g(s.consolidation.kinetic_energy_J)},

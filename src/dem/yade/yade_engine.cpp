@@ -89,6 +89,7 @@ nlohmann::json yade_parameters(const Scene& s, const Numerics& n) {
       {"rolling", rolling(s)}, {"glued", glued_spheres(s)}, {"wall_stl", "wall.stl"}, {"plate_stl", "top.stl"},
       {"n_particles", s.particle_count}, {"seed", s.seed},
       {"settle_steps", n.settle_steps}, {"window_steps", s.consolidation.window_steps},
+      {"approach_windows", n.approach_windows}, {"approach_sigma", kApproachSigmaShare * s.boundary.sigma_n_Pa},
       {"windows_required", s.consolidation.windows_required}, {"max_windows", s.consolidation.max_windows},
       {"sigma_n0", s.boundary.sigma_n_Pa}, {"sigma_tol", s.consolidation.sigma_tolerance},
       {"plate_tol", s.consolidation.plate_tolerance_d50 * n.d50}, {"ke_tol", s.consolidation.kinetic_energy_J},
