@@ -336,8 +336,10 @@ std::string glance_table(const std::vector<fs::path>& dirs) {
   auto mark = [](const nlohmann::json& verdicts, const std::string& key) {
     for (const auto& v : verdicts)
       if (v["quantity"] == key)
-        return v["verdict"] == "holds" ? std::string("✔") : v["verdict"] == "breaks" ? std::string("✘")
-               : v["verdict"] == "within DEM scatter" ? std::string("≈") : std::string("–");
+        return v["verdict"] == "holds"                ? std::string("<span class=\"holds\">✔</span>")
+               : v["verdict"] == "breaks"             ? std::string("<span class=\"breaks\">✘</span>")
+               : v["verdict"] == "within DEM scatter" ? std::string("<span class=\"scatter\">≈</span>")
+                                                      : std::string("–");
     return std::string("");
   };
   std::string h = "<table><tr><th>run</th><th>boundary</th>";
@@ -380,6 +382,7 @@ std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs:
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>iwb validation report</title>\n"
       "<style>body{{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}}table{{border-collapse:collapse;margin:1em 0}}"
       "td,th{{border:1px solid #bbb;padding:3px 8px;text-align:left;font-size:0.9em}}figure{{margin:1em 0}}"
+      ".holds{{color:#1a7f37;font-weight:bold}}.breaks{{color:#c62828;font-weight:bold}}.scatter{{color:#b26a00;font-weight:bold}}"
       "figure svg{{max-width:100%;height:auto}}pre{{font-size:0.8em;background:#f6f6f6;padding:1em;overflow:auto}}</style>\n"
       "</head><body><h1>iwb validation report</h1>\n<p>Generated {} by iwb {}. Compression positive, u_n &gt; 0 is "
       "dilation, kPa and mm. Figures are also in {} as SVG and PNG, each with its data (CSV) and gnuplot script.</p>\n{}"
