@@ -405,6 +405,7 @@ def shear():
     chunk = 10
     sample_every = max(chunk, (sh["profile_every"] // max(1, min(20, sh["profile_repeat"]))) // chunk * chunk)
     vtk = export.VTKExporter("../vtk/yade")
+    out.timeseries(0.0)  # the state when shear starts (u_x = 0): the relaxation's last step
     done = 0
     while done < sh["steps"]:
         n = min(chunk, sh["steps"] - done)

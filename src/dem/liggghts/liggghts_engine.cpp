@@ -110,6 +110,12 @@ std::string glued_motion(const Shear& sh) {
   return "fix mvg glued move variable v_ux NULL NULL v_vw NULL NULL";
 }
 
+// A row of timeseries.raw (fix print, and the row printed when shear starts) and its title.
+constexpr const char* kTimeseriesRow =
+    "${t} ${ux} ${zplate} ${sigma_wall} ${tau_wall} ${sigma_plate} ${vs} ${vb} ${coord} ${na} ${kin}";
+constexpr const char* kTimeseriesTitle =
+    "t_s ux_m zplate_m sigma_wall_Pa tau_wall_Pa sigma_plate_Pa vsolid_m3 vband_m3 coordination atoms ke_J";
+
 TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidated) {
   const auto& p = s.particles;
   std::string templates;
@@ -154,7 +160,7 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
                       : "# the servo keeps controlling the plate during shear"},
       {"v_wall", g(s.shear.velocity_m_s)},
       {"wall_displacement", wall_displacement(s.shear)}, {"wall_motion", wall_motion(s.shear, n.dt)},
-      {"wall_travel", wall_travel(s.shear)},
+      {"wall_travel", wall_travel(s.shear)}, {"ts_row", kTimeseriesRow}, {"ts_title", kTimeseriesTitle},
       {"ts_every", std::to_string(n.ts_every)},
       {"progress_every", std::to_string(n.progress_every)}, {"u_total", g(s.shear.travel_m())},
       {"profile_repeat", std::to_string(n.profile_repeat)}, {"profile_every", std::to_string(n.profile_every)},
