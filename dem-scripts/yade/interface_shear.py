@@ -218,11 +218,25 @@ def control():
         set_velocity(IDS["wall"], Vector3(wall_velocity(O.time - SERVO["t0"]), 0, 0))
 
 
+def wall_displacement(t):
+    """Monotonic shear: the wall's displacement t after shear starts (Shear::displacement_at), v t
+    after a linear ramp of the speed over ramp_s (0: an instant start)."""
+    v, ramp = P["shear"]["velocity"], P["shear"]["ramp_s"]
+    if t < ramp:
+        return 0.5 * v * t * t / ramp
+    return v * (t - 0.5 * ramp)
+
+
 def wall_velocity(t):
     sh = P["shear"]
     v = sh["velocity"]
     if not sh["cyclic"]:
-        return v
+        if t >= sh["ramp_s"]:
+            return v
+        # set every servo update: the mean speed until the next one puts the wall exactly at
+        # wall_displacement() at every update (rows and snapshots fall on them)
+        span = P["servo"]["every"] * O.dt
+        return (wall_displacement(t + span) - wall_displacement(t)) / span
     phase = v * t / sh["amplitude"]  # the LIGGGHTS runner's triangle wave: 0 -> +A -> -A -> 0
     return v * (1 - 2 * (int(math.floor((phase + 1) / 2)) % 2))
 
@@ -405,6 +419,7 @@ def shear():
     chunk = 10
     sample_every = max(chunk, (sh["profile_every"] // max(1, min(20, sh["profile_repeat"]))) // chunk * chunk)
     vtk = export.VTKExporter("../vtk/yade")
+    out.timeseries(0.0)  # the state when shear starts (u_x = 0): the relaxation's last step
     done = 0
     while done < sh["steps"]:
         n = min(chunk, sh["steps"] - done)
@@ -423,7 +438,7 @@ def shear():
             vtk.exportFacets(ids=[i for i in IDS["wall"] if isinstance(O.bodies[i].shape, Facet)] + IDS["plate"],
                              numLabel=O.iter)
         if step % sh["progress_every"] < chunk:
-            say("IWB_PROGRESS %.9g %.9g" % (sh["velocity"] * t, sh["u_total"]))
+            say("IWB_PROGRESS %.9g %.9g" % (sh["velocity"] * t if sh["cyclic"] else wall_displacement(t), sh["u_total"]))
     ux = O.bodies[IDS["wall"][0]].state.pos[0] - REF["wall_x"]
     report_cost()
     say("IWB_STAGE_DONE shear ux_m %.9g" % ux)

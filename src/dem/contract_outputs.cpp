@@ -71,10 +71,12 @@ io::CsvTable profile_table(const Scene& s, const Numerics& n, const ProfileBlock
   t.columns = {"u_x_mm_window", "z_over_d50", "vx_over_vwall", "porosity", "sigma_zz_kPa", "tau_zx_kPa"};
   for (const auto& [step, bins] : blocks) {
     if (step <= step0) continue;
-    const double u = s.shear.displacement_at(double(step - step0) * n.dt) * 1e3;
+    const double time = double(step - step0) * n.dt;
+    const double u = s.shear.displacement_at(time) * 1e3;
+    const double v_wall = s.shear.speed_at(time);  // below v while the start-up ramp lasts
     for (const auto& b : smoothed(bins, 1.0))
       if (b.count > 0 && b.z_over_d50 >= 0.0)
-        t.rows.push_back({u, b.z_over_d50, b.vx / s.shear.velocity_m_s, 1.0 - b.solid, b.szz / 1e3, b.sxz / 1e3});
+        t.rows.push_back({u, b.z_over_d50, b.vx / v_wall, 1.0 - b.solid, b.szz / 1e3, b.sxz / 1e3});
   }
   return t;
 }

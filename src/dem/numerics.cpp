@@ -36,7 +36,8 @@ Numerics derive(const Scene& s) {
   // The time series' band: the lowest 10 d50, or half the specimen if that is lower.
   n.band_zhi = n.band_zlo + std::min(10.0 * n.d50, 0.5 * s.height_m);
   const double step_u = s.shear.velocity_m_s * n.dt;  // wall displacement per step
-  n.shear_steps = long(std::ceil(s.shear.travel_m() / step_u));
+  // the ramp (if any) adds half its time: the wall covers v T / 2 while ramping for T
+  n.shear_steps = long(std::ceil(s.shear.duration_s() / n.dt));
   n.ts_every = std::max(1L, long(std::lround(s.outputs.timeseries_every_m / step_u)));
   n.progress_every = std::max(1L, n.shear_steps / 50);
   n.profile_every = std::max(long(kProfileEvery),

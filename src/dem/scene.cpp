@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "common/errors.hpp"
+#include "dem/shear_start.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
 
@@ -138,6 +139,29 @@ void check_geometry(Scene& s, const std::string& file) {
                                      file, s.height_m / s.particles.d50_m, kRecommendedHeightInD50));
 }
 
+// [shear] ramp_transits: the wall's speed ramps from 0 over that many round trips 2 H / c_s of a
+// shear wave (c_s: effective-medium estimate at sigma_n); 0 starts at full speed. Cycles start at
+// full speed, so only 0 is accepted with them. A ramp longer than the test is allowed with a warning.
+void read_ramp(io::TableReader& t, Scene& s) {
+  const auto given = t.optional_number("ramp_transits");
+  Shear& sh = s.shear;
+  sh.ramp_transits = given.value_or(sh.cyclic() ? 0.0 : kDefaultRampTransits);
+  require(std::isfinite(sh.ramp_transits) && sh.ramp_transits >= 0.0,
+          range_error(t, "ramp_transits", sh.ramp_transits, "[0, inf) (0: the wall starts at full speed)"));
+  require(!sh.cyclic() || sh.ramp_transits == 0.0,
+          fmt::format("{} = {:g}: cyclic shear starts at full speed; allowed 0 with 'cycles'",
+                      t.where("ramp_transits"), sh.ramp_transits));
+  sh.shear_wave_speed_m_s =
+      effective_medium_shear_wave_speed(s.particles, s.boundary.sigma_n_Pa, s.solid_fraction_estimate);
+  sh.ramp_s = ramp_time_s(sh.ramp_transits, s.height_m, sh.shear_wave_speed_m_s);
+  if (sh.ramp_s > 0.0 && sh.ramp_displacement_m() >= sh.displacement_m)  // allowed, but say so
+    s.warnings.push_back(fmt::format("{} = {:g} ramps the wall over {:.4g} mm, more than displacement_mm = {:g}: "
+                                     "the wall never reaches its speed (below {:.4g} it does)",
+                                     t.where("ramp_transits"), sh.ramp_transits, sh.ramp_displacement_m() / kMm,
+                                     sh.displacement_m / kMm,
+                                     sh.ramp_transits * sh.displacement_m / sh.ramp_displacement_m()));
+}
+
 }  // namespace
 
 double Particles::d_max() const {
@@ -226,9 +250,24 @@ std::string RoughnessProfile::describe() const {
 }
 
 double Shear::displacement_at(double t) const {
-  if (!cyclic()) return velocity_m_s * t;
+  if (!cyclic()) {
+    if (t < ramp_s) return 0.5 * velocity_m_s * t * t / ramp_s;  // v t^2 / (2 T) while ramping
+    return velocity_m_s * (t - 0.5 * ramp_s);
+  }
   const double phase = velocity_m_s * t / amplitude_m;  // in quarter cycles
   return amplitude_m * (std::abs(std::fmod(phase + 3.0, 4.0) - 2.0) - 1.0);
+}
+
+double Shear::speed_at(double t) const {
+  if (cyclic() || t >= ramp_s) return velocity_m_s;
+  return velocity_m_s * t / ramp_s;
+}
+
+double Shear::duration_s() const {
+  const double d = travel_m();
+  if (cyclic()) return d / velocity_m_s;
+  if (d >= ramp_displacement_m()) return d / velocity_m_s + 0.5 * ramp_s;
+  return std::sqrt(2.0 * ramp_s * d / velocity_m_s);  // the whole travel within the ramp
 }
 
 double Scene::stiffness_level() const {
@@ -296,6 +335,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     s.shear.velocity_m_s = sh.positive("inertial_number") * s.height_m / (d50 * sqrt_rho_over_sigma);
   }
   s.shear.inertial_number = s.shear.velocity_m_s / s.height_m * d50 * sqrt_rho_over_sigma;
+  read_ramp(sh, s);
   sh.finish();
 
   s.consolidation.friction = consolidation_friction;
@@ -354,7 +394,11 @@ Scene parse_scene(const std::string& text, const std::string& source) {
                     {"K_kPa_per_mm", s.boundary.K_Pa_per_m * kMm / 1e3}}},
       {"shear", {{"velocity_mm_s", s.shear.velocity_m_s / kMm}, {"displacement_mm", s.shear.displacement_m / kMm},
                  {"amplitude_mm", s.shear.amplitude_m / kMm}, {"cycles", s.shear.cycles},
-                 {"travel_mm", s.shear.travel_m() / kMm}, {"inertial_number", s.shear.inertial_number}}},
+                 {"travel_mm", s.shear.travel_m() / kMm}, {"inertial_number", s.shear.inertial_number},
+                 {"ramp_transits", s.shear.ramp_transits},
+                 {"shear_wave_speed_estimate_m_s", s.shear.shear_wave_speed_m_s},
+                 {"ramp_ms", s.shear.ramp_s * 1e3},
+                 {"ramp_displacement_mm", s.shear.ramp_displacement_m() / kMm}}},
       {"stiffness_level", s.stiffness_level()},
       {"numerics", {{"dt_fraction", s.dt_fraction}}},
       {"seed", s.seed}};

@@ -65,10 +65,21 @@ struct Shear {
   double amplitude_m = 0.0;      // cyclic: 0 -> +A -> -A -> 0, `cycles` times
   int cycles = 0;
 
+  // Monotonic shear starts with a linear ramp of the wall's speed from 0 to v over ramp_s
+  // (src/dem/shear_start.hpp says why); 0 is an instant start, and cycles always start instantly.
+  double ramp_transits = 0.0;         // ramp_s in round trips 2 H / c_s of a shear wave
+  double shear_wave_speed_m_s = 0.0;  // effective-medium estimate c_s at sigma_n
+  double ramp_s = 0.0;
+
   bool cyclic() const { return cycles > 0; }
   double travel_m() const { return cyclic() ? 4.0 * amplitude_m * cycles : displacement_m; }
+  double ramp_displacement_m() const { return 0.5 * velocity_m_s * ramp_s; }
   // The wall's displacement t seconds after shear starts (a triangle wave when cyclic).
   double displacement_at(double t) const;
+  // The wall's speed t seconds after shear starts (v after the ramp; cycles: |v|).
+  double speed_at(double t) const;
+  // Time after which the wall has travelled travel_m().
+  double duration_s() const;
 };
 
 struct Consolidation {

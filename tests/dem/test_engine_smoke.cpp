@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
@@ -24,10 +25,10 @@ struct SmokeRun {
   io::CsvTable ts;
 };
 
-SmokeRun run(const std::string& name, const std::string& engine_name) {
-  const std::string file = "data/scenes/" + name + ".toml";
-  const std::string text = io::read_file(file);
-  SmokeRun r{dem::parse_scene(text, file), fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / name, {}, {}};
+// Runs the scene `text` (read from `file`, perhaps changed) in test-runs/dem/ENGINE/RUN_NAME.
+SmokeRun run_text(const std::string& file, const std::string& text, const std::string& run_name,
+                  const std::string& engine_name) {
+  SmokeRun r{dem::parse_scene(text, file), fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / run_name, {}, {}};
   const auto engine = dem::make_engine(engine_name);
   dem::RunOptions opt{r.dir, 1, false, true, "tests", nullptr, nullptr};
   r.outcome = dem::run_scene(r.scene, text, *engine, opt);
@@ -35,6 +36,11 @@ SmokeRun run(const std::string& name, const std::string& engine_name) {
   REQUIRE(r.outcome.complete());
   r.ts = io::read_csv_table(r.dir / "timeseries.csv");
   return r;
+}
+
+SmokeRun run(const std::string& name, const std::string& engine_name) {
+  const std::string file = "data/scenes/" + name + ".toml";
+  return run_text(file, io::read_file(file), name, engine_name);
 }
 
 std::vector<double> column(const SmokeRun& r, const std::string& name) { return r.ts.values(name); }
@@ -183,6 +189,112 @@ void check_cv(const std::string& engine) {
   CHECK(std::abs(s.back() - s.front()) > 5.0);  // a dilative specimen held at constant volume
 }
 
+// --- the start of shear (issue 14) -------------------------------------------------------------
+// An instant start sends a shear wave through the specimen: tau jumps by about rho c_s v and stays
+// flat until the wave is back from the plate (2 H v / c_s ~ 0.02 mm of travel on the smoke scene),
+// then steps. The smoke scene is sheared 0.3 mm with a row every kStartRowMm, and tau is read at
+// u_x = k kStartRowMm (the nearest row: during the ramp the rows, a fixed number of steps apart,
+// are closer than that in u_x).
+constexpr double kStartRowMm = 0.002;
+// Where a plateau is looked for: past the flat start and the ramp (0.05 mm), but before the
+// tangent stiffness falls so low that three intervals rise by less than kPlateauSpanKPa (they do
+// at ~0.2 mm on this scene).
+constexpr double kStartWindowMm = 0.1;
+constexpr int kPlateauSamples = 4;       // consecutive samples ...
+constexpr double kPlateauSpanKPa = 0.3;  // ... spanning less than this are a plateau (noise ~0.05-0.1 kPa)
+constexpr int kRisingSamples = 5;        // tau at 0, du, ..., 5 du must increase
+constexpr double kStartStepShare = 0.5;  // of rho c_s v: the largest rise over the first du
+
+std::string start_scene(const std::string& ramp_line) {
+  std::string text = io::read_file("data/scenes/smoke.toml");
+  const auto swap = [&text](const std::string& from, const std::string& to) {
+    const auto p = text.find(from);
+    REQUIRE(p != std::string::npos);
+    text.replace(p, from.size(), to);
+  };
+  swap("displacement_mm = 2.0", "displacement_mm = 0.3\n" + ramp_line);
+  swap("timeseries_every_mm = 0.02", "timeseries_every_mm = " + std::to_string(kStartRowMm));
+  return text;
+}
+
+// tau at u_x = 0, du, 2 du, ... up to u_max: the row nearest to each.
+std::vector<double> tau_every(const SmokeRun& r, double du, double u_max) {
+  const auto ux = column(r, "u_x_mm"), tau = column(r, "tau_kPa");
+  std::vector<double> out;
+  for (int k = 0; k * du <= u_max + 1e-12; ++k) {
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < ux.size(); ++i)
+      if (std::abs(ux[i] - k * du) < std::abs(ux[best] - k * du)) best = i;
+    out.push_back(tau[best]);
+  }
+  return out;
+}
+
+struct StartOfShear {
+  double plateau_at_mm = NAN;  // the first u_x where kPlateauSamples samples span < kPlateauSpanKPa
+  int rising = 0;              // how many of the first kRisingSamples intervals rise
+  double first_rise_kPa = 0;   // tau(du) - tau(0)
+  double wave_stress_kPa = 0;  // rho c_s v of the scene's estimate
+};
+
+StartOfShear start_of_shear(const SmokeRun& r) {
+  const auto tau = tau_every(r, kStartRowMm, kStartWindowMm);
+  StartOfShear s;
+  for (std::size_t k = 1; k + kPlateauSamples <= tau.size() && std::isnan(s.plateau_at_mm); ++k) {
+    const auto [lo, hi] = std::minmax_element(tau.begin() + long(k), tau.begin() + long(k + kPlateauSamples));
+    if (*hi - *lo < kPlateauSpanKPa) s.plateau_at_mm = double(k) * kStartRowMm;
+  }
+  for (int k = 1; k <= kRisingSamples; ++k) s.rising += tau[std::size_t(k)] > tau[std::size_t(k - 1)];
+  s.first_rise_kPa = tau[1] - tau[0];
+  const auto& sc = r.scene;
+  s.wave_stress_kPa = sc.solid_fraction_estimate * sc.particles.density_kg_m3 * sc.shear.shear_wave_speed_m_s *
+                      sc.shear.velocity_m_s / 1e3;
+  std::ostringstream samples;
+  for (double x : tau) samples << x << " ";
+  UNSCOPED_INFO("tau every " << kStartRowMm << " mm from u_x = 0: " << samples.str());
+  UNSCOPED_INFO("plateau at " << s.plateau_at_mm << " mm, " << s.rising << " of " << kRisingSamples
+                << " first intervals rise, first rise " << s.first_rise_kPa << " kPa, rho c_s v "
+                << s.wave_stress_kPa << " kPa");
+  return s;
+}
+
+// The first row is the state when shear starts: u_x = 0 at t = 0, the normal stress on target and
+// the shear stress left in the contacts by the consolidation (a few percent of sigma_n).
+void check_rest_row(const SmokeRun& r) {
+  const auto& row = r.ts.rows.front();
+  const double target = r.scene.boundary.sigma_n_Pa / 1e3;
+  CHECK(row[r.ts.column("t_s")] == 0.0);
+  CHECK(row[r.ts.column("u_x_mm")] == 0.0);
+  CHECK(row[r.ts.column("u_n_mm")] == Approx(0.0).margin(1e-9));
+  CHECK(std::abs(row[r.ts.column("sigma_n_kPa")] / target - 1.0) < 0.05);
+  CHECK(std::abs(row[r.ts.column("sigma_plate_kPa")] / target - 1.0) < 0.05);
+  CHECK(std::abs(row[r.ts.column("tau_kPa")]) < 0.1 * target);
+}
+
+void check_ramped_start(const std::string& engine) {
+  const auto r = run_text("data/scenes/smoke.toml", start_scene("# default ramp"), "smoke_start_ramp", engine);
+  REQUIRE(r.scene.shear.ramp_s > 0.0);
+  check_rest_row(r);
+  const auto s = start_of_shear(r);
+  CHECK(std::isnan(s.plateau_at_mm));
+  CHECK(s.rising == kRisingSamples);
+  CHECK(s.first_rise_kPa < kStartStepShare * s.wave_stress_kPa);
+  const auto manifest = nlohmann::json::parse(io::read_file(r.dir / "manifest.json"));
+  CHECK(manifest["numerics"]["wall_ramp"]["time_s"].get<double>() == Approx(r.scene.shear.ramp_s));
+  CHECK(manifest["scene"]["resolved"]["shear"]["ramp_displacement_mm"].get<double>() > 0.0);
+}
+
+// The same criteria see the start-up wave of an instant start: they can fail.
+void check_instant_start(const std::string& engine) {
+  const auto r = run_text("data/scenes/smoke.toml", start_scene("ramp_transits = 0"), "smoke_start_instant", engine);
+  REQUIRE(r.scene.shear.ramp_s == 0.0);
+  check_rest_row(r);
+  const auto s = start_of_shear(r);
+  CHECK(s.plateau_at_mm < 0.5 * kStartWindowMm);
+  CHECK(s.rising < kRisingSamples);
+  CHECK(s.first_rise_kPa > kStartStepShare * s.wave_stress_kPa);
+}
+
 }  // namespace
 
 TEST_CASE("LIGGGHTS smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][liggghts]") { check_cnl("liggghts"); }
@@ -195,3 +307,7 @@ TEST_CASE("YADE smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][yade
 TEST_CASE("YADE smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][yade][heavy]") { check_cyclic("yade"); }
 TEST_CASE("YADE smoke glued: the glued layer carries the wall's load and drags the grains", "[dem][yade][heavy]") { check_glued("yade"); }
 TEST_CASE("YADE smoke CV: the plate does not move and sigma_n is free", "[dem][yade]") { check_cv("yade"); }
+TEST_CASE("LIGGGHTS smoke start of shear: from the rest state, tau rises without a start-up plateau", "[dem][liggghts]") { check_ramped_start("liggghts"); }
+TEST_CASE("LIGGGHTS smoke instant start: tau jumps and stays flat until the shear wave is back", "[dem][liggghts]") { check_instant_start("liggghts"); }
+TEST_CASE("YADE smoke start of shear: from the rest state, tau rises without a start-up plateau", "[dem][yade]") { check_ramped_start("yade"); }
+TEST_CASE("YADE smoke instant start: tau jumps and stays flat until the shear wave is back", "[dem][yade][heavy]") { check_instant_start("yade"); }

@@ -128,3 +128,69 @@ TEST_CASE("requirements name quantities of interest with tolerances or not neede
              Catch::Contains("key 'requirements.dilation_rate' = \"roughly\": a tolerance is a number in (0, 1] "
                              "(0.05 = 5 %) or \"not needed\""));
 }
+
+// The start-up ramp (issue 14, src/dem/shear_start.hpp). Hand computation for the smoke scene
+// (E = 1e8 Pa, nu = 0.25, rho = 2650 kg/m3, sigma_n = 50 kPa, solid fraction 0.58, Z = 6,
+// H = 8 x 2 mm, I = 1e-3):
+//   G = 1e8 / 2.5 = 4.0e7 Pa
+//   [3 x 36 x 0.58^2 x (4e7)^2 x 5e4 / (2 pi^2 x 0.75^2)]^(1/3) = (2.6177e20)^(1/3) = 6.3970e6 Pa
+//   G_eff = (5 - 1) / (5 x 1.75) x 6.3970e6 = 2.9243e6 Pa
+//   c_s = sqrt(2.9243e6 / (0.58 x 2650)) = 43.62 m/s
+//   T = 4 x 2 x 0.016 / 43.62 = 2.934 ms
+//   v = 1e-3 x 0.016 / (0.002 x sqrt(2650 / 5e4)) = 34.75 mm/s; v T / 2 = 0.05099 mm
+TEST_CASE("the start-up ramp of the smoke scene: c_s, T and its displacement by hand", "[dem]") {
+  const auto s = dem::parse_scene(smoke(), "scene.toml");
+  const auto& sh = s.shear;
+  CHECK(sh.ramp_transits == 4.0);  // the default
+  CHECK(sh.shear_wave_speed_m_s == Approx(43.62).epsilon(2e-4));
+  CHECK(sh.ramp_s == Approx(2.934e-3).epsilon(2e-4));
+  CHECK(sh.velocity_m_s == Approx(34.75e-3).epsilon(2e-4));
+  CHECK(sh.ramp_displacement_m() == Approx(0.05099e-3).epsilon(2e-4));
+  CHECK(s.resolved["shear"]["ramp_ms"].get<double>() == Approx(2.934).epsilon(2e-4));
+  CHECK(s.resolved["shear"]["ramp_displacement_mm"].get<double>() == Approx(0.05099).epsilon(2e-4));
+  CHECK(s.resolved["shear"]["shear_wave_speed_estimate_m_s"].get<double>() == Approx(43.62).epsilon(2e-4));
+  // the wall: v t^2 / (2 T) while ramping, then v (t - T / 2); continuous in position and speed
+  const double T = sh.ramp_s, v = sh.velocity_m_s;
+  CHECK(sh.displacement_at(0.0) == 0.0);
+  CHECK(sh.displacement_at(0.5 * T) == Approx(v * T / 8.0));
+  CHECK(sh.displacement_at(T) == Approx(sh.ramp_displacement_m()));
+  CHECK(sh.displacement_at(3.0 * T) == Approx(2.5 * v * T));
+  CHECK(sh.speed_at(0.0) == 0.0);
+  CHECK(sh.speed_at(0.25 * T) == Approx(0.25 * v));
+  CHECK(sh.speed_at(2.0 * T) == v);
+  // the shear stage lasts T / 2 longer, so that the wall still travels the requested 2 mm
+  CHECK(sh.duration_s() == Approx(2e-3 / v + 0.5 * T));
+  CHECK(sh.displacement_at(sh.duration_s()) == Approx(2e-3));
+  const auto n = dem::derive(s);
+  CHECK(double(n.shear_steps) * n.dt >= sh.duration_s());
+  CHECK(double(n.shear_steps - 1) * n.dt < sh.duration_s());
+}
+
+TEST_CASE("ramp_transits: 0 starts at full speed, cycles start at full speed, bad values are refused", "[dem]") {
+  const auto instant = dem::parse_scene(replaced(smoke(), "displacement_mm = 2.0", "displacement_mm = 2.0\nramp_transits = 0"),
+                                        "scene.toml");
+  CHECK(instant.shear.ramp_s == 0.0);
+  CHECK(instant.shear.displacement_at(1e-3) == Approx(instant.shear.velocity_m_s * 1e-3));
+  CHECK(instant.shear.duration_s() == Approx(2e-3 / instant.shear.velocity_m_s));
+  const auto two = dem::parse_scene(replaced(smoke(), "displacement_mm = 2.0", "displacement_mm = 2.0\nramp_transits = 2"),
+                                    "scene.toml");
+  CHECK(two.shear.ramp_s == Approx(0.5 * dem::parse_scene(smoke(), "s.toml").shear.ramp_s));
+  const std::string cyclic = io::read_file("data/scenes/smoke_cyclic.toml");
+  CHECK(dem::parse_scene(cyclic, "c.toml").shear.ramp_s == 0.0);
+  CHECK_THAT(error_of(replaced(cyclic, "cycles = 2", "cycles = 2\nramp_transits = 4")),
+             Catch::Contains("scene.toml: key 'shear.ramp_transits' = 4: cyclic shear starts at full speed"));
+  CHECK_THAT(error_of(replaced(smoke(), "displacement_mm = 2.0", "displacement_mm = 2.0\nramp_transits = -1")),
+             Catch::Contains("scene.toml: key 'shear.ramp_transits' = -1 is out of range; allowed [0, inf)"));
+  CHECK_THAT(error_of(replaced(smoke(), "displacement_mm = 2.0", "displacement_mm = 2.0\nramp_transits = \"four\"")),
+             Catch::Contains("scene.toml: key 'shear.ramp_transits' = \"four\" is not a number"));
+  CHECK_THAT(error_of(replaced(smoke(), "displacement_mm = 2.0", "displacement_mm = 2.0\nramp_transits = nan")),
+             Catch::Contains("key 'shear.ramp_transits' = nan is out of range"));
+  // 200 round trips would ramp over 2.5 mm of a 2 mm test: allowed, with a warning
+  const auto slow = dem::parse_scene(replaced(smoke(), "displacement_mm = 2.0", "displacement_mm = 2.0\nramp_transits = 200"),
+                                     "scene.toml");
+  REQUIRE(slow.warnings.size() == 2);
+  CHECK_THAT(slow.warnings[1], Catch::Contains("scene.toml: key 'shear.ramp_transits' = 200 ramps the wall over 2.549 mm, "
+                                               "more than displacement_mm = 2") && Catch::Contains("below 156.9"));
+  CHECK(slow.shear.duration_s() == Approx(std::sqrt(2.0 * slow.shear.ramp_s * 2e-3 / slow.shear.velocity_m_s)));
+  CHECK(slow.shear.displacement_at(slow.shear.duration_s()) == Approx(2e-3));
+}

@@ -84,8 +84,12 @@ TEST_CASE(
                             std::vector<std::string>{"dtx0.5", "dtx2", "Ix0.5", "Ix2"}.begin()));
   const auto base = dem::parse_scene(v[0].job.scene_text, "b.toml");
   const auto refined = dem::parse_scene(v[1].job.scene_text, "r.toml");
-  CHECK(dem::derive(refined).shear_steps ==
-        Approx(4.0 * dem::derive(base).shear_steps).epsilon(1e-3));
+  // the steps at full speed scale with 1 / (v dt): four times as many; the start-up ramp adds
+  // T / 2, and T follows from the specimen (its shear-wave speed), not from v: twice the steps
+  const auto ramp_steps = [](const dem::Scene& s) { return 0.5 * s.shear.ramp_s / dem::derive(s).dt; };
+  CHECK(double(dem::derive(refined).shear_steps) - ramp_steps(refined) ==
+        Approx(4.0 * (double(dem::derive(base).shear_steps) - ramp_steps(base))).epsilon(1e-3));
+  CHECK(ramp_steps(refined) == Approx(2.0 * ramp_steps(base)));
   CHECK(dem::parse_scene(v[3].job.scene_text, "s3.toml").seed == 3);
   for (const auto& x : v) CHECK(dem::parse_scene(x.job.scene_text, "x.toml").requirements.empty());
   opt.seeds = 1;

@@ -1,5 +1,6 @@
 #include "dem/liggghts/liggghts_engine.hpp"
 #include "dem/numerics.hpp"
+#include "dem/shear_start.hpp"
 #include "dem/liggghts/liggghts_outputs.hpp"
 #include "dem/stage_follower.hpp"
 
@@ -36,19 +37,38 @@ long prime_seed(int scene_seed, int stream) {
 
 std::string g(double x) { return fmt::format("{:.10g}", x); }
 
-// The wall's displacement ux (m) and its motion: monotonic at v, or cycles 0 -> +A -> -A -> 0 as a
-// triangle wave (the same function as Shear::displacement_at).
+// The wall's displacement ux (m) and its motion (the same functions as Shear::displacement_at and
+// speed_at): monotonic at v, after a linear ramp of the speed over T when the scene has one, or
+// cycles 0 -> +A -> -A -> 0 as a triangle wave. LIGGGHTS 3.8's equal-style variables have no
+// min(): the ramp is written with (a<b) factors.
+bool ramped(const Shear& sh) { return !sh.cyclic() && sh.ramp_s > 0.0; }
+
 std::string wall_displacement(const Shear& sh) {
-  if (!sh.cyclic()) return fmt::format("variable ux equal {}*v_t", g(sh.velocity_m_s));
+  const std::string v = g(sh.velocity_m_s), T = g(sh.ramp_s);
+  if (ramped(sh))
+    return fmt::format("variable ux equal {}*((v_t<{})*v_t*v_t/(2*{})+(v_t>={})*(v_t-{}/2))", v, T, T, T, T);
+  if (!sh.cyclic()) return fmt::format("variable ux equal {}*v_t", v);
   return fmt::format("variable phase equal v_t*{}/{}\nvariable ux equal {}*(abs(((v_phase+3)%4)-2)-1)",
-                     g(sh.velocity_m_s), g(sh.amplitude_m), g(sh.amplitude_m));
+                     v, g(sh.amplitude_m), g(sh.amplitude_m));
 }
 
-std::string wall_motion(const Shear& sh) {
-  if (!sh.cyclic()) return fmt::format("fix mv all move/mesh mesh W linear {} 0 0", g(sh.velocity_m_s));
-  return fmt::format("variable vx equal {}*(1-2*(floor((v_phase+1)/2)%2))\nvariable zero equal 0\n"
-                     "fix mv all move/mesh mesh W linear/variable v_vx v_zero v_zero",
-                     g(sh.velocity_m_s));
+// The distance the wall has travelled (progress): its displacement, or v t for cycles.
+std::string wall_travel(const Shear& sh) {
+  return sh.cyclic() ? fmt::format("{}*v_t", g(sh.velocity_m_s)) : "v_ux";
+}
+
+// While ramping, the mesh moves by vw dt per step with t read at the step's end: vw is the speed at
+// mid-step, the step's mean, so that the mesh stays at ux (at the end of the ramp a speed read at
+// the step's end would put it half a step's travel ahead).
+std::string wall_motion(const Shear& sh, double dt) {
+  const std::string v = g(sh.velocity_m_s);
+  if (ramped(sh))
+    return fmt::format("variable vw equal {}*((v_t<{})*(v_t-{})/{}+(v_t>={}))\nvariable zero equal 0\n"
+                       "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero",
+                       v, g(sh.ramp_s), g(0.5 * dt), g(sh.ramp_s), g(sh.ramp_s));
+  if (!sh.cyclic()) return fmt::format("fix mv all move/mesh mesh W linear {} 0 0", v);
+  return fmt::format("variable vw equal {}*(1-2*(floor((v_phase+1)/2)%2))\nvariable zero equal 0\n"
+                     "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero", v);
 }
 
 // Material properties for one grain type, or two when the wall has a glued layer (same material).
@@ -86,9 +106,15 @@ std::string glued_layer(const Scene& s) {
 
 // The glued spheres move with the wall's mesh: the same displacement, by `fix move`.
 std::string glued_motion(const Shear& sh) {
-  if (!sh.cyclic()) return fmt::format("fix mvg glued move linear {} 0 0", g(sh.velocity_m_s));
-  return "fix mvg glued move variable v_ux NULL NULL v_vx NULL NULL";
+  if (!sh.cyclic() && !ramped(sh)) return fmt::format("fix mvg glued move linear {} 0 0", g(sh.velocity_m_s));
+  return "fix mvg glued move variable v_ux NULL NULL v_vw NULL NULL";
 }
+
+// A row of timeseries.raw (fix print, and the row printed when shear starts) and its title.
+constexpr const char* kTimeseriesRow =
+    "${t} ${ux} ${zplate} ${sigma_wall} ${tau_wall} ${sigma_plate} ${vs} ${vb} ${coord} ${na} ${kin}";
+constexpr const char* kTimeseriesTitle =
+    "t_s ux_m zplate_m sigma_wall_Pa tau_wall_Pa sigma_plate_Pa vsolid_m3 vband_m3 coordination atoms ke_J";
 
 TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidated) {
   const auto& p = s.particles;
@@ -135,7 +161,9 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
                       ? "fix_modify P servo/integrate stop  # CV: the plate is held during shear"
                       : "# the servo keeps controlling the plate during shear"},
       {"v_wall", g(s.shear.velocity_m_s)},
-      {"wall_displacement", wall_displacement(s.shear)}, {"wall_motion", wall_motion(s.shear)}, {"ts_every", std::to_string(n.ts_every)},
+      {"wall_displacement", wall_displacement(s.shear)}, {"wall_motion", wall_motion(s.shear, n.dt)},
+      {"wall_travel", wall_travel(s.shear)}, {"ts_row", kTimeseriesRow}, {"ts_title", kTimeseriesTitle},
+      {"ts_every", std::to_string(n.ts_every)},
       {"progress_every", std::to_string(n.progress_every)}, {"u_total", g(s.shear.travel_m())},
       {"profile_repeat", std::to_string(n.profile_repeat)}, {"profile_every", std::to_string(n.profile_every)},
       {"bin_dz", g(s.outputs.profile_bin_d50 * n.d50)}, {"vtk_every", std::to_string(n.vtk_every)},
@@ -188,6 +216,7 @@ nlohmann::json LiggghtsEngine::numerics(const Scene& s) const {
           {"rayleigh_time_s", rayleigh_time(s.particles)},
           {"shear_steps", n.shear_steps},
           {"wall_velocity_mm_s", s.shear.velocity_m_s * 1e3},
+          {"wall_ramp", ramp_numerics(s, n.dt)},
           {"contact_law", "pair gran hertz, tangential history, rolling_friction cdt; walls: wall/gran hertz on STL meshes"},
           {"servo", {{"vel_max_m_s", s.servo.vel_max_m_s}, {"kp", s.servo.kp}, {"kp_shear", s.servo.kp_shear}}}};
 }

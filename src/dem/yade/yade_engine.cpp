@@ -8,6 +8,7 @@
 
 #include "common/subprocess.hpp"
 #include "dem/contract_outputs.hpp"
+#include "dem/shear_start.hpp"
 #include "dem/stage_follower.hpp"
 #include "dem/wall_geometry.hpp"
 #include "io/run_directory.hpp"
@@ -54,6 +55,7 @@ nlohmann::json glued_spheres(const Scene& s) {
 
 nlohmann::json shear_parameters(const Scene& s, const Numerics& n) {
   return {{"velocity", s.shear.velocity_m_s}, {"amplitude", s.shear.amplitude_m}, {"cyclic", s.shear.cyclic()},
+          {"ramp_s", s.shear.cyclic() ? 0.0 : s.shear.ramp_s},
           {"steps", n.shear_steps}, {"ts_every", n.ts_every}, {"progress_every", n.progress_every},
           {"profile_every", n.profile_every}, {"profile_repeat", n.profile_repeat},
           {"vtk_every", n.vtk_every}, {"u_total", s.shear.travel_m()}};
@@ -121,6 +123,7 @@ nlohmann::json YadeEngine::numerics(const Scene& s) const {
           {"rayleigh_time_s", rayleigh_time(s.particles)},
           {"shear_steps", n.shear_steps},
           {"wall_velocity_mm_s", s.shear.velocity_m_s * 1e3},
+          {"wall_ramp", ramp_numerics(s, n.dt)},
           {"contact_law", "Ip2_FrictMat_FrictMat_MindlinPhys (en = es = restitution, krot, eta) + "
                           "Law2_ScGeom_MindlinPhys_Mindlin(includeMoment); walls: facets from the STL"},
           {"rolling", rolling(s)},
