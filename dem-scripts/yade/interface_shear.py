@@ -253,7 +253,7 @@ def run(steps):
 
 
 def report_cost():
-    say("IWB_COST seconds %.6g particle_steps %.6g" % (COST["seconds"], COST["particle_steps"]))
+    say("IWB_COST seconds %.6g particle_steps %.0f" % (COST["seconds"], COST["particle_steps"]))
 
 
 # --- stage 1 ----------------------------------------------------------------------------------

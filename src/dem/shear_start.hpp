@@ -22,12 +22,15 @@ inline constexpr double kEffectiveMediumCoordination = 6.0;
 // ramp covers v T / 2 = 4 H v / c_s of travel, twice the flat start it removes.
 inline constexpr double kDefaultRampTransits = 4.0;
 
-// Shear-wave speed of a packing of Hertz-Mindlin spheres under a pressure p (Pa), by effective-medium
-// theory (Mavko, Mukerji & Dvorkin, The Rock Physics Handbook, 2009, sec. 5.4; Walton 1987 with
-// full tangential adhesion): G_eff = (5 - 4 nu) / (5 (2 - nu)) [3 Z^2 (1 - phi)^2 G^2 p /
-// (2 pi^2 (1 - nu)^2)]^(1/3), c_s = sqrt(G_eff / ((1 - phi) rho)). G = E / (2 (1 + nu)) of the grains,
-// phi the porosity, Z the coordination number. Independent of the grain size.
-double effective_medium_shear_wave_speed(const Particles& p, double pressure_Pa, double solid_fraction,
+// Shear-wave speed of a packing of Hertz-Mindlin spheres under a pressure p (Pa), by
+// effective-medium theory with Mindlin's no-slip contacts (Mavko, Mukerji & Dvorkin, The Rock
+// Physics Handbook, 2009, sec. 5.4, "Hertz-Mindlin"):
+//   G_eff = (5 - 4 nu) / (5 (2 - nu)) [3 Z^2 (1 - phi)^2 G^2 p / (2 pi^2 (1 - nu)^2)]^(1/3)
+//   c_s = sqrt(G_eff / ((1 - phi) rho))
+// with G = E / (2 (1 + nu)) of the grains, phi the porosity, Z the coordination number;
+// independent of the grain size.
+double effective_medium_shear_wave_speed(const Particles& p, double pressure_Pa,
+                                         double solid_fraction,
                                          double coordination = kEffectiveMediumCoordination);
 
 // The ramp time T = transits x 2 H / c_s (s).
