@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Convergence study of the DEM truth (issue 20 item 1; README.md here). Run from the repository
+# root after building. Stages: sweeps | copy (default: both). The sweeps are resumable (run again
+# to continue, e.g. in the next session); `copy` commits the compact part of every complete run.
+#   data/convergence/make.sh            # run (or continue) every axis, then copy
+#   data/convergence/make.sh copy       # only copy what has completed
+set -euo pipefail
+IWB=${IWB:-build/iwb}
+WORK=${WORK:-runs/convergence}  # the full runs (VTK, engine inputs, restarts): not committed
+DEST=data/convergence
+AXES=(stiffness)
+stages=("$@")
+[ ${#stages[@]} -eq 0 ] && stages=(sweeps copy)
+
+# sweep.json, the job scenes, and per complete run its contract files without VTK or engine files.
+copy_axis() {
+  local from=$1 to=$2
+  mkdir -p "$to/scenes" "$to/runs"
+  cp "$from/sweep.json" "$to/"
+  cp "$from"/scenes/*.toml "$to/scenes/"
+  for run in "$from"/runs/*/; do
+    local name; name=$(basename "$run")
+    grep -q '"status": "complete"' "$run/manifest.json" 2>/dev/null || continue
+    mkdir -p "$to/runs/$name"
+    cp "$run"/{manifest.json,summary.json,timeseries.csv,profiles.csv} "$to/runs/$name/"
+  done
+}
+
+for stage in "${stages[@]}"; do
+  case $stage in
+  sweeps) for a in "${AXES[@]}"; do "$IWB" sweep "data/sweeps/convergence_$a.toml" -j 1 --np 2 -o "$WORK/$a"; done ;;
+  copy) for a in "${AXES[@]}"; do copy_axis "$WORK/$a" "$DEST/$a"; done ;;
+  *) echo "make.sh: unknown stage '$stage' (sweeps, copy)" >&2; exit 2 ;;
+  esac
+done
