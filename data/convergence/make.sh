@@ -10,7 +10,7 @@ WORK=${WORK:-runs/convergence}  # the full runs (VTK, engine inputs, restarts): 
 DEST=data/convergence
 AXES=(stiffness)
 stages=("$@")
-[ ${#stages[@]} -eq 0 ] && stages=(sweeps copy)
+[ ${#stages[@]} -eq 0 ] && stages=(sweeps copy table)
 
 # sweep.json, the job scenes, and per complete run its contract files without VTK or engine files.
 copy_axis() {
@@ -30,6 +30,7 @@ for stage in "${stages[@]}"; do
   case $stage in
   sweeps) for a in "${AXES[@]}"; do "$IWB" sweep "data/sweeps/convergence_$a.toml" -j 1 --np 2 -o "$WORK/$a"; done ;;
   copy) for a in "${AXES[@]}"; do copy_axis "$WORK/$a" "$DEST/$a"; done ;;
-  *) echo "make.sh: unknown stage '$stage' (sweeps, copy)" >&2; exit 2 ;;
+  table) for a in "${AXES[@]}"; do /usr/bin/python3 "$DEST/table.py" "$DEST/$a" > "$DEST/$a/table.md"; done ;;
+  *) echo "make.sh: unknown stage '$stage' (sweeps, copy, table)" >&2; exit 2 ;;
   esac
 done

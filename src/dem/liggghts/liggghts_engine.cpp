@@ -71,6 +71,9 @@ std::string wall_motion(const Shear& sh, double dt) {
                      "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero", v);
 }
 
+// The largest Young's modulus LIGGGHTS takes in SI units without `hard_particles yes`.
+constexpr double kLiggghtsSoftLimitPa = 1e9;
+
 // Material properties for one grain type, or two when the wall has a glued layer (same material).
 std::string materials(const Particles& p, double friction, int types) {
   auto repeat = [types](const std::string& v, int n) {
@@ -79,7 +82,10 @@ std::string materials(const Particles& p, double friction, int types) {
     return out;
   };
   const int pairs = types * types;
-  return fmt::format(
+  // LIGGGHTS refuses E > 1e9 Pa in SI units unless told the grains are meant to be that hard
+  // (global_properties.cpp); stiffness levels of ~2000 at 50 kPa need E ~ 4e9 (issue 20).
+  const std::string hard = p.youngs_modulus_Pa > kLiggghtsSoftLimitPa ? "hard_particles yes\n" : "";
+  return hard + fmt::format(
       "fix m1 all property/global youngsModulus peratomtype{}\n"
       "fix m2 all property/global poissonsRatio peratomtype{}\n"
       "fix m3 all property/global coefficientRestitution peratomtypepair {}{}\n"
