@@ -118,6 +118,7 @@ struct Walker {
     current.gamma_y = gamma_y;
     current.eps_n += sol.eps_n;
     current.state = sol.state;
+    model.flush_negligible_components(current.state);
     current.newton_iterations = sol.iterations;
     current.rate_evaluations = sol.counters.rate_evaluations;
     current.rejected_substeps = sol.counters.rejected_substeps;

@@ -45,6 +45,20 @@ inline models::ModelInputs table_5_3_toyoura() {
   return in;
 }
 
+// Seed Table 5.3, homo-gravel (Zhang and Zhang 2006), both column groups
+// (data/params/table_5_3_homo_gravel.toml): h_s = 20 MPa and m_R = 7 make its reversals the
+// stiffest of the seed's sets.
+inline models::ModelInputs table_5_3_homo_gravel() {
+  models::ModelInputs in;
+  in.tables["hypoplastic"] = {{"phi_c_deg", 44.0}, {"hs_kPa", 2.0e7}, {"n", 0.18},
+                              {"ed0", 0.26},       {"ec0", 0.45},     {"ei0", 0.5},
+                              {"alpha", 0.1},      {"beta", 2.0}};
+  in.tables["intergranular_strain"] = {
+      {"R", 1e-4}, {"m_R", 7.0}, {"m_T", 2.0}, {"beta_r", 0.12}, {"chi", 0.75}};
+  in.source = "seed Table 5.3 homo-gravel";
+  return in;
+}
+
 inline bool has_intergranular_strain(const std::string& model) {
   return model.size() > 4 && model.compare(model.size() - 4, 4, "-igs") == 0;
 }

@@ -83,6 +83,12 @@ class HypoplasticModel final : public Model {
     return {};
   }
 
+  // Stress and intergranular strain each against their own largest component; e is a scalar.
+  void flush_negligible_components(StateVector& s) const override {
+    flush_negligible(s.head(Ops::kPackedSize));
+    if (igs_) flush_negligible(s.segment(kDelta, Ops::kPackedSize));
+  }
+
   StateVector error_scale(const StateVector& s) const override {
     const auto t = Ops::template unpack<double>(s, 0);
     StateVector scale = StateVector::Constant(state_size(), std::sqrt(Ops::contract(t, t)));
