@@ -107,6 +107,51 @@ TEST_CASE("verdict rule: holds within the tolerance, breaks beyond it and the DE
   CHECK(find(comparison::judge(dem, seeds, replay_of(model), tol), "dilation_rate").verdict == "breaks");
 }
 
+TEST_CASE(
+    "the DEM's scatter excuses a miss within twice the standard error of the seed mean, not the "
+    "seed SD",
+    "[comparison][verdicts]") {
+  // The model's dilation rate is 15 % above the DEM's 0.05 against a tolerance of 10 %: it misses
+  // by 0.0025. The seed mean of k seeds of SD s is uncertain by s / sqrt(k): the miss is excused
+  // only within 2 s / sqrt(k), which shrinks with more seeds while the seed SD does not.
+  const KnownCurve dem_curve;
+  KnownCurve model = dem_curve;
+  for (auto& u : model.u_n) u *= 1.15;
+  const comparison::Tolerances tol = {{"dilation_rate", 0.10}};
+  auto verdict = [&](double sd, int seeds) {
+    comparison::SeedScatter s;
+    for (int i = 0; i < seeds; ++i) s.runs.push_back(fmt::format("seed {}", i));
+    s.quantity_mean = {{"dilation_rate", 0.05}};
+    s.quantity_sd = {{"dilation_rate", sd}};
+    return find(comparison::judge(dem_of(dem_curve), s, replay_of(model), tol), "dilation_rate")
+        .verdict;
+  };
+  CHECK(verdict(0.002, 3) == "breaks");              // 2 x 0.002 / sqrt(3) = 0.0023 (2 SD: 0.004)
+  CHECK(verdict(0.004, 3) == "within DEM scatter");  // 2 x 0.004 / sqrt(3) = 0.0046
+  CHECK(verdict(0.004, 12) == "breaks");  // 2 x 0.004 / sqrt(12) = 0.0023: a sharper mean
+  CHECK(verdict(0.004, 1) == "breaks");   // one run: no seed scatter to excuse it
+}
+
+TEST_CASE("the dilation rate is the slope of u_n over the last fifth only",
+          "[comparison][verdicts]") {
+  // u_n rises at 0.1 per mm to u_x = 2 mm, then stays (critical state): the last fifth (4..5 mm)
+  // has rate 0 while the whole curve's slope is ~0.03; a curve that slows from 0.1 to 0.02 at
+  // 3 mm has rate 0.02 in its last fifth.
+  KnownCurve stops, slows;
+  for (std::size_t i = 0; i < stops.u_x.size(); ++i) {
+    const double u = stops.u_x[i];
+    stops.u_n[i] = 0.1 * std::min(u, 2.0);
+    slows.u_n[i] = u < 3.0 ? 0.1 * u : 0.3 + 0.02 * (u - 3.0);
+  }
+  auto q = [](const KnownCurve& c, const char* key) {
+    return *comparison::evaluate_quantities({c.u_x, c.tau, c.sigma, c.u_n}, {key}).at(key);
+  };
+  CHECK(q(stops, "dilation_rate") == Approx(0.0).margin(1e-12));
+  CHECK(q(stops, "total_dilation") == Approx(0.2).epsilon(1e-12));
+  CHECK(q(slows, "dilation_rate") == Approx(0.02).epsilon(1e-9));
+  CHECK(q(slows, "total_dilation") == Approx(0.34).epsilon(1e-12));
+}
+
 TEST_CASE("a model that stops early is not reached on the quantities of the end", "[comparison][verdicts]") {
   const KnownCurve c;
   auto r = replay_of(c);

@@ -41,6 +41,28 @@ TEST_CASE("peak, residual and the steadiness verdict", "[dem]") {
   CHECK(dem::to_json(drifting)["residual_is"] == "not steady");
 }
 
+TEST_CASE(
+    "the residual is the last fifth of the travel: a curve that softens and stops dilating at 3.9 "
+    "of 5 mm",
+    "[dem]") {
+  // friction 0.7 and u_n rising at 0.1 per mm until u_x = 3.875 mm, then friction 0.5 and u_n
+  // constant: over the last fifth (4..5 mm) the residual is 0.5, steady, with dilatancy angle 0;
+  // a longer window would take in the 0.7 and the rise.
+  io::CsvTable t;
+  t.columns = {"t_s", "u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa"};
+  for (int i = 0; i <= 100; ++i) {
+    const double u = 0.05 * i, before = u < 3.875;
+    t.rows.push_back({0.01 * i, u, 0.1 * std::min(u, 3.875), 50.0, 50.0 * (before ? 0.7 : 0.5)});
+  }
+  const auto s = dem::summarize(scene(), t, {});
+  CHECK(s.residual_friction == Approx(0.5).epsilon(1e-12));
+  CHECK(s.residual_drift == Approx(0.0).margin(1e-12));
+  CHECK(s.steady);
+  CHECK(s.dilatancy_angle_deg == Approx(0.0).margin(1e-9));
+  CHECK(s.peak_friction == Approx(0.7));
+  CHECK(s.dilation_mm == Approx(0.3875));
+}
+
 TEST_CASE("a localised profile gives its band, a linear one is distributed shear", "[dem]") {
   // erfc profile centred 4 d50 above the wall, width w = 2 d50: 0.9 -> 0.1 spans 3.62 d50
   const auto band = dem::summarize(scene(), series(0.8, 0.6, 0), profile([](double z) { return 0.5 * std::erfc((z - 4.0) / 2.0); }, 20.0));

@@ -1,6 +1,7 @@
 // The element-test driver: boundary conditions hold as stated, long monotonic shear reaches the
 // critical state whatever the initial density, paths (staged, cyclic, y shear) do what they say.
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "common/errors.hpp"
 #include "models/hypoplastic/von_wolffersdorff.hpp"
@@ -8,6 +9,13 @@
 
 using namespace iwb;
 using driver::BoundaryKind;
+
+namespace {
+// |ln((1 + e)/(1 + e0)) - tr eps| allowed. The rate of e is linear in (1 + e), which the
+// integrator follows to round-off (below 1e-14 here); a void-ratio rate 1 % off moves it by
+// 1e-4 on these paths (|eps_n| up to 0.03).
+constexpr double kVoidRatioTolerance = 1e-9;
+}  // namespace
 
 TEST_CASE("CV keeps e constant and eps_n exactly zero", "[driver]") {
   test::ShearSpec s;
@@ -47,6 +55,37 @@ TEST_CASE("CNS satisfies d sigma_n = K d eps_n increment by increment", "[driver
   CHECK(r.result.rows.back().eps_n > 0.0);
 }
 
+TEST_CASE(
+    "the void ratio follows the normal strain: 1 + e = (1 + e0) exp(tr eps), every model, CNL and "
+    "CNS",
+    "[driver]") {
+  // de = (1 + e) tr D (ERRATA item 6), so ln((1 + e)/(1 + e0)) = tr eps at every row, whatever
+  // the model's stress response. In simple shear tr eps = eps_n; AH and AHE put eps_n on the whole
+  // diagonal (eq. 5.17 read literally, src/models/hypoplastic/README.md): tr eps = 3 eps_n. Under
+  // CV eps_n = 0 and e = e0 whatever the rate says: only a path that moves eps_n can see it.
+  for (const auto& spec : models::model_registry()) {
+    const bool eps_n_on_diagonal = spec.name.rfind("ah", 0) == 0;  // ah, ahe, ahe-igs
+    const double trace_per_eps_n = eps_n_on_diagonal ? 3.0 : 1.0;
+    for (const auto& bc : {driver::BoundaryCondition{BoundaryKind::kCNL, 0.0},
+                           driver::BoundaryCondition{BoundaryKind::kCNS, 2000.0}}) {
+      test::ShearSpec s;
+      s.model = spec.name;
+      s.bc = bc;
+      s.e0 = 0.70;  // dense of critical: contracts, then dilates
+      const auto r = test::shear(s);
+      INFO(spec.name << ", " << bc.describe());
+      REQUIRE(r.result.complete());
+      double moved = 0.0;
+      for (const auto& row : r.result.rows) {
+        const double e = r.model->void_ratio(row.state);
+        CHECK(std::log((1.0 + e) / (1.0 + s.e0)) ==
+              Approx(trace_per_eps_n * row.eps_n).margin(kVoidRatioTolerance));
+        moved = std::max(moved, std::abs(row.eps_n));
+      }
+      CHECK(moved > 1e-3);  // the path did move eps_n (0.3 shear strain of a dense sand)
+    }
+  }
+}
 
 TEST_CASE("long CNL shear reaches the critical state whatever the initial density", "[driver][slow]") {
   const double eta_c = models::simple_shear_critical_ratio(test::kPhiC51);
