@@ -49,9 +49,15 @@ std::string utc_timestamp() {
 }
 
 void prepare_run_directory(const fs::path& dir, bool force) {
-  if (fs::exists(dir / "manifest.json") && !force)
-    throw InputError(fmt::format("{}: holds an earlier run (manifest.json); choose another --out "
-                                 "or pass --force to replace it", dir.string()));
+  if (fs::exists(dir / "manifest.json")) {
+    if (!force)
+      throw InputError(fmt::format("{}: holds an earlier run (manifest.json); choose another --out "
+                                   "or pass --force to replace it", dir.string()));
+    // Replaced, not overwritten: files the new run does not write again (a snapshot at a step
+    // it never reaches) would otherwise pass for its own. Only a directory with a manifest, that
+    // is a run of ours, is emptied.
+    for (const auto& entry : fs::directory_iterator(dir)) fs::remove_all(entry.path());
+  }
   fs::create_directories(dir);
 }
 

@@ -15,7 +15,8 @@ std::string sha256_hex(const std::string& bytes);
 std::string utc_timestamp();  // ISO 8601, seconds
 
 // Prepares `dir` for a new run: creates it; refuses (InputError) to overwrite a directory that
-// holds a manifest unless `force`.
+// holds a manifest unless `force`; with `force` such a directory is emptied first, so that no file
+// of the earlier run passes for the new one's.
 void prepare_run_directory(const std::filesystem::path& dir, bool force);
 
 void write_manifest(const std::filesystem::path& dir, const nlohmann::json& manifest);
