@@ -166,7 +166,7 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
       {"seeds", {{"runs", scatter.runs}, {"rows", scatter.rows}, {"tau_rms_sd_kPa", scatter.tau.rms_sd},
                  {"u_n_rms_sd_mm", scatter.u_n.rms_sd}, {"sigma_n_rms_sd_kPa", scatter.sigma_n.rms_sd}}},
       {"tolerances", tol},
-      {"verdicts", {{"predicted_variant", 0}, {"fitted_variant", fitted_index},
+      {"verdicts", {{"predicted_variant", 0}, {"tau_only_variant", fitted_index - 1}, {"fitted_variant", fitted_index},
                     {"summary", headline(variants[0]["verdicts"], variants[fitted_index]["verdicts"], scan)}}},
       {"variants", variants},
       {"fit", fit_json(fit, dem, compare(dem, replays[fitted_index]))},

@@ -54,23 +54,27 @@ std::string dem_on_top_plot(const Figure& f, std::size_t variants, bool band) {
   return plot + fmt::format("{} using 1:2 skip 1 with lines lw 3 lc rgb '#000000' title 'DEM (this run)'", data);
 }
 
-// One figure of `column` (tau, sigma_n or u_n) against u_x: the DEM and every variant.
+// One figure of `column` (tau, sigma_n or u_n) against u_x: the DEM and the variants `shown`
+// (the predicted, the tau-only and the jointly fitted one: every variant's numbers are in the
+// tables, and six curves hide each other and the DEM).
 Figure versus_u_x(const std::string& name, const std::string& what, const std::string& dem_col,
                   const std::string& model_col, const io::CsvTable& curves, const nlohmann::json& variants,
-                  const std::vector<std::pair<double, double>>& band) {
+                  const std::vector<std::size_t>& shown, const std::vector<std::pair<double, double>>& band) {
   Figure f{name, what + " against u_x", "u_x (mm)", what, {}, {"DEM"}, "", ""};
   f.data.columns = {"u_x_mm", "dem"};
-  std::size_t nv = variants.size();
-  for (std::size_t v = 0; v < nv; ++v) {
-    f.data.columns.push_back(fmt::format("variant_{}", v));
-    f.titles.push_back(variants[v]["label"].get<std::string>());
+  const std::size_t nv = shown.size();
+  std::vector<int> column_of(variants.size(), -1);  // variant index -> its series, or -1
+  for (std::size_t k = 0; k < nv; ++k) {
+    column_of[shown[k]] = int(k) + 2;
+    f.data.columns.push_back(fmt::format("variant_{}", shown[k]));
+    f.titles.push_back(variants[shown[k]]["label"].get<std::string>());
   }
   f.data.columns.insert(f.data.columns.end(), {"dem_seed_low", "dem_seed_high"});
   const int vc = curves.column("variant"), xc = curves.column("u_x_mm");
   const int dc = curves.column(dem_col), mc = curves.column(model_col);
   // compare.csv lists each variant's rows in DEM row order: the k-th row of variant v is DEM row k
   std::vector<std::vector<double>> rows;
-  std::vector<std::size_t> next(nv, 0);
+  std::vector<std::size_t> next(variants.size(), 0);
   for (const auto& r : curves.rows) {
     const std::size_t v = std::size_t(r[vc]);
     if (v == 0) {
@@ -79,7 +83,7 @@ Figure versus_u_x(const std::string& name, const std::string& what, const std::s
       rows.back()[1] = r[dc];
       if (rows.size() <= band.size()) std::tie(rows.back()[nv + 2], rows.back()[nv + 3]) = band[rows.size() - 1];
     }
-    if (next[v] < rows.size()) rows[next[v]][v + 2] = r[mc];
+    if (column_of[v] >= 0 && next[v] < rows.size()) rows[next[v]][std::size_t(column_of[v])] = r[mc];
     ++next[v];
   }
   f.data.rows = rows;
@@ -294,11 +298,15 @@ Section comparison_section(const fs::path& dir, std::size_t k, const fs::path& f
   const fs::path fig_dir = files / fmt::format("{}-{}", k, dir.filename().string());
   fs::create_directories(fig_dir);
   const auto& vs = cmp["variants"];
+  std::vector<std::size_t> shown;
+  for (const char* which : {"predicted_variant", "tau_only_variant", "fitted_variant"})
+    if (cmp["verdicts"].contains(which)) shown.push_back(cmp["verdicts"][which].get<std::size_t>());
   std::vector<Figure> figs = {
-      versus_u_x("tau_ux", "tau (kPa)", "tau_dem_kPa", "tau_model_kPa", curves, vs, seed_band(dir, "tau_mean_kPa", "tau_sd_kPa")),
-      versus_u_x("un_ux", "u_n (mm), dilation positive", "u_n_dem_mm", "u_n_model_mm", curves, vs,
+      versus_u_x("tau_ux", "tau (kPa)", "tau_dem_kPa", "tau_model_kPa", curves, vs, shown,
+                 seed_band(dir, "tau_mean_kPa", "tau_sd_kPa")),
+      versus_u_x("un_ux", "u_n (mm), dilation positive", "u_n_dem_mm", "u_n_model_mm", curves, vs, shown,
                  seed_band(dir, "u_n_mean_mm", "u_n_sd_mm")),
-      versus_u_x("sigman_ux", "sigma_n (kPa)", "sigma_n_dem_kPa", "sigma_n_model_kPa", curves, vs,
+      versus_u_x("sigman_ux", "sigma_n (kPa)", "sigma_n_dem_kPa", "sigma_n_model_kPa", curves, vs, shown,
                  seed_band(dir, "sigma_n_mean_kPa", "sigma_n_sd_kPa")),
       velocity_profile(dem_dir, summary)};
   std::vector<std::string> notes(figs.size());

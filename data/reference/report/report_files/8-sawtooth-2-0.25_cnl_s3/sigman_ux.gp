@@ -7,7 +7,7 @@ set ylabel 'sigma_n (kPa)'
 
 set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'
 set output 'sigman_ux.svg'
-plot 'sigman_ux.csv' using 1:7:8 skip 1 with filledcurves fc rgb '#d8d8d8' fs solid 0.6 title 'DEM, mean ± SD over seeds', 'sigman_ux.csv' using 1:3 skip 1 with lines lw 1.5 title 'predicted: kappa_r = 0.899 (eq. 5.35, R_n = 0.25), d_s = 5 d50', 'sigman_ux.csv' using 1:4 skip 1 with lines lw 1.5 title 'kappa_r = 0.899 (eq. 5.35, R_n = 0.25), d_s = 10 d50', 'sigman_ux.csv' using 1:5 skip 1 with lines lw 1.5 title 'fitted to tau alone: kappa_r = 0.914 +- 0.002, d_s = 17.76 +- 0.29 mm (8.9 d50)', 'sigman_ux.csv' using 1:6 skip 1 with lines lw 1.5 title 'fitted to tau and u_n: kappa_r = 0.969 +- 0.005, d_s = 12.33 +- 0.56 mm (6.2 d50)', 'sigman_ux.csv' using 1:2 skip 1 with lines lw 3 lc rgb '#000000' title 'DEM (this run)'
+plot 'sigman_ux.csv' using 1:6:7 skip 1 with filledcurves fc rgb '#d8d8d8' fs solid 0.6 title 'DEM, mean ± SD over seeds', 'sigman_ux.csv' using 1:3 skip 1 with lines lw 1.5 title 'predicted: kappa_r = 0.899 (eq. 5.35, R_n = 0.25), d_s = 5 d50', 'sigman_ux.csv' using 1:4 skip 1 with lines lw 1.5 title 'fitted to tau alone: kappa_r = 0.914 +- 0.002, d_s = 17.76 +- 0.29 mm (8.9 d50)', 'sigman_ux.csv' using 1:5 skip 1 with lines lw 1.5 title 'fitted to tau and u_n: kappa_r = 0.969 +- 0.005, d_s = 12.33 +- 0.56 mm (6.2 d50)', 'sigman_ux.csv' using 1:2 skip 1 with lines lw 3 lc rgb '#000000' title 'DEM (this run)'
 set terminal pngcairo size 900,560 font 'sans,10' noenhanced
 set output 'sigman_ux.png'
 replot
