@@ -8,13 +8,17 @@ set -euo pipefail
 IWB=${IWB:-build/iwb}
 WORK=${WORK:-runs/convergence}  # the full runs (VTK, engine inputs, restarts): not committed
 DEST=data/convergence
-AXES=(stiffness)
+AXES=(stiffness box inertial timestep)
+# The one-knob axes start from this level of the stiffness axis (converged within the seed
+# scatter there): their tables compare each of their levels with its runs.
+BASE_LEVEL=E690000000
 stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(sweeps copy table)
 
 # sweep.json, the job scenes, and per complete run its contract files without VTK or engine files.
 copy_axis() {
   local from=$1 to=$2
+  [ -f "$from/sweep.json" ] || return 0  # an axis not started yet
   mkdir -p "$to/scenes" "$to/runs"
   cp "$from/sweep.json" "$to/"
   cp "$from"/scenes/*.toml "$to/scenes/"
@@ -30,7 +34,11 @@ for stage in "${stages[@]}"; do
   case $stage in
   sweeps) for a in "${AXES[@]}"; do "$IWB" sweep "data/sweeps/convergence_$a.toml" -j 1 --np 2 -o "$WORK/$a"; done ;;
   copy) for a in "${AXES[@]}"; do copy_axis "$WORK/$a" "$DEST/$a"; done ;;
-  table) for a in "${AXES[@]}"; do /usr/bin/python3 "$DEST/table.py" "$DEST/$a" > "$DEST/$a/table.md"; done ;;
+  table) for a in "${AXES[@]}"; do
+           [ -d "$DEST/$a/runs" ] || continue
+           base=(); [ "$a" = stiffness ] || base=("$DEST/stiffness" "$BASE_LEVEL")
+           /usr/bin/python3 "$DEST/table.py" "$DEST/$a" "${base[@]}" > "$DEST/$a/table.md"
+         done ;;
   *) echo "make.sh: unknown stage '$stage' (sweeps, copy, table)" >&2; exit 2 ;;
   esac
 done

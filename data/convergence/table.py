@@ -1,8 +1,12 @@
 """Per level of one axis and wall: each quantity of interest as mean +- SD over the seeds (from each
-run's summary.json), and its change from the next finer level in percent and in units of the
-pooled standard error of the difference, sqrt(SD_a^2/n_a + SD_b^2/n_b). A level is converged in a
-quantity when the change to the next finer level is within 2 % or within 2 standard errors.
-Usage: table.py AXIS_DIR  (as data/convergence/make.sh table calls it)."""
+run's summary.json), and its change to another level in percent and in units of the pooled
+standard error of the difference, sqrt(SD_a^2/n_a + SD_b^2/n_b). A level is converged in a
+quantity when that change is within 2 % or within 2 standard errors (a ✔).
+Usage (as data/convergence/make.sh table calls it):
+  table.py AXIS_DIR                       a chain of levels (stiffness): each against the next finer
+  table.py AXIS_DIR BASE_AXIS_DIR LEVEL   one knob from the base (box, inertial, timestep): the runs
+                                          of LEVEL in BASE_AXIS_DIR are the base, each level of
+                                          AXIS_DIR is compared with it"""
 import glob
 import json
 import math
@@ -16,43 +20,63 @@ QOIS = [("peak_friction", "peak friction"), ("residual_friction", "residual fric
 
 
 def level_and_wall(name):
-    """Job names read <level>_<wall>_s<seed>: E100000000_sawtooth-2-0.5_s1."""
+    """Job names read <level...>_<wall>_s<seed>: E100000000_sawtooth-2-0.5_s1, E690000000_I0.0003_flat_s2."""
     parts = name.split("_")
-    return parts[0], "_".join(parts[1:-1])
+    return "_".join(parts[:-2]), parts[-2]
 
 
 def number(level):
-    digits = "".join(c for c in level if c.isdigit() or c in ".e-")
+    digits = "".join(c for c in level.split("_")[0] if c.isdigit() or c in ".e-")
     return float(digits)
 
 
-groups = {}
-for f in sorted(glob.glob(os.path.join(sys.argv[1], "runs", "*", "summary.json"))):
-    name = os.path.basename(os.path.dirname(f))
-    groups.setdefault(level_and_wall(name), []).append(json.load(open(f)))
+def read_groups(axis_dir):
+    groups = {}
+    for f in sorted(glob.glob(os.path.join(axis_dir, "runs", "*", "summary.json"))):
+        name = os.path.basename(os.path.dirname(f))
+        groups.setdefault(level_and_wall(name), []).append(json.load(open(f)))
+    return groups
+
+
+def values(runs, key):
+    return [r[key] for r in runs if isinstance(r.get(key), (int, float))]
+
+
+def cell(xs, ys, direction):
+    """mean +- SD of xs; with ys, the change from xs to ys (direction names it)."""
+    if not xs:
+        return "-"
+    m, sd = statistics.mean(xs), statistics.stdev(xs) if len(xs) > 1 else float("nan")
+    text = f"{m:.3g} ± {sd:.2g}"
+    if len(xs) > 1 and len(ys) > 1:
+        mo, sdo = statistics.mean(ys), statistics.stdev(ys)
+        se = math.sqrt(sd ** 2 / len(xs) + sdo ** 2 / len(ys))
+        change, rel = (m - mo, (m - mo) / abs(mo)) if direction == "from base" else (mo - m, (mo - m) / abs(m))
+        ok = abs(rel) <= 0.02 or abs(change) <= 2 * se
+        text += f"; {direction} {100 * rel:+.0f} % ({change / se if se else float('nan'):+.1f} SE){' ✔' if ok else ''}"
+    return text
+
+
+def row(wall, level, runs, other, direction):
+    cells = [cell(values(runs, k), values(other, k) if other else [], direction) for k, _ in QOIS]
+    return f"| {wall} | {level} | {len(runs)} | " + " | ".join(cells) + " |"
+
+
+groups = read_groups(sys.argv[1])
+base = None
+if len(sys.argv) == 4:
+    base_level = sys.argv[3]
+    base = {w: runs for (l, w), runs in read_groups(sys.argv[2]).items() if l == base_level}
 
 print("| wall | level | runs | " + " | ".join(label for _, label in QOIS) + " |")
 print("|---|---|---|" + "---|" * len(QOIS))
-walls = sorted({w for _, w in groups})
-for wall in walls:
+for wall in sorted({w for _, w in groups}):
     levels = sorted((l for l, w in groups if w == wall), key=number)
+    if base is not None:
+        print(row(wall, f"base ({sys.argv[3]})", base.get(wall, []), None, ""))
+        for level in levels:
+            print(row(wall, level, groups[(level, wall)], base.get(wall, []), "from base"))
+        continue
     for i, level in enumerate(levels):
-        runs = groups[(level, wall)]
-        cells = []
-        for key, _ in QOIS:
-            xs = [r[key] for r in runs if isinstance(r.get(key), (int, float))]
-            if not xs:
-                cells.append("-")
-                continue
-            m, sd = statistics.mean(xs), statistics.stdev(xs) if len(xs) > 1 else float("nan")
-            cell = f"{m:.3g} ± {sd:.2g}"
-            finer = groups.get((levels[i + 1], wall)) if i + 1 < len(levels) else None
-            ys = [r[key] for r in finer if isinstance(r.get(key), (int, float))] if finer else []
-            if len(xs) > 1 and len(ys) > 1:
-                mf, sdf = statistics.mean(ys), statistics.stdev(ys)
-                se = math.sqrt(sd ** 2 / len(xs) + sdf ** 2 / len(ys))
-                rel = (mf - m) / abs(m) if m else float("nan")
-                ok = abs(rel) <= 0.02 or abs(mf - m) <= 2 * se
-                cell += f"; to finer {100 * rel:+.0f} % ({(mf - m) / se if se else float('nan'):+.1f} SE){' ✔' if ok else ''}"
-            cells.append(cell)
-        print(f"| {wall} | {level} | {len(runs)} | " + " | ".join(cells) + " |")
+        finer = groups.get((levels[i + 1], wall)) if i + 1 < len(levels) else None
+        print(row(wall, level, groups[(level, wall)], finer, "to finer"))
