@@ -48,10 +48,14 @@ double from_fit(const BoxEntry& b, double x) {
 constexpr double kFitRelativeTolerance = 1e-6;
 // The joint fit starts near the staged estimate: a trust region of 2 % of the box.
 constexpr double kJointInitialStepShare = 0.02;
+// BOBYQA's share of a refit with a factor moved: it starts at the estimate, Levenberg-Marquardt
+// does the rest.
+constexpr int kFactorRefitEvaluations = 20;
 
-void set_limits_from_ec0(models::ParameterValues& v) {
-  v["ei0"] = kEi0OverEc0 * v["ec0"];
-  v["ed0"] = kEd0OverEc0 * v["ec0"];
+void set_limits_from_ec0(models::ParameterValues& v, double ei0_over_ec0 = kEi0OverEc0,
+                         double ed0_over_ec0 = kEd0OverEc0) {
+  v["ei0"] = ei0_over_ec0 * v["ec0"];
+  v["ed0"] = ed0_over_ec0 * v["ec0"];
 }
 
 using Keys = std::vector<std::string>;
@@ -63,8 +67,10 @@ struct Calibrator {
   models::ParameterValues current;
   int evaluations = 0;
   std::vector<std::string> notes;
-  // Set once e_d0 and e_i0 are found unidentifiable: every trial then takes them from its e_c0.
+  // Set once e_d0 and e_i0 are found unidentifiable: every trial then takes them from its e_c0
+  // by these factors (varied by factor_uncertainty to give the systematic sigma).
   bool limits_follow_ec0 = false;
+  double ei0_over_ec0 = kEi0OverEc0, ed0_over_ec0 = kEd0OverEc0;
 
   models::ModelInputs inputs(const models::ParameterValues& v) const {
     models::ModelInputs in;
@@ -105,7 +111,7 @@ struct Calibrator {
     models::ParameterValues v = current;
     for (std::size_t k = 0; k < keys.size(); ++k)
       v[keys[k]] = from_fit(box(keys[k]), x(Eigen::Index(k)));
-    if (limits_follow_ec0) set_limits_from_ec0(v);
+    if (limits_follow_ec0) set_limits_from_ec0(v, ei0_over_ec0, ed0_over_ec0);
     return v;
   }
 
@@ -242,6 +248,28 @@ models::ParameterValues starting_values(const std::vector<SoilTest>& tests) {
   return v;
 }
 
+// The systematic sigma of each fitted parameter when e_d0 and e_i0 follow e_c0 by the factors:
+// refit with each factor moved by its one-sigma spread (from the estimate, so only a few
+// Levenberg-Marquardt iterations) and take the shifts, added in quadrature over both factors.
+// Linear in the spread: the factors' sigmas are a few percent of their values.
+Eigen::VectorXd factor_uncertainty(Calibrator& c, const Keys& keys, const CalibrationOptions& o) {
+  const models::ParameterValues estimate = c.current;
+  Eigen::VectorXd variance = Eigen::VectorXd::Zero(Eigen::Index(keys.size()));
+  for (double Calibrator::*factor : {&Calibrator::ei0_over_ec0, &Calibrator::ed0_over_ec0}) {
+    const double spread = factor == &Calibrator::ei0_over_ec0 ? kEi0OverEc0Sigma : kEd0OverEc0Sigma;
+    c.*factor += spread;
+    c.fit(keys, c.all(), kFactorRefitEvaluations, kJointInitialStepShare, o.polish_iterations);
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      const auto& b = box(keys[k]);
+      const double shift = to_fit(b, c.current.at(keys[k])) - to_fit(b, estimate.at(keys[k]));
+      variance(Eigen::Index(k)) += shift * shift;
+    }
+    c.*factor -= spread;
+    c.current = estimate;
+  }
+  return variance.cwiseSqrt();
+}
+
 // Judged at the scatter the residual scales declare (s^2 >= 1): a noise-free synthetic target
 // has s^2 ~ 0 and would otherwise call every direction with J != 0 identified.
 double identifiability_sigma(const fitting::LeastSquaresResult& r, Eigen::Index k) {
@@ -294,6 +322,9 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
     joint =
         c.fit(keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
   }
+  const Eigen::VectorXd systematic = by_factor.empty()
+                                         ? Eigen::VectorXd::Zero(Eigen::Index(keys.size()))
+                                         : factor_uncertainty(c, keys, o);
   c.notes.push_back(
       fmt::format("E: joint fit of {} parameters on {} tests: RMS residual {:.3g} scatter "
                   "units, {} ({} evaluations in all)",
@@ -301,11 +332,15 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
 
   CalibrationResult out;
   out.model = o.model;
+  out.converged = joint.converged;
+  if (!joint.converged)
+    c.notes.push_back("E: the joint fit did NOT converge (it stopped at its limit): the estimates "
+                      "and their sigmas are not to be trusted");
   const double m = double(joint.residuals.size()), p = double(keys.size());
   out.s2 = joint.residuals.squaredNorm() / std::max(m - p, 1.0);
   for (const auto& b : kBox) {
     const double none = std::numeric_limits<double>::infinity();
-    ParameterEstimate e{b.key, c.current.at(b.key), none, none, false, "", b.lower, b.upper};
+    ParameterEstimate e{b.key, c.current.at(b.key), none, none, 0.0, none, false, "", b.lower, b.upper};
     const auto it = std::find(keys.begin(), keys.end(), b.key);
     if (it == keys.end()) {
       e.how = fmt::format(
@@ -315,11 +350,16 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
       const auto k = Eigen::Index(it - keys.begin());
       e.identified = !unidentified(joint, b, k);
       // ln h_s: sigma(h_s) = h_s sigma(ln h_s) to first order
-      e.sigma = b.logarithmic ? e.value * joint.sigma(k) : joint.sigma(k);
+      const double scale = b.logarithmic ? e.value : 1.0;
+      e.sigma_statistical = scale * joint.sigma(k);
+      e.sigma_systematic = scale * systematic(k);
+      e.sigma = std::hypot(e.sigma_statistical, e.sigma_systematic);
       e.sigma_at_scatter = b.logarithmic ? e.value * identifiability_sigma(joint, k)
                                          : identifiability_sigma(joint, k);
       e.how = e.identified
-                  ? "joint fit (Gauss-Newton sigma)"
+                  ? (e.sigma_systematic > 0.0
+                         ? "joint fit (Gauss-Newton sigma with the e_d0, e_i0 factors' share)"
+                         : "joint fit (Gauss-Newton sigma)")
                   : fmt::format(
                         "NOT IDENTIFIED: at the declared scatter its sigma would be {:.3g}, "
                         "beyond {} of its box [{:g}, {:g}]",

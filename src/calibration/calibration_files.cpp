@@ -48,6 +48,7 @@ nlohmann::json calibration_json(const CalibrationResult& r, const std::vector<So
   j["finished"] = io::utc_timestamp();
   j["wall_seconds"] = r.seconds;
   j["evaluations"] = r.evaluations;
+  j["converged"] = r.converged;
   j["s2_scatter_units"] = r.s2;
   j["residual_scales"] = {{"stress_over_sigma0", kStressRatioScale},
                           {"void_ratio", kVoidRatioScale}};
@@ -55,6 +56,8 @@ nlohmann::json calibration_json(const CalibrationResult& r, const std::vector<So
     j["parameters"].push_back({{"key", p.key},
                                {"value", p.value},
                                {"sigma", finite_or_null(p.sigma)},
+                               {"sigma_statistical", finite_or_null(p.sigma_statistical)},
+                               {"sigma_systematic", finite_or_null(p.sigma_systematic)},
                                {"sigma_at_declared_scatter", finite_or_null(p.sigma_at_scatter)},
                                {"identified", p.identified},
                                {"how", p.how},

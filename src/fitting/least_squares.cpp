@@ -56,15 +56,25 @@ Eigen::MatrixXd central_jacobian(const LeastSquaresProblem& problem, const Eigen
   return J;
 }
 
-// Levenberg-Marquardt with Marquardt's diagonal scaling, steps clamped into the box. Stops when
-// a Jacobian no longer buys a relative decrease of kPolishDecrease in ||r||^2.
-void polish(const LeastSquaresProblem& problem, int iterations, Eigen::VectorXd& x,
-            int& evaluations) {
+// Levenberg-Marquardt with Marquardt's diagonal scaling, steps clamped into the box. Converged
+// when a Jacobian no longer buys a relative decrease of kPolishDecrease in ||r||^2 (or ||r||
+// reached zero); a stop at the iteration limit is reported as not converged, because a noise-free
+// calibration stopped there sits many of its own sigmas from the truth (issue 20 item 3).
+struct PolishOutcome {
+  int iterations = 0;
+  bool converged = false;
+  std::string reason;
+};
+
+PolishOutcome polish(const LeastSquaresProblem& problem, int iterations, Eigen::VectorXd& x,
+                     int& evaluations) {
   constexpr double kPolishDecrease = 1e-10;
   Eigen::VectorXd r = problem.residuals(x);
   ++evaluations;
   double lambda = 1e-3;
-  for (int it = 0; it < iterations; ++it) {
+  PolishOutcome out;
+  for (; out.iterations < iterations; ++out.iterations) {
+    if (r.squaredNorm() == 0.0) return {out.iterations, true, "residuals zero"};
     const Eigen::MatrixXd J = central_jacobian(problem, x, r.size(), evaluations);
     const Eigen::MatrixXd jtj = J.transpose() * J;
     const Eigen::VectorXd g = J.transpose() * r;
@@ -82,11 +92,14 @@ void polish(const LeastSquaresProblem& problem, int iterations, Eigen::VectorXd&
         r = rt;
         improved = true;
         lambda = std::max(lambda / 100.0, 1e-9);
-        if (decrease < kPolishDecrease) return;
+        if (decrease < kPolishDecrease)
+          return {out.iterations + 1, true, "relative decrease below 1e-10"};
       }
     }
-    if (!improved) return;
+    if (!improved) return {out.iterations + 1, true, "no step decreases the residual"};
   }
+  out.reason = "iteration limit";
+  return out;
 }
 
 }  // namespace
@@ -158,9 +171,13 @@ LeastSquaresResult fit_least_squares(const LeastSquaresProblem& problem,
   }
   out.x = Eigen::Map<const Eigen::VectorXd>(x.data(), Eigen::Index(n));
   out.evaluations = counted.evaluations;
+  out.converged = out.stop_reason != "evaluation limit";
   if (settings.polish_iterations > 0) {
-    polish(problem, settings.polish_iterations, out.x, out.evaluations);
-    out.stop_reason += ", then Levenberg-Marquardt";
+    const auto lm = polish(problem, settings.polish_iterations, out.x, out.evaluations);
+    out.converged = lm.converged;
+    out.stop_reason += fmt::format(", then Levenberg-Marquardt: {} after {} iteration(s)",
+                                   lm.converged ? "converged, " + lm.reason : "NOT CONVERGED, " + lm.reason,
+                                   lm.iterations);
   }
   gauss_newton_covariance(problem, out);
   return out;

@@ -34,7 +34,9 @@ struct LeastSquaresSettings {
   // BOBYQA's first trust-region radius as a share of each box width; 0 = NLopt's default (a
   // large share, right for a start far from the optimum, wasteful near it).
   double initial_step_share = 0.0;
-  int polish_iterations = 0;  // Levenberg-Marquardt iterations after BOBYQA (each 2p+1 evaluations)
+  // Most Levenberg-Marquardt iterations after BOBYQA (each 2p+1 evaluations or more); they stop
+  // earlier when converged.
+  int polish_iterations = 0;
 };
 
 // Relative eigenvalue of J^T J below which a direction counts as unidentifiable (the data do not
@@ -54,6 +56,10 @@ struct LeastSquaresResult {
   double rmse = 0.0;      // sqrt(||r||^2 / m)
   int evaluations = 0;
   std::string stop_reason;
+  // False when the last stage stopped at its limit (BOBYQA's evaluations, or Levenberg-Marquardt's
+  // iterations) rather than on its convergence test: the estimate and its sigma are then not
+  // to be trusted.
+  bool converged = false;
 };
 
 // Minimises from `start` (clamped into the bounds) and returns the optimum with its covariance.

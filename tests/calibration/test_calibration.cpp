@@ -16,21 +16,23 @@ using driver::BoundaryKind;
 namespace {
 
 calibration::SoilTest target(SoilTestKind kind, BoundaryKind bc, double e0,
-                             const std::string& name) {
+                             const std::string& name,
+                             const models::ModelInputs& truth = test::table_5_2_hostun(),
+                             double sigma_max_kPa = 5000.0) {
   calibration::SyntheticSpec s;
   s.kind = kind;
   s.boundary = bc;
   s.e0 = e0;
   if (kind == SoilTestKind::kOedometer) {
     s.sigma0_kPa = 10.0;
-    s.sigma_max_kPa = 5000.0;
+    s.sigma_max_kPa = sigma_max_kPa;
     s.sigma_end_kPa = 100.0;
     s.rows = 30;
   } else {
     s.gamma_max = 2.0;
     s.rows = 40;
   }
-  auto t = calibration::synthesise(s, test::table_5_2_hostun());
+  auto t = calibration::synthesise(s, truth);
   t.name = name;
   return t;
 }
@@ -79,6 +81,7 @@ TEST_CASE("calibration recovers the Hostun parameters from synthetic vw3d soil t
   // CPU, not wall time: about 11 s here, while the wall time on this shared 2-core machine ranged
   // from 21 s to 58 s with DEM runs and builds beside it.
   CHECK(cpu_seconds < 30.0);
+  CHECK(r.converged);
   for (const auto& p : r.parameters) {
     INFO(p.key << " = " << p.value << " +- " << p.sigma << ", true " << truth.at(p.key));
     CHECK(p.identified);
@@ -95,6 +98,32 @@ TEST_CASE("calibration recovers the Hostun parameters from synthetic vw3d soil t
     CHECK(t.rows_reached == t.rows);
     for (const auto& c : t.rmse)
       CHECK(c.rmse < (c.column == "e" ? 1e-4 : 0.05));  // kPa for stresses
+  }
+}
+
+// Issue 20 item 3's design on Table 5.2 Toyoura: a dense and a loose oedometer (10 -> 2000 ->
+// 100 kPa) and one medium-dense CNL and CV simple shear. With 30 Levenberg-Marquardt iterations the
+// joint fit stopped uncoverged at RMS 0.37 scatter units, h_s 2.40e6 (true 2.6e6), n 0.284
+// (0.27), e_d0 0.521 (0.61), alpha 0.322 (0.25): 5-11 of its own sigmas off. Run to convergence
+// (155 iterations), every parameter is found again.
+TEST_CASE("calibration recovers the Toyoura parameters from two oedometers, CNL and CV",
+          "[calibration]") {
+  constexpr double kRecoveryTolerance = 1e-4;
+  const auto toyoura = test::table_5_2_toyoura();
+  const std::vector<calibration::SoilTest> tests = {
+      target(SoilTestKind::kOedometer, BoundaryKind::kCNL, 0.70, "dense oedometer", toyoura, 2000),
+      target(SoilTestKind::kOedometer, BoundaryKind::kCNL, 0.95, "loose oedometer", toyoura, 2000),
+      target(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.75, "CNL", toyoura),
+      target(SoilTestKind::kSimpleShear, BoundaryKind::kCV, 0.75, "CV", toyoura)};
+  const auto r = calibration::calibrate(tests);
+  const auto truth = toyoura.tables.at("hypoplastic");
+  explain(r, truth);
+  CHECK(r.converged);
+  for (const auto& p : r.parameters) {
+    INFO(p.key << " = " << p.value << " +- " << p.sigma << ", true " << truth.at(p.key));
+    CHECK(p.identified);
+    CHECK(std::abs(p.value - truth.at(p.key)) <=
+          std::max(3.0 * p.sigma, kRecoveryTolerance * truth.at(p.key)));
   }
 }
 
@@ -118,5 +147,14 @@ TEST_CASE("calibration flags what loose-only tests cannot identify", "[calibrati
   CHECK(estimate(r, "ei0").value == Approx(calibration::kEi0OverEc0 * estimate(r, "ec0").value));
   for (const std::string key : {"phi_c_deg", "ec0", "alpha"}) CHECK(estimate(r, key).identified);
   CHECK(estimate(r, "phi_c_deg").value == Approx(31.0).margin(0.05));
-  CHECK(estimate(r, "ec0").value == Approx(0.96).margin(0.01));  // traded against h_s, n
+  CHECK(estimate(r, "ec0").value == Approx(0.96).margin(0.015));  // traded against h_s, n
+  // The factors stand in for e_d0 and e_i0 (true 0.635 and 1.135 e_c0 for Hostun, taken as 0.6
+  // and 1.2): e_c0 is biased by them (0.949 against 0.96), far beyond its statistical sigma
+  // (3.6e-4); its sigma carries the factors' share and covers the miss.
+  const auto& ec0 = estimate(r, "ec0");
+  INFO("e_c0 " << ec0.value << " +- " << ec0.sigma << " (statistical " << ec0.sigma_statistical
+               << ", systematic " << ec0.sigma_systematic << ")");
+  CHECK(std::abs(ec0.value - 0.96) > 3.0 * ec0.sigma_statistical);
+  CHECK(std::abs(ec0.value - 0.96) <= 3.0 * ec0.sigma);
+  CHECK(std::abs(estimate(r, "alpha").value - 0.13) <= 3.0 * estimate(r, "alpha").sigma);
 }

@@ -29,6 +29,16 @@ inline models::ModelInputs table_5_2_hostun() {
   return in;
 }
 
+// data/params/table_5_2_toyoura.toml (Table 5.2 differs from 5.3 in alpha: 0.25, not 0.18).
+inline models::ModelInputs table_5_2_toyoura() {
+  models::ModelInputs in;
+  in.tables["hypoplastic"] = {{"phi_c_deg", 30.0}, {"hs_kPa", 2.6e6}, {"n", 0.27},
+                              {"ed0", 0.61},       {"ec0", 0.98},     {"ei0", 1.1},
+                              {"alpha", 0.25},     {"beta", 1.0}};
+  in.source = "seed Table 5.2 Toyoura";
+  return in;
+}
+
 // Table 5.3's intergranular-strain columns for Toyoura sand (Arnold 2008).
 inline models::ParameterValues table_5_3_toyoura_igs() {
   return {{"R", 1e-4}, {"m_R", 5.0}, {"m_T", 2.0}, {"beta_r", 0.12}, {"chi", 1.0}};
