@@ -219,26 +219,30 @@ def control():
 
 
 def wall_displacement(t):
-    """Monotonic shear: the wall's displacement t after shear starts (Shear::displacement_at), v t
-    after a linear ramp of the speed over ramp_s (0: an instant start)."""
-    v, ramp = P["shear"]["velocity"], P["shear"]["ramp_s"]
+    """The wall's displacement t after shear starts (Shear::displacement_at): monotonic, v t after
+    a linear ramp of the speed over ramp_s (0: an instant start); cyclic, the triangle wave
+    0 -> +A -> -A -> 0 of the LIGGGHTS runner."""
+    sh = P["shear"]
+    v, ramp = sh["velocity"], sh["ramp_s"]
+    if sh["cyclic"]:
+        a = sh["amplitude"]
+        phase = v * t / a  # in quarter cycles
+        return a * (abs(math.fmod(phase + 3.0, 4.0) - 2.0) - 1.0)
     if t < ramp:
         return 0.5 * v * t * t / ramp
     return v * (t - 0.5 * ramp)
 
 
 def wall_velocity(t):
+    """Set at every servo update: the mean speed until the next update, so the wall is exactly at
+    wall_displacement() at every update (rows and snapshots fall on them), through the ramp and
+    across the reversals of a cycle (a reversal between two updates would otherwise shift the
+    whole wave by up to two updates' travel)."""
     sh = P["shear"]
-    v = sh["velocity"]
-    if not sh["cyclic"]:
-        if t >= sh["ramp_s"]:
-            return v
-        # set every servo update: the mean speed until the next one puts the wall exactly at
-        # wall_displacement() at every update (rows and snapshots fall on them)
-        span = P["servo"]["every"] * O.dt
-        return (wall_displacement(t + span) - wall_displacement(t)) / span
-    phase = v * t / sh["amplitude"]  # the LIGGGHTS runner's triangle wave: 0 -> +A -> -A -> 0
-    return v * (1 - 2 * (int(math.floor((phase + 1) / 2)) % 2))
+    if not sh["cyclic"] and t >= sh["ramp_s"]:
+        return sh["velocity"]
+    span = P["servo"]["every"] * O.dt
+    return (wall_displacement(t + span) - wall_displacement(t)) / span
 
 
 COST = {"seconds": 0.0, "particle_steps": 0.0}

@@ -1,7 +1,10 @@
 #include "driver/element_test.hpp"
 
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
+#include <optional>
+#include <utility>
 
 #include "common/errors.hpp"
 
@@ -34,6 +37,11 @@ struct Walker {
   HistoryRow current;
   long total = 0;
   double first_step = 1.0;
+  // The row (a, b) of the previous segment and the total a sigma_n + b eps_n it aimed at by its
+  // end. A segment with the same (a, b) continues from that aim, not from the state reached, so
+  // the residuals within the Newton tolerance do not add up from segment to segment either (a
+  // cyclic path under CNL is thousands of segments).
+  std::optional<std::pair<NormalControlRow, double>> aimed;
 
   std::string where(const PathSegment& seg) const {
     return fmt::format("increment {} ('{}', gamma_x = {:.6g}, gamma_y = {:.6g}, eps_n = {:.6g})",
@@ -60,7 +68,10 @@ struct Walker {
   void segment(int index, const PathSegment& seg) {
     const double gx = seg.gamma_x / seg.increments, gy = seg.gamma_y / seg.increments;
     const HistoryRow at_start = current;
-    const double row_start = row_value(seg.row, at_start);
+    const bool continues =
+        aimed && aimed->first.a == seg.row.a && aimed->first.b == seg.row.b;
+    const double row_start = continues ? aimed->second : row_value(seg.row, at_start);
+    aimed = {seg.row, row_start + seg.increments * seg.row.c};
     double last = 0.0;
     for (int k = 0; k < seg.increments; ++k) {
       if (set.interrupt != nullptr && set.interrupt->load())
@@ -133,7 +144,7 @@ struct Walker {
 ElementTestResult run_element_test(const models::Model& model, const models::StateVector& initial,
                                    const Path& path, const RunSettings& settings) {
   ElementTestResult result;
-  Walker w{model, settings, result, HistoryRow{}, 0, 1.0};
+  Walker w{model, settings, result, HistoryRow{}, 0, 1.0, std::nullopt};
   for (const auto& seg : path) w.total += seg.increments;
   w.current.state = initial;
   result.rows.push_back(w.current);
