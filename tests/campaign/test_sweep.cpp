@@ -148,7 +148,7 @@ TEST_CASE("sweep: a job's scene text does not depend on how the sweep file's pat
   for (std::size_t i = 0; i < relative.size(); ++i) CHECK(relative[i].scene_text == absolute[i].scene_text);
 }
 
-TEST_CASE("sweep: [slurm] time takes Slurm's formats only; anything else is refused before a script is written",
+TEST_CASE("sweep: [slurm] time takes Slurm's formats only, anything else is refused before a script is written",
           "[campaign]") {
   for (const char* ok : {"60", "90:30", "01:00:00", "48:00:00", "2-12", "2-12:30", "2-12:30:00", "0-1:5:9"})
     CHECK(campaign::is_slurm_time(ok));
