@@ -58,57 +58,47 @@ CLI::Validator whole_in(long lower, long upper) {
       fmt::format("INT in [{}, {}]", lower, upper));
 }
 
+namespace {
+// A validator of a path: `refusal` gets the text and what is there ("missing", "file",
+// "directory", "other") and says what is wrong, or nothing.
+CLI::Validator path_check(const std::string& name, std::string (*refusal)(const std::string&, const std::string&)) {
+  return CLI::Validator([refusal](std::string& text) { return refusal(text, kind_of(text)); }, name);
+}
+}  // namespace
+
 CLI::Validator input_file() {
-  return CLI::Validator(
-      [](std::string& text) {
-        const auto kind = kind_of(text);
-        if (kind == "file") return std::string();
-        if (kind == "missing") return fmt::format("{}: no such file", text);
-        return fmt::format("{}: is a {}, not a file", text, kind == "directory" ? "directory" : "special file");
-      },
-      "FILE");
+  return path_check("FILE", [](const std::string& text, const std::string& kind) -> std::string {
+    if (kind == "file") return "";
+    if (kind == "missing") return text + ": no such file";
+    return fmt::format("{}: is a {}, not a file", text, kind == "directory" ? "directory" : "special file");
+  });
 }
 
 CLI::Validator input_directory() {
-  return CLI::Validator(
-      [](std::string& text) {
-        const auto kind = kind_of(text);
-        if (kind == "directory") return std::string();
-        if (kind == "missing") return fmt::format("{}: no such directory", text);
-        return fmt::format("{}: is a file, not a directory", text);
-      },
-      "DIR");
+  return path_check("DIR", [](const std::string& text, const std::string& kind) -> std::string {
+    if (kind == "directory") return "";
+    return text + (kind == "missing" ? ": no such directory" : ": is a file, not a directory");
+  });
 }
 
 CLI::Validator input_path() {
-  return CLI::Validator(
-      [](std::string& text) {
-        return kind_of(text) == "missing" ? fmt::format("{}: no such file or directory", text) : std::string();
-      },
-      "PATH");
+  return path_check("PATH", [](const std::string& text, const std::string& kind) -> std::string {
+    return kind == "missing" ? text + ": no such file or directory" : "";
+  });
 }
 
 CLI::Validator output_file() {
-  return CLI::Validator(
-      [](std::string& text) {
-        if (text.empty()) return std::string("an empty path; give a file name");
-        return kind_of(text) == "directory"
-                   ? fmt::format("{}: is a directory; give the file to write", text)
-                   : std::string();
-      },
-      "FILE");
+  return path_check("FILE", [](const std::string& text, const std::string& kind) -> std::string {
+    if (text.empty()) return "an empty path; give a file name";
+    return kind == "directory" ? text + ": is a directory; give the file to write" : "";
+  });
 }
 
 CLI::Validator output_directory() {
-  return CLI::Validator(
-      [](std::string& text) {
-        if (text.empty()) return std::string("an empty path; give a directory");
-        const auto kind = kind_of(text);
-        return kind == "missing" || kind == "directory"
-                   ? std::string()
-                   : fmt::format("{}: is a file; give the directory to write", text);
-      },
-      "DIR");
+  return path_check("DIR", [](const std::string& text, const std::string& kind) -> std::string {
+    if (text.empty()) return "an empty path; give a directory";
+    return kind == "missing" || kind == "directory" ? "" : text + ": is a file; give the directory to write";
+  });
 }
 
 }  // namespace iwb::app
