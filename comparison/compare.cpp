@@ -121,15 +121,20 @@ std::vector<Variant> standard_variants(const DemRun& dem, const std::string& mod
   return out;
 }
 
+models::ModelInputs validated_parameters(const std::string& model, const std::string& params) {
+  models::ModelInputs in;
+  in.tables = io::load_parameter_file(params);
+  in.source = params;
+  models::find_model(model).make(in);
+  return in;
+}
+
 nlohmann::json run_comparison(const CompareOptions& opt) {
   const DemRun dem = load_dem_run(opt.dem_dir, opt.allow_partial);
   const std::vector<DemRun> seeds = load_seeds(opt);
   const SeedScatter scatter = seed_scatter(dem, seeds);  // InputError for a seed of another scene
   const Tolerances tolerances = tolerances_for(dem);
-  models::ModelInputs params;
-  params.tables = io::load_parameter_file(opt.params);
-  params.source = opt.params;
-  models::find_model(opt.model).make(params);  // parameters validated before anything runs
+  const models::ModelInputs params = validated_parameters(opt.model, opt.params);
   io::prepare_run_directory(opt.out, opt.force);
   json manifest = manifest_of(opt);
   io::write_manifest(opt.out, manifest);

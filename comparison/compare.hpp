@@ -47,4 +47,8 @@ std::vector<Variant> standard_variants(const DemRun& dem, const std::string& mod
 
 nlohmann::json run_comparison(const CompareOptions& options);
 
+// The parameter file read and validated for `model` (InputError naming the file, key and value):
+// checked before a comparison writes anything.
+models::ModelInputs validated_parameters(const std::string& model, const std::string& params);
+
 }  // namespace iwb::comparison

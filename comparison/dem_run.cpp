@@ -4,6 +4,7 @@
 
 #include "common/errors.hpp"
 #include "io/csv_table.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::comparison {
@@ -25,11 +26,7 @@ namespace {
 
 nlohmann::json read_json(const fs::path& path) {
   if (!fs::exists(path)) throw InputError(fmt::format("{}: missing (not a run directory of the contract?)", path.string()));
-  try {
-    return nlohmann::json::parse(io::read_file(path));
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(fmt::format("{}: not valid JSON ({})", path.string(), e.what()));
-  }
+  return io::read_json_file(path);
 }
 
 template <class T>

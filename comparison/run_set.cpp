@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "comparison/seed_scatter.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::comparison {
@@ -17,11 +18,7 @@ namespace {
 
 json read_json(const fs::path& file) {
   if (!fs::exists(file)) throw InputError(fmt::format("{}: missing", file.string()));
-  try {
-    return json::parse(io::read_file(file));
-  } catch (const json::parse_error& e) {
-    throw InputError(fmt::format("{}: not valid JSON ({})", file.string(), e.what()));
-  }
+  return io::read_json_file(file);
 }
 
 template <class T>
@@ -120,6 +117,10 @@ RunRecord load_run_record(const fs::path& compare_dir) {
 RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
   if (opt.dem_dirs.empty()) throw InputError("--runs: no DEM run directories given");
   const auto names = run_names(opt.dem_dirs);
+  // every input read and checked before OUT is created: a bad one leaves nothing behind
+  std::vector<DemRun> dems;
+  for (const auto& d : opt.dem_dirs) dems.push_back(load_dem_run(d, opt.allow_partial));
+  validated_parameters(opt.model, opt.params);
   fs::create_directories(opt.out);
   json manifest = {
       {"kind", "hypothesis set"}, {"command_line", opt.command_line}, {"model", opt.model},
@@ -129,8 +130,6 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
   std::vector<RunRecord> records;
   try {
     // the other seeds of each run's scene in the set: their scatter weighs its fit and verdicts
-    std::vector<DemRun> dems;
-    for (const auto& d : opt.dem_dirs) dems.push_back(load_dem_run(d, opt.allow_partial));
     for (std::size_t i = 0; i < names.size(); ++i) {
       CompareOptions c{opt.dem_dirs[i],   opt.model, opt.params,      opt.out / names[i],
                        opt.allow_partial, opt.force, opt.command_line};

@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include "app/option_checks.hpp"
+
 #include "calibration/calibrate.hpp"
 #include "calibration/synthetic.hpp"
 #include "common/errors.hpp"
@@ -41,7 +43,7 @@ void add_synthetic(CLI::App& soiltest, CalibrationCommands& c) {
   s->add_option("--model", c.spec.model, "continuum model (iwb models)")->capture_default_str();
   s->add_option("--params", c.params, "parameter file (data/params/)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(input_file());
   s->add_option("--test", c.test, "oedometer or simpleshear")
       ->check(CLI::IsMember({"oedometer", "simpleshear"}))
       ->capture_default_str();
@@ -50,25 +52,25 @@ void add_synthetic(CLI::App& soiltest, CalibrationCommands& c) {
       ->capture_default_str();
   s->add_option("--e0", c.e0,
                 "initial void ratio (default: Bauer's critical e_c at the initial mean stress)")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(positive(kMaxVoidRatio)));
   s->add_option("--sigma", c.spec.sigma0_kPa,
                 "initial sigma_v (oedometer) or sigma_n (simple shear), kPa")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(positive(kMaxStressKPa), "kPa"))
       ->capture_default_str();
   s->add_option("--sigma-max", c.spec.sigma_max_kPa, "oedometer: largest sigma_v, kPa")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(positive(kMaxStressKPa), "kPa"))
       ->capture_default_str();
   s->add_option("--sigma-end", c.spec.sigma_end_kPa,
                 "oedometer: sigma_v after unloading, kPa (>= --sigma-max: no unloading)")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(positive(kMaxStressKPa), "kPa"))
       ->capture_default_str();
   s->add_option("--gamma", c.spec.gamma_max, "simple shear: final engineering shear strain")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(positive(kMaxShearStrain)))
       ->capture_default_str();
   s->add_option("--rows", c.spec.rows, "data rows per branch")
-      ->check(CLI::Range(3, 100000))
+      ->check(whole_in(3, 100000))
       ->capture_default_str();
-  s->add_option("--out,-o", c.out, "run directory")->required();
+  s->add_option("--out,-o", c.out, "run directory")->required()->check(output_directory());
   s->add_flag("--force", c.force, "replace an earlier soil test in the same directory");
 }
 
@@ -93,12 +95,13 @@ void add_calibrate(CLI::App& app, CalibrationCommands& c) {
       "Example: iwb calibrate runs/soil/* --model vw3d -o data/params/calibrated_sand.toml");
   c.calibrate->add_option("runs", c.runs, "soil-test run directories")
       ->required()
-      ->check(CLI::ExistingDirectory);
+      ->check(input_directory());
   c.calibrate->add_option("--model", c.model, "continuum model whose parameters are fitted")
       ->check(CLI::IsMember({"vw3d"}))
       ->capture_default_str();
   c.calibrate->add_option("--out,-o", c.params_out, "parameter file to write (data/params format)")
-      ->required();
+      ->required()
+      ->check(output_file());
 }
 
 int run_synthetic(CalibrationCommands& c, const std::string& command_line) {

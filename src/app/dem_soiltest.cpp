@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include "app/option_checks.hpp"
+
 #include "dem/soil_cell.hpp"
 #include "io/run_directory.hpp"
 
@@ -43,7 +45,7 @@ std::shared_ptr<DemSoiltestCommand> add_dem_soiltest(CLI::App& dem) {
   s->add_option("scene", c->scene,
                 "scene TOML file (its [particles], seed and [consolidation] are used)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(input_file());
   s->add_option("--test", c->test, "oedometer or simpleshear")
       ->check(CLI::IsMember({"oedometer", "simpleshear"}))
       ->capture_default_str();
@@ -60,39 +62,40 @@ std::shared_ptr<DemSoiltestCommand> add_dem_soiltest(CLI::App& dem) {
       ->capture_default_str();
   s->add_option("--sigma", c->spec.sigma0_kPa,
                 "first sigma_v (oedometer, default 10) or sigma_n (simple shear, 50), kPa")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(positive(kMaxStressKPa), "kPa"));
   s->add_option("--sigma-max", c->spec.sigma_max_kPa, "oedometer: largest sigma_v, kPa")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(positive(kMaxStressKPa), "kPa"))
       ->capture_default_str();
   s->add_option("--gamma", c->spec.gamma, "simple shear: final shear strain")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(positive(kMaxShearStrain)))
       ->capture_default_str();
   s->add_option("--height", c->spec.height_d50, "target cell height (z) in d50")
-      ->check(CLI::Range(4.0, 100.0))
+      ->check(number_in(closed(4.0, 100.0), "d50"))
       ->capture_default_str();
   s->add_option("--length", c->spec.length_d50, "cell length (x) in d50, at least 10 d_max")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(positive(kMaxCellSizeD50), "d50"))
       ->capture_default_str();
   s->add_option("--width", c->spec.width_d50, "cell width (y) in d50, at least 3 d_max")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(positive(kMaxCellSizeD50), "d50"))
       ->capture_default_str();
   s->add_option("--inertial-number", c->spec.inertial_number,
                 "simple shear: gamma_dot d50 sqrt(rho/sigma_n)")
-      ->check(CLI::Range(1e-6, 1e-1))
+      ->check(number_in(closed(1e-6, 1e-1)))
       ->capture_default_str();
   s->add_option("--load-levels", c->spec.load_levels, "oedometer: loading levels")
-      ->check(CLI::Range(2, 100))
+      ->check(whole_in(2, 100))
       ->capture_default_str();
   s->add_option("--unload-levels", c->spec.unload_levels, "oedometer: unloading levels (0: none)")
-      ->check(CLI::Range(0, 100))
+      ->check(whole_in(0, 100))
       ->capture_default_str();
   s->add_option("--level-windows", c->spec.level_windows,
                 "oedometer: ramp and hold length in consolidation windows")
-      ->check(CLI::Range(1, 100))
+      ->check(whole_in(1, 100))
       ->capture_default_str();
-  s->add_option("--np", c->np, "MPI ranks (LIGGGHTS) or OpenMP threads (YADE)")->check(CLI::Range(1, 256))->capture_default_str();
+  s->add_option("--np", c->np, "MPI ranks (LIGGGHTS) or OpenMP threads (YADE)")->check(whole_in(1, kMaxProcesses))->capture_default_str();
   s->add_option("--out,-o", c->out,
-                "run directory (default runs/soil-<scene>-<test>[-<bc>]-<density>[-yade])");
+                "run directory (default runs/soil-<scene>-<test>[-<bc>]-<density>[-yade])")
+      ->check(output_directory());
   s->add_flag("--resume", c->resume,
               "continue an interrupted run of the same cell from its last finished stage");
   s->add_flag("--force", c->force, "replace an earlier run in the same directory");
@@ -125,7 +128,7 @@ std::optional<int> run_dem_soiltest(const DemSoiltestCommand& c, const std::stri
       spec.initial_stress_kPa(), spec.length_d50, spec.width_d50, spec.height_d50, c.np,
       dir.string());
   const auto outcome = dem::run_soil_test(io::read_file(c.scene), c.scene, spec, opt);
-  fmt::print("{}: {} ({} particles) -> {}\n", c.scene, outcome.status,
+  fmt::print(outcome.complete() ? stdout : stderr, "{}: {} ({} particles) -> {}\n", c.scene, outcome.status,
              outcome.manifest.value("particle_count", 0), dir.string());
   return outcome.complete() ? 0 : 1;
 }

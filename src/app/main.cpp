@@ -10,6 +10,7 @@
 
 #include "app/calibration_commands.hpp"
 #include "app/dem_soiltest.hpp"
+#include "app/option_checks.hpp"
 #include "app/default_job.hpp"
 #include "app/stability.hpp"
 #include "app/validate.hpp"
@@ -32,6 +33,10 @@
 #include "models/registry.hpp"
 
 namespace {
+
+using iwb::app::input_directory, iwb::app::input_file, iwb::app::input_path, iwb::app::number_in,
+    iwb::app::output_directory, iwb::app::output_file, iwb::app::whole_in, iwb::app::kMaxProcesses,
+    iwb::app::kMaxBudgetSeconds;
 
 std::atomic<bool> g_interrupt{false};
 void on_signal(int) { g_interrupt.store(true); }
@@ -67,7 +72,9 @@ int cmd_element(const std::string& file, const std::string& out, bool force, con
   spec_with_progress.settings.on_increment = progress_printer();
   const auto outcome = iwb::io::run_element_to_directory(spec_with_progress, opt);
   const auto& r = outcome.result;
-  fmt::print("{}: {} ({} increments, {} rate evaluations, {} rejected substeps) -> {}\n", file,
+  // A failed or interrupted run is an error message: on stderr, with exit 1 (README).
+  fmt::print(r.complete() ? stdout : stderr,
+             "{}: {} ({} increments, {} rate evaluations, {} rejected substeps) -> {}\n", file,
              r.status, r.increments, r.counters.rate_evaluations, r.counters.rejected_substeps,
              dir.string());
   return r.complete() ? 0 : 1;
@@ -98,7 +105,7 @@ int cmd_dem_run(const std::string& scene_file, const std::string& engine_name, i
   fmt::print(stderr, "iwb dem run: {} with {} ({} particles requested, {} rank(s)) -> {}\n", scene_file,
              engine_name, scene.particle_count, np, dir.string());
   const auto outcome = iwb::dem::run_scene(scene, iwb::io::read_file(scene_file), *engine, opt);
-  fmt::print("{}: {} -> {}\n", scene_file, outcome.status, dir.string());
+  fmt::print(outcome.complete() ? stdout : stderr, "{}: {} -> {}\n", scene_file, outcome.status, dir.string());
   return outcome.complete() ? 0 : 1;
 }
 
@@ -257,8 +264,8 @@ int main(int argc, char** argv) {
       "run directory with manifest.json and history.csv (compression positive, kPa, mm).");
   std::string test_file, out;
   bool force = false;
-  element->add_option("test", test_file, "element-test TOML file")->required()->check(CLI::ExistingFile);
-  element->add_option("--out,-o", out, "run directory (default runs/<test file stem>)");
+  element->add_option("test", test_file, "element-test TOML file")->required()->check(input_file());
+  element->add_option("--out,-o", out, "run directory (default runs/<test file stem>)")->check(output_directory());
   element->add_flag("--force", force, "replace an earlier run in the same directory");
 
   auto* models = app.add_subcommand("models", "List the constitutive models, their parameters "
@@ -270,7 +277,7 @@ int main(int argc, char** argv) {
       "run", "The main job on the embedded default: hvwe against its 3D reference vw3d in simple "
              "shear under CNL, CNS and CV (seed Table 5.1), with a table of their differences.");
   std::string run_out = "runs/default";
-  run->add_option("--out,-o", run_out, "output directory")->capture_default_str();
+  run->add_option("--out,-o", run_out, "output directory")->check(output_directory())->capture_default_str();
   run->add_flag("--force", force, "replace earlier runs in the output directory");
 
   auto* dem = app.add_subcommand("dem", "DEM interface-shear scenes (scene schema: data/scenes/README.md).");
@@ -283,10 +290,10 @@ int main(int argc, char** argv) {
   std::string scene_file, engine_name = "liggghts";
   int np = 1;
   bool resume = false;
-  dem_run->add_option("scene", scene_file, "scene TOML file")->required()->check(CLI::ExistingFile);
+  dem_run->add_option("scene", scene_file, "scene TOML file")->required()->check(input_file());
   dem_run->add_option("--engine", engine_name, "DEM engine: liggghts or yade")->capture_default_str();
-  dem_run->add_option("--np,--threads", np, "parallel processes: MPI ranks (LIGGGHTS) or OpenMP threads (YADE)")->check(CLI::Range(1, 256))->capture_default_str();
-  dem_run->add_option("--out,-o", out, "run directory (default runs/<scene>-<engine>)");
+  dem_run->add_option("--np,--threads", np, "parallel processes: MPI ranks (LIGGGHTS) or OpenMP threads (YADE)")->check(whole_in(1, kMaxProcesses))->capture_default_str();
+  dem_run->add_option("--out,-o", out, "run directory (default runs/<scene>-<engine>)")->check(output_directory());
   dem_run->add_flag("--resume", resume, "continue an interrupted run of the same scene from its last finished stage");
   dem_run->add_flag("--force", force, "replace an earlier run in the same directory");
 
@@ -301,17 +308,17 @@ int main(int argc, char** argv) {
       "directory are reused, so a stopped crosscheck continues when run again.");
   iwb::dem::CrosscheckOptions xopt;
   std::string cross_scene, cross_out, cross_engines = "liggghts,yade";
-  dem_cross->add_option("scene", cross_scene, "scene TOML file")->required()->check(CLI::ExistingFile);
-  dem_cross->add_option("--seeds", xopt.seeds, "seeds per engine")->check(CLI::Range(1, 100))->capture_default_str();
+  dem_cross->add_option("scene", cross_scene, "scene TOML file")->required()->check(input_file());
+  dem_cross->add_option("--seeds", xopt.seeds, "seeds per engine")->check(whole_in(1, 100))->capture_default_str();
   dem_cross->add_option("--engines", cross_engines, "comma-separated engines")->capture_default_str();
-  dem_cross->add_option("--np,--threads", xopt.processes, "MPI ranks / OpenMP threads per run")->check(CLI::Range(1, 256))->capture_default_str();
-  dem_cross->add_option("--out,-o", cross_out, "output directory (default runs/crosscheck-<scene>)");
+  dem_cross->add_option("--np,--threads", xopt.processes, "MPI ranks / OpenMP threads per run")->check(whole_in(1, kMaxProcesses))->capture_default_str();
+  dem_cross->add_option("--out,-o", cross_out, "output directory (default runs/crosscheck-<scene>)")->check(output_directory());
 
   auto* dem_summary = dem->add_subcommand(
       "summary", "Recompute summary.json of a complete run directory from its contract files (peak and "
                  "residual friction, dilation, shear mode and band, wall slip, band void ratio).");
   std::string run_dir;
-  dem_summary->add_option("run_dir", run_dir, "a run directory of `iwb dem run`")->required()->check(CLI::ExistingDirectory);
+  dem_summary->add_option("run_dir", run_dir, "a run directory of `iwb dem run`")->required()->check(input_directory());
 
   auto* compare = app.add_subcommand(
       "compare",
@@ -332,20 +339,20 @@ int main(int argc, char** argv) {
   iwb::comparison::CompareOptions copt;
   std::string dem_dir, compare_out;
   std::vector<std::string> set_runs, seed_runs;
-  auto* single_run = compare->add_option("dem_run", dem_dir, "a run directory of `iwb dem run`")->check(CLI::ExistingDirectory);
+  auto* single_run = compare->add_option("dem_run", dem_dir, "a run directory of `iwb dem run`")->check(input_directory());
   compare->add_option("--runs", set_runs, "a set of DEM run directories: each is compared (or its complete comparison "
                                           "in OUT/<run> reused), with the set's runs of its scene and other seeds as "
                                           "its seeds, then the hypothesis checks of DEM.md over the set "
                                           "into OUT/hypotheses.json and .md")
-      ->check(CLI::ExistingDirectory)->excludes(single_run);
+      ->check(input_directory())->excludes(single_run);
   compare->add_option("--seeds", seed_runs, "runs of the same scene with other seeds: their scatter weighs the joint "
                                             "fit and the verdicts")
-      ->check(CLI::ExistingDirectory)->excludes("--runs");
+      ->check(input_directory())->excludes("--runs");
   compare->add_option("--predict-ds-d50", copt.predicted_ds_d50, "d_s of the predicted variant, in d50")
-      ->capture_default_str()->check(CLI::Range(0.5, 100.0));
+      ->capture_default_str()->check(number_in(iwb::closed(0.5, 100.0), "d50"));
   compare->add_option("--model", copt.model, "continuum model (iwb models)")->capture_default_str();
-  compare->add_option("--params", copt.params, "parameter file (data/params/)")->required()->check(CLI::ExistingFile);
-  compare->add_option("--out,-o", compare_out, "output directory (default runs/compare-<dem run>)");
+  compare->add_option("--params", copt.params, "parameter file (data/params/)")->required()->check(input_file());
+  compare->add_option("--out,-o", compare_out, "output directory (default runs/compare-<dem run>)")->check(output_directory());
   compare->add_flag("--allow-partial", copt.allow_partial, "compare a failed or interrupted DEM run");
   compare->add_flag("--force", copt.force, "replace an earlier comparison in the same directory");
 
@@ -360,12 +367,12 @@ int main(int argc, char** argv) {
       "(then: iwb report DIR/compare). --emit slurm writes DIR/sweep.slurm (a job array) instead of running.");
   iwb::campaign::SweepOptions sweep_opt;
   std::string sweep_file, sweep_out, sweep_emit;
-  sweep->add_option("sweep", sweep_file, "sweep TOML file")->required()->check(CLI::ExistingFile);
-  sweep->add_option("--jobs,-j", sweep_opt.jobs, "jobs at once on this machine (jobs x np should not exceed the cores)")->check(CLI::Range(1, 256))->capture_default_str();
-  sweep->add_option("--np,--threads", sweep_opt.processes, "MPI ranks (LIGGGHTS) or threads (YADE) per job")->check(CLI::Range(1, 256))->capture_default_str();
+  sweep->add_option("sweep", sweep_file, "sweep TOML file")->required()->check(input_file());
+  sweep->add_option("--jobs,-j", sweep_opt.jobs, "jobs at once on this machine (jobs x np should not exceed the cores)")->check(whole_in(1, kMaxProcesses))->capture_default_str();
+  sweep->add_option("--np,--threads", sweep_opt.processes, "MPI ranks (LIGGGHTS) or threads (YADE) per job")->check(whole_in(1, kMaxProcesses))->capture_default_str();
   sweep->add_option("--emit", sweep_emit, "write a batch script instead of running: slurm")->check(CLI::IsMember({"slurm"}));
-  sweep->add_option("--out,-o", sweep_out, "campaign directory (default runs/sweep-<sweep file stem>)");
-  sweep->add_option("--stop-after", sweep_opt.stop_after, "stop cleanly once N jobs have ended (running ones are interrupted); run again to continue")->check(CLI::Range(1, 1000000));
+  sweep->add_option("--out,-o", sweep_out, "campaign directory (default runs/sweep-<sweep file stem>)")->check(output_directory());
+  sweep->add_option("--stop-after", sweep_opt.stop_after, "stop cleanly once N jobs have ended (running ones are interrupted); run again to continue")->check(whole_in(1, 1000000));
 
   auto* report = app.add_subcommand(
       "report", "Write one self-contained HTML report (inline SVG figures, opens offline) from comparison "
@@ -373,8 +380,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> compare_dirs;
   std::string report_out = "report.html";
   report->add_option("compare_dirs", compare_dirs, "directories of `iwb compare`, or the OUT of `iwb compare --runs` "
-                                                   "(its verdicts come first)")->required()->check(CLI::ExistingPath);
-  report->add_option("-o,--out", report_out, "HTML file")->capture_default_str();
+                                                   "(its verdicts come first)")->required()->check(input_path());
+  report->add_option("-o,--out", report_out, "HTML file")->check(output_file())->capture_default_str();
 
   auto* validate = app.add_subcommand(
       "validate", "The main job: run a DEM scene (the embedded default unless --scene), replay it through hvwe "
@@ -386,9 +393,9 @@ int main(int argc, char** argv) {
   validate->add_option("--scene", vopt.scene, "embedded scene name (default, smoke) or a scene file")->capture_default_str();
   std::string validate_engines = "liggghts";
   validate->add_option("--engines", validate_engines, "comma-separated DEM engines (liggghts, yade); each runs the scene and is replayed, one report")->capture_default_str();
-  validate->add_option("--np,--threads", vopt.processes, "MPI ranks (LIGGGHTS) or threads (YADE) per run")->check(CLI::Range(1, 256))->capture_default_str();
-  validate->add_option("--out,-o", vout, "output directory")->capture_default_str();
-  validate->add_option("--params-dir", vopt.params_dir, "where the shipped parameter sets are")->capture_default_str();
+  validate->add_option("--np,--threads", vopt.processes, "MPI ranks (LIGGGHTS) or threads (YADE) per run")->check(whole_in(1, kMaxProcesses))->capture_default_str();
+  validate->add_option("--out,-o", vout, "output directory")->check(output_directory())->capture_default_str();
+  validate->add_option("--params-dir", vopt.params_dir, "where the shipped parameter sets are")->check(input_directory())->capture_default_str();
   validate->add_flag("--force", vopt.force, "replace earlier runs in the output directory");
 
   auto* stability = app.add_subcommand(
@@ -403,11 +410,11 @@ int main(int argc, char** argv) {
   iwb::app::StabilityOptions stability_opt;
   stability->add_option("model", stability_opt.model, "model name (iwb models)")->required();
   stability->add_option("params", stability_opt.params, "parameter file, e.g. data/params/table_5_1_evaluation.toml; "
-                                               "-igs models need an [intergranular_strain] table (table_5_3_*)")->required();
+                                               "-igs models need an [intergranular_strain] table (table_5_3_*)")->required()->check(input_file());
   stability->add_flag("--full", stability_opt.full, "the full sweep (5 values per axis, 1000 cycles) instead of the reduced one");
-  stability->add_option("--out,-o", stability_opt.out, "output directory (default runs/stability-<model>)");
+  stability->add_option("--out,-o", stability_opt.out, "output directory (default runs/stability-<model>)")->check(output_directory());
   stability->add_option("--budget", stability_opt.budget_seconds, "wall-clock seconds per point before it is stopped as "
-                                                          "'budget exceeded' (default 5 reduced, 10 full)")->check(CLI::PositiveNumber);
+                                                          "'budget exceeded' (default 5 reduced, 10 full)")->check(number_in(iwb::positive(kMaxBudgetSeconds), "s"));
 
   auto* bench = app.add_subcommand("bench", "Benchmarks that print figures.");
   bench->require_subcommand(1);
@@ -416,7 +423,7 @@ int main(int argc, char** argv) {
                  "at rtol 1e-6, for each model.");
   iwb::bench::ElementBenchOptions bopt;
   bench_element->add_option("--repeats", bopt.repeats, "runs per model; the best is reported")
-      ->check(CLI::Range(1, 1000))->capture_default_str();
+      ->check(whole_in(1, 1000))->capture_default_str();
   bench_element
       ->add_option("--igs-params", bopt.igs_params,
                    "parameter set of the -igs models (Table 5.1 has no [intergranular_strain]); "
@@ -430,15 +437,15 @@ int main(int argc, char** argv) {
                      "integrators.csv, integrators.md and pareto_<model>.svg/.png (a few seconds). Error: max over the path of |x - x_ref| / max |x_ref| for tau and sigma_n, the larger of the two.");
   iwb::bench::IntegratorBenchOptions iopt;
   std::string iout = iopt.out.string();
-  bench_integrators->add_option("--out,-o", iout, "output directory")->capture_default_str();
+  bench_integrators->add_option("--out,-o", iout, "output directory")->check(output_directory())->capture_default_str();
 
   auto* bench_dem = bench->add_subcommand(
       "dem", "Particle-steps per second of a DEM engine on a scene with 1 and 2 ranks, and the "
              "workbench's own overhead as a share of the run (a few minutes on the default scene).");
   iwb::bench::DemBenchOptions dopt;
-  bench_dem->add_option("--engine", dopt.engine, "DEM engine: liggghts (ranks = MPI ranks) or yade (ranks = OpenMP threads)")->capture_default_str();
-  bench_dem->add_option("--scene", dopt.scene, "scene file")->check(CLI::ExistingFile)->capture_default_str();
-  bench_dem->add_option("--ranks", dopt.ranks, "rank counts to measure")->capture_default_str();
+  bench_dem->add_option("--engine", dopt.engine, "DEM engine: liggghts (ranks = MPI ranks) or yade (ranks = OpenMP threads)")->check(CLI::IsMember({"liggghts", "yade"}))->capture_default_str();
+  bench_dem->add_option("--scene", dopt.scene, "scene file")->check(input_file())->capture_default_str();
+  bench_dem->add_option("--ranks", dopt.ranks, "rank counts to measure")->check(whole_in(1, kMaxProcesses))->capture_default_str();
 
   const auto calibration_commands = iwb::app::add_calibration_commands(app);
   const auto tradeoff_commands = iwb::app::add_tradeoff_commands(app);

@@ -2,7 +2,10 @@
 
 #include <fmt/core.h>
 
+#include "app/option_checks.hpp"
+
 #include "app/validate.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 #include "tradeoff/knobs.hpp"
 #include "tradeoff/plan.hpp"
@@ -46,27 +49,28 @@ void add_tradeoff(CLI::App& app, TradeoffCommands& c) {
       "then:    iwb plan data/scenes/default.toml --tradeoff runs/tradeoff-default");
   c.tradeoff->add_option("scene", c.scene, "scene TOML file (data/scenes/)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(input_file());
   c.tradeoff->add_option("--out,-o", c.out,
-                         "tradeoff directory (default runs/tradeoff-<scene stem>)");
+                         "tradeoff directory (default runs/tradeoff-<scene stem>)")
+      ->check(output_directory());
   c.tradeoff
       ->add_option("--jobs,-j", c.jobs, "runs at once (jobs x np should not exceed the cores)")
-      ->check(CLI::Range(1, 256))
+      ->check(whole_in(1, kMaxProcesses))
       ->capture_default_str();
   c.tradeoff->add_option("--np", c.np, "MPI ranks per run")
-      ->check(CLI::Range(1, 256))
+      ->check(whole_in(1, kMaxProcesses))
       ->capture_default_str();
   c.tradeoff
       ->add_option("--seeds", c.seeds,
                    "seeds of the base setting (>= 2; 3 or more for a usable noise floor)")
-      ->check(CLI::Range(2, 100))
+      ->check(whole_in(2, 100))
       ->capture_default_str();
   c.tradeoff->add_option("--knobs", c.knobs, "comma-separated knobs to vary: box, kappa, dt, I")
       ->capture_default_str();
   c.tradeoff
       ->add_option("--stop-after", c.stop_after,
                    "stop cleanly once N runs have ended; run again to continue")
-      ->check(CLI::Range(1, 1000000));
+      ->check(whole_in(1, 1000000));
 }
 
 void add_plan(CLI::App& app, TradeoffCommands& c) {
@@ -88,16 +92,18 @@ void add_plan(CLI::App& app, TradeoffCommands& c) {
       "Example: iwb plan data/scenes/default.toml --tradeoff runs/tradeoff-default");
   c.plan->add_option("scene", c.plan_scene, "scene TOML file with a [requirements] table")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(input_file());
   c.plan->add_option("--tradeoff", c.plan_tradeoff,
-                     "tradeoff directory (default runs/tradeoff-<scene stem>)");
+                     "tradeoff directory (default runs/tradeoff-<scene stem>)");  // run_plan says what to run
   c.plan->add_option(
       "--params", c.plan_params,
       "parameter file of the continuum models (default: data/params/dem_default_grains.toml if "
       "present, else the set iwb validate chooses: phi_c closest to the reference's residual "
-      "friction)");
+      "friction)")
+      ->check(input_file());
   c.plan->add_option("--out,-o", c.plan_out,
-                     "where plan.json goes (default: the tradeoff directory)");
+                     "where plan.json goes (default: the tradeoff directory)")
+      ->check(output_directory());
 }
 
 int run_tradeoff_command(const TradeoffCommands& c, const std::string& cl,
@@ -119,11 +125,12 @@ int run_tradeoff_command(const TradeoffCommands& c, const std::string& cl,
 }
 
 int run_plan_command(const TradeoffCommands& c, const std::string& cl) {
+  dem::load_scene(c.plan_scene);  // every value checked before the tradeoff is read
   tradeoff::PlanOptions opt{c.plan_scene,          c.plan_tradeoff, c.plan_params,
                             "given with --params", c.plan_out,      cl};
   if (opt.params.empty()) {
     const auto summary =
-        nlohmann::json::parse(io::read_file(tradeoff::reference_run(opt) / "summary.json"));
+        io::read_json_file(tradeoff::reference_run(opt) / "summary.json");
     const auto scene = dem::parse_scene(io::read_file(opt.scene_file), opt.scene_file.string());
     opt.params = parameters_for("data/params", scene, summary["residual_friction"].get<double>(),
                                 opt.params_why)

@@ -7,6 +7,7 @@
 
 #include "common/errors.hpp"
 #include "io/csv_table.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::calibration {
@@ -26,11 +27,7 @@ namespace {
 nlohmann::json read_manifest(const fs::path& file) {
   if (!fs::exists(file))
     throw InputError(fmt::format("{}: missing (not a soil-test directory)", file.string()));
-  try {
-    return nlohmann::json::parse(io::read_file(file));
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not valid JSON: {}", file.string(), e.what()));
-  }
+  return io::read_json_file(file);
 }
 
 template <class T>

@@ -11,6 +11,7 @@
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "dem/scene.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::campaign {
@@ -36,7 +37,7 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 
 // The engine's own time in an earlier run, for reused jobs.
 double recorded_seconds(const fs::path& dir) {
-  const auto m = json::parse(io::read_file(dir / "manifest.json"));
+  const auto m = io::read_json_file(dir / "manifest.json");
   double s = 0.0;
   for (const auto& [name, stage] : m["stages"].items()) s += stage.value("wall_seconds", 0.0);
   return s;

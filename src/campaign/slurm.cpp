@@ -1,8 +1,16 @@
 #include "campaign/slurm.hpp"
 
 #include <fmt/core.h>
+#include <regex>
 
 namespace iwb::campaign {
+
+bool is_slurm_time(const std::string& text) {
+  static const std::regex formats(
+      R"((\d+)|(\d+):([0-5]?\d)|(\d+):([0-5]?\d):([0-5]?\d)|)"
+      R"((\d+)-([01]?\d|2[0-3])(:[0-5]?\d){0,2})");
+  return std::regex_match(text, formats);
+}
 
 std::string slurm_script(const std::vector<Job>& jobs, const SlurmOptions& opt) {
   std::string s = fmt::format(

@@ -15,6 +15,11 @@ struct SlurmOptions {
   std::string time;   // --time of each array task
 };
 
+// Whether `text` is one of Slurm's --time formats: minutes, minutes:seconds,
+// hours:minutes:seconds, days-hours, days-hours:minutes, days-hours:minutes:seconds (minutes and
+// seconds below 60, hours below 24 after days). Anything else would reach #SBATCH as it is.
+bool is_slurm_time(const std::string& text);
+
 // The script's text. Submit it from the campaign directory: paths in it are relative to it.
 std::string slurm_script(const std::vector<Job>& jobs, const SlurmOptions& options);
 

@@ -1,4 +1,5 @@
 #include "campaign/sweep_file.hpp"
+#include "campaign/slurm.hpp"
 
 #include <algorithm>
 #include <fmt/core.h>
@@ -126,6 +127,9 @@ SweepSpec parse_sweep(const std::string& text, const fs::path& file) {
   s.compare = read_comparison(top, folder);
   if (auto slurm = top.table("slurm")) {
     s.slurm_time = slurm->optional_text("time").value_or(s.slurm_time);
+    if (!is_slurm_time(s.slurm_time))
+      throw InputError(fmt::format("{} = \"{}\" is not a Slurm time; allowed MM, MM:SS, HH:MM:SS, D-HH, D-HH:MM "
+                                   "or D-HH:MM:SS", slurm->where("time"), s.slurm_time));
     slurm->finish();
   }
   top.finish();

@@ -10,6 +10,7 @@
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "dem/scene.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::dem {
@@ -55,7 +56,7 @@ SeedRun run_or_reuse(const Scene& scene, const std::string& text, const std::str
   const auto manifest = dir / "manifest.json";
   bool complete = false;
   if (fs::exists(manifest)) {
-    const auto m = nlohmann::json::parse(io::read_file(manifest));
+    const auto m = io::read_json_file(manifest);
     complete = m.value("status", "") == "complete" &&
                m.value("/scene/sha256"_json_pointer, std::string()) == io::sha256_hex(text);
   }
@@ -67,8 +68,8 @@ SeedRun run_or_reuse(const Scene& scene, const std::string& text, const std::str
       throw std::runtime_error(fmt::format("{}: {} (crosscheck stopped; run it again to continue)", dir.string(),
                                            outcome.status));
   }
-  const auto m = nlohmann::json::parse(io::read_file(manifest));
-  SeedRun r{nlohmann::json::parse(io::read_file(dir / "summary.json")), 0.0};
+  const auto m = io::read_json_file(manifest);
+  SeedRun r{io::read_json_file(dir / "summary.json"), 0.0};
   for (const auto& [name, stage] : m["stages"].items()) r.wall_seconds += stage.value("wall_seconds", 0.0);
   r.summary["dilation_rate"] = std::tan(r.summary.value("dilatancy_angle_deg", 0.0) * M_PI / 180.0);
   return r;

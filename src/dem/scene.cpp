@@ -21,20 +21,31 @@ constexpr double kRecommendedHeightInD50 = 20.0;  // DEM.md: ~7 d50 gives no ban
 constexpr double kDefaultDtFraction = 0.15;  // of the Rayleigh time: the usual DEM choice
 constexpr double kMaxDtFraction = 0.5;       // beyond this Hertz contacts lose energy balance
 
+// Physical ranges of scene values: each bound lies far outside what an interface-shear scene uses
+// and inside what the engines can take, so a typo or a units mistake (kPa for Pa, a missing
+// exponent) is refused with its key before an engine starts instead of failing inside it.
+constexpr double kMaxD50Mm = 100.0;                // cobbles; a box of them is metres long
+constexpr double kMaxDensityKgM3 = 1e5;            // 4x osmium: room for density scaling
+constexpr double kMaxYoungsModulusPa = 1.2e12;     // diamond
+constexpr double kMaxFriction = 10.0;              // a coefficient, not an angle in degrees
+constexpr double kMaxSolidFraction = 0.75;         // densest sphere packing 0.7405
+constexpr double kMaxLengthD50 = 1e5;              // the particle count bounds the box anyway
+constexpr double kMaxParticles = 1e8;              // as for an explicit [specimen] particles
+constexpr double kMaxStressKPa = 1e5;              // 100 MPa: far beyond grain crushing
+constexpr double kMaxCnsStiffnessKPaPerMm = 1e7;   // stiffer than the grains: use CV
+constexpr double kMaxTravelMm = 1e4;               // 10 m of wall travel
+// I = gamma_dot d50 sqrt(rho/sigma_n) above 1 is a granular gas, not a sheared layer (DEM.md asks
+// for I < 1e-3; the tradeoff doubles I, so up to 1 is allowed).
+constexpr double kMaxInertialNumber = 1.0;
+constexpr double kMaxServoSpeedMS = 100.0;
+constexpr double kMaxServoGain = 1e3;
+
 void require(bool ok, const std::string& message) {
   if (!ok) throw InputError(message);
 }
 
 std::string range_error(io::TableReader& t, const std::string& key, double v, const std::string& allowed) {
   return fmt::format("{} = {:g} is out of range; allowed {}", t.where(key), v, allowed);
-}
-
-double fraction(io::TableReader& t, const std::string& key, std::optional<double> fallback = {}) {
-  const auto v = t.optional_number(key);
-  if (!v && fallback) return *fallback;
-  if (!v) return t.number(key);  // throws "missing"
-  require(*v >= 0.0 && *v <= 1.0, range_error(t, key, *v, "[0, 1]"));
-  return *v;
 }
 
 std::vector<double> numbers(io::TableReader& t, const std::string& key) {
@@ -46,6 +57,7 @@ std::vector<double> numbers(io::TableReader& t, const std::string& key) {
   for (const auto& x : *arr) {
     const auto v = x.value<double>();
     require(v.has_value(), fmt::format("{} has a non-number {}", t.where(key), io::describe(x)));
+    require(std::isfinite(*v), fmt::format("{} has {}, not a finite number", t.where(key), io::describe(x)));
     out.push_back(*v);
   }
   return out;
@@ -53,7 +65,7 @@ std::vector<double> numbers(io::TableReader& t, const std::string& key) {
 
 Particles read_particles(io::TableReader t) {
   Particles p{};
-  p.d50_m = t.positive("d50_mm") * kMm;
+  p.d50_m = t.positive("d50_mm", kMaxD50Mm) * kMm;
   const auto ratios = numbers(t, "d_over_d50");
   const auto fractions = numbers(t, "mass_fraction");
   if (ratios.empty()) {
@@ -73,15 +85,12 @@ Particles read_particles(io::TableReader t) {
       p.sizes.push_back({ratios[i] * p.d50_m, fractions[i]});
     }
   }
-  p.density_kg_m3 = t.positive("density_kg_m3");
-  p.youngs_modulus_Pa = t.positive("youngs_modulus_Pa");
-  p.poisson = t.number("poisson");
-  require(p.poisson >= 0.0 && p.poisson < 0.5, range_error(t, "poisson", p.poisson, "[0, 0.5)"));
-  p.friction = t.number("friction");
-  require(p.friction >= 0.0, range_error(t, "friction", p.friction, "[0, inf)"));
-  p.rolling_friction = t.optional_number("rolling_friction").value_or(0.0);
-  require(p.rolling_friction >= 0.0, range_error(t, "rolling_friction", p.rolling_friction, "[0, inf)"));
-  p.restitution = fraction(t, "restitution", 0.5);
+  p.density_kg_m3 = t.positive("density_kg_m3", kMaxDensityKgM3);
+  p.youngs_modulus_Pa = t.positive("youngs_modulus_Pa", kMaxYoungsModulusPa);
+  p.poisson = t.number_in("poisson", {0.0, 0.5, false, true});
+  p.friction = t.number_in("friction", non_negative(kMaxFriction));
+  p.rolling_friction = t.optional_number_in("rolling_friction", non_negative(kMaxFriction)).value_or(0.0);
+  p.restitution = t.optional_number_in("restitution", closed(0.0, 1.0)).value_or(0.5);
   t.finish();
   return p;
 }
@@ -93,18 +102,32 @@ RoughnessProfile read_profile(io::TableReader t, double d50) {
     r.kind = ProfileKind::kFlat;
   } else if (kind == "sawtooth" || kind == "sinusoid") {
     r.kind = kind == "sawtooth" ? ProfileKind::kSawtooth : ProfileKind::kSinusoid;
-    r.pitch_m = t.positive("pitch_d50") * d50;
-    r.height_m = t.positive("height_d50") * d50;
+    r.pitch_m = t.positive("pitch_d50", kMaxLengthD50) * d50;
+    r.height_m = t.positive("height_d50", kMaxLengthD50) * d50;
   } else if (kind == "glued") {
     r.kind = ProfileKind::kGlued;
-    r.height_m = t.positive("sphere_d50") * d50;
-    r.pitch_m = t.positive("spacing_d50") * d50;
+    r.height_m = t.positive("sphere_d50", kMaxLengthD50) * d50;
+    r.pitch_m = t.positive("spacing_d50", kMaxLengthD50) * d50;
   } else {
     throw InputError(fmt::format("{} = \"{}\"; allowed \"flat\", \"sawtooth\", \"sinusoid\", \"glued\"",
                                  t.where("profile"), kind));
   }
   t.finish();
   return r;
+}
+
+// The particles a box holds at the estimated solid fraction (when [specimen] particles is not
+// given), refused above the limit of an explicit count: a height of 1e9 d50 must not start an engine.
+int derived_particle_count(io::TableReader& spec, const Scene& s) {
+  const double n = s.solid_fraction_estimate * s.length_m * s.width_m * s.height_m /
+                   s.particles.mean_particle_volume_m3();
+  const double d50 = s.particles.d50_m;
+  require(n >= 1.0 && n <= kMaxParticles,
+          fmt::format("{}: length_d50 x width_d50 x height_d50 = {:g} x {:g} x {:g} at solid fraction {:g} "
+                      "holds {:.4g} particles; allowed 1 to {:g} (set a smaller box or [specimen] particles)",
+                      spec.where(), s.length_m / d50, s.width_m / d50, s.height_m / d50,
+                      s.solid_fraction_estimate, n, kMaxParticles));
+  return int(std::lround(n));
 }
 
 void check_geometry(Scene& s, const std::string& file) {
@@ -298,13 +321,13 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   const double d50 = s.particles.d50_m;
 
   auto spec = top.required_table("specimen");
-  s.length_m = spec.positive("length_d50") * d50;
-  s.width_m = spec.positive("width_d50") * d50;
-  s.height_m = spec.positive("height_d50") * d50;
-  s.solid_fraction_estimate = fraction(spec, "solid_fraction_estimate", 0.58);
-  const double consolidation_friction = spec.optional_number("consolidation_friction").value_or(0.1);
-  s.particle_count = spec.optional_count("particles").value_or(int(std::lround(
-      s.solid_fraction_estimate * s.length_m * s.width_m * s.height_m / s.particles.mean_particle_volume_m3())));
+  s.length_m = spec.positive("length_d50", kMaxLengthD50) * d50;
+  s.width_m = spec.positive("width_d50", kMaxLengthD50) * d50;
+  s.height_m = spec.positive("height_d50", kMaxLengthD50) * d50;
+  s.solid_fraction_estimate = spec.optional_positive("solid_fraction_estimate", kMaxSolidFraction).value_or(0.58);
+  const double consolidation_friction =
+      spec.optional_number_in("consolidation_friction", non_negative(kMaxFriction)).value_or(0.1);
+  s.particle_count = spec.optional_count("particles").value_or(derived_particle_count(spec, s));
   spec.finish();
 
   s.wall = read_profile(top.required_table("wall"), d50);
@@ -313,16 +336,16 @@ Scene parse_scene(const std::string& text, const std::string& source) {
 
   auto bc = top.required_table("boundary");
   s.boundary.kind = driver::parse_boundary_kind(bc.text("type"), bc.where("type"));
-  s.boundary.sigma_n_Pa = bc.positive("sigma_n_kPa") * 1e3;
+  s.boundary.sigma_n_Pa = bc.positive("sigma_n_kPa", kMaxStressKPa) * 1e3;
   if (s.boundary.kind == driver::BoundaryKind::kCNS)
-    s.boundary.K_Pa_per_m = bc.positive("K_kPa_per_mm") * 1e3 / kMm;
+    s.boundary.K_Pa_per_m = bc.positive("K_kPa_per_mm", kMaxCnsStiffnessKPaPerMm) * 1e3 / kMm;
   bc.finish();
 
   auto sh = top.required_table("shear");
   if (sh.one_of({"displacement_mm", "amplitude_mm"}) == "displacement_mm") {
-    s.shear.displacement_m = sh.positive("displacement_mm") * kMm;
+    s.shear.displacement_m = sh.positive("displacement_mm", kMaxTravelMm) * kMm;
   } else {
-    s.shear.amplitude_m = sh.positive("amplitude_mm") * kMm;
+    s.shear.amplitude_m = sh.positive("amplitude_mm", kMaxTravelMm) * kMm;
     s.shear.cycles = sh.count("cycles");
   }
   const double rho = s.particles.density_kg_m3;
@@ -332,9 +355,15 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   } else {
     // I = gamma_dot d50 sqrt(rho / sigma_n) with gamma_dot ~ v / H (DEM.md, conservative: the
     // whole specimen as the band).
-    s.shear.velocity_m_s = sh.positive("inertial_number") * s.height_m / (d50 * sqrt_rho_over_sigma);
+    s.shear.velocity_m_s =
+        sh.positive("inertial_number", kMaxInertialNumber) * s.height_m / (d50 * sqrt_rho_over_sigma);
   }
   s.shear.inertial_number = s.shear.velocity_m_s / s.height_m * d50 * sqrt_rho_over_sigma;
+  require(s.shear.inertial_number <= kMaxInertialNumber * (1.0 + 1e-12),
+          fmt::format("{} = {:g} shears at an inertial number of {:.3g}; allowed up to {:g} (a granular "
+                      "gas beyond; DEM.md asks for I < 1e-3): below {:.4g} mm/s here",
+                      sh.where("velocity_mm_s"), s.shear.velocity_m_s / kMm, s.shear.inertial_number,
+                      kMaxInertialNumber, kMaxInertialNumber * s.shear.velocity_m_s / s.shear.inertial_number / kMm));
   read_ramp(sh, s);
   sh.finish();
 
@@ -346,9 +375,9 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   s.consolidation.max_windows = 60;
   s.consolidation.window_steps = 2000;
   if (auto c = top.table("consolidation")) {
-    s.consolidation.sigma_tolerance = c->optional_positive("sigma_tolerance").value_or(0.02);
-    s.consolidation.plate_tolerance_d50 = c->optional_positive("plate_tolerance_d50").value_or(1e-3);
-    s.consolidation.kinetic_energy_J = c->optional_positive("kinetic_energy_J").value_or(1e-6);
+    s.consolidation.sigma_tolerance = c->optional_positive("sigma_tolerance", 1.0).value_or(0.02);
+    s.consolidation.plate_tolerance_d50 = c->optional_positive("plate_tolerance_d50", 1.0).value_or(1e-3);
+    s.consolidation.kinetic_energy_J = c->optional_positive("kinetic_energy_J", 1e3).value_or(1e-6);
     s.consolidation.windows_required = c->optional_count("windows_required").value_or(3);
     s.consolidation.max_windows = c->optional_count("max_windows").value_or(60);
     s.consolidation.window_steps = c->optional_count("window_steps").value_or(2000);
@@ -357,24 +386,24 @@ Scene parse_scene(const std::string& text, const std::string& source) {
 
   s.outputs = {0.01 * kMm, 4, 0.25, 0.5 * kMm};
   if (auto o = top.table("output")) {
-    s.outputs.timeseries_every_m = o->optional_positive("timeseries_every_mm").value_or(0.01) * kMm;
+    // A spacing beyond the travel would leave the time series with its first row only.
+    const double travel_mm = s.shear.travel_m() / kMm;
+    s.outputs.timeseries_every_m = o->optional_positive("timeseries_every_mm", travel_mm).value_or(0.01) * kMm;
     s.outputs.profile_windows = o->optional_count("profile_windows").value_or(4);
-    s.outputs.profile_bin_d50 = o->optional_positive("profile_bin_d50").value_or(0.25);
-    s.outputs.vtk_every_m = o->optional_positive("vtk_every_mm").value_or(0.5) * kMm;
+    s.outputs.profile_bin_d50 = o->optional_positive("profile_bin_d50", s.height_m / d50).value_or(0.25);
+    s.outputs.vtk_every_m = o->optional_positive("vtk_every_mm", kMaxTravelMm).value_or(0.5) * kMm;
     o->finish();
   }
 
   s.servo = {0.3, 1.0, 2.0};
   if (auto sv = top.table("servo")) {
-    s.servo.vel_max_m_s = sv->optional_positive("vel_max_m_s").value_or(0.3);
-    s.servo.kp = sv->optional_positive("kp").value_or(1.0);
-    s.servo.kp_shear = sv->optional_positive("kp_shear").value_or(2.0);
+    s.servo.vel_max_m_s = sv->optional_positive("vel_max_m_s", kMaxServoSpeedMS).value_or(0.3);
+    s.servo.kp = sv->optional_positive("kp", kMaxServoGain).value_or(1.0);
+    s.servo.kp_shear = sv->optional_positive("kp_shear", kMaxServoGain).value_or(2.0);
     sv->finish();
   }
   if (auto nu = top.table("numerics")) {
-    s.dt_fraction = nu->optional_positive("dt_fraction").value_or(kDefaultDtFraction);
-    require(s.dt_fraction <= kMaxDtFraction,
-            range_error(*nu, "dt_fraction", s.dt_fraction, fmt::format("(0, {:g}]", kMaxDtFraction)));
+    s.dt_fraction = nu->optional_positive("dt_fraction", kMaxDtFraction).value_or(kDefaultDtFraction);
     nu->finish();
   }
   if (auto rq = top.table("requirements")) s.requirements = read_requirements(*rq);

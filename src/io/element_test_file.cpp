@@ -1,7 +1,6 @@
 #include "io/element_test_file.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
@@ -16,6 +15,17 @@ namespace {
 using nlohmann::json;
 
 constexpr double kDegree = M_PI / 180.0;
+
+// Physical ranges of element-test values (beyond them a value is a typo or a units mistake; the
+// model's own domain checks, e.g. e0 in (e_d, e_i), come on top).
+constexpr double kMaxStressKPa = 1e5;      // 100 MPa: far beyond grain crushing
+constexpr double kMaxShearStrain = 10.0;   // 1000 % shear strain
+constexpr double kMaxVoidRatio = 10.0;
+constexpr double kMaxK0 = 10.0;            // lateral stress ratio
+constexpr double kMaxLengthMm = 1e4;       // shear-zone thickness, grain size
+constexpr double kMaxRoughness = 100.0;    // R_n = R_max / d50
+constexpr double kMaxIncrements = 1e8;     // a path longer than this would run for hours
+const Range kRelativeTolerance{0.0, 0.1, true, false};  // rtol, Newton tolerance
 
 void read_model(TableReader model, ElementTestSpec& spec, const std::filesystem::path& base) {
   spec.model = model.text("name");
@@ -56,18 +66,15 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
   models::KappaR k{1.0, {}};
   std::string origin;
   if (source == "kappa_r") {
-    k.value = r->number("kappa_r");
-    if (!(k.value >= models::kKappaRFloor && k.value <= 1.0))
-      throw InputError(fmt::format("{} = {:g} is out of range; allowed [{:g}, 1]", r->where("kappa_r"),
-                                   k.value, models::kKappaRFloor));
+    k.value = r->number_in("kappa_r", closed(models::kKappaRFloor, 1.0));
     origin = "given";
   } else if (source == "R_n") {
-    const double base = r->optional_number("log_base").value_or(10.0);
-    const double rn = r->positive("R_n");
+    const double base = r->optional_number_in("log_base", {1.0, 1e3, true, false}).value_or(10.0);
+    const double rn = r->positive("R_n", kMaxRoughness);
     k = models::kappa_r_from_normalized_roughness(rn, base);
     origin = fmt::format("R_n = {:g}, eq. 5.35 with log base {:g}", rn, base);
   } else {
-    const double delta = r->number("delta_deg");
+    const double delta = r->number_in("delta_deg", {0.0, 90.0, true, true});
     k = models::kappa_r_from_friction_angles(delta * kDegree, models::critical_friction_angle(spec.inputs));
     origin = fmt::format("delta = {:g} deg, eq. 5.36", delta);
   }
@@ -91,9 +98,9 @@ constexpr double kMaxInitialRho = 2.0;
 // The value as written, arrays included (describe() names only the type of an array).
 std::string written(const toml::node& node) {
   if (const auto* arr = node.as_array()) {
-    std::ostringstream os;
-    os << *arr;
-    return os.str();
+    std::string s;
+    for (const auto& v : *arr) s += (s.empty() ? "" : ", ") + written(v);
+    return "[" + s + "]";
   }
   return describe(node);
 }
@@ -138,9 +145,9 @@ void read_delta(TableReader& t, ElementTestSpec& spec) {
 }
 
 void read_initial(TableReader t, ElementTestSpec& spec) {
-  spec.initial.sigma_n = t.positive("sigma_n_kPa");
-  spec.initial.e0 = t.positive("e0");
-  if (auto k0 = t.optional_positive("K0")) {
+  spec.initial.sigma_n = t.positive("sigma_n_kPa", kMaxStressKPa);
+  spec.initial.e0 = t.positive("e0", kMaxVoidRatio);
+  if (auto k0 = t.optional_positive("K0", kMaxK0)) {
     spec.initial.K0 = *k0;
   } else if (const double k0_oed = models::oedometric_K0(spec.inputs); std::isfinite(k0_oed)) {
     spec.initial.K0 = k0_oed;  // oedometric start (CONVENTIONS.md)
@@ -158,9 +165,9 @@ void read_initial(TableReader t, ElementTestSpec& spec) {
 void read_zone(std::optional<TableReader> t, ElementTestSpec& spec) {
   if (t) {
     if (t->has("d_s_mm")) {
-      spec.zone.d_s_mm = t->positive("d_s_mm");
+      spec.zone.d_s_mm = t->positive("d_s_mm", kMaxLengthMm);
     } else {
-      spec.zone.d_s_mm = t->positive("d50_mm") * t->positive("d_s_over_d50");
+      spec.zone.d_s_mm = t->positive("d50_mm", kMaxLengthMm) * t->positive("d_s_over_d50", kMaxLengthMm);
     }
     const std::string m = t->optional_text("strain_measure").value_or("linear");
     if (m == "linear") spec.zone.measure = driver::ShearStrainMeasure::kLinear;
@@ -175,7 +182,7 @@ void read_boundary(TableReader t, ElementTestSpec& spec) {
   spec.boundary.kind = driver::parse_boundary_kind(t.text("type"), t.where("type"));
   if (spec.boundary.kind == driver::BoundaryKind::kCNS) {
     const std::string key = t.one_of({"K_kPa_per_mm", "K_kPa"});
-    const double k = t.positive(key);
+    const double k = t.positive(key, kInf);
     spec.boundary.K_kPa = key == "K_kPa" ? k : k * spec.zone.d_s_mm;  // K = K_per_mm d_s
   }
   t.finish();
@@ -187,8 +194,19 @@ void read_boundary(TableReader t, ElementTestSpec& spec) {
 // A shear strain given as gamma or as a displacement u (mm) through d_s.
 double strain(TableReader& t, const std::string& gamma_key, const std::string& u_key,
               const driver::ShearZone& zone) {
-  if (t.one_of({gamma_key, u_key}) == gamma_key) return t.positive(gamma_key);
-  return zone.gamma_of(t.positive(u_key));
+  if (t.one_of({gamma_key, u_key}) == gamma_key) return t.positive(gamma_key, kMaxShearStrain);
+  const double u = t.positive(u_key, kMaxLengthMm);
+  const double gamma = zone.gamma_of(u);
+  if (!(gamma <= kMaxShearStrain))
+    throw InputError(fmt::format("{} = {:g} is a shear strain of {:g} over d_s = {:g} mm; allowed up to {:g}",
+                                 t.where(u_key), u, gamma, zone.d_s_mm, kMaxShearStrain));
+  return gamma;
+}
+
+void check_length(const TableReader& t, double increments) {
+  if (increments > kMaxIncrements)
+    throw InputError(fmt::format("{}: the path has {:g} increments; allowed up to {:g} (fewer cycles or "
+                                 "increments)", t.where(), increments, kMaxIncrements));
 }
 
 void read_path(TableReader t, ElementTestSpec& spec) {
@@ -206,13 +224,14 @@ void read_path(TableReader t, ElementTestSpec& spec) {
     const double a = strain(t, "amplitude_gamma", "amplitude_u_mm", spec.zone);
     const int cycles = t.count("cycles");
     const int per_quarter = t.count("increments_per_quarter");
+    check_length(t, 4.0 * cycles * per_quarter);  // before a path of 4 stages per cycle is built
     if (t.has("steps")) {
       if (spec.boundary.kind != driver::BoundaryKind::kCNL)
         throw InputError(fmt::format("{}: staged cycles step sigma_n and need boundary type CNL",
                                      t.where("steps")));
       std::vector<driver::CyclicStage> stages;
       for (auto& s : t.array_of_tables("steps")) {
-        stages.push_back({s.count("from_cycle"), s.positive("sigma_n_kPa")});
+        stages.push_back({s.count("from_cycle"), s.positive("sigma_n_kPa", kMaxStressKPa)});
         s.finish();
         out["steps"].push_back({{"from_cycle", stages.back().from_cycle},
                                 {"sigma_n_kPa", stages.back().sigma_n_kPa}});
@@ -232,7 +251,7 @@ void read_path(TableReader t, ElementTestSpec& spec) {
     std::vector<driver::StagedStep> steps;
     for (auto& s : t.array_of_tables("steps")) {
       const double at = strain(s, "at_gamma", "at_u_mm", spec.zone);
-      steps.push_back({at, s.positive("sigma_n_kPa")});
+      steps.push_back({at, s.positive("sigma_n_kPa", kMaxStressKPa)});
       s.finish();
       out["steps"].push_back({{"at_gamma", at}, {"sigma_n_kPa", steps.back().sigma_n_kPa}});
     }
@@ -240,7 +259,7 @@ void read_path(TableReader t, ElementTestSpec& spec) {
                                     t.optional_count("step_increments").value_or(50));
     out["gamma"] = g;
   } else if (kind == "oedometric") {
-    const double to = t.positive("sigma_n_end_kPa");
+    const double to = t.positive("sigma_n_end_kPa", kMaxStressKPa);
     spec.path = driver::oedometric_path(spec.initial.sigma_n, to, t.count("increments"));
     out["sigma_n_end_kPa"] = to;
   } else {
@@ -250,6 +269,7 @@ void read_path(TableReader t, ElementTestSpec& spec) {
   t.finish();
   long n = 0;
   for (const auto& s : spec.path) n += s.increments;
+  check_length(t, double(n));
   out["increments_total"] = n;
   spec.resolved["path"] = out;
 }
@@ -266,7 +286,7 @@ void read_integration(std::optional<TableReader> t, ElementTestSpec& spec) {
       is.scheme = integration::Scheme::kAdaptive;
       is.pair = t->optional_text("pair").value_or("rk32");
       integration::embedded_pair(is.pair);  // validates the name
-      is.rtol = t->optional_positive("rtol").value_or(is.rtol);
+      is.rtol = t->optional_number_in("rtol", kRelativeTolerance).value_or(is.rtol);
     } else {
       throw InputError(fmt::format("{} = \"{}\"; allowed \"adaptive\" or \"euler\"", t->where("scheme"), scheme));
     }
@@ -274,7 +294,7 @@ void read_integration(std::optional<TableReader> t, ElementTestSpec& spec) {
     if (method == "closed-form") mc.method = driver::MixedControlMethod::kClosedForm;
     else if (method != "newton")
       throw InputError(fmt::format("{} = \"{}\"; allowed \"newton\" or \"closed-form\"", t->where("mixed_control"), method));
-    mc.tolerance = t->optional_positive("tolerance").value_or(mc.tolerance);
+    mc.tolerance = t->optional_number_in("tolerance", kRelativeTolerance).value_or(mc.tolerance);
     t->finish();
   }
   if (mc.method == driver::MixedControlMethod::kClosedForm && is.scheme != integration::Scheme::kExplicitEuler)

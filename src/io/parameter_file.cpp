@@ -1,5 +1,6 @@
 #include "io/parameter_file.hpp"
 
+#include <cmath>
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
@@ -19,6 +20,9 @@ ParameterTables read_parameter_tables(const toml::table& root, const std::string
       const auto number = v.value<double>();
       if (!number || !(v.is_integer() || v.is_floating_point()))
         throw InputError(fmt::format("{}: key '{}.{}' = {} is not a number", file, name.str(),
+                                     key.str(), describe(v)));
+      if (!std::isfinite(*number))  // TOML admits inf and nan
+        throw InputError(fmt::format("{}: key '{}.{}' = {} is not a finite number", file, name.str(),
                                      key.str(), describe(v)));
       values[std::string(key.str())] = *number;
     }

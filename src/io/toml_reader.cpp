@@ -1,6 +1,7 @@
 #include "io/toml_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fmt/core.h>
 #include <sstream>
@@ -25,6 +26,7 @@ std::string describe(const toml::node& node) {
   if (auto s = node.as_string()) return fmt::format("\"{}\"", s->get());
   if (node.is_table()) return "a table";
   if (node.is_array()) return "an array";
+  if (const auto* f = node.as_floating_point()) return fmt::format("{}", f->get());  // 0.1, not 0.1000...01
   node.visit([&os](const auto& v) {
     if constexpr (toml::is_value<decltype(v)>) os << v;
   });
@@ -41,8 +43,12 @@ const toml::node* TableReader::node(const std::string& key) {
 std::optional<double> TableReader::optional_number(const std::string& key) {
   const toml::node* n = node(key);
   if (n == nullptr) return std::nullopt;
-  if (auto v = n->value<double>(); v && (n->is_floating_point() || n->is_integer())) return *v;
-  throw InputError(fmt::format("{} = {} is not a number", where(key), describe(*n)));
+  const auto v = n->value<double>();
+  if (!v || !(n->is_floating_point() || n->is_integer()))
+    throw InputError(fmt::format("{} = {} is not a number", where(key), describe(*n)));
+  if (!std::isfinite(*v))  // TOML admits inf and nan; no setting means either
+    throw InputError(fmt::format("{} = {} is not a finite number", where(key), describe(*n)));
+  return *v;
 }
 
 namespace {
@@ -79,16 +85,24 @@ double TableReader::number(const std::string& key) {
   throw InputError(missing(key, "a number"));
 }
 
-std::optional<double> TableReader::optional_positive(const std::string& key) {
+std::optional<double> TableReader::optional_number_in(const std::string& key, const Range& range) {
   auto v = optional_number(key);
-  if (v && !(*v > 0.0))
-    throw InputError(fmt::format("{} = {:g} is out of range; allowed (0, inf)", where(key), *v));
+  if (v && !range.admits(*v))
+    throw InputError(fmt::format("{} = {:g} is out of range; allowed {}", where(key), *v, range.text()));
   return v;
 }
 
-double TableReader::positive(const std::string& key) {
-  if (auto v = optional_positive(key)) return *v;
-  throw InputError(missing(key, "a number > 0"));
+double TableReader::number_in(const std::string& key, const Range& range) {
+  if (auto v = optional_number_in(key, range)) return *v;
+  throw InputError(missing(key, "a number in " + range.text()));
+}
+
+std::optional<double> TableReader::optional_positive(const std::string& key, double upper) {
+  return optional_number_in(key, iwb::positive(upper));
+}
+
+double TableReader::positive(const std::string& key, double upper) {
+  return number_in(key, iwb::positive(upper));
 }
 
 std::optional<int> TableReader::optional_count(const std::string& key) {

@@ -7,6 +7,8 @@
 #include <toml++/toml.h>
 #include <vector>
 
+#include "common/range.hpp"
+
 namespace iwb::io {
 
 class TableReader {
@@ -15,9 +17,12 @@ class TableReader {
 
   double number(const std::string& key);
   std::optional<double> optional_number(const std::string& key);
-  // A number that must be > 0.
-  double positive(const std::string& key);
-  std::optional<double> optional_positive(const std::string& key);
+  // Every number is finite (TOML's inf and nan are refused); these also check a range.
+  double number_in(const std::string& key, const Range& range);
+  std::optional<double> optional_number_in(const std::string& key, const Range& range);
+  // A number that must be > 0 (and at most `upper`).
+  double positive(const std::string& key, double upper = kInf);
+  std::optional<double> optional_positive(const std::string& key, double upper = kInf);
   int count(const std::string& key);  // integer >= 1
   std::optional<int> optional_count(const std::string& key);
   std::string text(const std::string& key);

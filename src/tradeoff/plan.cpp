@@ -12,6 +12,7 @@
 #include "comparison/seed_scatter.hpp"
 #include "dem/scene.hpp"
 #include "io/parameter_file.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 #include "tradeoff/tradeoff.hpp"
 
@@ -169,7 +170,7 @@ json load_tradeoff(const PlanOptions& opt) {
     throw InputError(fmt::format("{}: no tradeoff data for {}; run `iwb tradeoff {} -o {}` first",
                                  file.string(), opt.scene_file.string(), opt.scene_file.string(),
                                  dir.string()));
-  const json t = json::parse(io::read_file(file));
+  const json t = io::read_json_file(file);  // a truncated file is named, not a raw parse error
   if (t.value("dem_scene_sha256", "") != dem_scene_sha256(opt.scene_file))
     throw InputError(
         fmt::format("{}: this tradeoff was run on another version of {} (the scene's DEM settings "

@@ -7,6 +7,7 @@
 #include "dem/crosscheck.hpp"
 #include "dem/numerics.hpp"
 #include "dem/requirements.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 #include "tradeoff/knobs.hpp"
 #include "tradeoff/tradeoff_output.hpp"
@@ -116,10 +117,10 @@ json row_of(const Variant& v, const fs::path& dir) {
             {"factor", v.factor}, {"seed", v.seed}, {"settings", campaign::describe(v.job.values)},
             {"status", "not run"}};
   if (!fs::exists(dir / "manifest.json")) return r;
-  const auto m = json::parse(io::read_file(dir / "manifest.json"));
+  const auto m = io::read_json_file(dir / "manifest.json");
   r["status"] = m.value("status", "?");
   if (r["status"] != "complete") return r;
-  const auto s = json::parse(io::read_file(dir / "summary.json"));
+  const auto s = io::read_json_file(dir / "summary.json");
   r["particles"] = m.value("particle_count", 0);
   r["timestep_s"] = m.value("/numerics/timestep_s"_json_pointer, 0.0);
   r["stiffness_level"] = m.value("stiffness_level", 0.0);

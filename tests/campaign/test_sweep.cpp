@@ -147,3 +147,15 @@ TEST_CASE("sweep: a job's scene text does not depend on how the sweep file's pat
   REQUIRE(relative.size() == absolute.size());
   for (std::size_t i = 0; i < relative.size(); ++i) CHECK(relative[i].scene_text == absolute[i].scene_text);
 }
+
+TEST_CASE("sweep: [slurm] time takes Slurm's formats only, anything else is refused before a script is written",
+          "[campaign]") {
+  for (const char* ok : {"60", "90:30", "01:00:00", "48:00:00", "2-12", "2-12:30", "2-12:30:00", "0-1:5:9"})
+    CHECK(campaign::is_slurm_time(ok));
+  for (const char* bad : {"banana", "", "1:61:00", "1:00:61", "2-24", "2-1:60", "1h", "01:00:00 ", "-1", "1:2:3:4"})
+    CHECK_FALSE(campaign::is_slurm_time(bad));
+  const auto dir = test::campaign_dir("slurm_time");
+  CHECK_THROWS_WITH(campaign::load_sweep(test::write_sweep(dir, "[slurm]\ntime = \"banana\"\n")),
+                    Catch::Contains("key 'slurm.time' = \"banana\" is not a Slurm time; allowed MM, MM:SS, HH:MM:SS"));
+  CHECK(campaign::load_sweep(test::write_sweep(dir, "[slurm]\ntime = \"1-00:00:00\"\n")).slurm_time == "1-00:00:00");
+}

@@ -6,15 +6,20 @@
 
 namespace iwb::models {
 
+// Upper bounds far beyond published sets (m_R 2-8, m_T 1-5, beta_r 0.05-0.5, chi 1-10): only a
+// units mistake or a typo is refused.
+constexpr double kMaxStiffnessFactor = 100.0;
+constexpr double kMaxExponent = 100.0;
+
 const ParameterTable& IntergranularStrainParameters::table() {
   static const ParameterTable t{
       "intergranular_strain",
       {
           {"R", "-", {0.0, true}, {0.01, false}, "size R of the elastic range, max ||delta|| (eq. 5.43)"},
-          {"m_R", "-", {1.0, false}, {kUnbounded, true}, "stiffness factor m_R after a 180 deg reversal"},
-          {"m_T", "-", {1.0, false}, {kUnbounded, true}, "stiffness factor m_T after a 90 deg turn"},
-          {"beta_r", "-", {0.0, true}, {kUnbounded, true}, "evolution exponent beta_r of delta (eq. 5.46)"},
-          {"chi", "-", {0.0, true}, {kUnbounded, true}, "interpolation exponent chi of rho (eq. 5.45)"},
+          {"m_R", "-", {1.0, false}, {kMaxStiffnessFactor, false}, "stiffness factor m_R after a 180 deg reversal"},
+          {"m_T", "-", {1.0, false}, {kMaxStiffnessFactor, false}, "stiffness factor m_T after a 90 deg turn"},
+          {"beta_r", "-", {0.0, true}, {kMaxExponent, false}, "evolution exponent beta_r of delta (eq. 5.46)"},
+          {"chi", "-", {0.0, true}, {kMaxExponent, false}, "interpolation exponent chi of rho (eq. 5.45)"},
       }};
   return t;
 }

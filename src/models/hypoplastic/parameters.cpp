@@ -7,18 +7,24 @@
 
 namespace iwb::models {
 
+// Upper bounds: far beyond every published set (h_s 1e3-1e8 kPa, void ratios below 2, alpha
+// 0.1-0.35, beta 1-3), so only a units mistake or a typo is refused (1e300 kPa reached the rate).
+constexpr double kMaxHardnessKPa = 1e9;
+constexpr double kMaxVoidRatio = 10.0;
+constexpr double kMaxExponent = 10.0;
+
 const ParameterTable& HypoplasticParameters::table() {
   static const ParameterTable t{
       "hypoplastic",
       {
           {"phi_c_deg", "deg", {0.0, true}, {90.0, true}, "critical state friction angle phi_c"},
-          {"hs_kPa", "kPa", {0.0, true}, {kUnbounded, true}, "granular hardness h_s"},
+          {"hs_kPa", "kPa", {0.0, true}, {kMaxHardnessKPa, false}, "granular hardness h_s"},
           {"n", "-", {0.0, true}, {1.0, true}, "exponent n of the compression law (eq. 5.13)"},
-          {"ed0", "-", {0.0, true}, {kUnbounded, true}, "minimum void ratio e_d0 at p = 0"},
-          {"ec0", "-", {0.0, true}, {kUnbounded, true}, "critical void ratio e_c0 at p = 0"},
-          {"ei0", "-", {0.0, true}, {kUnbounded, true}, "maximum void ratio e_i0 at p = 0"},
-          {"alpha", "-", {0.0, false}, {kUnbounded, true}, "pyknotropy exponent alpha (eq. 5.14)"},
-          {"beta", "-", {0.0, false}, {kUnbounded, true}, "stiffness exponent beta (eq. 5.12)"},
+          {"ed0", "-", {0.0, true}, {kMaxVoidRatio, false}, "minimum void ratio e_d0 at p = 0"},
+          {"ec0", "-", {0.0, true}, {kMaxVoidRatio, false}, "critical void ratio e_c0 at p = 0"},
+          {"ei0", "-", {0.0, true}, {kMaxVoidRatio, false}, "maximum void ratio e_i0 at p = 0"},
+          {"alpha", "-", {0.0, false}, {kMaxExponent, false}, "pyknotropy exponent alpha (eq. 5.14)"},
+          {"beta", "-", {0.0, false}, {kMaxExponent, false}, "stiffness exponent beta (eq. 5.12)"},
       }};
   return t;
 }

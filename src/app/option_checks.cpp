@@ -1,0 +1,104 @@
+#include "app/option_checks.hpp"
+
+#include <filesystem>
+#include <fmt/core.h>
+
+namespace iwb::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Parses the whole text as a double ("5kPa" and "" are not numbers); NaN and inf parse.
+bool parse_double(const std::string& text, double& v) {
+  try {
+    std::size_t used = 0;
+    v = std::stod(text, &used);
+    return used == text.size();
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+std::string kind_of(const fs::path& p) {
+  std::error_code ec;
+  const auto s = fs::status(p, ec);
+  if (!fs::exists(s)) return "missing";
+  if (fs::is_directory(s)) return "directory";
+  if (fs::is_regular_file(s)) return "file";
+  return "other";
+}
+
+}  // namespace
+
+CLI::Validator number_in(const Range& range, const std::string& unit) {
+  const std::string allowed = range.requirement() + (unit.empty() ? "" : " (" + unit + ")");
+  return CLI::Validator(
+      [range, allowed](std::string& text) {
+        double v = 0.0;
+        if (!parse_double(text, v)) return fmt::format("{}: not a number; {}", text, allowed);
+        if (!range.admits(v)) return fmt::format("{}: {}", text, allowed);
+        return std::string();
+      },
+      "NUMBER in " + range.text());
+}
+
+CLI::Validator whole_in(long lower, long upper) {
+  const std::string allowed = fmt::format("must be a whole number in [{}, {}]", lower, upper);
+  return CLI::Validator(
+      [lower, upper, allowed](std::string& text) {
+        try {
+          std::size_t used = 0;
+          const long v = std::stol(text, &used);
+          if (used == text.size() && v >= lower && v <= upper) return std::string();
+        } catch (const std::exception&) {
+        }
+        return fmt::format("{}: {}", text, allowed);
+      },
+      fmt::format("INT in [{}, {}]", lower, upper));
+}
+
+namespace {
+// A validator of a path: `refusal` gets the text and what is there ("missing", "file",
+// "directory", "other") and says what is wrong, or nothing.
+CLI::Validator path_check(const std::string& name, std::string (*refusal)(const std::string&, const std::string&)) {
+  return CLI::Validator([refusal](std::string& text) { return refusal(text, kind_of(text)); }, name);
+}
+}  // namespace
+
+CLI::Validator input_file() {
+  return path_check("FILE", [](const std::string& text, const std::string& kind) -> std::string {
+    if (kind == "file") return "";
+    if (kind == "missing") return text + ": no such file";
+    return fmt::format("{}: is a {}, not a file", text, kind == "directory" ? "directory" : "special file");
+  });
+}
+
+CLI::Validator input_directory() {
+  return path_check("DIR", [](const std::string& text, const std::string& kind) -> std::string {
+    if (kind == "directory") return "";
+    return text + (kind == "missing" ? ": no such directory" : ": is a file, not a directory");
+  });
+}
+
+CLI::Validator input_path() {
+  return path_check("PATH", [](const std::string& text, const std::string& kind) -> std::string {
+    return kind == "missing" ? text + ": no such file or directory" : "";
+  });
+}
+
+CLI::Validator output_file() {
+  return path_check("FILE", [](const std::string& text, const std::string& kind) -> std::string {
+    if (text.empty()) return "an empty path; give a file name";
+    return kind == "directory" ? text + ": is a directory; give the file to write" : "";
+  });
+}
+
+CLI::Validator output_directory() {
+  return path_check("DIR", [](const std::string& text, const std::string& kind) -> std::string {
+    if (text.empty()) return "an empty path; give a directory";
+    return kind == "missing" || kind == "directory" ? "" : text + ": is a file; give the directory to write";
+  });
+}
+
+}  // namespace iwb::app
