@@ -1,0 +1,31 @@
+#include "io/json_file.hpp"
+
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::io {
+
+nlohmann::json read_json(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) throw InputError(fmt::format("{}: missing", file.string()));
+  try {
+    return nlohmann::json::parse(read_file(file));
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(fmt::format("{}: not valid JSON (truncated?): {}", file.string(), e.what()));
+  }
+}
+
+template <class T>
+T json_field(const nlohmann::json& j, const std::string& pointer, const std::filesystem::path& file) {
+  try {
+    return j.at(nlohmann::json::json_pointer(pointer)).get<T>();
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(fmt::format("{}: missing or malformed field '{}'", file.string(), pointer));
+  }
+}
+
+template std::string json_field<std::string>(const nlohmann::json&, const std::string&, const std::filesystem::path&);
+template double json_field<double>(const nlohmann::json&, const std::string&, const std::filesystem::path&);
+
+}  // namespace iwb::io
