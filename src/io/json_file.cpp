@@ -27,5 +27,6 @@ T json_field(const nlohmann::json& j, const std::string& pointer, const std::fil
 
 template std::string json_field<std::string>(const nlohmann::json&, const std::string&, const std::filesystem::path&);
 template double json_field<double>(const nlohmann::json&, const std::string&, const std::filesystem::path&);
+template int json_field<int>(const nlohmann::json&, const std::string&, const std::filesystem::path&);
 
 }  // namespace iwb::io
