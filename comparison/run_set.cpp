@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "comparison/seed_scatter.hpp"
+#include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::comparison {
@@ -148,8 +149,10 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
     throw;
   }
   outcome.hypotheses = to_json(check_hypotheses(records), records);
-  io::write_atomically(opt.out / "hypotheses.json", outcome.hypotheses.dump(2) + "\n");
-  io::write_atomically(opt.out / "hypotheses.md", to_markdown(outcome.hypotheses));
+  io::StagedDirectory staged(opt.out);  // both or neither, then the manifest says complete
+  io::write_atomically(staged.path() / "hypotheses.json", outcome.hypotheses.dump(2) + "\n");
+  io::write_atomically(staged.path() / "hypotheses.md", to_markdown(outcome.hypotheses));
+  staged.commit_into();
   manifest["runs"] = names;
   manifest["reused"] = outcome.reused;
   manifest["files"] = {"hypotheses.json", "hypotheses.md"};

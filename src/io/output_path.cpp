@@ -34,4 +34,15 @@ void StagedDirectory::commit() {
   committed_ = true;
 }
 
+void StagedDirectory::commit_into() {
+  fs::create_directories(final_);
+  for (const auto& entry : fs::directory_iterator(staging_)) {
+    const fs::path target = final_ / entry.path().filename();
+    if (entry.is_directory()) fs::remove_all(target);  // a file is replaced by the rename itself
+    fs::rename(entry.path(), target);
+  }
+  fs::remove(staging_);
+  committed_ = true;
+}
+
 }  // namespace iwb::io

@@ -11,8 +11,11 @@ namespace iwb::io {
 // directory or lies under an existing file.
 void require_file_destination(const std::filesystem::path& file, const std::string& option);
 
-// A directory built under a temporary sibling (<final>.tmp<pid>) and renamed to `final` by
-// commit(), which replaces an earlier `final`; not committed, the sibling is removed.
+// A directory built under a temporary sibling (<final>.tmp<pid>): commit() renames it to `final`,
+// replacing an earlier `final` whole (a directory that is all ours, such as a report's figures);
+// commit_into() moves its entries into `final`, replacing same-named ones and keeping the rest (a
+// directory the user named, which may hold other things). Not committed, the sibling is removed:
+// the files of one result appear together or not at all.
 class StagedDirectory {
  public:
   explicit StagedDirectory(std::filesystem::path final);
@@ -22,6 +25,7 @@ class StagedDirectory {
   const std::filesystem::path& path() const { return staging_; }  // write here
   const std::filesystem::path& final_path() const { return final_; }
   void commit();
+  void commit_into();
 
  private:
   std::filesystem::path final_, staging_;
