@@ -9,6 +9,7 @@
 
 #include "comparison/figure.hpp"
 #include "driver/element_test.hpp"
+#include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::bench {
@@ -314,12 +315,13 @@ nlohmann::json run_integrator_bench(const IntegratorBenchOptions& opt) {
                    p.status == "complete" ? "" : "  " + p.status.substr(0, 80));
         all.push_back(p);
       }
-  std::filesystem::create_directories(opt.out);
-  io::write_atomically(opt.out / "integrators.csv", points_csv(all));
+  io::StagedDirectory staged(opt.out);  // the table, its summary and its fronts together or not at all
+  io::write_atomically(staged.path() / "integrators.csv", points_csv(all));
   const auto ov = overall(all, tp.increments);
   const std::string md = markdown(all, ov, opt, tp);
-  io::write_atomically(opt.out / "integrators.md", md);
-  for (const auto& m : opt.models) comparison::draw(pareto_figure(all, m), opt.out);
+  io::write_atomically(staged.path() / "integrators.md", md);
+  for (const auto& m : opt.models) comparison::draw(pareto_figure(all, m), staged.path());
+  staged.commit_into();
   fmt::print("\n{}\n-> {}\n", md.substr(md.find("| model | BC")), opt.out.string());
   nlohmann::json out = nlohmann::json::array();
   for (const auto& p : all)

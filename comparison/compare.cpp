@@ -179,12 +179,14 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
       {"replay", {{"normal_control", "the DEM's boundary condition: CNL with its measured sigma_n(t), CNS with its K, CV"},
                   {"initial_state", "DEM sigma_n and band void ratio of the first row; K0 = 1 - sin(phi_c)"},
                   {"strain_increment", kReplayStrainIncrement}}}};
-  io::write_atomically(opt.out / "compare.json", result.dump(2) + "\n");
-  io::write_atomically(opt.out / "compare.csv", curves_csv(dem, replays));
-  manifest["files"] = {"compare.json", "compare.csv"};
-  if (scatter.from_seeds()) {
-    io::write_atomically(opt.out / "seed_band.csv", seed_band_csv(dem, scatter));
-    manifest["files"].push_back("seed_band.csv");
+  std::vector<std::pair<std::string, std::string>> files = {{"compare.json", result.dump(2) + "\n"},
+                                                             {"compare.csv", curves_csv(dem, replays)}};
+  if (scatter.from_seeds()) files.push_back({"seed_band.csv", seed_band_csv(dem, scatter)});
+  manifest["files"] = json::array();
+  for (const auto& [name, content] : files) {
+    io::write_atomically(opt.out / name, content);
+    manifest["files"].push_back(name);
+    manifest["sha256"][name] = io::sha256_hex(content);  // `iwb report` refuses a file that changed since
   }
   manifest["finished"] = io::utc_timestamp();
   manifest["status"] = "complete";

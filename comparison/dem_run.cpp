@@ -24,7 +24,7 @@ std::optional<double> DemRun::band_d50() const {
 
 namespace {
 
-nlohmann::json read_json(const fs::path& path) {
+nlohmann::json read_json_file(const fs::path& path) {
   if (!fs::exists(path)) throw InputError(fmt::format("{}: missing (not a run directory of the contract?)", path.string()));
   return io::read_json_file(path);
 }
@@ -44,7 +44,7 @@ DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
   DemRun r;
   r.dir = dir;
   const fs::path manifest_path = dir / "manifest.json";
-  const auto m = read_json(manifest_path);
+  const auto m = read_json_file(manifest_path);
   r.status = field<std::string>(m, "/status", manifest_path);
   if (r.status != "complete" && !allow_partial)
     throw InputError(fmt::format("{}: run status is '{}'; pass --allow-partial to compare it anyway",
@@ -84,7 +84,7 @@ DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
     if (!(r.sigma_n_kPa[i] > 0.0))
       throw InputError(fmt::format("{}:{}: sigma_n_kPa = {:g}; the contract's normal stress is compression "
                                    "positive and must be > 0", ts_path.string(), i + 2, r.sigma_n_kPa[i]));
-  if (fs::exists(dir / "summary.json")) r.summary = read_json(dir / "summary.json");
+  if (fs::exists(dir / "summary.json")) r.summary = read_json_file(dir / "summary.json");
   return r;
 }
 

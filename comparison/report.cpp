@@ -1,13 +1,17 @@
 #include "comparison/report.hpp"
 
+#include <algorithm>
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "common/errors.hpp"
 #include "comparison/figure.hpp"
 #include "comparison/quantities.hpp"
 #include "comparison/verdict_table.hpp"
 #include "io/csv_table.hpp"
+#include "io/json_file.hpp"
+#include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::comparison {
@@ -32,11 +36,11 @@ std::string escape_html(const std::string& s) {
 
 // The DEM's seed band of one quantity (mean - SD, mean + SD per row), from the comparison's
 // seed_band.csv; empty without seeds.
-std::vector<std::pair<double, double>> seed_band(const fs::path& compare_dir, const std::string& mean_col,
+std::vector<std::pair<double, double>> seed_band(const std::optional<io::CsvTable>& seeds, const std::string& mean_col,
                                                  const std::string& sd_col) {
   std::vector<std::pair<double, double>> band;
-  if (!fs::exists(compare_dir / "seed_band.csv")) return band;
-  const auto t = io::read_csv_table(compare_dir / "seed_band.csv");
+  if (!seeds) return band;
+  const auto& t = *seeds;
   for (const auto& r : t.rows) band.push_back({r[t.column(mean_col)] - r[t.column(sd_col)], r[t.column(mean_col)] + r[t.column(sd_col)]});
   return band;
 }
@@ -91,9 +95,8 @@ Figure versus_u_x(const std::string& name, const std::string& what, const std::s
   return f;
 }
 
-Figure velocity_profile(const fs::path& dem_dir, const nlohmann::json& summary) {
+Figure velocity_profile(const io::CsvTable& prof, const nlohmann::json& summary) {
   Figure f{"velocity_profile", "DEM velocity profile (last window)", "vx / v_wall", "z / d50", {}, {}, "", ""};
-  const auto prof = io::read_csv_table(dem_dir / "profiles.csv");
   double last = -INFINITY;
   for (const auto& r : prof.rows) last = std::max(last, r[prof.column("u_x_mm_window")]);
   f.data.columns = {"vx_over_vwall", "z_over_d50"};
@@ -205,8 +208,7 @@ std::string html_table(const nlohmann::json& t) {
   return s + "</table>\n";
 }
 
-std::string hypotheses_section(const fs::path& file) {
-  const auto h = nlohmann::json::parse(io::read_file(file));
+std::string hypotheses_section(const fs::path& file, const nlohmann::json& h) {
   std::string s = fmt::format("<section><h2>Hypothesis checks over {} DEM runs</h2>\n<p>From {}.</p>\n", h["runs"].size(),
                               escape_html(file.string()));
   for (const auto& c : h["checks"]) {
@@ -253,7 +255,7 @@ ReportInputs resolve(const std::vector<fs::path>& paths) {
       if (fs::exists(p.parent_path() / "hypotheses.json")) add_unique(in.hypotheses, p.parent_path() / "hypotheses.json");
     } else if (fs::is_directory(p) && fs::exists(p / "hypotheses.json")) {
       add_unique(in.hypotheses, p / "hypotheses.json");
-      const auto set = nlohmann::json::parse(io::read_file(p / "hypotheses.json"));  // outlives the loop
+      const auto set = io::read_json_file(p / "hypotheses.json");  // outlives the loop
       for (const auto& r : set["runs"]) add_unique(in.compare_dirs, p / r["name"].get<std::string>());
     } else if (fs::is_regular_file(p) && set_file(p)) {
       add_unique(in.hypotheses, p.parent_path() / "hypotheses.json");
@@ -275,11 +277,75 @@ struct Section {
 nlohmann::json read_comparison(const fs::path& dir) {
   if (!fs::exists(dir / "compare.json"))
     throw InputError(fmt::format("{}: no compare.json (not a directory of `iwb compare`)", dir.string()));
-  auto cmp = nlohmann::json::parse(io::read_file(dir / "compare.json"));
+  auto cmp = io::read_json_file(dir / "compare.json");
   if (!cmp.contains("verdicts"))
     throw InputError(fmt::format("{}: made by an earlier iwb without verdicts; run `iwb compare` again",
                                  (dir / "compare.json").string()));
   return cmp;
+}
+
+// Everything one comparison's section shows, read and checked before anything is written, so
+// that a report is written whole or not at all.
+struct LoadedComparison {
+  fs::path dir, dem_dir;
+  nlohmann::json cmp, manifest, dem_manifest, summary;
+  io::CsvTable curves, profiles;
+  std::optional<io::CsvTable> seeds;
+  std::string dem_status() const { return dem_manifest.value("status", std::string("?")); }
+};
+
+// Files the comparison recorded a hash of (`iwb compare` since issue 15) must still have it.
+void check_hashes(const LoadedComparison& c) {
+  if (!c.manifest.contains("sha256")) return;
+  for (const auto& [name, sha] : c.manifest["sha256"].items())
+    if (io::sha256_hex(io::read_file(c.dir / name)) != sha.get<std::string>())
+      throw InputError(fmt::format("{}: changed since `iwb compare` wrote it (sha256 differs from {}'s; truncated?)",
+                                   (c.dir / name).string(), (c.dir / "manifest.json").string()));
+}
+
+// A variant the model completed has a row for every DEM row: fewer means compare.csv was cut.
+void check_curves(const LoadedComparison& c) {
+  const fs::path file = c.dir / "compare.csv";
+  const std::size_t dem_rows = io::read_csv_table(c.dem_dir / "timeseries.csv").rows.size();
+  const int vc = c.curves.column("variant");
+  if (vc < 0) throw InputError(fmt::format("{}: no column 'variant'", file.string()));
+  for (const auto& v : c.cmp["variants"]) {
+    const auto index = std::size_t(io::json_field<int>(v, "/index", c.dir / "compare.json"));
+    const auto rows = std::size_t(std::count_if(c.curves.rows.begin(), c.curves.rows.end(),
+                                                [&](const auto& r) { return std::size_t(r[vc]) == index; }));
+    if (v.value("status", "") == "complete" && rows != dem_rows)
+      throw InputError(fmt::format("{}: variant {} has {} rows, the DEM run {} (truncated?)", file.string(), index,
+                                   rows, dem_rows));
+  }
+}
+
+LoadedComparison load_comparison(const fs::path& dir) {
+  LoadedComparison c;
+  c.dir = dir;
+  c.cmp = read_comparison(dir);
+  c.manifest = io::read_json_file(dir / "manifest.json");
+  const auto status = io::json_field<std::string>(c.manifest, "/status", dir / "manifest.json");
+  if (status != "complete")
+    throw InputError(fmt::format("{}: the comparison's status is '{}'; a report shows finished comparisons only "
+                                 "(run `iwb compare` again)", (dir / "manifest.json").string(), status));
+  check_hashes(c);
+  c.curves = io::read_csv_table(dir / "compare.csv");
+  if (fs::exists(dir / "seed_band.csv")) c.seeds = io::read_csv_table(dir / "seed_band.csv");
+  c.dem_dir = io::json_field<std::string>(c.cmp, "/dem/dir", dir / "compare.json");
+  c.dem_manifest = io::read_json_file(c.dem_dir / "manifest.json");
+  c.summary = io::read_json_file(c.dem_dir / "summary.json");
+  c.profiles = io::read_csv_table(c.dem_dir / "profiles.csv");
+  check_curves(c);
+  return c;
+}
+
+// A DEM run compared with --allow-partial (failed, interrupted, implausible) is shown, but marked
+// where nobody can miss it: in the glance table and above its section.
+std::string dem_status_warning(const LoadedComparison& c) {
+  if (c.dem_status() == "complete") return "";
+  return fmt::format("<p class=\"breaks\">Warning: the DEM run {} did not complete (status: {}); it was compared "
+                     "with --allow-partial and its numbers are not a result.</p>\n",
+                     escape_html(c.dem_dir.string()), escape_html(c.dem_status()));
 }
 
 std::string verdict_section(const nlohmann::json& cmp) {
@@ -290,12 +356,13 @@ std::string verdict_section(const nlohmann::json& cmp) {
                          escape_html(cmp["fit"]["algorithm"].get<std::string>()));
 }
 
-Section comparison_section(const fs::path& dir, std::size_t k, const fs::path& files, const fs::path& html) {
-  const auto cmp = read_comparison(dir);
-  const fs::path dem_dir = cmp["dem"]["dir"].get<std::string>();
-  const auto curves = io::read_csv_table(dir / "compare.csv");
-  const auto summary = nlohmann::json::parse(io::read_file(dem_dir / "summary.json"));
-  const fs::path fig_dir = files / fmt::format("{}-{}", k, dir.filename().string());
+// Figures go to `staging` (the report's files directory while it is built); the page links them
+// where they will be, under `files`.
+Section comparison_section(const LoadedComparison& c, std::size_t k, const io::StagedDirectory& files,
+                           const fs::path& html) {
+  const auto& [dir, dem_dir, cmp, manifest, dem_manifest, summary, curves, profiles, seeds] = c;
+  const std::string fig_name = fmt::format("{}-{}", k, dir.filename().string());
+  const fs::path fig_dir = files.path() / fig_name;
   fs::create_directories(fig_dir);
   const auto& vs = cmp["variants"];
   std::vector<std::size_t> shown;
@@ -303,12 +370,12 @@ Section comparison_section(const fs::path& dir, std::size_t k, const fs::path& f
     if (cmp["verdicts"].contains(which)) shown.push_back(cmp["verdicts"][which].get<std::size_t>());
   std::vector<Figure> figs = {
       versus_u_x("tau_ux", "tau (kPa)", "tau_dem_kPa", "tau_model_kPa", curves, vs, shown,
-                 seed_band(dir, "tau_mean_kPa", "tau_sd_kPa")),
+                 seed_band(seeds, "tau_mean_kPa", "tau_sd_kPa")),
       versus_u_x("un_ux", "u_n (mm), dilation positive", "u_n_dem_mm", "u_n_model_mm", curves, vs, shown,
-                 seed_band(dir, "u_n_mean_mm", "u_n_sd_mm")),
+                 seed_band(seeds, "u_n_mean_mm", "u_n_sd_mm")),
       versus_u_x("sigman_ux", "sigma_n (kPa)", "sigma_n_dem_kPa", "sigma_n_model_kPa", curves, vs, shown,
-                 seed_band(dir, "sigma_n_mean_kPa", "sigma_n_sd_kPa")),
-      velocity_profile(dem_dir, summary)};
+                 seed_band(seeds, "sigma_n_mean_kPa", "sigma_n_sd_kPa")),
+      velocity_profile(profiles, summary)};
   std::vector<std::string> notes(figs.size());
   if (cmp["dem"]["boundary"] == "CNL")
     notes[2] = ". Under CNL every model follows the DEM's measured sigma_n by construction: its curves lie under the DEM's";
@@ -322,25 +389,26 @@ Section comparison_section(const fs::path& dir, std::size_t k, const fs::path& f
                       cmp["dem"]["R_n"].get<double>(), cmp["dem"]["d50_mm"].get<double>(),
                       cmp["dem"]["sigma_n0_kPa"].get<double>(), cmp["dem"]["e0_band"].get<double>(),
                       escape_html(cmp["replay"]["normal_control"].get<std::string>()));
-  body += verdict_section(cmp) + "<div class=\"figures\">\n";
+  body += dem_status_warning(c) + verdict_section(cmp) + "<div class=\"figures\">\n";
   for (std::size_t i = 0; i < figs.size(); ++i) {
     const auto svg = draw(figs[i], fig_dir);
     out.figures.push_back(svg);
     body += fmt::format("<figure>{}<figcaption>{}{} (data: {})</figcaption></figure>\n", inline_svg(svg),
                         escape_html(figs[i].title), escape_html(notes[i]),
-                        escape_html(fs::relative(fig_dir / (figs[i].name + ".csv"), html.parent_path()).string()));
+                        escape_html(fs::relative(files.final_path() / fig_name / (figs[i].name + ".csv"),
+                                                 html.parent_path()).string()));
   }
   body += "</div>\n<h3>Every variant</h3>\n" + metrics_table(cmp);
   body += "<h3>DEM derived quantities</h3>\n" + summary_table(summary);
   body += fmt::format("<details><summary>Provenance: DEM manifest</summary><pre>{}</pre></details>\n",
-                      escape_html(nlohmann::json::parse(io::read_file(dem_dir / "manifest.json")).dump(2)));
+                      escape_html(dem_manifest.dump(2)));
   body += fmt::format("<details><summary>Provenance: comparison manifest</summary><pre>{}</pre></details></section>\n",
-                      escape_html(io::read_file(dir / "manifest.json")));
+                      escape_html(manifest.dump(2)));
   return out;
 }
 
 // One line per comparison: per quantity, the predicted and the fitted verdict as marks.
-std::string glance_table(const std::vector<fs::path>& dirs) {
+std::string glance_table(const std::vector<LoadedComparison>& comparisons) {
   auto mark = [](const nlohmann::json& verdicts, const std::string& key) {
     for (const auto& v : verdicts)
       if (v["quantity"] == key)
@@ -350,16 +418,18 @@ std::string glance_table(const std::vector<fs::path>& dirs) {
                                                       : std::string("–");
     return std::string("");
   };
-  std::string h = "<table><tr><th>run</th><th>boundary</th>";
+  std::string h = "<table><tr><th>run</th><th>boundary</th><th>DEM status</th>";
   for (const auto& q : quantity_table()) h += fmt::format("<th>{}</th>", escape_html(q.name));
   h += "</tr>\n";
-  for (std::size_t k = 0; k < dirs.size(); ++k) {
-    const auto cmp = read_comparison(dirs[k]);
+  for (std::size_t k = 0; k < comparisons.size(); ++k) {
+    const auto& cmp = comparisons[k].cmp;
+    const std::string status = comparisons[k].dem_status();
     const auto& p = cmp["variants"][cmp["verdicts"]["predicted_variant"].get<std::size_t>()]["verdicts"];
     const auto& f = cmp["variants"][cmp["verdicts"]["fitted_variant"].get<std::size_t>()]["verdicts"];
-    h += fmt::format("<tr><td><a href=\"#run-{}\">{}</a></td><td>{}</td>", k,
+    h += fmt::format("<tr><td><a href=\"#run-{}\">{}</a></td><td>{}</td><td{}>{}</td>", k,
                      escape_html(fs::path(cmp["dem"]["dir"].get<std::string>()).lexically_normal().filename().string()),
-                     escape_html(cmp["dem"]["boundary"].get<std::string>()));
+                     escape_html(cmp["dem"]["boundary"].get<std::string>()),
+                     status == "complete" ? "" : " class=\"breaks\"", escape_html(status));
     for (const auto& q : quantity_table()) {
       const std::string a = mark(p, q.key), b = mark(f, q.key);
       h += a.empty() ? "<td></td>" : fmt::format("<td>{} · {}</td>", a, b);
@@ -374,17 +444,23 @@ std::string glance_table(const std::vector<fs::path>& dirs) {
 }  // namespace
 
 std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs::path& html) {
+  io::require_file_destination(html, "-o");
+  // every input read and checked before anything is written
   const auto [compare_dirs, hypotheses] = resolve(paths);
-  for (const auto& dir : compare_dirs) read_comparison(dir);  // refuse before writing anything
-  const fs::path files = html.parent_path() / (html.stem().string() + "_files");
-  fs::create_directories(files);
+  std::vector<LoadedComparison> comparisons;
+  for (const auto& dir : compare_dirs) comparisons.push_back(load_comparison(dir));
+  std::vector<nlohmann::json> sets;
+  for (const auto& h : hypotheses) sets.push_back(io::read_json_file(h));
+
+  if (html.has_parent_path()) fs::create_directories(html.parent_path());
+  io::StagedDirectory files(html.parent_path() / (html.stem().string() + "_files"));
   std::vector<fs::path> figures;
-  std::string body = "<section><h2>Verdicts at a glance</h2>\n" + glance_table(compare_dirs) + "</section>\n";
-  for (const auto& h : hypotheses) body += hypotheses_section(h);
-  for (std::size_t k = 0; k < compare_dirs.size(); ++k) {
-    auto section = comparison_section(compare_dirs[k], k, files, html);
+  std::string body = "<section><h2>Verdicts at a glance</h2>\n" + glance_table(comparisons) + "</section>\n";
+  for (std::size_t i = 0; i < hypotheses.size(); ++i) body += hypotheses_section(hypotheses[i], sets[i]);
+  for (std::size_t k = 0; k < comparisons.size(); ++k) {
+    auto section = comparison_section(comparisons[k], k, files, html);
     body += section.html;
-    figures.insert(figures.end(), section.figures.begin(), section.figures.end());
+    for (const auto& svg : section.figures) figures.push_back(files.final_path() / fs::relative(svg, files.path()));
   }
   const std::string page = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>iwb validation report</title>\n"
@@ -395,7 +471,8 @@ std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs:
       "</head><body><h1>iwb validation report</h1>\n<p>Generated {} by iwb {}. Compression positive, u_n &gt; 0 is "
       "dilation, kPa and mm. Figures are also in {} as SVG and PNG, each with its data (CSV) and gnuplot script.</p>\n{}"
       "</body></html>\n",
-      io::utc_timestamp(), IWB_VERSION, escape_html(files.filename().string()), body);
+      io::utc_timestamp(), IWB_VERSION, escape_html(files.final_path().filename().string()), body);
+  files.commit();
   io::write_atomically(html, page);
   return figures;
 }

@@ -7,6 +7,7 @@
 #include "common/errors.hpp"
 #include "comparison/seed_scatter.hpp"
 #include "io/json_file.hpp"
+#include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::comparison {
@@ -16,7 +17,7 @@ using nlohmann::json;
 
 namespace {
 
-json read_json(const fs::path& file) {
+json read_json_file(const fs::path& file) {
   if (!fs::exists(file)) throw InputError(fmt::format("{}: missing", file.string()));
   return io::read_json_file(file);
 }
@@ -36,7 +37,7 @@ enum class Earlier { kNone, kSameInputs, kOtherInputs, kIncomplete };
 // parameter file by hash, and the model), so that its fit can be reused.
 Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
   if (!fs::exists(dir / "manifest.json")) return Earlier::kNone;
-  const auto m = read_json(dir / "manifest.json");
+  const auto m = read_json_file(dir / "manifest.json");
   if (m.value("status", "") != "complete" || !fs::exists(dir / "compare.json"))
     return Earlier::kIncomplete;
   json seeds = json::array();
@@ -47,7 +48,7 @@ Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
                     m.value("/inputs/predicted_d_s_over_d50"_json_pointer, json()) == json(opt.predicted_ds_d50) &&
                     m.value("/inputs/parameters_sha256"_json_pointer, std::string()) ==
                         io::sha256_hex(io::read_file(opt.params)) &&
-                    read_json(dir / "compare.json").value("model", "") == opt.model;
+                    read_json_file(dir / "compare.json").value("model", "") == opt.model;
   return same ? Earlier::kSameInputs : Earlier::kOtherInputs;
 }
 
@@ -94,10 +95,10 @@ std::vector<std::string> run_names(const std::vector<fs::path>& dirs) {
 
 RunRecord load_run_record(const fs::path& compare_dir) {
   const fs::path cf = compare_dir / "compare.json";
-  const auto cmp = read_json(cf);
+  const auto cmp = read_json_file(cf);
   const fs::path dem_dir = field<std::string>(cmp, "/dem/dir", cf);
   const fs::path sf = dem_dir / "summary.json";
-  const auto s = read_json(sf);
+  const auto s = read_json_file(sf);
   RunRecord r;
   r.name = compare_dir.filename().string();
   r.R_n = field<double>(cmp, "/dem/R_n", cf);
@@ -147,8 +148,10 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
     throw;
   }
   outcome.hypotheses = to_json(check_hypotheses(records), records);
-  io::write_atomically(opt.out / "hypotheses.json", outcome.hypotheses.dump(2) + "\n");
-  io::write_atomically(opt.out / "hypotheses.md", to_markdown(outcome.hypotheses));
+  io::StagedDirectory staged(opt.out);  // both or neither, then the manifest says complete
+  io::write_atomically(staged.path() / "hypotheses.json", outcome.hypotheses.dump(2) + "\n");
+  io::write_atomically(staged.path() / "hypotheses.md", to_markdown(outcome.hypotheses));
+  staged.commit_into();
   manifest["runs"] = names;
   manifest["reused"] = outcome.reused;
   manifest["files"] = {"hypotheses.json", "hypotheses.md"};

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "comparison/figure.hpp"
+#include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::analysis {
@@ -195,12 +196,13 @@ comparison::Figure boundary_map(const std::vector<StabilityResult>& results,
 std::vector<fs::path> write_stability_map(const std::vector<StabilityResult>& results,
                                           const StabilitySweep& sweep, const StabilityMapInfo& info,
                                           const fs::path& dir) {
-  fs::create_directories(dir);
-  io::write_atomically(dir / "stability.csv", stability_csv(results));
-  io::write_atomically(dir / "stability.md", stability_markdown(results, sweep, info));
+  io::StagedDirectory staged(dir);  // the table, its summary and its maps together or not at all
+  io::write_atomically(staged.path() / "stability.csv", stability_csv(results));
+  io::write_atomically(staged.path() / "stability.md", stability_markdown(results, sweep, info));
   std::vector<fs::path> figures;
   for (auto bc : sweep.boundaries)
-    figures.push_back(comparison::draw(boundary_map(results, bc, info.model), dir));
+    figures.push_back(dir / comparison::draw(boundary_map(results, bc, info.model), staged.path()).filename());
+  staged.commit_into();
   return figures;
 }
 

@@ -7,6 +7,7 @@
 #include "calibration/calibrate.hpp"
 #include "calibration/synthetic.hpp"
 #include "common/errors.hpp"
+#include "io/output_path.hpp"
 #include "io/parameter_file.hpp"
 #include "io/run_directory.hpp"
 
@@ -129,6 +130,7 @@ int run_synthetic(CalibrationCommands& c, const std::string& command_line) {
 }
 
 int run_calibrate(const CalibrationCommands& c, const std::string& command_line) {
+  io::require_file_destination(c.params_out, "-o");  // before minutes of fitting, not after
   std::vector<calibration::SoilTest> tests;
   for (const auto& dir : c.runs) tests.push_back(calibration::read_soil_test(dir));
   calibration::CalibrationOptions opt;

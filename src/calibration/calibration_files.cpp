@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "calibration/calibrate.hpp"
+#include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::calibration {
@@ -80,10 +81,11 @@ nlohmann::json calibration_json(const CalibrationResult& r, const std::vector<So
 
 void write_calibration(const CalibrationResult& r, const std::filesystem::path& toml_file,
                        const std::vector<SoilTest>& tests, const std::string& command_line) {
-  if (toml_file.has_parent_path()) std::filesystem::create_directories(toml_file.parent_path());
-  io::write_atomically(toml_file, parameter_file(r, tests, command_line));
-  io::write_atomically(toml_file.parent_path() / "calibration.json",
-                       calibration_json(r, tests, command_line).dump(2) + "\n");
+  // the parameter file and its calibration.json together or not at all
+  io::StagedDirectory staged(std::filesystem::absolute(toml_file).parent_path());
+  io::write_atomically(staged.path() / toml_file.filename(), parameter_file(r, tests, command_line));
+  io::write_atomically(staged.path() / "calibration.json", calibration_json(r, tests, command_line).dump(2) + "\n");
+  staged.commit_into();
 }
 
 }  // namespace iwb::calibration

@@ -11,6 +11,7 @@
 #include "dem/run.hpp"
 #include "dem/scene.hpp"
 #include "io/json_file.hpp"
+#include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::dem {
@@ -159,8 +160,10 @@ nlohmann::json run_crosscheck(const CrosscheckOptions& opt) {
     e["runs"] = runs;
   }
   out["verdicts"] = verdicts(out["engines"], opt.engines);
-  io::write_atomically(opt.out / "crosscheck.json", out.dump(2) + "\n");
-  io::write_atomically(opt.out / "crosscheck.md", markdown(out, opt.engines));
+  io::StagedDirectory staged(opt.out);  // both or neither
+  io::write_atomically(staged.path() / "crosscheck.json", out.dump(2) + "\n");
+  io::write_atomically(staged.path() / "crosscheck.md", markdown(out, opt.engines));
+  staged.commit_into();
   return out;
 }
 

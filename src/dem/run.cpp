@@ -1,10 +1,13 @@
 #include "dem/run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
+#include "dem/plausibility.hpp"
 #include "dem/summary.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::dem {
@@ -109,22 +112,34 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
   io::write_atomically(opt.out / "summary.json", to_json(summary).dump(2) + "\n");
   m["engine_facts"] = tables.facts;
   m["particle_count"] = facts.value("/consolidate/particles"_json_pointer, 0);
+  // complete only if the run did what the scene asked; the files stay for a look at why not
+  const auto checks = plausibility_checks(asked_by(scene), tables.timeseries);
+  m["plausibility"] = to_json(checks);
+  for (const auto& w : plausibility_warnings(checks))  // once, though --resume assembles again
+    if (std::find(m["warnings"].begin(), m["warnings"].end(), w) == m["warnings"].end()) m["warnings"].push_back(w);
   m["finished"] = io::utc_timestamp();
-  out.status = "complete";
+  const auto failure = failure_reason(checks);
+  out.status = failure ? "failed: implausible: " + *failure : "complete";
   m["status"] = out.status;
   io::write_manifest(opt.out, m);
   return out;
 }
 
 nlohmann::json resummarize(const fs::path& dir) {
-  const auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
-  if (m.value("status", "") != "complete")
-    throw InputError(fmt::format("{}: run status is '{}'; only complete runs are summarised",
-                                 dir.string(), m.value("status", "?")));
-  const Scene scene = parse_scene(m.at("scene").at("text").get<std::string>(),
-                                  m.at("scene").at("source").get<std::string>());
-  const auto summary = to_json(summarize(scene, io::read_csv_table(dir / "timeseries.csv"),
-                                         io::read_csv_table(dir / "profiles.csv")));
+  const fs::path manifest = dir / "manifest.json", timeseries = dir / "timeseries.csv";
+  const auto m = io::read_json_file(manifest);
+  const auto status = io::json_field<std::string>(m, "/status", manifest);
+  if (status != "complete")
+    throw InputError(fmt::format("{}: run status is '{}'; only complete runs are summarised", manifest.string(), status));
+  const Scene scene = parse_scene(io::json_field<std::string>(m, "/scene/text", manifest),
+                                  io::json_field<std::string>(m, "/scene/source", manifest));
+  const auto ts = io::read_csv_table(timeseries);
+  for (const char* column : {"u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa"})
+    if (ts.column(column) < 0) throw InputError(fmt::format("{}: no column '{}'", timeseries.string(), column));
+  // never a worse summary over a good one: files that no longer show what the scene asked are refused
+  if (const auto why = failure_reason(plausibility_checks(asked_by(scene), ts)))
+    throw InputError(fmt::format("{}: {}; summary.json left as it was", timeseries.string(), *why));
+  const auto summary = to_json(summarize(scene, ts, io::read_csv_table(dir / "profiles.csv")));
   io::write_atomically(dir / "summary.json", summary.dump(2) + "\n");
   return summary;
 }

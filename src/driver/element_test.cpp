@@ -141,6 +141,12 @@ struct Walker {
 
 }  // namespace
 
+void check_path(const models::Model& model, const Path& path) {
+  for (const auto& seg : path)
+    if ((seg.gamma_y != 0.0) && !model.has_second_shear_direction())
+      throw InputError(fmt::format("model {} has one shear direction; use direction = \"x\"", model.name()));
+}
+
 ElementTestResult run_element_test(const models::Model& model, const models::StateVector& initial,
                                    const Path& path, const RunSettings& settings) {
   ElementTestResult result;
@@ -148,10 +154,7 @@ ElementTestResult run_element_test(const models::Model& model, const models::Sta
   for (const auto& seg : path) w.total += seg.increments;
   w.current.state = initial;
   result.rows.push_back(w.current);
-  for (const auto& seg : path)
-    if ((seg.gamma_y != 0.0) && !model.has_second_shear_direction())
-      throw InputError(fmt::format("model {} has one shear direction; use direction = \"x\"",
-                                   model.name()));
+  check_path(model, path);
   try {
     for (std::size_t i = 0; i < path.size(); ++i) w.segment(int(i), path[i]);
   } catch (const DomainError& e) {

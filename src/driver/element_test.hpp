@@ -74,6 +74,10 @@ struct ElementTestResult {
   bool complete() const { return status == "complete"; }
 };
 
+// InputError when `model` cannot follow `path` (shear in y for a model with one shear direction);
+// run_element_test checks it too, callers that write check it first.
+void check_path(const models::Model& model, const Path& path);
+
 // Runs `path` from `initial`. Domain and convergence errors end the run with a "failed: ..."
 // status naming the increment, the segment and the state; rows up to the last accepted
 // increment are kept, and no row ever holds a non-finite value.

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <fmt/core.h>
 
+#include "common/errors.hpp"
 #include "io/history_csv.hpp"
 #include "io/run_directory.hpp"
 
@@ -25,6 +26,11 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
                                            const ElementRunOptions& opt) {
   const auto model = models::find_model(spec.model).make(spec.inputs);
   const auto initial = model->initial_state(spec.initial);  // InputError if not admissible
+  try {  // bad input is refused before the run directory is touched
+    driver::check_path(*model, spec.path);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: key 'path.direction' = \"y\": {}", spec.source, e.what()));
+  }
 
   ElementRunOutcome outcome;
   auto& m = outcome.manifest;
@@ -40,7 +46,7 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
   m["test"] = spec.resolved;
   m["warnings"] = spec.warnings;
   m["state_variables"] = model->state_names();
-  m["files"] = {"history.csv"};
+  m["files"] = nlohmann::json::array();  // each file as it is written, so the list never names a missing one
   m["started"] = utc_timestamp();
   m["status"] = "running";
   prepare_run_directory(opt.out, opt.force);
@@ -60,6 +66,7 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   write_atomically(opt.out / "history.csv", history_csv(*model, spec.zone, outcome.result.rows));
+  m["files"].push_back("history.csv");
   if (!outcome.result.cycles.empty()) {
     write_atomically(opt.out / "cycles.csv", cycles_csv(spec.zone, outcome.result.cycles));
     m["files"].push_back("cycles.csv");

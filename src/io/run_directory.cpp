@@ -17,14 +17,19 @@ namespace fs = std::filesystem;
 
 void write_atomically(const fs::path& path, const std::string& content) {
   const fs::path tmp = path.string() + fmt::format(".tmp{}", ::getpid());
+  bool written = false;
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error(fmt::format("{}: cannot write", tmp.string()));
     out << content;
     out.flush();
-    if (!out) throw std::runtime_error(fmt::format("{}: write failed (disk full?)", tmp.string()));
+    written = bool(out);
   }
-  fs::rename(tmp, path);
+  std::error_code error;  // no temporary file is left behind: a full disk, a directory in the way
+  if (written) fs::rename(tmp, path, error);
+  if (!written || error) fs::remove(tmp);
+  if (!written) throw std::runtime_error(fmt::format("{}: write failed (disk full?)", tmp.string()));
+  if (error) throw fs::filesystem_error(fmt::format("{}: cannot replace", path.string()), tmp, path, error);
 }
 
 std::string read_file(const fs::path& path) {

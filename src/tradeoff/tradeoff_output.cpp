@@ -7,6 +7,7 @@
 
 #include "comparison/figure.hpp"
 #include "dem/requirements.hpp"
+#include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::tradeoff {
@@ -195,10 +196,12 @@ std::string tradeoff_csv(const json& t) {
 }
 
 void write_tradeoff(const json& t, const fs::path& dir) {
-  io::write_atomically(dir / "tradeoff.json", t.dump(2) + "\n");
-  io::write_atomically(dir / "tradeoff.csv", tradeoff_csv(t));
-  io::write_atomically(dir / "tradeoff.md", tradeoff_markdown(t));
-  if (!t["reference"].is_null()) draw_pareto(t, dir);
+  io::StagedDirectory staged(dir);  // the tables and the front together or not at all
+  io::write_atomically(staged.path() / "tradeoff.json", t.dump(2) + "\n");
+  io::write_atomically(staged.path() / "tradeoff.csv", tradeoff_csv(t));
+  io::write_atomically(staged.path() / "tradeoff.md", tradeoff_markdown(t));
+  if (!t["reference"].is_null()) draw_pareto(t, staged.path());
+  staged.commit_into();
 }
 
 }  // namespace iwb::tradeoff

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fmt/core.h>
 #include <fstream>
 
 #include "analysis/stability.hpp"
@@ -162,4 +164,18 @@ TEST_CASE(
   CHECK(n.at(Outcome::kBudgetExceeded) == 0);
   CHECK(n.at(Outcome::kComplete) > long(results.size()) * 9 / 10);
   for (const auto& r : results) CHECK(all_finite(r));
+}
+
+// Issue 15, finding 6: the table, its summary and its maps appear together or not at all. Without
+// gnuplot on the PATH the first map fails; before, stability.csv and stability.md stayed behind.
+TEST_CASE("stability: a map whose figures cannot be drawn leaves no file behind", "[analysis]") {
+  const auto dir = std::filesystem::path(IWB_TEST_RUNS_DIR) / "stability-no-gnuplot";
+  std::filesystem::remove_all(dir);
+  const std::string cmd = fmt::format("env PATH=/nonexistent {} stability hvwe data/params/table_5_1_evaluation.toml -o {} > {}.log 2>&1",
+                                      IWB_BINARY, dir.string(), dir.string());
+  CHECK(std::system(cmd.c_str()) != 0);
+  CHECK_THAT(iwb::io::read_file(dir.string() + ".log"), Catch::Contains("cannot start gnuplot"));
+  CHECK_FALSE(std::filesystem::exists(dir));
+  for (const auto& e : std::filesystem::directory_iterator(dir.parent_path()))
+    CHECK(e.path().filename().string().find("stability-no-gnuplot.tmp") == std::string::npos);
 }

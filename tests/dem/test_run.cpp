@@ -9,6 +9,7 @@
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "io/run_directory.hpp"
+#include "support/cli.hpp"
 
 using namespace iwb;
 namespace fs = std::filesystem;
@@ -72,4 +73,45 @@ TEST_CASE("LIGGGHTS: --resume runs only the stages that did not finish", "[dem][
 }
 TEST_CASE("YADE: --resume runs only the stages that did not finish", "[dem][yade][heavy]") {
   resume_after_interrupt("yade");
+}
+
+// `iwb dem summary` (issue 15, finding 5): files that no longer show what the scene asked are
+// refused, exit 2 naming the file and why, and the good summary.json stays as it was.
+namespace {
+const fs::path kCommittedRun = "data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s1";
+}
+
+TEST_CASE("dem summary refuses a time series with only its header and keeps summary.json", "[dem]") {
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "summary_header_only";
+  test::fresh_copy(kCommittedRun, dir);
+  const std::string header = io::read_file(dir / "timeseries.csv").substr(0, io::read_file(dir / "timeseries.csv").find('\n') + 1);
+  io::write_atomically(dir / "timeseries.csv", header);
+  const auto before = test::files_under(dir);
+  const auto r = test::run_iwb({"dem", "summary", dir.string()});
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains((dir / "timeseries.csv").string() + ": rows = 0, must be >= 180") &&
+                           Catch::Contains("summary.json left as it was"));
+  CHECK(test::files_under(dir) == before);
+}
+
+TEST_CASE("dem summary on a truncated manifest.json names the file", "[dem]") {
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "summary_truncated_manifest";
+  test::fresh_copy(kCommittedRun, dir);
+  const std::string manifest = io::read_file(dir / "manifest.json");
+  io::write_atomically(dir / "manifest.json", manifest.substr(0, manifest.size() / 2));
+  const auto before = test::files_under(dir);
+  const auto r = test::run_iwb({"dem", "summary", dir.string()});
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains((dir / "manifest.json").string() + ": not valid JSON"));
+  CHECK(test::files_under(dir) == before);
+}
+
+TEST_CASE("dem summary recomputes the summary of a committed run unchanged in its keys", "[dem]") {
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "summary_intact";
+  test::fresh_copy(kCommittedRun, dir);
+  const auto r = test::run_iwb({"dem", "summary", dir.string()});
+  CHECK(r.exit_code == 0);
+  const auto before = nlohmann::json::parse(io::read_file(kCommittedRun / "summary.json"));
+  const auto after = nlohmann::json::parse(io::read_file(dir / "summary.json"));
+  CHECK(after["peak_friction"].get<double>() == Approx(before["peak_friction"].get<double>()).epsilon(1e-9));
 }

@@ -1,0 +1,123 @@
+// `iwb report` writes whole or not at all (issue 15, finding 6): every input is read and checked
+// before anything is written, the figures are built beside their directory and put in place at the
+// end, a good earlier report survives a refused one, a comparison that did not finish is refused
+// and a DEM run that did not complete is flagged where a reader sees it.
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "io/run_directory.hpp"
+#include "support/cli.hpp"
+
+using namespace iwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kWork = fs::path(IWB_TEST_RUNS_DIR) / "report";
+const fs::path kRun = "data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s1";
+const fs::path kParams = "data/params/dem_default_grains.toml";
+
+// A fresh comparison of `run` at kWork/name (half a second).
+fs::path comparison(const std::string& name, const fs::path& run = kRun, bool allow_partial = false) {
+  const fs::path out = kWork / name;
+  std::vector<std::string> args = {"compare", run.string(), "--params", kParams.string(), "-o", out.string(), "--force"};
+  if (allow_partial) args.push_back("--allow-partial");
+  const auto r = test::run_iwb(args);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  return out;
+}
+
+// `iwb report inputs -o out/report.html` must exit 2 with `message`, and `out` must hold what it
+// held before.
+void refused(const std::vector<std::string>& inputs, const fs::path& out, const std::string& message) {
+  const auto before = test::files_under(out);
+  std::vector<std::string> args = {"report"};
+  args.insert(args.end(), inputs.begin(), inputs.end());
+  args.insert(args.end(), {"-o", (out / "report.html").string()});
+  const auto r = test::run_iwb(args);
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.output, Catch::Contains(message));
+  CHECK(test::files_under(out) == before);
+}
+
+void edit(const fs::path& file, const std::string& from, const std::string& to) {
+  std::string text = io::read_file(file);
+  REQUIRE(text.find(from) != std::string::npos);
+  io::write_atomically(file, text.replace(text.find(from), from.size(), to));
+}
+
+}  // namespace
+
+TEST_CASE("report: bad inputs exit 2 and write nothing, not even the figures directory", "[comparison]") {
+  const fs::path out = kWork / "bad_out";
+  fs::remove_all(out);
+  fs::create_directories(kWork / "empty");
+  refused({(kWork / "empty").string()}, out, "empty: neither a directory of `iwb compare`");
+
+  const auto truncated = comparison("truncated");
+  const std::string csv = io::read_file(truncated / "compare.csv");
+  io::write_atomically(truncated / "compare.csv", csv.substr(0, csv.find('\n', csv.size() / 3) + 1));  // whole rows
+  refused({truncated.string()}, out, (truncated / "compare.csv").string() + ": changed since `iwb compare` wrote it");
+  fs::remove(truncated / "manifest.json");  // a comparison of an older iwb, without hashes: the rows tell
+  io::write_atomically(truncated / "manifest.json", "{\"status\": \"complete\"}");
+  refused({truncated.string()}, out, (truncated / "compare.csv").string() + ": variant 1 has");
+
+  const auto unlisted = comparison("no_manifest");
+  fs::remove(unlisted / "manifest.json");
+  refused({unlisted.string()}, out, (unlisted / "manifest.json").string() + ": missing");
+
+  const auto cut = comparison("cut_manifest");
+  io::write_atomically(cut / "manifest.json", io::read_file(cut / "manifest.json").substr(0, 100));
+  refused({cut.string()}, out, (cut / "manifest.json").string() + ": not valid JSON");
+
+  // the good comparison first: its figures must not be drawn before the bad one is found
+  refused({comparison("good").string(), (kWork / "empty").string()}, out, "neither a directory");
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("report: a comparison whose manifest says failed is refused, naming its status", "[comparison]") {
+  const auto failed = comparison("failed");
+  edit(failed / "manifest.json", "\"status\": \"complete\"", "\"status\": \"failed: the replay diverged\"");
+  refused({failed.string()}, kWork / "failed_out",
+          "the comparison's status is 'failed: the replay diverged'; a report shows finished comparisons only");
+}
+
+TEST_CASE("report: -o naming a directory is refused and leaves no temporary file", "[comparison]") {
+  const fs::path dir = kWork / "o_is_dir";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "report.html");
+  refused({comparison("for_dir").string()}, dir, "-o " + (dir / "report.html").string() + ": is a directory");
+  for (const auto& e : fs::recursive_directory_iterator(kWork))
+    CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
+}
+
+TEST_CASE("report: a new report replaces the old one whole, a refused one leaves it as it was", "[comparison]") {
+  const fs::path out = kWork / "replace";
+  fs::remove_all(out);
+  const auto good = comparison("replace_good");
+  auto r = test::run_iwb({"report", good.string(), "-o", (out / "report.html").string()});
+  REQUIRE(r.exit_code == 0);
+  io::write_atomically(out / "report_files" / "stale.svg", "<svg/>");  // as an earlier report's figure
+  r = test::run_iwb({"report", good.string(), "-o", (out / "report.html").string()});
+  REQUIRE(r.exit_code == 0);
+  CHECK_FALSE(fs::exists(out / "report_files" / "stale.svg"));
+  CHECK(fs::exists(out / "report_files" / "0-replace_good" / "tau_ux.svg"));
+  refused({(kWork / "empty").string()}, out, "neither a directory");  // the good report stays
+  CHECK(fs::exists(out / "report_files" / "0-replace_good" / "tau_ux.svg"));
+}
+
+TEST_CASE("report: a DEM run that did not complete, compared with --allow-partial, is flagged", "[comparison]") {
+  const fs::path run = kWork / "implausible_run";
+  test::fresh_copy(kRun, run);
+  edit(run / "manifest.json", "\"status\": \"complete\"",
+       "\"status\": \"failed: implausible: normal_stress_held = 0.6, must be <= 0.5\"");
+  const auto partial = comparison("partial", run, true);
+  const fs::path out = kWork / "partial_out";
+  const auto r = test::run_iwb({"report", partial.string(), "-o", (out / "report.html").string()});
+  REQUIRE(r.exit_code == 0);
+  const std::string html = io::read_file(out / "report.html");
+  CHECK_THAT(html, Catch::Contains("Warning: the DEM run " + run.string() + " did not complete (status: failed: implausible"));
+  CHECK_THAT(html, Catch::Contains("<td class=\"breaks\">failed: implausible: normal_stress_held"));  // glance table
+}
