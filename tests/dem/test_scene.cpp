@@ -228,3 +228,17 @@ TEST_CASE("every scene value is finite and within its physical range before an e
   CHECK_THAT(error_of(replaced(smoke(), "particles = 400", "particles = 400\nsolid_fraction_estimate = 0.9")),
              Catch::Contains("key 'specimen.solid_fraction_estimate' = 0.9 is out of range; allowed (0, 0.75]"));
 }
+
+TEST_CASE("every scene shipped in data/ lies within the ranges scenes are checked against", "[dem]") {
+  // the campaigns' job scenes and the shipped examples: a range drawn too tight would refuse them
+  int scenes = 0;
+  for (const auto& e : std::filesystem::recursive_directory_iterator("data")) {
+    if (e.path().extension() != ".toml") continue;
+    const std::string text = io::read_file(e.path());
+    if (text.find("\n[particles]") == std::string::npos) continue;
+    INFO(e.path().string());
+    CHECK_NOTHROW(dem::parse_scene(text, e.path().string()));
+    ++scenes;
+  }
+  CHECK(scenes >= 69);
+}
