@@ -3,8 +3,7 @@
 #include <fmt/core.h>
 
 #include "app/option_checks.hpp"
-
-#include "app/validate.hpp"
+#include "app/parameter_choice.hpp"
 #include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 #include "tradeoff/knobs.hpp"
@@ -97,9 +96,9 @@ void add_plan(CLI::App& app, TradeoffCommands& c) {
                      "tradeoff directory (default runs/tradeoff-<scene stem>)");  // run_plan says what to run
   c.plan->add_option(
       "--params", c.plan_params,
-      "parameter file of the continuum models (default: data/params/dem_default_grains.toml if "
-      "present, else the set iwb validate chooses: phi_c closest to the reference's residual "
-      "friction)")
+      "parameter file of the continuum models (default: the set iwb validate chooses from those "
+      "built into iwb: dem_default_grains.toml for the default scene's grains, else phi_c closest "
+      "to the reference's residual friction)")
       ->check(input_file());
   c.plan->add_option("--out,-o", c.plan_out,
                      "where plan.json goes (default: the tradeoff directory)")
@@ -124,22 +123,29 @@ int run_tradeoff_command(const TradeoffCommands& c, const std::string& cl,
   return result["status"] == "complete" ? 0 : 1;
 }
 
+// --params, else the set `iwb validate` would choose for the tradeoff's reference run from the
+// sets built into iwb (app/parameter_choice.hpp).
+io::ParameterSet plan_parameters(const tradeoff::PlanOptions& opt, const std::string& params, std::string& why) {
+  if (!params.empty()) {
+    why = "given with --params";
+    return io::read_parameter_set(params);
+  }
+  const auto summary =
+      io::read_json_file(tradeoff::reference_run(opt) / "summary.json");
+  const auto scene = dem::parse_scene(io::read_file(opt.scene_file), opt.scene_file.string());
+  const auto sets = io::parameter_sets({});
+  return parameters_for(sets, scene, summary["residual_friction"].get<double>(), why);
+}
+
 int run_plan_command(const TradeoffCommands& c, const std::string& cl) {
   dem::load_scene(c.plan_scene);  // every value checked before the tradeoff is read
-  tradeoff::PlanOptions opt{c.plan_scene,          c.plan_tradeoff, c.plan_params,
-                            "given with --params", c.plan_out,      cl};
-  if (opt.params.empty()) {
-    const auto summary =
-        io::read_json_file(tradeoff::reference_run(opt) / "summary.json");
-    const auto scene = dem::parse_scene(io::read_file(opt.scene_file), opt.scene_file.string());
-    opt.params = parameters_for("data/params", scene, summary["residual_friction"].get<double>(),
-                                opt.params_why)
-                     .string();
-  }
+  tradeoff::PlanOptions opt{c.plan_scene, c.plan_tradeoff, {}, "", c.plan_out, cl};
+  opt.params = plan_parameters(opt, c.plan_params, opt.params_why);
   const auto plan = tradeoff::run_plan(opt);
-  fmt::print("{}parameters: {} ({})\n-> {}\n", tradeoff::plan_text(plan), opt.params,
-             opt.params_why,
-             (fs::path(plan["tradeoff"].get<std::string>()).parent_path() / "plan.json").string());
+  const fs::path written =
+      opt.out.empty() ? fs::path(plan["tradeoff"].get<std::string>()).parent_path() : opt.out;
+  fmt::print("{}parameters: {} ({})\n-> {}\n", tradeoff::plan_text(plan), opt.params.origin,
+             opt.params_why, (written / "plan.json").string());
   return 0;
 }
 

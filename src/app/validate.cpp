@@ -1,20 +1,21 @@
 #include "app/validate.hpp"
 
 #include <chrono>
-#include <cmath>
 #include <fmt/core.h>
 
+#include "app/parameter_choice.hpp"
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
 #include "comparison/report.hpp"
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
-#include "io/parameter_file.hpp"
+#include "dem/scene_content.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::app {
 
 namespace fs = std::filesystem;
+using nlohmann::json;
 
 namespace {
 
@@ -29,118 +30,128 @@ std::pair<std::string, std::string> scene_source(const std::string& scene) {
   throw InputError(fmt::format("--scene {}: neither an embedded scene ({}) nor a file", scene, names));
 }
 
-// Parameter sets calibrated on soil tests of one scene's grains (`iwb dem soiltest` + `iwb
-// calibrate`, data/calibration/<name>/README.md): the set for a scene whose [particles] are those
-// grains, and never a stand-in for other grains in the phi_c match below.
-struct CalibratedGrains {
-  const char* scene;  // embedded scene whose particles were calibrated
-  const char* file;   // in the parameter directory
+enum class DemStart {
+  kReuse,   // a complete run of the same scene content: nothing to run
+  kResume,  // a stopped run of the same scene text: its finished stages are kept
+  kFresh,   // nothing there, or --force
 };
-constexpr CalibratedGrains kCalibratedGrains[] = {{"default", "dem_default_grains.toml"}};
 
-bool calibrated_set(const fs::path& file) {
-  for (const auto& c : kCalibratedGrains)
-    if (file.filename() == c.file) return true;
-  return false;
-}
+struct DemRun {
+  std::string engine;
+  fs::path dir;
+  DemStart start;
+  json manifest;  // the earlier run's, when reused
+};
 
-bool same_grains(const dem::Particles& a, const dem::Particles& b) {
-  const auto key = [](const dem::Particles& p) {
-    std::vector<double> k{p.d50_m, p.density_kg_m3, p.youngs_modulus_Pa, p.poisson, p.friction, p.rolling_friction,
-                          p.restitution};
-    for (const auto& c : p.sizes) k.insert(k.end(), {c.diameter_m, c.mass_fraction});
-    return k;
+// How the run in `dir` starts, decided before any engine starts. A run of another scene or
+// engine is refused unless --force, naming what differs.
+DemRun plan_dem_run(const std::string& engine, const fs::path& dir, const std::string& text,
+                    const std::string& source, bool force) {
+  DemRun run{engine, dir, DemStart::kFresh, json()};
+  const fs::path file = dir / "manifest.json";
+  if (force || !fs::exists(file)) return run;
+  const auto refuse = [&](const std::string& why) {
+    return InputError(fmt::format("--out: {} holds a DEM run of {}; pass --force to replace it, or another --out",
+                                  dir.string(), why));
   };
-  return key(a) == key(b);
-}
-
-// The calibrated set for the scene's grains, or empty if there is none.
-fs::path calibrated_parameters(const fs::path& dir, const dem::Scene& scene, std::string& why) {
-  for (const auto& c : kCalibratedGrains) {
-    const auto base = dem::parse_scene(dem::embedded_scenes().at(std::string(c.scene) + ".toml"), c.scene);
-    if (!same_grains(base.particles, scene.particles) || !fs::exists(dir / c.file)) continue;
-    why = fmt::format("calibrated on DEM soil tests of the {} scene's grains (data/calibration/)", c.scene);
-    return dir / c.file;
+  try {
+    run.manifest = json::parse(io::read_file(file));
+  } catch (const json::exception& e) {
+    throw refuse(fmt::format("which {} cannot be read ({})", file.string(), e.what()));
   }
-  return {};
+  const std::string ran_engine = run.manifest.value("/engine/name"_json_pointer, std::string("?"));
+  if (ran_engine != engine) throw refuse(fmt::format("engine {}, not {}", ran_engine, engine));
+  const std::string ran_text = run.manifest.value("/scene/text"_json_pointer, std::string());
+  const auto diff = dem::content_differences(dem::scene_content(text, source),
+                                             dem::scene_content(ran_text, file.string() + " /scene/text"));
+  if (!diff.empty()) throw refuse(fmt::format("another scene ({})", dem::differences_text(diff)));
+  if (run.manifest.value("status", "") == "complete") run.start = DemStart::kReuse;
+  else if (ran_text == text) run.start = DemStart::kResume;
+  else throw refuse(fmt::format("the same scene, stopped ({}), from another scene text: it cannot resume",
+                                run.manifest.value("status", "?")));
+  return run;
 }
 
-// Runs the scene in one engine into out/dem-<engine>; false (and says why) if it did not complete.
-bool run_dem(const dem::Scene& scene, const std::string& text, const std::string& source, const std::string& engine_name,
-             const ValidateOptions& opt, const fs::path& dem_dir, const std::string& step) {
-  const auto engine = dem::make_engine(engine_name);
-  fmt::print(stderr, "iwb validate: {} DEM run of {} in {} ({} processes) -> {}\n", step, source, engine_name,
-             opt.processes, dem_dir.string());
+// What validate works from, resolved and checked before any engine starts.
+struct Inputs {
+  std::string text, source;
+  dem::Scene scene;
+  std::vector<io::ParameterSet> sets;
+  std::string sets_origin;  // "built into iwb" or the --params-dir
+  std::vector<DemRun> runs;
+};
+
+Inputs resolve_inputs(const ValidateOptions& opt) {
+  if (opt.engines.empty()) throw InputError("--engines: name at least one engine (liggghts, yade)");
+  for (const auto& e : opt.engines) dem::make_engine(e);
+  Inputs in;
+  std::tie(in.text, in.source) = scene_source(opt.scene);
+  in.scene = dem::parse_scene(in.text, in.source);
+  in.sets = io::parameter_sets(opt.params_dir);
+  in.sets_origin = opt.params_dir.empty() ? "built into iwb" : "--params-dir " + opt.params_dir.string();
+  std::string why;
+  if (calibrated_parameters(in.sets, in.scene, why) == nullptr) require_matchable(in.sets, in.sets_origin);
+  for (const auto& e : opt.engines)
+    in.runs.push_back(plan_dem_run(e, opt.out / fmt::format("dem-{}", e), in.text, in.source, opt.force));
+  return in;
+}
+
+// Runs (or resumes) the scene in one engine; false (and says why) if it did not complete.
+bool run_dem(const Inputs& in, const DemRun& run, const ValidateOptions& opt, const std::string& step) {
+  if (run.start == DemStart::kReuse) {
+    fmt::print(stderr, "iwb validate: {} DEM run of {} in {}: reused the complete run in {} (finished {}, {} "
+               "processes); the engine is not started (--force runs it again)\n", step, in.source, run.engine,
+               run.dir.string(), run.manifest.value("finished", "?"),
+               run.manifest.value("/engine/processes"_json_pointer, 0));
+    return true;
+  }
+  const bool resume = run.start == DemStart::kResume;
+  fmt::print(stderr, "iwb validate: {} DEM run of {} in {} ({} processes{}) -> {}\n", step, in.source, run.engine,
+             opt.processes, resume ? ", resuming the stopped run there" : "", run.dir.string());
+  const auto engine = dem::make_engine(run.engine);
   auto last = std::chrono::steady_clock::now();
-  const auto outcome = dem::run_scene(scene, text, *engine,
-                                      {dem_dir, opt.processes, false, opt.force, opt.command_line, nullptr,
+  const auto outcome = dem::run_scene(in.scene, in.text, *engine,
+                                      {run.dir, opt.processes, resume, opt.force, opt.command_line, nullptr,
                                        [&last](const std::string& l) {
                                          if (std::chrono::steady_clock::now() - last < std::chrono::seconds(3)) return;
                                          last = std::chrono::steady_clock::now();
                                          fmt::print(stderr, "  {}\n", l);
                                        }});
-  if (!outcome.complete()) fmt::print(stderr, "iwb validate: the {} run did not complete: {}\n", engine_name, outcome.status);
+  if (!outcome.complete()) fmt::print(stderr, "iwb validate: the {} run did not complete: {}\n", run.engine, outcome.status);
   return outcome.complete();
+}
+
+// The parameter file for the replays, chosen on the first engine's run so that every engine is
+// compared through the same continuum model; an embedded set is written into OUT/parameters/.
+fs::path replay_parameters(const Inputs& in, const fs::path& dem_dir, const fs::path& out, std::string& why) {
+  const auto summary = json::parse(io::read_file(dem_dir / "summary.json"));
+  const auto& set = parameters_for(in.sets, in.scene, summary["residual_friction"].get<double>(), why);
+  why += ", " + in.sets_origin;
+  return io::parameter_set_file(set, out / "parameters");
 }
 
 }  // namespace
 
-// The shipped parameter set whose critical friction angle is closest to the DEM's residual
-// interface friction angle atan(tau/sigma_n): the only property of the grains a DEM run tells
-// without calibration (issue 7 calibrates properly).
-fs::path matching_parameters(const fs::path& dir, double residual_friction, std::string& why) {
-  if (!fs::is_directory(dir))
-    throw InputError(fmt::format("{}: no parameter sets here (run from the repository, or pass --params-dir)", dir.string()));
-  const double phi_dem = std::atan(residual_friction) * 180.0 / M_PI;
-  fs::path best;
-  double best_gap = INFINITY;
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().extension() == ".toml" && !calibrated_set(e.path())) files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  for (const auto& f : files) {
-    const auto tables = io::load_parameter_file(f.string());
-    const auto it = tables.find("hypoplastic");
-    if (it == tables.end() || !it->second.count("phi_c_deg")) continue;
-    const double gap = std::abs(it->second.at("phi_c_deg") - phi_dem);
-    if (gap < best_gap) best_gap = gap, best = f;
-  }
-  if (best.empty()) throw InputError(fmt::format("{}: no [hypoplastic] parameter set", dir.string()));
-  why = fmt::format("phi_c closest to the DEM's residual friction angle atan({:.3f}) = {:.1f} deg", residual_friction, phi_dem);
-  return best;
-}
-
-fs::path parameters_for(const fs::path& dir, const dem::Scene& scene, double residual_friction, std::string& why) {
-  const auto calibrated = calibrated_parameters(dir, scene, why);
-  return calibrated.empty() ? matching_parameters(dir, residual_friction, why) : calibrated;
-}
-
 int run_validate(const ValidateOptions& opt) {
-  if (opt.engines.empty()) throw InputError("--engines: name at least one engine (liggghts, yade)");
-  for (const auto& e : opt.engines) dem::make_engine(e);  // refused before anything runs
-  const auto [text, source] = scene_source(opt.scene);
-  const auto scene = dem::parse_scene(text, source);
-  for (const auto& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+  const Inputs in = resolve_inputs(opt);  // refused before anything runs or is written
+  for (const auto& w : in.scene.warnings) fmt::print(stderr, "warning: {}\n", w);
   fs::create_directories(opt.out);
-  const std::size_t steps = 2 * opt.engines.size() + 1;
+  const std::size_t steps = 2 * in.runs.size() + 1;
   std::size_t step = 0;
   std::vector<fs::path> compares;
   fs::path params;
   std::string why;
-  for (const auto& engine : opt.engines) {
-    const fs::path dem_dir = opt.out / fmt::format("dem-{}", engine);
-    if (!run_dem(scene, text, source, engine, opt, dem_dir, fmt::format("{}/{}", ++step, steps))) return 1;
-    // One parameter set for every engine, chosen on the first, so that the engines are compared
-    // through the same continuum model.
-    if (params.empty()) {
-      const auto summary = nlohmann::json::parse(io::read_file(dem_dir / "summary.json"));
-      params = parameters_for(opt.params_dir, scene, summary["residual_friction"].get<double>(), why);
-    }
-    fmt::print(stderr, "iwb validate: {}/{} replay of the {} run through hvwe with {} ({})\n", ++step, steps, engine,
-               params.string(), why);
-    const fs::path out = opt.out / (opt.engines.size() == 1 ? "compare-hvwe" : fmt::format("compare-hvwe-{}", engine));
-    comparison::CompareOptions copt{dem_dir, "hvwe", params.string(), out, false, opt.force,
-                                    opt.command_line + " [parameters: " + why + "]"};
+  for (const auto& run : in.runs) {
+    if (!run_dem(in, run, opt, fmt::format("{}/{}", ++step, steps))) return 1;
+    if (params.empty()) params = replay_parameters(in, run.dir, opt.out, why);
+    fmt::print(stderr, "iwb validate: {}/{} replay of the {} run through hvwe with {} ({})\n", ++step, steps,
+               run.engine, params.string(), why);
+    const fs::path out = opt.out / (in.runs.size() == 1 ? "compare-hvwe" : fmt::format("compare-hvwe-{}", run.engine));
+    // The replay is redone on every call (seconds), replacing the last one: it follows the DEM
+    // run beside it and the parameters chosen now.
+    comparison::CompareOptions copt;
+    copt.dem_dir = run.dir, copt.params = params.string(), copt.out = out, copt.force = true;
+    copt.command_line = opt.command_line + " [parameters: " + why + "]";
     comparison::run_comparison(copt);
     compares.push_back(out);
   }

@@ -11,8 +11,9 @@
 #include "comparison/metrics.hpp"
 #include "comparison/seed_scatter.hpp"
 #include "dem/scene.hpp"
-#include "io/parameter_file.hpp"
+#include "dem/scene_content.hpp"
 #include "io/json_file.hpp"
+#include "io/parameter_file.hpp"
 #include "io/run_directory.hpp"
 #include "tradeoff/tradeoff.hpp"
 
@@ -130,13 +131,13 @@ std::optional<double> relative(double model, double dem) {
 }  // namespace
 
 ModelErrors evaluate_model(const fs::path& reference_run, const std::string& model,
-                           const std::string& params) {
+                           const io::ParameterSet& params) {
   ModelErrors r{model, {}, ""};
   try {
     const auto dem = comparison::load_dem_run(reference_run);
     models::ModelInputs inputs;
-    inputs.tables = io::load_parameter_file(params);
-    inputs.source = params;
+    inputs.tables = params.tables;
+    inputs.source = params.origin;
     auto start = comparison::standard_variants(dem, model, inputs).front();
     const auto fit =
         comparison::fit_kappa_and_ds(dem, start, comparison::joint_targets(dem, comparison::seed_scatter(dem, {})));  // the model at its best kappa_r and d_s, on tau and dilation
@@ -163,24 +164,61 @@ ModelErrors evaluate_model(const fs::path& reference_run, const std::string& mod
 
 namespace {
 
+fs::path tradeoff_dir(const PlanOptions& opt) {
+  return opt.tradeoff_dir.empty() ? default_out(opt.scene_file) : opt.tradeoff_dir;
+}
+
+// The scene against the one the tradeoff ran, by content: its file's name, comments and layout
+// do not count, a value that decides the DEM runs does and is named.
+void require_same_scene(const json& t, const fs::path& file, const PlanOptions& opt) {
+  const std::string text = io::read_file(opt.scene_file), scene = opt.scene_file.string();
+  const std::string ran = t.value("scene", "?");
+  const auto refuse = [&](const std::string& what) {
+    return InputError(fmt::format("{}: not the scene the tradeoff {} was run on ({}): {}; run `iwb tradeoff {}` "
+                                  "for this scene", scene, file.string(), ran, what, scene));
+  };
+  if (t.contains("dem_scene")) {
+    const auto diff = dem::content_differences(dem::scene_content(text, scene), t["dem_scene"]);
+    if (!diff.empty()) throw refuse(dem::differences_text(diff));
+    return;
+  }
+  // A tradeoff.json from before the content was recorded: its hash, under the name it ran as.
+  if (t.value("dem_scene_sha256", "") != dem_scene_sha256(text, fs::path(ran).filename().string()))
+    throw refuse("its DEM settings differ (this tradeoff.json records only their sha256, not which key)");
+}
+
+// Plan reads the reference's run directory (its summary chooses the default parameters) and
+// replays the complete base seeds: each must be there, not only the tables.
+void require_run_directories(const json& t, const fs::path& file, const PlanOptions& opt) {
+  std::vector<std::string> names = {t["reference"]["name"].get<std::string>()};
+  for (const auto& r : t["runs"])
+    if (r["kind"] == "base" && r["status"] == "complete") names.push_back(r["name"].get<std::string>());
+  std::string missing;
+  for (const auto& n : names)
+    if (!fs::is_regular_file(file.parent_path() / "runs" / n / "manifest.json"))
+      missing += (missing.empty() ? "" : ", ") + (fs::path("runs") / n).string();
+  if (!missing.empty())
+    throw InputError(fmt::format("{}: the tradeoff's run directories {} are missing (plan replays its runs; a "
+                                 "committed tradeoff holds tables only); run `iwb tradeoff {} -o {}` to make "
+                                 "them (complete runs there are reused)", file.string(), missing,
+                                 opt.scene_file.string(), file.parent_path().string()));
+}
+
 json load_tradeoff(const PlanOptions& opt) {
-  const fs::path dir = opt.tradeoff_dir.empty() ? default_out(opt.scene_file) : opt.tradeoff_dir;
+  const fs::path dir = tradeoff_dir(opt);
   const fs::path file = dir / "tradeoff.json";
   if (!fs::is_regular_file(file))
     throw InputError(fmt::format("{}: no tradeoff data for {}; run `iwb tradeoff {} -o {}` first",
                                  file.string(), opt.scene_file.string(), opt.scene_file.string(),
                                  dir.string()));
   const json t = io::read_json_file(file);  // a truncated file is named, not a raw parse error
-  if (t.value("dem_scene_sha256", "") != dem_scene_sha256(opt.scene_file))
-    throw InputError(
-        fmt::format("{}: this tradeoff was run on another version of {} (the scene's DEM settings "
-                    "changed); run `iwb tradeoff` again",
-                    file.string(), opt.scene_file.string()));
+  require_same_scene(t, file, opt);
   if (t["reference"].is_null())
     throw InputError(
         fmt::format("{}: the reference run has not completed (status {}); run `iwb tradeoff` again "
                     "to continue it",
                     file.string(), t.value("status", "?")));
+  require_run_directories(t, file, opt);
   return t;
 }
 
@@ -190,7 +228,7 @@ json load_tradeoff(const PlanOptions& opt) {
 // describes. The refined reference has other grains (kappa x2 is a stiffer E), so a continuum
 // model is judged against these, with their seed mean.
 std::vector<fs::path> base_runs(const PlanOptions& opt, const json& t) {
-  const fs::path dir = opt.tradeoff_dir.empty() ? default_out(opt.scene_file) : opt.tradeoff_dir;
+  const fs::path dir = tradeoff_dir(opt);
   std::vector<fs::path> out;
   for (const auto& r : t["runs"])
     if (r["kind"] == "base" && r["status"] == "complete")
@@ -200,7 +238,7 @@ std::vector<fs::path> base_runs(const PlanOptions& opt, const json& t) {
 
 // evaluate_model on every run, each QoI's error averaged over the runs (unknown if one lacks it).
 ModelErrors evaluate_model_on(const std::vector<fs::path>& runs, const std::string& model,
-                              const std::string& params) {
+                              const io::ParameterSet& params) {
   std::vector<ModelErrors> each;
   ModelErrors mean{model, {}, ""};
   for (const auto& run : runs) {
@@ -223,8 +261,7 @@ ModelErrors evaluate_model_on(const std::vector<fs::path>& runs, const std::stri
 
 fs::path reference_run(const PlanOptions& opt) {
   const json t = load_tradeoff(opt);
-  const fs::path dir = opt.tradeoff_dir.empty() ? default_out(opt.scene_file) : opt.tradeoff_dir;
-  return dir / "runs" / t["reference"]["name"].get<std::string>();
+  return tradeoff_dir(opt) / "runs" / t["reference"]["name"].get<std::string>();
 }
 
 json run_plan(const PlanOptions& opt) {
@@ -255,7 +292,7 @@ json run_plan(const PlanOptions& opt) {
                {"dem", choose_dem(t, scene.requirements)},
                {"continuum", choose_model(models, scene.requirements, t["noise_floor"])},
                {"continuum_judged_on", judged},
-               {"params", opt.params},
+               {"params", opt.params.origin},
                {"params_why", opt.params_why},
                {"command_line", opt.command_line}};
   const fs::path out = opt.out.empty() ? ref.parent_path().parent_path() : opt.out;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "dem/requirements.hpp"
+#include "io/parameter_sets.hpp"
 
 namespace iwb::tradeoff {
 
@@ -40,7 +41,7 @@ nlohmann::json choose_model(const std::vector<ModelErrors>& models,
 struct PlanOptions {
   std::filesystem::path scene_file;
   std::filesystem::path tradeoff_dir;  // empty: runs/tradeoff-<scene stem>
-  std::string params;                  // parameter file for the continuum models
+  io::ParameterSet params;             // for the continuum models (a file, or built into iwb)
   std::string params_why;              // how it was chosen, for the record
   std::filesystem::path out;           // plan.json goes here; empty: the tradeoff directory
   std::string command_line;
@@ -48,10 +49,11 @@ struct PlanOptions {
 
 // The replay of `model` on the reference run and its errors in each QoI.
 ModelErrors evaluate_model(const std::filesystem::path& reference_run, const std::string& model,
-                           const std::string& params);
+                           const io::ParameterSet& params);
 
-// InputError when the scene states no requirements, or the tradeoff is missing, unfinished or of
-// another scene.
+// InputError when the scene states no requirements, or the tradeoff is missing, unfinished, of
+// another scene (compared by content, dem/scene_content.hpp: the keys that differ are named) or
+// without its run directories (a committed tradeoff holds tables only).
 nlohmann::json run_plan(const PlanOptions& options);
 
 // The reference run's directory, after checking the tradeoff (for the CLI's default parameters).

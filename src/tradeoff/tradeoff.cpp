@@ -7,6 +7,7 @@
 #include "dem/crosscheck.hpp"
 #include "dem/numerics.hpp"
 #include "dem/requirements.hpp"
+#include "dem/scene_content.hpp"
 #include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 #include "tradeoff/knobs.hpp"
@@ -21,9 +22,8 @@ fs::path default_out(const fs::path& scene_file) {
   return fs::path("runs") / ("tradeoff-" + scene_file.stem().string());
 }
 
-std::string dem_scene_sha256(const fs::path& scene_file) {
-  return io::sha256_hex(
-      derived_scene(io::read_file(scene_file), scene_file.filename().string(), {}, "base_s1"));
+std::string dem_scene_sha256(const std::string& scene_text, const std::string& scene_file_name) {
+  return io::sha256_hex(derived_scene(scene_text, scene_file_name, {}, "base_s1"));
 }
 
 namespace {
@@ -161,7 +161,8 @@ json run_tradeoff(const TradeoffOptions& opt) {
   json result = analyse(rows);
   result["kind"] = "dem-tradeoff";
   result["scene"] = opt.scene_file.string();
-  result["dem_scene_sha256"] = dem_scene_sha256(opt.scene_file);
+  result["dem_scene"] = dem::scene_content(spec.text, opt.scene_file.string());
+  result["dem_scene_sha256"] = dem_scene_sha256(spec.text, opt.scene_file.filename().string());
   result["seeds"] = opt.seeds;
   result["knobs"] = opt.knobs;
   result["status"] = record.value("status", "?");

@@ -52,9 +52,11 @@ nlohmann::json run_tradeoff(const TradeoffOptions& options);
 // per knob how far each QoI moves. Pure: tested on hand-built rows.
 nlohmann::json analyse(const nlohmann::json& rows);
 
-// sha256 of the scene the DEM runs for `scene_file` (its [requirements] left out): plan checks
-// that a tradeoff belongs to the scene.
-std::string dem_scene_sha256(const std::filesystem::path& scene_file);
+// sha256 of the base scene the tradeoff runs for a scene file of this text and file name (its
+// [requirements] left out). Recorded in tradeoff.json beside the scene's content
+// (dem/scene_content.hpp), by which `iwb plan` checks that a tradeoff belongs to a scene; plan
+// falls back on the hash for a tradeoff.json that predates the content.
+std::string dem_scene_sha256(const std::string& scene_text, const std::string& scene_file_name);
 
 std::filesystem::path default_out(const std::filesystem::path& scene_file);
 

@@ -3,6 +3,7 @@
 // tolerances met, the cheapest DEM setting and the simplest model that meet a scene's requirements.
 #include <catch2/catch.hpp>
 
+#include "io/run_directory.hpp"
 #include "tradeoff/plan.hpp"
 #include "tradeoff/tradeoff.hpp"
 
@@ -101,4 +102,59 @@ TEST_CASE("plan: the simplest model that meets the tolerances, and why the simpl
   CHECK(both["candidates"][1]["fails"][0]["qoi"] == "peak_friction");
   CHECK(tradeoff::model_ladder(false) == std::vector<std::string>{"hp1d", "ah", "hvwe"});
   CHECK(tradeoff::model_ladder(true).back() == "hvwe-igs");
+}
+
+// `iwb plan` against the committed tradeoff of data/scenes/default.toml (tables only, no run
+// directories): the scene is compared by content, so a copy under another name is accepted and
+// refused only later, for the missing run directories; a copy with another value is refused
+// naming the key. Nothing is written either way.
+namespace {
+
+namespace fs = std::filesystem;
+
+// The default scene copied into a scratch directory as `name`, the first `from` replaced by `to`.
+tradeoff::PlanOptions plan_on_copy(const std::string& name, const std::string& from = "",
+                                   const std::string& to = "", const fs::path& tradeoff_dir = "data/tradeoff/default") {
+  const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / "plan-scene-copy";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::string text = io::read_file("data/scenes/default.toml");
+  if (!from.empty()) text.replace(text.find(from), from.size(), to);
+  io::write_atomically(dir / name, text);
+  tradeoff::PlanOptions opt;
+  opt.scene_file = dir / name;
+  opt.tradeoff_dir = tradeoff_dir;
+  opt.params = io::read_parameter_set("data/params/dem_default_grains.toml");
+  opt.out = dir / "plan";
+  return opt;
+}
+
+}  // namespace
+
+TEST_CASE("plan: a byte-identical copy of the scene under another name is the tradeoff's scene", "[tradeoff]") {
+  const auto opt = plan_on_copy("my_copy.toml");
+  REQUIRE_THROWS_WITH(tradeoff::run_plan(opt),
+                      Catch::Contains("run directories runs/refined, runs/base_s1") && !Catch::Contains("not the scene"));
+  CHECK_FALSE(fs::exists(opt.out));
+}
+
+TEST_CASE("plan: a copy with another value that reaches the engine is refused, naming the key", "[tradeoff]") {
+  const auto opt = plan_on_copy("default.toml", "friction = 0.5\n", "friction = 0.6\n");
+  REQUIRE_THROWS_WITH(tradeoff::run_plan(opt), Catch::Contains("key 'particles.friction' = 0.6 here, = 0.5 there"));
+  CHECK_FALSE(fs::exists(opt.out));
+  // other requirements and description are not the DEM's business: the copy is accepted
+  const auto reworded = plan_on_copy("default.toml", "residual_friction = 0.05", "residual_friction = 0.1");
+  REQUIRE_THROWS_WITH(tradeoff::run_plan(reworded), Catch::Contains("run directories"));
+}
+
+TEST_CASE("plan: a tradeoff.json recording only the scene's sha256 still accepts a renamed copy", "[tradeoff]") {
+  const fs::path old = fs::path(IWB_TEST_RUNS_DIR) / "plan-old-tradeoff";
+  fs::create_directories(old);
+  auto t = nlohmann::json::parse(io::read_file("data/tradeoff/default/tradeoff.json"));
+  t.erase("dem_scene");  // as written before the content was recorded
+  io::write_atomically(old / "tradeoff.json", t.dump(2));
+  REQUIRE_THROWS_WITH(tradeoff::run_plan(plan_on_copy("renamed.toml", "", "", old)),
+                      Catch::Contains("run directories"));
+  REQUIRE_THROWS_WITH(tradeoff::run_plan(plan_on_copy("renamed.toml", "seed = 1", "seed = 2", old)),
+                      Catch::Contains("its DEM settings differ"));
 }

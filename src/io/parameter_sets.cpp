@@ -1,0 +1,58 @@
+#include "io/parameter_sets.hpp"
+
+#include <algorithm>
+#include <fmt/core.h>
+
+#include "common/errors.hpp"
+#include "io/run_directory.hpp"
+#include "io/toml_reader.hpp"
+
+namespace iwb::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+ParameterSet read_set(std::string name, std::string origin, std::string text) {
+  ParameterSet set{std::move(name), std::move(origin), std::move(text), {}};
+  set.tables = read_parameter_tables(parse_toml_text(set.text, set.origin), set.origin);
+  return set;
+}
+
+std::vector<ParameterSet> sets_in_directory(const fs::path& dir) {
+  if (!fs::is_directory(dir))
+    throw InputError(fmt::format("--params-dir {}: not a directory (without --params-dir the sets built into "
+                                 "iwb are used)", dir.string()));
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".toml" && e.is_regular_file()) files.push_back(e.path());
+  if (files.empty()) throw InputError(fmt::format("--params-dir {}: holds no parameter set (*.toml)", dir.string()));
+  std::sort(files.begin(), files.end());
+  std::vector<ParameterSet> out;
+  for (const auto& f : files) out.push_back(read_parameter_set(f));
+  return out;
+}
+
+}  // namespace
+
+ParameterSet read_parameter_set(const fs::path& file) {
+  if (!fs::is_regular_file(file)) throw InputError(fmt::format("{}: no such parameter file", file.string()));
+  return read_set(file.filename().string(), file.string(), read_file(file));
+}
+
+std::vector<ParameterSet> parameter_sets(const fs::path& dir) {
+  if (!dir.empty()) return sets_in_directory(dir);
+  std::vector<ParameterSet> out;  // std::map: already sorted by name
+  for (const auto& [name, text] : embedded_parameter_sets())
+    out.push_back(read_set(name, "<embedded:" + name + ">", text));
+  return out;
+}
+
+fs::path parameter_set_file(const ParameterSet& set, const fs::path& dir) {
+  if (!set.embedded()) return set.origin;
+  fs::create_directories(dir);
+  write_atomically(dir / set.name, set.text);
+  return dir / set.name;
+}
+
+}  // namespace iwb::io
