@@ -88,7 +88,7 @@ TEST_CASE("report: -o naming a directory is refused and leaves no temporary file
   const fs::path dir = kWork / "o_is_dir";
   fs::remove_all(dir);
   fs::create_directories(dir / "report.html");
-  refused({comparison("for_dir").string()}, dir, "-o " + (dir / "report.html").string() + ": is a directory");
+  refused({comparison("for_dir").string()}, dir, "--out: " + (dir / "report.html").string() + ": is a directory");
   for (const auto& e : fs::recursive_directory_iterator(kWork))
     CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
 }

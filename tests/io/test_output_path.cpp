@@ -63,7 +63,8 @@ TEST_CASE("calibrate -o naming a directory is refused before fitting, leaving no
   fs::create_directories(kWork / "params");
   const auto r = test::run_iwb({"calibrate", "data/calibration/dem_default_grains/oedometer-dense", "-o", (kWork / "params").string()});
   CHECK(r.exit_code == 2);
-  CHECK_THAT(r.output, Catch::StartsWith("error: -o " + (kWork / "params").string() + ": is a directory"));  // nothing fitted first
+  // refused by the option's check, before anything is fitted
+  CHECK_THAT(r.output, Catch::StartsWith("error: iwb calibrate: --out: " + (kWork / "params").string() + ": is a directory"));
   CHECK(test::files_under(kWork).empty());
   CHECK_FALSE(has_temporary(kWork));
 }
