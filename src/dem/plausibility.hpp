@@ -43,7 +43,7 @@ struct PlausibilityCheck {
 
 // Tolerances (why each value: src/dem/README.md, "Plausibility"):
 inline constexpr double kMinRowShare = 0.9;        // rows against travel / cadence
-inline constexpr int kMinRows = 10;                // and never fewer (the residual window is a fifth)
+inline constexpr int kMinRows = 2;                 // and never fewer: a start and an end
 inline constexpr double kTravelRows = 2.0;         // the last row may precede the end by a row,
                                                    // and each reversal's rows miss up to one more
 inline constexpr double kNormalStressHeld = 0.5;   // |mean sigma_n / target - 1| over the shear stage

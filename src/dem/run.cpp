@@ -33,7 +33,7 @@ nlohmann::json fresh_manifest(const Scene& scene, const std::string& text, Engin
                            {"units", "kPa, mm, s in the contract files; SI inside the engine"}}},
           {"warnings", scene.warnings},
           {"stages", nlohmann::json::object()},
-          {"files", {"timeseries.csv", "profiles.csv", "summary.json", "vtk/particles.pvd", "vtk/walls.pvd"}},
+          {"files", nlohmann::json::array()},  // set when they are written: never a file that is not there
           {"started", io::utc_timestamp()},
           {"status", "running"}};
 }
@@ -110,6 +110,7 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
   io::write_atomically(opt.out / "profiles.csv", tables.profiles.to_csv());
   const Summary summary = summarize(scene, tables.timeseries, tables.profiles);
   io::write_atomically(opt.out / "summary.json", to_json(summary).dump(2) + "\n");
+  m["files"] = {"timeseries.csv", "profiles.csv", "summary.json", "vtk/particles.pvd", "vtk/walls.pvd"};
   m["engine_facts"] = tables.facts;
   m["particle_count"] = facts.value("/consolidate/particles"_json_pointer, 0);
   // complete only if the run did what the scene asked; the files stay for a look at why not

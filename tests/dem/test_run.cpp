@@ -34,6 +34,7 @@ void servo_failure(const std::string& engine_name) {
   CHECK(m["status"] == outcome.status);
   CHECK(m["stages"]["consolidate"]["status"] == "failed");
   CHECK_FALSE(fs::exists(dir / "timeseries.csv"));  // never a silent partial result
+  CHECK(m["files"].empty());                         // and no file listed that is not there
 }
 
 void resume_after_interrupt(const std::string& engine_name) {

@@ -15,28 +15,9 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string hp1d_test(const std::string& direction) {
-  return R"(
-[model]
-name = "hp1d"
-[model.parameters.hypoplastic]
-phi_c_deg = 31
-hs_kPa = 1.0e6
-n = 0.29
-ed0 = 0.61
-ec0 = 0.96
-ei0 = 1.09
-alpha = 0.13
-beta = 2
-[initial]
-sigma_n_kPa = 100
-e0 = 0.7
-[boundary]
-type = "CNL"
-[path]
-kind = "monotonic"
-gamma = 0.1
-increments = 100
-direction = ")" + direction + "\"\n";
+  return "model = { name = \"hp1d\", parameters = \"data/params/table_5_2_hostun.toml\" }\n"
+         "initial = { sigma_n_kPa = 100, e0 = 0.7 }\nboundary = { type = \"CNL\" }\n"
+         "path = { kind = \"monotonic\", gamma = 0.1, increments = 100, direction = \"" + direction + "\" }\n";
 }
 
 io::ElementRunOutcome run(const std::string& text, const fs::path& dir) {
