@@ -10,6 +10,7 @@
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "dem/scene.hpp"
+#include "io/directory_lock.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::dem {
@@ -130,6 +131,7 @@ nlohmann::json run_crosscheck(const CrosscheckOptions& opt) {
   if (opt.seeds < 1) throw InputError(fmt::format("--seeds {}: need at least one seed", opt.seeds));
   for (const auto& e : opt.engines) make_engine(e);  // unknown engines are refused before any run
   const std::string text = io::read_file(opt.scene_file);
+  const auto lock = io::DirectoryLock::take(opt.out, opt.command_line);  // each seed's run locks its own
   nlohmann::json out = {{"kind", "dem-crosscheck"}, {"scene", opt.scene_file.string()}, {"seeds", opt.seeds},
                         {"engines", nlohmann::json::object()}};
   for (const auto& engine : opt.engines) {

@@ -38,10 +38,7 @@ nlohmann::json fresh_manifest(const Scene& scene, const std::string& text, Engin
 // The manifest of an earlier run of the same scene, for --resume; `key` points at the hash of the
 // scene text the engine ran.
 nlohmann::json earlier_manifest(const fs::path& dir, const std::string& sha, const nlohmann::json::json_pointer& key) {
-  const auto path = dir / "manifest.json";
-  if (!fs::exists(path))
-    throw InputError(fmt::format("{}: nothing to resume (no manifest.json)", dir.string()));
-  auto m = nlohmann::json::parse(io::read_file(path));
+  auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
   if (m.value(key, std::string()) != sha)
     throw InputError(fmt::format("{}: the earlier run used a different scene (sha256 {}); "
                                  "--resume needs the same scene file", dir.string(),
@@ -56,6 +53,10 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
                                    const std::string& sha_key) {
   auto& m = out.manifest;
   const std::string sha = io::sha256_hex(text);
+  if (opt.resume && !fs::exists(opt.out / "manifest.json"))  // refused before the lock creates anything
+    throw InputError(fmt::format("{}: nothing to resume (no manifest.json)", opt.out.string()));
+  auto lock = io::DirectoryLock::take(opt.out, opt.command_line);
+  if (lock.stale() && opt.progress) opt.progress(lock.stale_message());
   if (opt.resume) {
     m = earlier_manifest(opt.out, sha, nlohmann::json::json_pointer(sha_key));
     m["status"] = "running";
@@ -64,13 +65,14 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
     io::prepare_run_directory(opt.out, opt.force);
     m = fresh;
   }
+  if (lock.stale()) m["stale_lock_taken_over"] = lock.stale()->describe();
   const fs::path work = opt.out / engine.name();
   fs::create_directories(work);
   fs::create_directories(opt.out / "vtk");
   io::write_manifest(opt.out, m);
 
   StagedRun run{StageContext{scene, opt.out, work, opt.processes, opt.interrupt, opt.progress},
-                nlohmann::json::object()};
+                nlohmann::json::object(), std::move(lock)};
   auto& facts = run.facts;
   for (const auto& [name, stage] : m["stages"].items()) facts[name] = stage.value("facts", nlohmann::json::object());
   for (const auto& stage : engine.stages()) {
@@ -117,6 +119,9 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
 }
 
 nlohmann::json resummarize(const fs::path& dir) {
+  if (!fs::exists(dir / "manifest.json"))  // refused before the lock creates anything
+    throw InputError(fmt::format("{}: not a run directory (no manifest.json)", dir.string()));
+  const auto lock = io::DirectoryLock::take(dir, "iwb dem summary");
   const auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
   if (m.value("status", "") != "complete")
     throw InputError(fmt::format("{}: run status is '{}'; only complete runs are summarised",

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <fmt/core.h>
 
+#include "io/directory_lock.hpp"
 #include "io/history_csv.hpp"
 #include "io/run_directory.hpp"
 
@@ -43,6 +44,7 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
   m["files"] = {"history.csv"};
   m["started"] = utc_timestamp();
   m["status"] = "running";
+  const auto lock = DirectoryLock::take(opt.out, opt.command_line);  // until the run is written
   prepare_run_directory(opt.out, opt.force);
   write_manifest(opt.out, m);
 
