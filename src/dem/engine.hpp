@@ -48,6 +48,10 @@ class Engine {
   virtual StageResult run_stage(const std::string& stage, const StageContext& ctx,
                                 const nlohmann::json& earlier_facts) = 0;
   virtual ContractTables assemble(const StageContext& ctx, const nlohmann::json& facts) = 0;
+  // The file a stage leaves in the work directory for the later stages to start from (its
+  // restart); empty when none. Its size and hash are recorded when the stage ends and checked
+  // before a later stage starts from it (dem/run.hpp).
+  virtual std::string restart_file(const std::string& stage) const = 0;
 };
 
 }  // namespace iwb::dem

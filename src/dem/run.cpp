@@ -5,6 +5,7 @@
 
 #include "common/errors.hpp"
 #include "dem/summary.hpp"
+#include "io/checksum_record.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::dem {
@@ -46,6 +47,56 @@ nlohmann::json earlier_manifest(const fs::path& dir, const std::string& sha, con
   return m;
 }
 
+bool is_done(const nlohmann::json& m, const std::string& stage) {
+  return m["stages"].contains(stage) && m["stages"][stage].value("status", "") == "done";
+}
+
+// Where a run starts: at the first stage not done, or at an earlier one whose restart, which the
+// later stages start from, is missing or does not match the size and hash recorded with it: that
+// stage is run again, its restart never used (finding 8: a truncated consolidation restart made
+// --resume fail while the stage stayed "done").
+struct Start {
+  std::size_t stage = 0;
+  std::string rebuilt_because;  // empty: nothing is run again
+};
+
+Start where_to_start(const nlohmann::json& m, const std::vector<std::string>& stages, const Engine& engine,
+                     const fs::path& work) {
+  Start s;
+  while (s.stage < stages.size() && is_done(m, stages[s.stage])) ++s.stage;
+  if (s.stage == stages.size()) return s;  // nothing left that would start from a restart
+  for (std::size_t i = 0; i < s.stage; ++i) {
+    const std::string restart = engine.restart_file(stages[i]);
+    if (restart.empty()) continue;
+    if (const auto why = io::checksum_problem(work / restart)) return {i, *why};
+  }
+  return s;
+}
+
+// Runs one stage into its manifest entry (status, wall time, facts); the restart it leaves gets
+// its size and hash recorded next to it, and in the entry. A stage that says it is done without
+// leaving its restart has failed.
+StageResult run_recorded_stage(Engine& engine, const std::string& stage, const StageContext& ctx,
+                               const nlohmann::json& facts, nlohmann::json& entry) {
+  const auto t0 = std::chrono::steady_clock::now();
+  StageResult r = engine.run_stage(stage, ctx, facts);
+  const std::string restart = engine.restart_file(stage);
+  nlohmann::json record;
+  if (r.ok && !restart.empty()) {
+    if (fs::exists(ctx.work_dir / restart)) {
+      record = io::write_checksum_record(ctx.work_dir / restart);
+    } else {
+      r.ok = false;
+      r.failure = fmt::format("the engine ended the stage without writing {}", (ctx.work_dir / restart).string());
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  entry = {{"status", r.ok ? "done" : (r.interrupted ? "interrupted" : "failed")},
+           {"wall_seconds", seconds}, {"facts", r.facts}};
+  if (!record.is_null()) entry["restart"] = record;
+  return r;
+}
+
 }  // namespace
 
 std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text, Engine& engine,
@@ -75,13 +126,14 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
                 nlohmann::json::object(), std::move(lock)};
   auto& facts = run.facts;
   for (const auto& [name, stage] : m["stages"].items()) facts[name] = stage.value("facts", nlohmann::json::object());
-  for (const auto& stage : engine.stages()) {
-    if (m["stages"].contains(stage) && m["stages"][stage].value("status", "") == "done") continue;
-    const auto t0 = std::chrono::steady_clock::now();
-    const StageResult r = engine.run_stage(stage, run.ctx, facts);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    m["stages"][stage] = {{"status", r.ok ? "done" : (r.interrupted ? "interrupted" : "failed")},
-                          {"wall_seconds", seconds}, {"facts", r.facts}};
+  const std::vector<std::string> stages = engine.stages();
+  const Start start = where_to_start(m, stages, engine, work);
+  if (!start.rebuilt_because.empty() && opt.progress)
+    opt.progress(fmt::format("{}: stage {} is run again", start.rebuilt_because, stages[start.stage]));
+  for (std::size_t i = start.stage; i < stages.size(); ++i) {
+    const std::string& stage = stages[i];
+    const StageResult r = run_recorded_stage(engine, stage, run.ctx, facts, m["stages"][stage]);
+    if (i == start.stage && !start.rebuilt_because.empty()) m["stages"][stage]["rebuilt_because"] = start.rebuilt_because;
     facts[stage] = r.facts;
     if (!r.ok) {
       out.status = r.interrupted ? fmt::format("interrupted at stage {}", stage)

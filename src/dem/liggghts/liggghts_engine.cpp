@@ -243,6 +243,11 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
   return r;
 }
 
+// consolidate.in's write_restart; shear.in's sheared.restart is not started from.
+std::string LiggghtsEngine::restart_file(const std::string& stage) const {
+  return stage == "consolidate" ? "consolidated.restart" : "";
+}
+
 ContractTables LiggghtsEngine::assemble(const StageContext& ctx, const nlohmann::json& facts) {
   return assemble_liggghts_outputs(ctx, facts, derive(ctx.scene));
 }

@@ -145,6 +145,11 @@ StageResult YadeEngine::run_stage(const std::string& stage, const StageContext& 
   return r;
 }
 
+// interface_shear.py's O.save at the end of consolidation; the later stages O.load it.
+std::string YadeEngine::restart_file(const std::string& stage) const {
+  return stage == "consolidate" ? "consolidated.yade.gz" : "";
+}
+
 ContractTables YadeEngine::assemble(const StageContext& ctx, const nlohmann::json& facts) {
   const Numerics n = derive(ctx.scene);
   const long step0 = facts.at("shear").at("step0").get<long>();
