@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "common/errors.hpp"
+#include "dem/consolidation_cache.hpp"
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "dem/scene.hpp"
@@ -63,7 +64,8 @@ SeedRun run_or_reuse(const Scene& scene, const std::string& text, const std::str
   if (!complete) {
     const auto engine = make_engine(engine_name);
     const auto outcome = run_scene(scene, text, *engine,
-                                   {dir, opt.processes, false, true, opt.command_line, opt.interrupt, opt.progress});
+                                   {dir, opt.processes, false, true, opt.command_line, opt.interrupt, opt.progress,
+                                    consolidation_cache_dir(opt.out / "consolidated")});
     if (!outcome.complete())
       throw std::runtime_error(fmt::format("{}: {} (crosscheck stopped; run it again to continue)", dir.string(),
                                            outcome.status));

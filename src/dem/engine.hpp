@@ -52,6 +52,14 @@ class Engine {
   // restart); empty when none. Its size and hash are recorded when the stage ends and checked
   // before a later stage starts from it (dem/run.hpp).
   virtual std::string restart_file(const std::string& stage) const = 0;
+  // Everything the consolidation stage of `scene` reads (its rendered engine input and meshes),
+  // and nothing only later stages read: its hash, with the engine's name and version, keys a
+  // consolidated specimen that runs differing only in the shear stage share
+  // (dem/consolidation_cache.hpp).
+  virtual std::string consolidation_inputs(const Scene& scene) const = 0;
 };
+
+// The stage that prepares the specimen (generate, settle, consolidate) in both engines.
+inline constexpr const char* kConsolidationStage = "consolidate";
 
 }  // namespace iwb::dem

@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
+#include "dem/consolidation_cache.hpp"
 #include "dem/summary.hpp"
 #include "io/checksum_record.hpp"
 #include "io/run_directory.hpp"
@@ -132,7 +133,12 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
     opt.progress(fmt::format("{}: stage {} is run again", start.rebuilt_because, stages[start.stage]));
   for (std::size_t i = start.stage; i < stages.size(); ++i) {
     const std::string& stage = stages[i];
-    const StageResult r = run_recorded_stage(engine, stage, run.ctx, facts, m["stages"][stage]);
+    nlohmann::json& entry = m["stages"][stage];
+    const auto here = [&] { return run_recorded_stage(engine, stage, run.ctx, facts, entry); };
+    const StageResult r = opt.consolidation_cache.empty() || stage != kConsolidationStage
+                              ? here()
+                              : consolidate_through_cache(engine, run.ctx, opt.consolidation_cache, opt.command_line,
+                                                          entry, here);
     if (i == start.stage && !start.rebuilt_because.empty()) m["stages"][stage]["rebuilt_because"] = start.rebuilt_because;
     facts[stage] = r.facts;
     if (!r.ok) {

@@ -23,6 +23,9 @@ struct RunOptions {
   std::string command_line;
   const std::atomic<bool>* interrupt = nullptr;
   std::function<void(const std::string&)> progress;
+  // Where consolidated specimens are kept (dem/consolidation_cache.hpp): the run starts from one
+  // of its consolidation key when there is one, and keeps the one it consolidates. Empty: none.
+  std::filesystem::path consolidation_cache;
 };
 
 struct RunOutcome {
