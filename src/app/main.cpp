@@ -17,6 +17,7 @@
 #include "app/tradeoff_commands.hpp"
 #include "campaign/sweep.hpp"
 #include "comparison/report.hpp"
+#include "dem/consolidation_cache.hpp"
 #include "dem/crosscheck.hpp"
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
@@ -95,13 +96,15 @@ std::function<void(const std::string&)> engine_progress() {
 }
 
 int cmd_dem_run(const std::string& scene_file, const std::string& engine_name, int np,
-                const std::string& out, bool resume, bool force, const std::string& cl) {
+                const std::string& out, bool resume, bool force, const std::string& consolidated,
+                const std::string& cl) {
   const auto scene = iwb::dem::load_scene(scene_file);  // refused here, before any engine starts
   for (const auto& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
   const auto engine = iwb::dem::make_engine(engine_name);
   const auto dir = out.empty() ? std::filesystem::path("runs") / fmt::format("{}-{}", scene.name, engine_name)
                                : std::filesystem::path(out);
-  iwb::dem::RunOptions opt{dir, np, resume, force, cl, &g_interrupt, engine_progress()};
+  iwb::dem::RunOptions opt{dir, np, resume, force, cl, &g_interrupt, engine_progress(),
+                           iwb::dem::consolidation_cache_dir(consolidated)};
   fmt::print(stderr, "iwb dem run: {} with {} ({} particles requested, {} rank(s)) -> {}\n", scene_file,
              engine_name, scene.particle_count, np, dir.string());
   const auto outcome = iwb::dem::run_scene(scene, iwb::io::read_file(scene_file), *engine, opt);
@@ -296,6 +299,10 @@ int main(int argc, char** argv) {
   dem_run->add_option("--out,-o", out, "run directory (default runs/<scene>-<engine>)")->check(output_directory());
   dem_run->add_flag("--resume", resume, "continue an interrupted run of the same scene from its last finished stage");
   dem_run->add_flag("--force", force, "replace an earlier run in the same directory");
+  std::string consolidated;
+  dem_run->add_option("--consolidated", consolidated,
+                      "start from a consolidated specimen of the same consolidation key kept in DIR, or keep this "
+                      "run's there (default $IWB_CONSOLIDATED_DIR, else none; src/dem/consolidation_cache.hpp)");
 
   const auto dem_soiltest = iwb::app::add_dem_soiltest(*dem);
 
@@ -468,7 +475,7 @@ int main(int argc, char** argv) {
     if (const auto code = iwb::app::run_tradeoff_commands(*tradeoff_commands, cl, &g_interrupt)) return *code;
     if (*models) return cmd_models(as_json);
     if (*run) return iwb::app::run_default_job(run_out, force, cl);
-    if (*dem_run) return cmd_dem_run(scene_file, engine_name, np, out, resume, force, cl);
+    if (*dem_run) return cmd_dem_run(scene_file, engine_name, np, out, resume, force, consolidated, cl);
     if (const auto code = iwb::app::run_dem_soiltest(*dem_soiltest, cl, &g_interrupt, engine_progress())) return *code;
     if (*report) {
       std::vector<std::filesystem::path> dirs(compare_dirs.begin(), compare_dirs.end());

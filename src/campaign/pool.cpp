@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "campaign/job_start.hpp"
+#include "dem/consolidation_cache.hpp"
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "dem/scene.hpp"
@@ -130,7 +131,7 @@ class Pool {
       const auto engine = dem::make_engine(job.engine);
       const auto scene = dem::parse_scene(job.scene_text, (opt_.out / scene_path(job)).string());
       dem::RunOptions ro{dir, opt_.processes, how == JobStart::kResume, how == JobStart::kFresh,
-                         opt_.command_line, &stop_, nullptr};
+                         opt_.command_line, &stop_, nullptr, dem::consolidation_cache_dir(opt_.out / "consolidated")};
       const auto outcome = dem::run_scene(scene, job.scene_text, *engine, ro);
       return {outcome.status, seconds_since(t0), how};
     } catch (const std::exception& e) {

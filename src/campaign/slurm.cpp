@@ -29,8 +29,8 @@ std::string slurm_script(const std::vector<Job>& jobs, const SlurmOptions& opt) 
       jobs.size(), opt.name, jobs.size() - 1, opt.processes, opt.time);
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     const auto& j = jobs[i];
-    s += fmt::format("  {}) \"$IWB\" dem run {} --engine {} --np {} --out {} $(resume {}) ;;\n", i, scene_path(j),
-                     j.engine, opt.processes, run_path(j), run_path(j));
+    s += fmt::format("  {}) \"$IWB\" dem run {} --engine {} --np {} --out {} --consolidated consolidated $(resume {}) ;;\n",
+                     i, scene_path(j), j.engine, opt.processes, run_path(j), run_path(j));
   }
   s += "  *) echo \"no job for array index $SLURM_ARRAY_TASK_ID\" >&2; exit 2 ;;\nesac\n";
   return s;

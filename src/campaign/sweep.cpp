@@ -6,6 +6,7 @@
 #include "campaign/jobs.hpp"
 #include "campaign/pool.hpp"
 #include "campaign/slurm.hpp"
+#include "io/directory_lock.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::campaign {
@@ -37,6 +38,7 @@ SweepOutcome run_sweep(const SweepOptions& opt) {
   const SweepSpec spec = load_sweep(opt.sweep_file);
   const std::vector<Job> jobs = expand_jobs(spec);  // refuses the sweep before anything is written
   SweepOutcome outcome{opt.out.empty() ? default_out(opt.sweep_file) : opt.out, {}, std::nullopt};
+  const auto lock = io::DirectoryLock::take(outcome.out, opt.command_line);  // each job locks its own run
   write_scenes(jobs, outcome.out);
   if (opt.emit_slurm) {
     fs::create_directories(outcome.out / "logs");  // Slurm does not create the --output folder

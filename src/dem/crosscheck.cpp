@@ -7,11 +7,13 @@
 #include <regex>
 
 #include "common/errors.hpp"
+#include "dem/consolidation_cache.hpp"
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
 #include "dem/scene.hpp"
 #include "io/json_file.hpp"
 #include "io/output_path.hpp"
+#include "io/directory_lock.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::dem {
@@ -64,7 +66,8 @@ SeedRun run_or_reuse(const Scene& scene, const std::string& text, const std::str
   if (!complete) {
     const auto engine = make_engine(engine_name);
     const auto outcome = run_scene(scene, text, *engine,
-                                   {dir, opt.processes, false, true, opt.command_line, opt.interrupt, opt.progress});
+                                   {dir, opt.processes, false, true, opt.command_line, opt.interrupt, opt.progress,
+                                    consolidation_cache_dir(opt.out / "consolidated")});
     if (!outcome.complete())
       throw std::runtime_error(fmt::format("{}: {} (crosscheck stopped; run it again to continue)", dir.string(),
                                            outcome.status));
@@ -132,6 +135,7 @@ nlohmann::json run_crosscheck(const CrosscheckOptions& opt) {
   if (opt.seeds < 1) throw InputError(fmt::format("--seeds {}: need at least one seed", opt.seeds));
   for (const auto& e : opt.engines) make_engine(e);  // unknown engines are refused before any run
   const std::string text = io::read_file(opt.scene_file);
+  const auto lock = io::DirectoryLock::take(opt.out, opt.command_line);  // each seed's run locks its own
   nlohmann::json out = {{"kind", "dem-crosscheck"}, {"scene", opt.scene_file.string()}, {"seeds", opt.seeds},
                         {"engines", nlohmann::json::object()}};
   for (const auto& engine : opt.engines) {

@@ -48,6 +48,18 @@ class Engine {
   virtual StageResult run_stage(const std::string& stage, const StageContext& ctx,
                                 const nlohmann::json& earlier_facts) = 0;
   virtual ContractTables assemble(const StageContext& ctx, const nlohmann::json& facts) = 0;
+  // The file a stage leaves in the work directory for the later stages to start from (its
+  // restart); empty when none. Its size and hash are recorded when the stage ends and checked
+  // before a later stage starts from it (dem/run.hpp).
+  virtual std::string restart_file(const std::string& stage) const = 0;
+  // Everything the consolidation stage of `scene` reads (its rendered engine input and meshes),
+  // and nothing only later stages read: its hash, with the engine's name and version, keys a
+  // consolidated specimen that runs differing only in the shear stage share
+  // (dem/consolidation_cache.hpp).
+  virtual std::string consolidation_inputs(const Scene& scene) const = 0;
 };
+
+// The stage that prepares the specimen (generate, settle, consolidate) in both engines.
+inline constexpr const char* kConsolidationStage = "consolidate";
 
 }  // namespace iwb::dem

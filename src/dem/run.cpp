@@ -5,8 +5,10 @@
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
+#include "dem/consolidation_cache.hpp"
 #include "dem/plausibility.hpp"
 #include "dem/summary.hpp"
+#include "io/checksum_record.hpp"
 #include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 
@@ -41,15 +43,62 @@ nlohmann::json fresh_manifest(const Scene& scene, const std::string& text, Engin
 // The manifest of an earlier run of the same scene, for --resume; `key` points at the hash of the
 // scene text the engine ran.
 nlohmann::json earlier_manifest(const fs::path& dir, const std::string& sha, const nlohmann::json::json_pointer& key) {
-  const auto path = dir / "manifest.json";
-  if (!fs::exists(path))
-    throw InputError(fmt::format("{}: nothing to resume (no manifest.json)", dir.string()));
-  auto m = nlohmann::json::parse(io::read_file(path));
+  auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
   if (m.value(key, std::string()) != sha)
     throw InputError(fmt::format("{}: the earlier run used a different scene (sha256 {}); "
                                  "--resume needs the same scene file", dir.string(),
                                  m.value(key, std::string("?"))));
   return m;
+}
+
+bool is_done(const nlohmann::json& m, const std::string& stage) {
+  return m["stages"].contains(stage) && m["stages"][stage].value("status", "") == "done";
+}
+
+// Where a run starts: at the first stage not done, or at an earlier one whose restart, which the
+// later stages start from, is missing or does not match the size and hash recorded with it: that
+// stage is run again, its restart never used (finding 8: a truncated consolidation restart made
+// --resume fail while the stage stayed "done").
+struct Start {
+  std::size_t stage = 0;
+  std::string rebuilt_because;  // empty: nothing is run again
+};
+
+Start where_to_start(const nlohmann::json& m, const std::vector<std::string>& stages, const Engine& engine,
+                     const fs::path& work) {
+  Start s;
+  while (s.stage < stages.size() && is_done(m, stages[s.stage])) ++s.stage;
+  if (s.stage == stages.size()) return s;  // nothing left that would start from a restart
+  for (std::size_t i = 0; i < s.stage; ++i) {
+    const std::string restart = engine.restart_file(stages[i]);
+    if (restart.empty()) continue;
+    if (const auto why = io::checksum_problem(work / restart)) return {i, *why};
+  }
+  return s;
+}
+
+// Runs one stage into its manifest entry (status, wall time, facts); the restart it leaves gets
+// its size and hash recorded next to it, and in the entry. A stage that says it is done without
+// leaving its restart has failed.
+StageResult run_recorded_stage(Engine& engine, const std::string& stage, const StageContext& ctx,
+                               const nlohmann::json& facts, nlohmann::json& entry) {
+  const auto t0 = std::chrono::steady_clock::now();
+  StageResult r = engine.run_stage(stage, ctx, facts);
+  const std::string restart = engine.restart_file(stage);
+  nlohmann::json record;
+  if (r.ok && !restart.empty()) {
+    if (fs::exists(ctx.work_dir / restart)) {
+      record = io::write_checksum_record(ctx.work_dir / restart);
+    } else {
+      r.ok = false;
+      r.failure = fmt::format("the engine ended the stage without writing {}", (ctx.work_dir / restart).string());
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  entry = {{"status", r.ok ? "done" : (r.interrupted ? "interrupted" : "failed")},
+           {"wall_seconds", seconds}, {"facts", r.facts}};
+  if (!record.is_null()) entry["restart"] = record;
+  return r;
 }
 
 }  // namespace
@@ -59,6 +108,10 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
                                    const std::string& sha_key) {
   auto& m = out.manifest;
   const std::string sha = io::sha256_hex(text);
+  if (opt.resume && !fs::exists(opt.out / "manifest.json"))  // refused before the lock creates anything
+    throw InputError(fmt::format("{}: nothing to resume (no manifest.json)", opt.out.string()));
+  auto lock = io::DirectoryLock::take(opt.out, opt.command_line);
+  if (lock.stale() && opt.progress) opt.progress(lock.stale_message());
   if (opt.resume) {
     m = earlier_manifest(opt.out, sha, nlohmann::json::json_pointer(sha_key));
     m["status"] = "running";
@@ -67,22 +120,29 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
     io::prepare_run_directory(opt.out, opt.force);
     m = fresh;
   }
+  if (lock.stale()) m["stale_lock_taken_over"] = lock.stale()->describe();
   const fs::path work = opt.out / engine.name();
   fs::create_directories(work);
   fs::create_directories(opt.out / "vtk");
   io::write_manifest(opt.out, m);
 
   StagedRun run{StageContext{scene, opt.out, work, opt.processes, opt.interrupt, opt.progress},
-                nlohmann::json::object()};
+                nlohmann::json::object(), std::move(lock)};
   auto& facts = run.facts;
   for (const auto& [name, stage] : m["stages"].items()) facts[name] = stage.value("facts", nlohmann::json::object());
-  for (const auto& stage : engine.stages()) {
-    if (m["stages"].contains(stage) && m["stages"][stage].value("status", "") == "done") continue;
-    const auto t0 = std::chrono::steady_clock::now();
-    const StageResult r = engine.run_stage(stage, run.ctx, facts);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    m["stages"][stage] = {{"status", r.ok ? "done" : (r.interrupted ? "interrupted" : "failed")},
-                          {"wall_seconds", seconds}, {"facts", r.facts}};
+  const std::vector<std::string> stages = engine.stages();
+  const Start start = where_to_start(m, stages, engine, work);
+  if (!start.rebuilt_because.empty() && opt.progress)
+    opt.progress(fmt::format("{}: stage {} is run again", start.rebuilt_because, stages[start.stage]));
+  for (std::size_t i = start.stage; i < stages.size(); ++i) {
+    const std::string& stage = stages[i];
+    nlohmann::json& entry = m["stages"][stage];
+    const auto here = [&] { return run_recorded_stage(engine, stage, run.ctx, facts, entry); };
+    const StageResult r = opt.consolidation_cache.empty() || stage != kConsolidationStage
+                              ? here()
+                              : consolidate_through_cache(engine, run.ctx, opt.consolidation_cache, opt.command_line,
+                                                          entry, here);
+    if (i == start.stage && !start.rebuilt_because.empty()) m["stages"][stage]["rebuilt_because"] = start.rebuilt_because;
     facts[stage] = r.facts;
     if (!r.ok) {
       out.status = r.interrupted ? fmt::format("interrupted at stage {}", stage)
@@ -128,6 +188,9 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
 
 nlohmann::json resummarize(const fs::path& dir) {
   const fs::path manifest = dir / "manifest.json", timeseries = dir / "timeseries.csv";
+  if (!fs::exists(manifest))  // refused before the lock creates anything
+    throw InputError(fmt::format("{}: not a run directory (no manifest.json)", dir.string()));
+  const auto lock = io::DirectoryLock::take(dir, "iwb dem summary");
   const auto m = io::read_json_file(manifest);
   const auto status = io::json_field<std::string>(m, "/status", manifest);
   if (status != "complete")

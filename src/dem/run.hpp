@@ -11,6 +11,7 @@
 #include <string>
 
 #include "dem/engine.hpp"
+#include "io/directory_lock.hpp"
 
 namespace iwb::dem {
 
@@ -22,6 +23,9 @@ struct RunOptions {
   std::string command_line;
   const std::atomic<bool>* interrupt = nullptr;
   std::function<void(const std::string&)> progress;
+  // Where consolidated specimens are kept (dem/consolidation_cache.hpp): the run starts from one
+  // of its consolidation key when there is one, and keeps the one it consolidates. Empty: none.
+  std::filesystem::path consolidation_cache;
 };
 
 struct RunOutcome {
@@ -35,9 +39,12 @@ struct RunOutcome {
 // after each stage, stages already done skipped. Returns the context and every stage's facts, or
 // nothing when a stage failed or was interrupted (out.status and the manifest then say so).
 // `sha_key` points at the manifest's hash of scene_text (what --resume must find again).
+// The run directory is locked (io/directory_lock.hpp) from before anything is read or written in
+// it until the StagedRun is gone: another process working in it is refused (InputError naming it).
 struct StagedRun {
   StageContext ctx;
   nlohmann::json facts;  // by stage name
+  std::optional<io::DirectoryLock> lock;
 };
 std::optional<StagedRun> run_stages(const Scene& scene, const std::string& scene_text, Engine& engine,
                                    const RunOptions& options, const nlohmann::json& fresh, RunOutcome& out,
@@ -47,7 +54,7 @@ RunOutcome run_scene(const Scene& scene, const std::string& scene_text, Engine& 
                      const RunOptions& options);
 
 // Recomputes summary.json of a finished run directory from its contract files and the scene
-// copy in its manifest; returns the summary.
+// copy in its manifest, under the directory's lock; returns the summary.
 nlohmann::json resummarize(const std::filesystem::path& run_dir);
 
 }  // namespace iwb::dem

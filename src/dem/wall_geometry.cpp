@@ -80,10 +80,16 @@ std::string to_stl(const std::vector<Triangle>& triangles, const std::string& na
   return s + "endsolid " + name + "\n";
 }
 
-void write_scene_meshes(const Scene& s, double plate_z, const std::filesystem::path& dir) {
+SceneMeshes scene_meshes(const Scene& s, double plate_z) {
   const double max_edge = s.particles.d50_m;
-  io::write_atomically(dir / "wall.stl", to_stl(profile_surface(s.wall, s.length_m, s.width_m, 0.0, false, max_edge), "wall"));
-  io::write_atomically(dir / "top.stl", to_stl(profile_surface(s.plate, s.length_m, s.width_m, plate_z, true, max_edge), "top"));
+  return {to_stl(profile_surface(s.wall, s.length_m, s.width_m, 0.0, false, max_edge), "wall"),
+          to_stl(profile_surface(s.plate, s.length_m, s.width_m, plate_z, true, max_edge), "top")};
+}
+
+void write_scene_meshes(const Scene& s, double plate_z, const std::filesystem::path& dir) {
+  const SceneMeshes meshes = scene_meshes(s, plate_z);
+  io::write_atomically(dir / "wall.stl", meshes.wall_stl);
+  io::write_atomically(dir / "top.stl", meshes.top_stl);
 }
 
 }  // namespace iwb::dem

@@ -24,7 +24,12 @@ std::vector<Triangle> profile_surface(const RoughnessProfile& profile, double le
 std::string to_stl(const std::vector<Triangle>& triangles, const std::string& name);
 
 // wall.stl (the tested wall's surface on z = 0) and top.stl (the plate's, facing down from
-// plate_z) in dir, as both engines read them; edges no longer than d50.
+// plate_z), as both engines read them; edges no longer than d50.
+struct SceneMeshes {
+  std::string wall_stl, top_stl;
+};
+SceneMeshes scene_meshes(const Scene& scene, double plate_z);
+// The same, written into dir.
 void write_scene_meshes(const Scene& scene, double plate_z, const std::filesystem::path& dir);
 
 }  // namespace iwb::dem

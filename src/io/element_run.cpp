@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
+#include "io/directory_lock.hpp"
 #include "io/history_csv.hpp"
 #include "io/run_directory.hpp"
 
@@ -49,6 +50,7 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
   m["files"] = nlohmann::json::array();  // each file as it is written, so the list never names a missing one
   m["started"] = utc_timestamp();
   m["status"] = "running";
+  const auto lock = DirectoryLock::take(opt.out, opt.command_line);  // until the run is written
   prepare_run_directory(opt.out, opt.force);
   write_manifest(opt.out, m);
 

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "common/errors.hpp"
+#include "io/directory_lock.hpp"
 
 namespace iwb::io {
 
@@ -60,8 +61,9 @@ void prepare_run_directory(const fs::path& dir, bool force) {
                                    "or pass --force to replace it", dir.string()));
     // Replaced, not overwritten: files the new run does not write again (a snapshot at a step
     // it never reaches) would otherwise pass for its own. Only a directory with a manifest, that
-    // is a run of ours, is emptied.
-    for (const auto& entry : fs::directory_iterator(dir)) fs::remove_all(entry.path());
+    // is a run of ours, is emptied; its lock (directory_lock.hpp), held by the caller, stays.
+    for (const auto& entry : fs::directory_iterator(dir))
+      if (entry.path().filename() != kLockFileName) fs::remove_all(entry.path());
   }
   fs::create_directories(dir);
 }

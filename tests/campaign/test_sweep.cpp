@@ -129,7 +129,7 @@ TEST_CASE("sweep --emit slurm: a job array with one dem run per job, nothing run
   const std::string script = io::read_file(out / "sweep.slurm");
   CHECK_THAT(script, Catch::Contains("#SBATCH --array=0-2\n") && Catch::Contains("#SBATCH --ntasks=2\n"));
   CHECK_THAT(script, Catch::Contains("  1) \"$IWB\" dem run scenes/u10.toml --engine liggghts --np 2 --out runs/u10 "
-                                     "$(resume runs/u10) ;;"));
+                                     "--consolidated consolidated $(resume runs/u10) ;;"));
   for (const std::string job : {"u0.05", "u10", "u0.1"}) {
     const std::string text = io::read_file(out / "scenes" / (job + ".toml"));
     CHECK(dem::parse_scene(text, job + ".toml").particle_count == 180);

@@ -8,6 +8,7 @@
 #include "common/errors.hpp"
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
+#include "io/checksum_record.hpp"
 #include "io/run_directory.hpp"
 #include "support/cli.hpp"
 
@@ -63,7 +64,42 @@ void resume_after_interrupt(const std::string& engine_name) {
                     Catch::Contains("different scene"));
 }
 
+// Finding 8: a truncated consolidation restart made --resume fail inside the engine while the
+// stage stayed "done". Its size and hash are now recorded with it: the resumed run sees the
+// mismatch, consolidates again and ends as a clean run does (one rank: LIGGGHTS is deterministic,
+// so the time series are the same bytes).
+void truncated_restart_rebuilt(const std::string& engine_name) {
+  const std::string file = "data/scenes/smoke.toml";
+  const std::string text = io::read_file(file);
+  const auto scene = dem::parse_scene(text, file);
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / "truncated_restart";
+  const auto engine = dem::make_engine(engine_name);
+  REQUIRE(dem::run_scene(scene, text, *engine, options(dir, false)).complete());
+  const std::string clean_timeseries = io::read_file(dir / "timeseries.csv");
+  // as if the shear stage had been interrupted and the restart cut short (a full disk, a copy)
+  auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
+  m["stages"].erase("shear");
+  m["status"] = "interrupted at stage shear";
+  io::write_manifest(dir, m);
+  fs::remove(dir / "timeseries.csv");
+  const fs::path restart = dir / engine_name / engine->restart_file("consolidate");
+  fs::resize_file(restart, fs::file_size(restart) / 2);
+  const auto resumed = dem::run_scene(scene, text, *engine, options(dir, true));
+  REQUIRE(resumed.complete());
+  CHECK_THAT(resumed.manifest["stages"]["consolidate"].value("rebuilt_because", ""),
+             Catch::Contains("bytes, its record says"));
+  CHECK_FALSE(io::checksum_problem(restart));
+  CHECK(io::read_file(dir / "timeseries.csv") == clean_timeseries);
+}
+
 }  // namespace
+
+TEST_CASE("LIGGGHTS: a truncated consolidation restart is rebuilt on --resume, never used", "[dem][liggghts]") {
+  truncated_restart_rebuilt("liggghts");
+}
+TEST_CASE("YADE: a truncated consolidation restart is rebuilt on --resume, never used", "[dem][yade][heavy]") {
+  truncated_restart_rebuilt("yade");
+}
 
 TEST_CASE("LIGGGHTS: a servo that does not converge fails the run with its reason", "[dem][liggghts]") {
   servo_failure("liggghts");

@@ -243,6 +243,21 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
   return r;
 }
 
+// consolidate.in as rendered and the meshes: the stage reads nothing else.
+std::string LiggghtsEngine::consolidation_inputs(const Scene& s) const {
+  const Numerics n = derive(s);
+  TemplateValues values = values_of(s, n, n.plate_z);
+  values.insert(extra_.begin(), extra_.end());
+  const std::string input = std::string(kConsolidationStage) + ".in";
+  const SceneMeshes meshes = scene_meshes(s, n.plate_z);
+  return render_template(liggghts_templates().at(input), values, input) + meshes.wall_stl + meshes.top_stl;
+}
+
+// consolidate.in's write_restart; shear.in's sheared.restart is not started from.
+std::string LiggghtsEngine::restart_file(const std::string& stage) const {
+  return stage == kConsolidationStage ? "consolidated.restart" : "";
+}
+
 ContractTables LiggghtsEngine::assemble(const StageContext& ctx, const nlohmann::json& facts) {
   return assemble_liggghts_outputs(ctx, facts, derive(ctx.scene));
 }

@@ -25,6 +25,8 @@ class LiggghtsEngine final : public Engine {
   StageResult run_stage(const std::string& stage, const StageContext& ctx,
                         const nlohmann::json& facts) override;
   ContractTables assemble(const StageContext& ctx, const nlohmann::json& facts) override;
+  std::string restart_file(const std::string& stage) const override;
+  std::string consolidation_inputs(const Scene& scene) const override;
 
  private:
   std::vector<std::string> stages_ = {"consolidate", "shear"};

@@ -145,6 +145,25 @@ StageResult YadeEngine::run_stage(const std::string& stage, const StageContext& 
   return r;
 }
 
+// yade_params.json without what only the later stages read (interface_shear.py: the shear
+// program, the boundary condition and K, the relaxation, the band and bins, the test friction,
+// the soil cell's oedometer levels), the script and the meshes.
+std::string YadeEngine::consolidation_inputs(const Scene& s) const {
+  const Numerics n = derive(s);
+  nlohmann::json params = yade_parameters(s, n);
+  params.update(extra_);
+  for (const char* later : {"shear", "bc", "K_Pa_per_m", "relax_steps", "band_zlo", "band_zhi", "bin_dz", "mu_test",
+                            "oedometer"})
+    params.erase(later);
+  const SceneMeshes meshes = scene_meshes(s, n.plate_z);
+  return params.dump(2) + yade_scripts().at(kScript) + meshes.wall_stl + meshes.top_stl;
+}
+
+// interface_shear.py's O.save at the end of consolidation; the later stages O.load it.
+std::string YadeEngine::restart_file(const std::string& stage) const {
+  return stage == kConsolidationStage ? "consolidated.yade.gz" : "";
+}
+
 ContractTables YadeEngine::assemble(const StageContext& ctx, const nlohmann::json& facts) {
   const Numerics n = derive(ctx.scene);
   const long step0 = facts.at("shear").at("step0").get<long>();
