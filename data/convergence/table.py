@@ -16,7 +16,19 @@ import sys
 
 QOIS = [("peak_friction", "peak friction"), ("residual_friction", "residual friction"),
         ("dilation_mm", "total dilation (mm)"), ("dilatancy_angle_deg", "dilatancy angle at residual (deg)"),
-        ("u_x_at_peak_mm", "u_x at peak (mm)"), ("wall_band_d50", "wall band (d50)")]
+        ("u_x_at_peak_mm", "u_x at peak (mm)"), ("wall_band_d50", "wall band (d50)"),
+        ("sigma_n_held_kPa", "mean sigma_n while shearing (kPa; CNL at 50)")]
+
+
+def mean_sigma_n(run_dir):
+    """How well CNL was held: the mean sigma_n on the wall over the rows after the first (the grains'
+    weight adds ~0.6 kPa at 20 d50)."""
+    import csv
+    path = os.path.join(run_dir, "timeseries.csv")
+    if not os.path.exists(path):
+        return None
+    rows = list(csv.DictReader(open(path)))[1:]
+    return statistics.mean(float(r["sigma_n_kPa"]) for r in rows) if rows else None
 
 
 def level_and_wall(name):
@@ -34,7 +46,9 @@ def read_groups(axis_dir):
     groups = {}
     for f in sorted(glob.glob(os.path.join(axis_dir, "runs", "*", "summary.json"))):
         name = os.path.basename(os.path.dirname(f))
-        groups.setdefault(level_and_wall(name), []).append(json.load(open(f)))
+        summary = json.load(open(f))
+        summary["sigma_n_held_kPa"] = mean_sigma_n(os.path.dirname(f))
+        groups.setdefault(level_and_wall(name), []).append(summary)
     return groups
 
 
