@@ -135,6 +135,7 @@ nlohmann::json run_crosscheck(const CrosscheckOptions& opt) {
   if (opt.seeds < 1) throw InputError(fmt::format("--seeds {}: need at least one seed", opt.seeds));
   for (const auto& e : opt.engines) make_engine(e);  // unknown engines are refused before any run
   const std::string text = io::read_file(opt.scene_file);
+  parse_scene(text, opt.scene_file.string());  // every value checked before the lock creates OUT
   const auto lock = io::DirectoryLock::take(opt.out, opt.command_line);  // each seed's run locks its own
   nlohmann::json out = {{"kind", "dem-crosscheck"}, {"scene", opt.scene_file.string()}, {"seeds", opt.seeds},
                         {"engines", nlohmann::json::object()}};

@@ -20,7 +20,7 @@ cd "$scratch" || fail "no scratch directory"
 out=$("$iwb" validate --scene smoke --params-dir no_such_dir 2>&1); code=$?
 echo "$out"
 [ "$code" -eq 2 ] || fail "bad --params-dir: exit $code, expected 2"
-grep -q -- "--params-dir no_such_dir: not a directory" <<<"$out" || fail "bad --params-dir not named"
+grep -q -- "--params-dir: no_such_dir: no such directory" <<<"$out" || fail "bad --params-dir not named"
 [ -z "$(ls -A)" ] || fail "bad --params-dir left files behind: $(ls -A)"
 
 "$iwb" validate --scene smoke --np 1 >first.log 2>&1 || { cat first.log; fail "first validate failed"; }

@@ -159,7 +159,7 @@ TEST_CASE("plausibility: every committed DEM run of data/reference and data/conv
       CHECK(dem::failure_reason(checks).value_or("all pass") == "all pass");
       ++runs;
     }
-  CHECK(runs == 48);
+  CHECK(runs >= 48);  // 48 when this was written; campaigns add runs
 }
 
 namespace {
