@@ -10,17 +10,13 @@
 #include "dem/run.hpp"
 #include "io/checksum_record.hpp"
 #include "io/run_directory.hpp"
+#include "support/replaced.hpp"
 
 using namespace iwb;
+using iwb::test::replaced;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto p = text.find(from);
-  REQUIRE(p != std::string::npos);
-  return text.replace(p, from.size(), to);
-}
 
 std::string key_of(const dem::Engine& engine, const std::string& text) {
   return dem::consolidation_key(engine, dem::parse_scene(text, "smoke variant"));

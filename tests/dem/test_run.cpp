@@ -11,16 +11,13 @@
 #include "io/checksum_record.hpp"
 #include "io/run_directory.hpp"
 #include "support/cli.hpp"
+#include "support/replaced.hpp"
 
 using namespace iwb;
+using iwb::test::replaced;
 namespace fs = std::filesystem;
 
 namespace {
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto p = text.find(from);
-  REQUIRE(p != std::string::npos);
-  return text.replace(p, from.size(), to);
-}
 dem::RunOptions options(const fs::path& dir, bool resume) { return {dir, 1, resume, !resume, "tests", nullptr, nullptr}; }
 
 void servo_failure(const std::string& engine_name) {

@@ -6,17 +6,13 @@
 #include "dem/numerics.hpp"
 #include "dem/scene.hpp"
 #include "io/run_directory.hpp"
+#include "support/replaced.hpp"
 
 using namespace iwb;
+using iwb::test::replaced;
 
 namespace {
 std::string smoke() { return io::read_file("data/scenes/smoke.toml"); }
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto p = text.find(from);
-  REQUIRE(p != std::string::npos);
-  return text.replace(p, from.size(), to);
-}
 
 std::string error_of(const std::string& text) {
   try {

@@ -8,8 +8,10 @@
 #include "io/element_run.hpp"
 #include "io/element_test_file.hpp"
 #include "io/toml_reader.hpp"
+#include "support/replaced.hpp"
 
 using namespace iwb;
+using iwb::test::replaced;
 
 namespace {
 
@@ -47,12 +49,6 @@ std::string error_of(const std::string& text) {
     return e.what();
   }
   return "(no error)";
-}
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto p = text.find(from);
-  REQUIRE(p != std::string::npos);
-  return text.replace(p, from.size(), to);
 }
 
 }  // namespace
