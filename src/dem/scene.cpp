@@ -293,6 +293,11 @@ double Shear::duration_s() const {
   return std::sqrt(2.0 * ramp_s * d / velocity_m_s);  // the whole travel within the ramp
 }
 
+double default_shear_servo_gain(double stiffness_level) {
+  constexpr double kTunedGain = 2.0, kTunedStiffnessLevel = 166.0;
+  return kTunedGain * std::min(1.0, std::pow(kTunedStiffnessLevel / stiffness_level, 0.25));
+}
+
 double Scene::stiffness_level() const {
   const auto& p = particles;
   return std::pow(p.youngs_modulus_Pa / ((1.0 - p.poisson * p.poisson) * boundary.sigma_n_Pa), 2.0 / 3.0);
@@ -395,11 +400,12 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     o->finish();
   }
 
-  s.servo = {0.3, 1.0, 2.0};
+  const double kp_shear = default_shear_servo_gain(s.stiffness_level());
+  s.servo = {0.3, 1.0, kp_shear};
   if (auto sv = top.table("servo")) {
     s.servo.vel_max_m_s = sv->optional_positive("vel_max_m_s", kMaxServoSpeedMS).value_or(0.3);
     s.servo.kp = sv->optional_positive("kp", kMaxServoGain).value_or(1.0);
-    s.servo.kp_shear = sv->optional_positive("kp_shear", kMaxServoGain).value_or(2.0);
+    s.servo.kp_shear = sv->optional_positive("kp_shear", kMaxServoGain).value_or(kp_shear);
     sv->finish();
   }
   if (auto nu = top.table("numerics")) {

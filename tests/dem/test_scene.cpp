@@ -1,5 +1,6 @@
 // Scene files: refused before any engine starts, with file, key and value; derived geometry.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <fstream>
 
 #include "common/errors.hpp"
@@ -237,4 +238,20 @@ TEST_CASE("every scene shipped in data/ lies within the ranges scenes are checke
     ++scenes;
   }
   CHECK(scenes >= 69);
+}
+
+// The shear servo's gain keeps its loop gain per step (~ kp kappa^(1/4), scene.hpp) at the value
+// tuned on soft grains: 2 at and below stiffness level 166, and kp kappa^(1/4) constant above.
+TEST_CASE("the default shear servo gain is 2 on soft grains and falls as kappa^(-1/4) on stiff ones",
+          "[dem]") {
+  CHECK(dem::default_shear_servo_gain(100.0) == 2.0);
+  CHECK(dem::default_shear_servo_gain(166.0) == 2.0);
+  for (const double kappa : {600.0, 2000.0, 1e4})
+    CHECK(dem::default_shear_servo_gain(kappa) * std::pow(kappa, 0.25) ==
+          Approx(2.0 * std::pow(166.0, 0.25)));
+  // the smoke scene at E 4.2e9 Pa: kappa ~2000, the gain ~1.07 (kp 1 measured stable, 2 not)
+  const auto stiff = dem::parse_scene(
+      replaced(smoke(), "youngs_modulus_Pa = 1.0e8", "youngs_modulus_Pa = 4.2e9"), "stiff.toml");
+  CHECK(stiff.servo.kp_shear == Approx(1.07).margin(0.01));
+  CHECK(dem::parse_scene(smoke(), "smoke.toml").servo.kp_shear == 2.0);
 }
