@@ -20,21 +20,24 @@ CELL=(--length 12 --width 6 --height 12)
 TESTS=(
   "oedometer-dense|--test oedometer --density dense --sigma 10 --sigma-max 800 --load-levels 10 --unload-levels 5"
   "oedometer-loose|--test oedometer --density loose --sigma 10 --sigma-max 800 --load-levels 10 --unload-levels 5"
-  "simpleshear-CNL-dense-50|--test simpleshear --bc CNL --density dense --sigma 50 --gamma 0.5"
-  "simpleshear-CNL-loose-50|--test simpleshear --bc CNL --density loose --sigma 50 --gamma 0.5"
-  "simpleshear-CV-dense-50|--test simpleshear --bc CV --density dense --sigma 50 --gamma 0.5"
-  "simpleshear-CV-loose-50|--test simpleshear --bc CV --density loose --sigma 50 --gamma 0.5"
-  "simpleshear-CNL-loose-200|--test simpleshear --bc CNL --density loose --sigma 200 --gamma 0.5"
-  "simpleshear-CV-dense-200|--test simpleshear --bc CV --density dense --sigma 200 --gamma 0.5"
-  "simpleshear-CV-loose-200|--test simpleshear --bc CV --density loose --sigma 200 --gamma 0.5"
-  "simpleshear-CNL-dense-200|--test simpleshear --bc CNL --density dense --sigma 200 --gamma 0.5"
+  "simpleshear-CNL-dense-50|--test simpleshear --bc CNL --density dense --sigma 50 --gamma 0.5 --inertial-number 3e-4"
+  "simpleshear-CNL-loose-50|--test simpleshear --bc CNL --density loose --sigma 50 --gamma 0.5 --inertial-number 3e-4"
+  "simpleshear-CV-dense-50|--test simpleshear --bc CV --density dense --sigma 50 --gamma 0.5 --inertial-number 3e-4"
+  "simpleshear-CV-loose-50|--test simpleshear --bc CV --density loose --sigma 50 --gamma 0.5 --inertial-number 3e-4"
+  "simpleshear-CNL-loose-200|--test simpleshear --bc CNL --density loose --sigma 200 --gamma 0.5 --inertial-number 3e-4"
+  "simpleshear-CV-dense-200|--test simpleshear --bc CV --density dense --sigma 200 --gamma 0.5 --inertial-number 3e-4"
+  "simpleshear-CV-loose-200|--test simpleshear --bc CV --density loose --sigma 200 --gamma 0.5 --inertial-number 3e-4"
+  "simpleshear-CNL-dense-200|--test simpleshear --bc CNL --density dense --sigma 200 --gamma 0.5 --inertial-number 3e-4"
 )
 
-seed_scene() {  # the truth scene with another seed, written once next to the results
-  local seed=$1 out=$DEST/scenes/truth-seed$1.toml
+seed_scene() { echo "$DEST/scenes/truth-seed$1.toml"; }  # the truth scene with another seed
+
+write_seed_scenes() {  # before the jobs start: parallel jobs only read them
   mkdir -p "$DEST/scenes"
-  sed "s/^seed = .*/seed = $seed/" "$SCENE" > "$out.tmp" && mv "$out.tmp" "$out"
-  echo "$out"
+  for seed in "${SEEDS[@]}"; do
+    local out; out=$(seed_scene "$seed")
+    sed "s/^seed = .*/seed = $seed/" "$SCENE" > "$out.tmp" && mv "$out.tmp" "$out"
+  done
 }
 
 complete() { grep -q '"status": "complete"' "$1/manifest.json" 2>/dev/null; }
@@ -65,6 +68,7 @@ stages=("$@"); [ ${#stages[@]} -eq 0 ] && stages=(run copy)
 for stage in "${stages[@]}"; do
   case $stage in
   run)  # seed 1 of every test first, so a first calibration is possible early
+    write_seed_scenes
     for seed in "${SEEDS[@]}"; do for t in "${TESTS[@]}"; do printf '%s\n' "$seed|$t"; done; done |
       xargs -P "$JOBS" -I{} bash -c 'IFS="|" read -r s n o <<<"{}"; CELL=($CELL_TEXT); run_one "$s" "$n" "$o"' ;;
   copy) copy_all ;;
