@@ -293,9 +293,15 @@ double Shear::duration_s() const {
   return std::sqrt(2.0 * ramp_s * d / velocity_m_s);  // the whole travel within the ramp
 }
 
-double default_shear_servo_gain(double stiffness_level) {
-  constexpr double kTunedGain = 2.0, kTunedStiffnessLevel = 166.0;
-  return kTunedGain * std::min(1.0, std::pow(kTunedStiffnessLevel / stiffness_level, 0.25));
+double servo_loop_number(double youngs_modulus_Pa, double sigma_n_Pa) {
+  constexpr double kTunedModulusPa = 1e8, kTunedStressPa = 50e3;
+  return std::pow(youngs_modulus_Pa / kTunedModulusPa, 1.0 / 6.0) *
+         std::pow(kTunedStressPa / sigma_n_Pa, 2.0 / 3.0);
+}
+
+double default_shear_servo_gain(double loop_number) {
+  constexpr double kTunedGain = 2.0;
+  return kTunedGain / std::max(1.0, loop_number);
 }
 
 double Scene::stiffness_level() const {
@@ -400,7 +406,8 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     o->finish();
   }
 
-  const double kp_shear = default_shear_servo_gain(s.stiffness_level());
+  const double kp_shear =
+      default_shear_servo_gain(servo_loop_number(s.particles.youngs_modulus_Pa, s.boundary.sigma_n_Pa));
   s.servo = {0.3, 1.0, kp_shear};
   if (auto sv = top.table("servo")) {
     s.servo.vel_max_m_s = sv->optional_positive("vel_max_m_s", kMaxServoSpeedMS).value_or(0.3);

@@ -107,13 +107,19 @@ struct Servo {
   double kp_shear;  // while shearing
 };
 
-// The shear-stage gain when the scene gives none: 2, tuned on soft grains (stiffness level ~166,
-// where 3 oscillates), lowered above that level as (166 / kappa)^(1/4). Why: the servo moves the
-// plate by v dt a step with v ~ kp (relative force error), so its loop gain per step grows with
-// the contact stiffness times the timestep, ~ E^(2/3) E^(-1/2) = kappa^(1/4); this keeps it at
-// the tuned value. Measured (smoke scene, E 4.2e9, kappa ~2000): kp 2 makes the plate's force
-// oscillate with an SD of 19.7 kPa about 50, kp 1 holds it within 0.3 kPa.
-double default_shear_servo_gain(double stiffness_level);
+// The servo's loop gain per step, relative to the scenes its gains were tuned on (E = 1e8 Pa,
+// sigma_n = 50 kPa: kp_shear 2 holds, 3 oscillates). The servo moves the plate by v dt a step with
+// v = vel_max kp (F - F_target) / F_target; the force answers with the stiffness of the contacts
+// under the plate (Hertz: ~ E^(2/3) sigma^(1/3) per contact) and dt ~ E^(-1/2), so the relative
+// error changes per step by ~ kp E^(1/6) sigma^(-2/3) (grain size and plate area cancel):
+//   loop number = (E / 1e8 Pa)^(1/6) (50 kPa / sigma_n)^(2/3).
+double servo_loop_number(double youngs_modulus_Pa, double sigma_n_Pa);
+
+// The shear-stage gain when the scene gives none: 2 divided by the loop number where that exceeds
+// 1, so stiffer grains or a lower stress do not push the loop past its tuned gain. Measured (smoke
+// scene, E 4.2e9, loop number 1.86): kp 2 makes the plate's force oscillate with an SD of 19.7 kPa
+// about 50, the default 1.07 holds it within 0.3 kPa.
+double default_shear_servo_gain(double loop_number);
 
 struct Scene {
   std::string source;  // file it came from

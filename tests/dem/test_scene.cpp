@@ -240,16 +240,18 @@ TEST_CASE("every scene shipped in data/ lies within the ranges scenes are checke
   CHECK(scenes >= 69);
 }
 
-// The shear servo's gain keeps its loop gain per step (~ kp kappa^(1/4), scene.hpp) at the value
-// tuned on soft grains: 2 at and below stiffness level 166, and kp kappa^(1/4) constant above.
-TEST_CASE("the default shear servo gain is 2 on soft grains and falls as kappa^(-1/4) on stiff ones",
+// The shear servo's gain keeps its loop gain per step (~ kp E^(1/6) sigma^(-2/3), scene.hpp) at the
+// value tuned on E 1e8 Pa at 50 kPa: 2 there and wherever the loop is slower, kp x loop number = 2
+// wherever it is faster.
+TEST_CASE("the default shear servo gain is 2 where it was tuned and falls with the servo's loop number",
           "[dem]") {
-  CHECK(dem::default_shear_servo_gain(100.0) == 2.0);
-  CHECK(dem::default_shear_servo_gain(166.0) == 2.0);
-  for (const double kappa : {600.0, 2000.0, 1e4})
-    CHECK(dem::default_shear_servo_gain(kappa) * std::pow(kappa, 0.25) ==
-          Approx(2.0 * std::pow(166.0, 0.25)));
-  // the smoke scene at E 4.2e9 Pa: kappa ~2000, the gain ~1.07 (kp 1 measured stable, 2 not)
+  CHECK(dem::servo_loop_number(1e8, 50e3) == Approx(1.0));
+  CHECK(dem::servo_loop_number(64e8, 50e3) == Approx(2.0));   // 64^(1/6)
+  CHECK(dem::servo_loop_number(1e8, 50e3 / 8.0) == Approx(4.0));  // 8^(2/3)
+  CHECK(dem::default_shear_servo_gain(0.5) == 2.0);
+  CHECK(dem::default_shear_servo_gain(1.0) == 2.0);
+  for (const double loop : {1.5, 2.0, 4.0}) CHECK(dem::default_shear_servo_gain(loop) * loop == Approx(2.0));
+  // the smoke scene at E 4.2e9 Pa: loop number 1.86, the gain ~1.07 (kp 1 measured stable, 2 not)
   const auto stiff = dem::parse_scene(
       replaced(smoke(), "youngs_modulus_Pa = 1.0e8", "youngs_modulus_Pa = 4.2e9"), "stiff.toml");
   CHECK(stiff.servo.kp_shear == Approx(1.07).margin(0.01));
