@@ -103,7 +103,7 @@ TEST_CASE("calibration recovers the Hostun parameters from synthetic vw3d soil t
 
 // Issue 20 item 3's design on Table 5.2 Toyoura: a dense and a loose oedometer (10 -> 2000 ->
 // 100 kPa) and one medium-dense CNL and CV simple shear. With 30 Levenberg-Marquardt iterations the
-// joint fit stopped uncoverged at RMS 0.37 scatter units, h_s 2.40e6 (true 2.6e6), n 0.284
+// joint fit stopped unconverged at RMS 0.37 scatter units, h_s 2.40e6 (true 2.6e6), n 0.284
 // (0.27), e_d0 0.521 (0.61), alpha 0.322 (0.25): 5-11 of its own sigmas off. Run to convergence
 // (155 iterations), every parameter is found again.
 TEST_CASE("calibration recovers the Toyoura parameters from two oedometers, CNL and CV",
