@@ -304,6 +304,11 @@ double default_shear_servo_gain(double loop_number) {
   return kTunedGain / std::max(1.0, loop_number);
 }
 
+double default_consolidation_servo_gain(double loop_number) {
+  constexpr double kTunedGain = 1.0, kMaxLoopGain = 2.0;
+  return std::min(kTunedGain, kMaxLoopGain / loop_number);
+}
+
 double Scene::stiffness_level() const {
   const auto& p = particles;
   return std::pow(p.youngs_modulus_Pa / ((1.0 - p.poisson * p.poisson) * boundary.sigma_n_Pa), 2.0 / 3.0);
@@ -406,12 +411,13 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     o->finish();
   }
 
-  const double kp_shear =
-      default_shear_servo_gain(servo_loop_number(s.particles.youngs_modulus_Pa, s.boundary.sigma_n_Pa));
-  s.servo = {0.3, 1.0, kp_shear};
+  const double loop_number = servo_loop_number(s.particles.youngs_modulus_Pa, s.boundary.sigma_n_Pa);
+  const double kp = default_consolidation_servo_gain(loop_number);
+  const double kp_shear = default_shear_servo_gain(loop_number);
+  s.servo = {0.3, kp, kp_shear};
   if (auto sv = top.table("servo")) {
     s.servo.vel_max_m_s = sv->optional_positive("vel_max_m_s", kMaxServoSpeedMS).value_or(0.3);
-    s.servo.kp = sv->optional_positive("kp", kMaxServoGain).value_or(1.0);
+    s.servo.kp = sv->optional_positive("kp", kMaxServoGain).value_or(kp);
     s.servo.kp_shear = sv->optional_positive("kp_shear", kMaxServoGain).value_or(kp_shear);
     sv->finish();
   }
