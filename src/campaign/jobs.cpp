@@ -79,10 +79,22 @@ std::vector<Setting> flattened(const Combination& combination) {
   return out;
 }
 
+// A value that sets a profile (`wall.profile`, `plate.profile`) replaces its whole table: the
+// other keys of a wall belong to its profile, and a flat wall refuses the base sawtooth's pitch
+// and height. (Over a base whose table holds the profile alone, as every sweep's base did before,
+// the text is the same: toml++ writes keys in order.)
+void drop_tables_of_profiles(toml::table& root, const std::vector<Setting>& values) {
+  constexpr std::string_view kProfile = ".profile";
+  for (const auto& [key, value] : values)
+    if (key.size() > kProfile.size() && key.ends_with(kProfile) && key.find('.') == key.size() - kProfile.size())
+      root.erase(key.substr(0, key.size() - kProfile.size()));
+}
+
 std::string job_scene(const SweepSpec& spec, const Job& job) {
   const std::string where = fmt::format("{}: job {}", spec.file.string(), job.name);
   auto root = io::parse_toml_text(spec.scene_text, spec.scene_file.string());
   for (const auto& [key, value] : spec.set) io::set_dotted(root, key, value, where);
+  drop_tables_of_profiles(root, job.values);
   for (const auto& [key, value] : job.values) io::set_dotted(root, key, value, where);
   // Comments of the base do not survive re-serialisation; this header says where the text came from.
   // File names only: the text's sha256 decides reuse and must not depend on the working directory.
