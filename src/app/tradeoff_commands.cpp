@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 struct TradeoffCommands {
   CLI::App* tradeoff = nullptr;
   CLI::App* plan = nullptr;
-  std::string scene, out, knobs = "box,kappa,dt,I";
+  std::string scene, out, knobs = "box,kappa,dt,I", reference = "refined";
   int jobs = 1, np = 1, seeds = 3, stop_after = 0;
   std::string plan_scene, plan_tradeoff, plan_params, plan_out;
 };
@@ -67,6 +67,13 @@ void add_tradeoff(CLI::App& app, TradeoffCommands& c) {
   c.tradeoff->add_option("--knobs", c.knobs, "comma-separated knobs to vary: box, kappa, dt, I")
       ->capture_default_str();
   c.tradeoff
+      ->add_option("--reference", c.reference,
+                   "what the errors are measured against: refined (every knob refined at once, one "
+                   "seed) or base (the scene itself, mean of its seeds: for a scene a convergence "
+                   "study showed converged, e.g. data/scenes/truth.toml; then only cheaper settings run)")
+      ->check(CLI::IsMember({"refined", "base"}))
+      ->capture_default_str();
+  c.tradeoff
       ->add_option("--stop-after", c.stop_after,
                    "stop cleanly once N runs have ended; run again to continue")
       ->check(whole_in(1, 1000000));
@@ -111,6 +118,7 @@ int run_tradeoff_command(const TradeoffCommands& c, const std::string& cl,
   opt.scene_file = c.scene;
   opt.out = c.out.empty() ? tradeoff::default_out(c.scene) : fs::path(c.out);
   opt.knobs = tradeoff::parse_knob_list(c.knobs);
+  opt.reference = tradeoff::parse_reference(c.reference);
   opt.seeds = c.seeds, opt.jobs = c.jobs, opt.processes = c.np, opt.stop_after = c.stop_after;
   opt.command_line = cl;
   opt.interrupt = interrupt;

@@ -145,28 +145,43 @@ json cheapest_meeting(const json& settings) {
 
 }  // namespace
 
-json analyse(const json& rows) {
+namespace {
+
+constexpr const char* kWhyRefined =
+    "every knob of the tradeoff at its refining factor at once (of box, kappa, dt, I: a "
+    "larger box, stiffer grains, a smaller step, slower shear): the most resolved setting "
+    "run, nearest the quasi-static, rigid-grain, large-specimen limit; one seed, so its "
+    "own scatter is of the size of the noise floor";
+constexpr const char* kWhyBase =
+    "the scene as given, the mean over its seeds: a scene shown converged by a convergence "
+    "study (data/convergence/), so only cheaper settings are run and measured against it; its "
+    "own error is 0 and its seed scatter is the noise floor";
+
+// The setting the errors are measured against, if it completed.
+const json* find_reference(const json& settings, Reference mode) {
+  const std::string kind = mode == Reference::kBase ? "base" : "refined";
+  for (const auto& s : settings)
+    if (s["kind"] == kind && complete(s)) return &s;
+  return nullptr;
+}
+
+}  // namespace
+
+json analyse(const json& rows, Reference mode) {
   json noise = json::object();
   json settings = json::array();
   settings.push_back(base_setting(rows, noise));
   for (const auto& r : rows)
     if (r["kind"] != "base") settings.push_back(r);
-  const json* reference = nullptr;
-  for (const auto& s : settings)
-    if (s["kind"] == "refined" && complete(s)) reference = &s;
+  const json* reference = find_reference(settings, mode);
   json out = {{"runs", rows}, {"noise_floor", noise}, {"settings", settings}};
   if (!reference) {
     out["reference"] = nullptr;
     return out;
   }
-  out["reference"] = {
-      {"name", (*reference)["name"]},
-      {"settings", (*reference)["settings"]},
-      {"why",
-       "every knob of the tradeoff at its refining factor at once (of box, kappa, dt, I: a "
-       "larger box, stiffer grains, a smaller step, slower shear): the most resolved setting "
-       "run, nearest the quasi-static, rigid-grain, large-specimen limit; one seed, so its "
-       "own scatter is of the size of the noise floor"}};
+  out["reference"] = {{"name", (*reference)["name"]},
+                      {"settings", (*reference)["settings"]},
+                      {"why", mode == Reference::kBase ? kWhyBase : kWhyRefined}};
   const json ref = *reference;
   for (auto& s : out["settings"])
     if (complete(s)) score(s, ref, noise);

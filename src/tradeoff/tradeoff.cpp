@@ -23,6 +23,16 @@ fs::path default_out(const fs::path& scene_file) {
   return fs::path("runs") / ("tradeoff-" + scene_file.stem().string());
 }
 
+Reference parse_reference(const std::string& text) {
+  if (text == "refined") return Reference::kRefined;
+  if (text == "base") return Reference::kBase;
+  throw InputError(fmt::format("--reference {}: refined or base", text));
+}
+
+const char* to_string(Reference r) {
+  return r == Reference::kBase ? "base" : "refined";
+}
+
 std::string dem_scene_sha256(const std::string& scene_text, const std::string& scene_file_name) {
   return io::sha256_hex(derived_scene(scene_text, scene_file_name, {}, "base_s1"));
 }
@@ -80,18 +90,21 @@ std::vector<Variant> expand_variants(const TradeoffOptions& opt) {
         fmt::format("{}: a cyclic scene; the tradeoff measures monotonic shear (peak, residual, "
                     "dilation, band)",
                     opt.scene_file.string()));
+  const bool refine = opt.reference == Reference::kRefined;
   std::vector<Variant> v;
   v.push_back(make_variant(base, text, source, "base_s1", "base", {}, base.seed));
-  v.push_back(
-      make_variant(base, text, source, "refined", "refined", all_at(opt.knobs, true), base.seed));
+  if (refine)
+    v.push_back(
+        make_variant(base, text, source, "refined", "refined", all_at(opt.knobs, true), base.seed));
   for (int s = 2; s <= opt.seeds; ++s)
     v.push_back(make_variant(base, text, source, fmt::format("base_s{}", s), "base", {},
                              base.seed + s - 1));
   const std::size_t first_knob = v.size();
   for (const auto& k : opt.knobs)
     for (const double f : {0.5, 2.0})
-      v.push_back(
-          make_variant(base, text, source, k + factor_name(f), "knob", {{k, f}}, base.seed));
+      if (refine || f != find_knob(k).refining_factor)
+        v.push_back(
+            make_variant(base, text, source, k + factor_name(f), "knob", {{k, f}}, base.seed));
   v.push_back(make_variant(base, text, source, "coarsened", "coarsened", all_at(opt.knobs, false),
                            base.seed));
   // The rest cheapest first: a tradeoff stopped early then lacks the fewest settings.
@@ -160,13 +173,14 @@ json run_tradeoff(const TradeoffOptions& opt) {
                                           opt.command_line, opt.interrupt, opt.progress});
   json rows = json::array();
   for (const auto& v : variants) rows.push_back(row_of(v, out / campaign::run_path(v.job)));
-  json result = analyse(rows);
+  json result = analyse(rows, opt.reference);
   result["kind"] = "dem-tradeoff";
   result["scene"] = opt.scene_file.string();
   result["dem_scene"] = dem::scene_content(spec.text, opt.scene_file.string());
   result["dem_scene_sha256"] = dem_scene_sha256(spec.text, opt.scene_file.filename().string());
   result["seeds"] = opt.seeds;
   result["knobs"] = opt.knobs;
+  result["reference_mode"] = to_string(opt.reference);
   result["status"] = record.value("status", "?");
   result["command_line"] = opt.command_line;
   write_tradeoff(result, out);

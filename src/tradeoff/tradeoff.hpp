@@ -17,11 +17,20 @@
 
 namespace iwb::tradeoff {
 
+// What the errors are measured against. kRefined: every knob refined at once, one seed (a scene
+// not known to be converged). kBase: the scene itself, the mean of its seeds (a scene a
+// convergence study has shown converged, data/convergence/: refining it further costs many times
+// the scene and says nothing new); then only the coarsening direction of each knob is run.
+enum class Reference { kRefined, kBase };
+Reference parse_reference(const std::string& text);
+const char* to_string(Reference r);
+
 struct TradeoffOptions {
   std::filesystem::path scene_file;
   std::filesystem::path out;  // empty: runs/tradeoff-<scene stem>
   std::vector<std::string> knobs = {"box", "kappa", "dt", "I"};
   int seeds = 3;  // of the base setting
+  Reference reference = Reference::kRefined;
   int jobs = 1;
   int processes = 1;
   int stop_after = 0;  // stop cleanly once this many jobs have ended (tests of the resume)
@@ -50,7 +59,7 @@ nlohmann::json run_tradeoff(const TradeoffOptions& options);
 // The analysis over run rows (each {name, kind, knob, factor, seed, status, cost, qoi}): the
 // reference, the noise floor, every setting's relative errors and which tolerances it meets, and
 // per knob how far each QoI moves. Pure: tested on hand-built rows.
-nlohmann::json analyse(const nlohmann::json& rows);
+nlohmann::json analyse(const nlohmann::json& rows, Reference reference = Reference::kRefined);
 
 // sha256 of the base scene the tradeoff runs for a scene file of this text and file name (its
 // [requirements] left out). Recorded in tradeoff.json beside the scene's content

@@ -121,7 +121,7 @@ void draw_pareto(const json& t, const fs::path& dir) {
   std::string labels;
   double lowest = INFINITY, highest = 0.0;
   for (const auto& s : t["settings"]) {
-    if (!complete(s) || !s.contains("error") || s["kind"] == "refined")
+    if (!complete(s) || !s.contains("error") || s["name"] == t["reference"]["name"])
       continue;  // the reference has no error
     std::vector<double> row = {s["particle_steps"].get<double>()};
     for (const auto& q : dem::quantities_of_interest()) {
@@ -156,7 +156,8 @@ std::string tradeoff_markdown(const json& t) {
   std::string md = fmt::format("# DEM speed against accuracy: {}\n\nstatus: {}\n\n",
                                t.value("scene", ""), t.value("status", "?"));
   if (t["reference"].is_null()) {
-    md += "No reference: the refined run has not completed; errors are not measured yet.\n\n";
+    md += fmt::format("No reference: the {} has not completed; errors are not measured yet.\n\n",
+                      t.value("reference_mode", "refined") == "base" ? "base setting (no seed)" : "refined run");
   } else {
     md += fmt::format(
         "Reference: `{}` ({}): {}.\nError = |QoI - QoI_ref| / |QoI_ref|; a setting meets a "

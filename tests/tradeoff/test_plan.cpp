@@ -1,6 +1,7 @@
 // The decisions of `iwb tradeoff` and `iwb plan` on hand-built run rows (made-up numbers: these
 // test the functions, they are not results): errors against the reference, the seed noise floor,
 // tolerances met, the cheapest DEM setting and the simplest model that meet a scene's requirements.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include "io/run_directory.hpp"
@@ -63,6 +64,36 @@ TEST_CASE(
   CHECK(effects[0]["shift"]["residual_friction"].get<double>() ==
         Approx(0.09 / 0.51));  // dt x2 moved it +17.6 %
   CHECK(effects[0]["cost_ratio"].get<double>() == Approx(5e7 / 1.1e8));
+}
+
+TEST_CASE("tradeoff analysis against the base: the mean of the seeds is the reference, its error 0",
+          "[tradeoff]") {
+  json r = json::array();
+  for (const auto& x : rows())
+    if (x["kind"] != "refined") r.push_back(x);
+  const json t = tradeoff::analyse(r, tradeoff::Reference::kBase);
+  REQUIRE(t["reference"]["name"] == "base");
+  const auto& base = t["settings"][0];
+  CHECK(base["error"]["residual_friction"].get<double>() == 0.0);
+  // meets 5 % on its noise alone (2.77 %), not 1 %
+  CHECK(base["meets"]["0.05"]["residual_friction"].get<bool>());
+  CHECK_FALSE(base["meets"]["0.01"]["residual_friction"].get<bool>());
+  for (const auto& s : t["settings"])  // dt x2: 0.60 against the seeds' 0.51
+    if (s["name"] == "dtx2") CHECK(s["error"]["residual_friction"].get<double>() == Approx(0.09 / 0.51));
+  // The same rows against the refined reference have none: it did not run.
+  CHECK(tradeoff::analyse(r)["reference"].is_null());
+}
+
+TEST_CASE("tradeoff against the base runs the seeds and each knob's coarsening only", "[tradeoff]") {
+  tradeoff::TradeoffOptions opt;
+  opt.scene_file = "data/scenes/truth.toml";
+  opt.reference = tradeoff::Reference::kBase;
+  std::vector<std::string> names;
+  for (const auto& v : tradeoff::expand_variants(opt)) names.push_back(v.job.name);
+  // refining: box x2, kappa x2, dt x0.5, I x0.5 (knobs.cpp); so box x0.5, kappa x0.5, dt x2, I x2
+  std::sort(names.begin(), names.end());
+  CHECK(names == std::vector<std::string>{"Ix2", "base_s1", "base_s2", "base_s3", "boxx0.5", "coarsened",
+                                          "dtx2", "kappax0.5"});
 }
 
 TEST_CASE("plan: the cheapest DEM setting whose error plus noise meets every stated tolerance",
