@@ -6,7 +6,7 @@
 #   data/convergence/make.sh copy       # only copy what has completed
 set -euo pipefail
 IWB=${IWB:-build/iwb}
-WORK=${WORK:-runs/convergence}  # the full runs (VTK, engine inputs, restarts): not committed
+WORK=${WORK:-runs/convergence-v2}  # the full runs (VTK, engine inputs, restarts): not committed; -v2: with the loop-number servo gain
 DEST=data/convergence
 AXES=(stiffness box inertial timestep)
 # The one-knob axes start from this level of the stiffness axis (converged within the seed

@@ -103,19 +103,21 @@ TEST_CASE("plausibility: a non-finite value or a lost contact fails", "[dem]") {
         Names{"contact_stress_positive"});
 }
 
-TEST_CASE("plausibility: CNL holds sigma_n on average within half of sigma_n0 and warns beyond a tenth", "[dem]") {
+TEST_CASE("plausibility: CNL holds sigma_n on average within a fifth of sigma_n0 and warns beyond a twentieth",
+          "[dem]") {
   const auto a = asked();
-  const auto loose = series(a, [](int, double&, double&, double& s) { s *= 1.4; });  // as the stiffest committed runs
+  const auto loose = series(a, [](int, double&, double&, double& s) { s *= 1.15; });
   CHECK(failed(a, loose).empty());
   const auto warnings = dem::plausibility_warnings(dem::plausibility_checks(a, loose));
   REQUIRE(warnings.size() == 1);
-  CHECK_THAT(warnings[0], Catch::Contains("normal_stress_held = 0.4") && Catch::Contains("held only loosely"));
-  // swings of +-90 % around the target are the servo at work, a mean 60 % high is not CNL
+  CHECK_THAT(warnings[0], Catch::Contains("normal_stress_held = 0.15") && Catch::Contains("held only loosely"));
+  // swings of +-90 % around the target are the servo at work, a mean 30 % high is not CNL (as the
+  // stiffest runs with the fixed servo gain, data/convergence/README.md)
   CHECK(failed(a, series(a, [](int i, double&, double&, double& s) { s *= i % 2 ? 1.9 : 0.1; })).empty());
-  const auto off = series(a, [](int, double&, double&, double& s) { s *= 1.6; });
+  const auto off = series(a, [](int, double&, double&, double& s) { s *= 1.3; });
   CHECK(failed(a, off) == Names{"normal_stress_held"});
   CHECK_THAT(*dem::failure_reason(dem::plausibility_checks(a, off)),
-             Catch::StartsWith("normal_stress_held = 0.6, must be <= 0.5 (|mean of sigma_n - sigma_n0|"));
+             Catch::StartsWith("normal_stress_held = 0.3, must be <= 0.2 (|mean of sigma_n - sigma_n0|"));
 }
 
 TEST_CASE("plausibility: CNS holds the sigma_n-u_n relation, not a constant sigma_n", "[dem]") {
