@@ -80,22 +80,27 @@ struct Calibrator {
   }
 
   // Scaled residuals of one test, kUnreachedResidual for rows the model did not reach.
+  // The test's scales: measured over its seeds (seed_scatter.hpp) where given, else declared.
   void append_residuals(const SoilTest& t, const Simulated& s, std::vector<double>& r) const {
-    const double stress_scale = kStressRatioScale * t.sigma0_kPa;
+    const double declared_stress = kStressRatioScale * t.sigma0_kPa;
+    const auto or_declared = [](double measured, double declared) { return measured > 0.0 ? measured : declared; };
+    const double tau_scale = or_declared(t.scales.tau_kPa, declared_stress);
+    const double sigma_scale = or_declared(t.scales.sigma_n_kPa, declared_stress);
+    const double e_scale = or_declared(t.scales.e, kVoidRatioScale);
     for (std::size_t i = 1; i < t.rows(); ++i) {
       const bool reached = i < s.rows();
       const auto add = [&](double model, double measured, double scale) {
         r.push_back(reached ? (model - measured) / scale : kUnreachedResidual);
       };
       if (t.kind == SoilTestKind::kOedometer) {
-        add(reached ? s.e[i] : 0.0, t.e[i], kVoidRatioScale);
+        add(reached ? s.e[i] : 0.0, t.e[i], e_scale);
         continue;
       }
-      add(reached ? s.tau_kPa[i] : 0.0, t.tau_kPa[i], stress_scale);
+      add(reached ? s.tau_kPa[i] : 0.0, t.tau_kPa[i], tau_scale);
       if (t.boundary == driver::BoundaryKind::kCV)
-        add(reached ? s.sigma_n_kPa[i] : 0.0, t.sigma_n_kPa[i], stress_scale);
+        add(reached ? s.sigma_n_kPa[i] : 0.0, t.sigma_n_kPa[i], sigma_scale);
       else
-        add(reached ? s.e[i] : 0.0, t.e[i], kVoidRatioScale);
+        add(reached ? s.e[i] : 0.0, t.e[i], e_scale);
     }
   }
 
@@ -292,6 +297,36 @@ models::ParameterValues CalibrationResult::values() const {
   return v;
 }
 
+TestFit test_fit(const SoilTest& t, const std::string& model, const models::ParameterValues& values) {
+  models::ModelInputs in;
+  in.tables["hypoplastic"] = values;
+  in.source = "calibrated set";
+  const Simulated s = simulate(t, model, in);
+  TestFit f{t.name,
+            to_string(t.kind),
+            t.kind == SoilTestKind::kOedometer ? "" : driver::to_string(t.boundary),
+            s.status,
+            s.rows(),
+            t.rows(),
+            {}};
+  const auto rmse = [&](const std::string& column, const std::vector<double>& model_values,
+                        const std::vector<double>& data) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < model_values.size(); ++i)
+      sum += (model_values[i] - data[i]) * (model_values[i] - data[i]);
+    const double end_model = model_values.empty() ? NAN : model_values.back();
+    const double end_data = data.empty() ? NAN : data[model_values.empty() ? 0 : model_values.size() - 1];
+    f.rmse.push_back({column, std::sqrt(sum / double(std::max<std::size_t>(model_values.size(), 1))),
+                      end_model, end_data});
+  };
+  rmse("e", s.e, t.e);
+  if (t.kind == SoilTestKind::kSimpleShear) {
+    rmse("tau_kPa", s.tau_kPa, t.tau_kPa);
+    rmse("sigma_n_kPa", s.sigma_n_kPa, t.sigma_n_kPa);
+  }
+  return f;
+}
+
 CalibrationResult calibrate(const std::vector<SoilTest>& tests, const CalibrationOptions& o) {
   if (tests.empty()) throw InputError("calibrate: no soil tests given");
   const auto t0 = std::chrono::steady_clock::now();
@@ -372,29 +407,7 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
         fmt::format("{} is not identifiable from these tests (sigma beyond {} of its box): "
                     "set from e_c0 by the usual factor",
                     k, kUnidentifiedShareOfBox));
-  for (const auto& t : tests) {
-    const Simulated s = simulate(t, o.model, c.inputs(c.current));
-    TestFit f{t.name,
-              to_string(t.kind),
-              t.kind == SoilTestKind::kOedometer ? "" : driver::to_string(t.boundary),
-              s.status,
-              s.rows(),
-              t.rows(),
-              {}};
-    const auto rmse = [&](const std::string& column, const std::vector<double>& model,
-                          const std::vector<double>& data) {
-      double sum = 0.0;
-      for (std::size_t i = 0; i < model.size(); ++i)
-        sum += (model[i] - data[i]) * (model[i] - data[i]);
-      f.rmse.push_back({column, std::sqrt(sum / double(std::max<std::size_t>(model.size(), 1)))});
-    };
-    rmse("e", s.e, t.e);
-    if (t.kind == SoilTestKind::kSimpleShear) {
-      rmse("tau_kPa", s.tau_kPa, t.tau_kPa);
-      rmse("sigma_n_kPa", s.sigma_n_kPa, t.sigma_n_kPa);
-    }
-    out.tests.push_back(f);
-  }
+  for (const auto& t : tests) out.tests.push_back(test_fit(t, o.model, c.current));
   out.notes = c.notes;
   out.evaluations = c.evaluations;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -78,6 +78,7 @@ struct ParameterEstimate {
 struct ChannelError {
   std::string column;  // contract column, with its unit
   double rmse = 0.0;
+  double end_model = 0.0, end_measured = 0.0;  // at the last row the model reached
 };
 
 struct TestFit {
@@ -90,6 +91,7 @@ struct CalibrationResult {
   std::string model;
   std::vector<ParameterEstimate> parameters;
   std::vector<TestFit> tests;
+  std::vector<TestFit> held_out;  // tests left out of the fit and predicted with its set
   std::vector<std::string> notes;  // what was assumed, what was not identifiable, stage summaries
   double s2 = 0.0;                 // residual variance of the joint fit in scatter units
   int evaluations = 0;
@@ -100,6 +102,10 @@ struct CalibrationResult {
 
 CalibrationResult calibrate(const std::vector<SoilTest>& tests,
                             const CalibrationOptions& options = {});
+
+// A test run through `model` with a parameter set: its RMSE per column and end values. For the
+// tests of a fit, and for a test held out of it (a prediction).
+TestFit test_fit(const SoilTest& test, const std::string& model, const models::ParameterValues& values);
 
 // The parameter file (data/params format, header comment: source and fit quality) and
 // calibration.json next to it.

@@ -26,8 +26,9 @@ std::string parameter_file(const CalibrationResult& r, const std::vector<SoilTes
     s += "\n";
   }
   s += fmt::format(
-      "# Joint fit s^2 = {:.3g} (residuals in units of {} sigma0 for stresses, {} for e).\n", r.s2,
-      kStressRatioScale, kVoidRatioScale);
+      "# Joint fit s^2 = {:.3g} (residuals in units of {} sigma0 for stresses, {} for e, or of the "
+      "seed scatter of tests run with several seeds where larger: calibration.json).\n",
+      r.s2, kStressRatioScale, kVoidRatioScale);
   s += "# Per parameter: value +- one sigma (Gauss-Newton), and how it was set. See "
        "calibration.json.\n";
   s += fmt::format("# Command: {}\n[hypoplastic]\n", command_line);
@@ -70,8 +71,24 @@ nlohmann::json calibration_json(const CalibrationResult& r, const std::vector<So
                          {"rows", t.rows},     {"source", tests[i].source},
                          {"e0", tests[i].e0},  {"sigma0_kPa", tests[i].sigma0_kPa}};
     if (!t.boundary.empty()) tj["boundary"] = t.boundary;
+    if (!tests[i].specimen.empty()) tj["specimen"] = tests[i].specimen;
+    if (tests[i].seed > 0) tj["seed"] = tests[i].seed;
+    const auto& sc = tests[i].scales;
+    if (sc.replicates > 1)  // measured over the seeds; otherwise the declared residual_scales
+      tj["residual_scales"] = {{"tau_kPa", sc.tau_kPa}, {"sigma_n_kPa", sc.sigma_n_kPa}, {"e", sc.e},
+                               {"seeds", sc.replicates}};
     for (const auto& c : t.rmse) tj["rmse"][c.column] = c.rmse;
     j["tests"].push_back(tj);
+  }
+  j["held_out"] = nlohmann::json::array();
+  for (const auto& t : r.held_out) {
+    nlohmann::json tj = {{"dir", t.name}, {"test", t.test}, {"status", t.status},
+                         {"rows_reached", t.rows_reached}, {"rows", t.rows}};
+    if (!t.boundary.empty()) tj["boundary"] = t.boundary;
+    for (const auto& c : t.rmse)
+      tj["rmse"][c.column] = c.rmse, tj["end"][c.column] = {{"model", finite_or_null(c.end_model)},
+                                                           {"measured", finite_or_null(c.end_measured)}};
+    j["held_out"].push_back(tj);
   }
   j["notes"] = r.notes;
   return j;

@@ -17,6 +17,14 @@ enum class SoilTestKind { kOedometer, kSimpleShear };
 
 const char* to_string(SoilTestKind k);
 
+// What one unit of a residual is worth, per quantity, in the quantity's own unit: the scatter of
+// the measurement. 0: the declared scales of calibrate.hpp. Set from the seed scatter when the
+// same test was run with several seeds (seed_scatter.hpp).
+struct ResidualScales {
+  double tau_kPa = 0.0, sigma_n_kPa = 0.0, e = 0.0;
+  int replicates = 1;  // tests of this design the scatter was measured over
+};
+
 struct SoilTest {
   std::string name;  // the directory it was read from or is written to (messages, reports)
   SoilTestKind kind = SoilTestKind::kOedometer;
@@ -25,6 +33,9 @@ struct SoilTest {
   double e0 = 0.0;
   double K0 = 0.0;     // lateral / vertical stress at the start; 0 = not given: 1 - sin(phi_c)
   std::string source;  // "dem:<engine>" or "synthetic:<model>"
+  std::string specimen;  // how it was prepared, if the manifest says ("dense", "loose"; DEM cells)
+  int seed = 0;          // the DEM seed, if the manifest says (0: not given)
+  ResidualScales scales;
   nlohmann::json source_parameters = nlohmann::json::object();  // what a synthetic source used
 
   // One entry per row of timeseries.csv. Oedometer: sigma_kPa = sigma_v (the control), e and

@@ -1,0 +1,59 @@
+#include "calibration/seed_scatter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "calibration/calibrate.hpp"
+
+namespace iwb::calibration {
+
+bool same_design(const SoilTest& a, const SoilTest& b) {
+  // sigma0 within 5 %: an oedometer records the stress its servo reached (10.19 and 10.05 kPa for
+  // two seeds of a 10 kPa start); designs of a campaign differ by factors of 2 or more.
+  constexpr double kSameStress = 0.05;
+  return a.kind == b.kind && a.boundary == b.boundary && a.specimen == b.specimen && a.source == b.source &&
+         std::abs(a.sigma0_kPa - b.sigma0_kPa) <= kSameStress * std::max(a.sigma0_kPa, b.sigma0_kPa);
+}
+
+namespace {
+
+// RMS over rows 1..rows-1 of the sample SD across the members of one column.
+double row_scatter(const std::vector<const SoilTest*>& members, std::vector<double> SoilTest::*column) {
+  std::size_t rows = members.front()->rows();
+  for (const auto* m : members) rows = std::min(rows, m->rows());
+  const double n = double(members.size());
+  double sum_of_variances = 0.0;
+  for (std::size_t i = 1; i < rows; ++i) {
+    double mean = 0.0;
+    for (const auto* m : members) mean += (m->*column)[i] / n;
+    double squares = 0.0;
+    for (const auto* m : members) squares += std::pow((m->*column)[i] - mean, 2);
+    sum_of_variances += squares / (n - 1.0);
+  }
+  return rows > 1 ? std::sqrt(sum_of_variances / double(rows - 1)) : 0.0;
+}
+
+}  // namespace
+
+void measure_seed_scatter(std::vector<SoilTest>& tests) {
+  std::vector<bool> done(tests.size(), false);
+  for (std::size_t i = 0; i < tests.size(); ++i) {
+    if (done[i]) continue;
+    std::vector<std::size_t> group;
+    for (std::size_t j = i; j < tests.size(); ++j)
+      if (!done[j] && same_design(tests[i], tests[j])) group.push_back(j), done[j] = true;
+    if (group.size() < 2) continue;
+    std::vector<const SoilTest*> members;
+    for (const auto j : group) members.push_back(&tests[j]);
+    const double stress_floor = kStressRatioScale * tests[i].sigma0_kPa;
+    const bool shear = tests[i].kind == SoilTestKind::kSimpleShear;
+    ResidualScales s;
+    s.replicates = int(group.size());
+    s.e = std::max(kVoidRatioScale, row_scatter(members, &SoilTest::e));
+    s.tau_kPa = shear ? std::max(stress_floor, row_scatter(members, &SoilTest::tau_kPa)) : stress_floor;
+    s.sigma_n_kPa = shear ? std::max(stress_floor, row_scatter(members, &SoilTest::sigma_n_kPa)) : stress_floor;
+    for (const auto j : group) tests[j].scales = s;
+  }
+}
+
+}  // namespace iwb::calibration
