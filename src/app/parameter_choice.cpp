@@ -16,7 +16,8 @@ struct CalibratedGrains {
   const char* scene;  // embedded scene whose particles were calibrated
   const char* file;   // parameter set name
 };
-constexpr CalibratedGrains kCalibratedGrains[] = {{"default", "dem_default_grains.toml"}};
+constexpr CalibratedGrains kCalibratedGrains[] = {{"default", "dem_default_grains.toml"},
+                                                  {"truth", "truth_grains.toml"}};
 
 bool calibrated_set(const io::ParameterSet& set) {
   for (const auto& c : kCalibratedGrains)

@@ -6,6 +6,9 @@
 #   data/calibration/truth_grains/make.sh            # run or continue every test, then copy
 #   data/calibration/truth_grains/make.sh copy       # only copy what has completed
 #   JOBS=2 data/calibration/truth_grains/make.sh run # two tests at once, one rank each
+#   data/calibration/truth_grains/make.sh calibrate  # fit vw3d to every committed test but the
+#                                                     # held-out design, predict that one
+#                                                     # -> data/params/truth_grains.toml
 set -euo pipefail
 IWB=${IWB:-build/iwb}
 WORK=${WORK:-runs/calibration/truth_grains}  # the full runs: not committed
@@ -29,6 +32,21 @@ TESTS=(
   "simpleshear-CV-loose-200|--test simpleshear --bc CV --density loose --sigma 200 --gamma 0.5 --inertial-number 3e-4"
   "simpleshear-CNL-dense-200|--test simpleshear --bc CNL --density dense --sigma 200 --gamma 0.5 --inertial-number 3e-4"
 )
+
+HELD_OUT=simpleshear-CNL-dense-200  # left out of the fit and predicted (README.md)
+
+# The fit of every committed test but HELD_OUT, which is predicted; its output (calibrate.txt,
+# calibration.json and the parameter file) here, the parameter file also in data/params/.
+calibrate_all() {
+  local fit=() held=()
+  for d in "$DEST"/seed*/*/; do
+    d=${d%/}
+    if [ "$(basename "$d")" = "$HELD_OUT" ]; then held+=("$d"); else fit+=("$d"); fi
+  done
+  "$IWB" calibrate "${fit[@]}" --held-out "${held[@]}" --model vw3d -o "$DEST/truth_grains.toml" |
+    tee "$DEST/calibrate.txt"
+  cp "$DEST/truth_grains.toml" data/params/truth_grains.toml
+}
 
 seed_scene() { echo "$DEST/scenes/truth-seed$1.toml"; }  # the truth scene with another seed
 
@@ -72,6 +90,7 @@ for stage in "${stages[@]}"; do
     for seed in "${SEEDS[@]}"; do for t in "${TESTS[@]}"; do printf '%s\n' "$seed|$t"; done; done |
       xargs -P "$JOBS" -I{} bash -c 'IFS="|" read -r s n o <<<"{}"; CELL=($CELL_TEXT); run_one "$s" "$n" "$o"' ;;
   copy) copy_all ;;
-  *) echo "make.sh: unknown stage '$stage' (run, copy)" >&2; exit 2 ;;
+  calibrate) calibrate_all ;;
+  *) echo "make.sh: unknown stage '$stage' (run, copy, calibrate)" >&2; exit 2 ;;
   esac
 done
