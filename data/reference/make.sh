@@ -1,18 +1,19 @@
 #!/usr/bin/env bash
-# Reproduces data/reference/ (README.md there): the reference campaign (two sweeps, 36 LIGGGHTS
-# runs), the copy of what is committed, the comparison of every run with hvwe and the hypothesis
-# checks, and the report. Run from the repository root after building:  data/reference/make.sh
+# Reproduces data/reference/ (README.md there): the reference campaign on the truth scene (three
+# sweeps, 51 LIGGGHTS runs), the copy of what is committed, the comparison of every run with hvwe
+# and the hypothesis checks, and the report. Run from the repository root after building:  data/reference/make.sh
 # Stages: sweeps | copy | compare | report (default: all, in that order). The sweeps are
 # resumable (run again to continue); the rest takes under a minute and can be rerun alone, e.g.
 # with another parameter set:  PARAMS=data/params/other.toml data/reference/make.sh compare report
 set -euo pipefail
 IWB=${IWB:-build/iwb}
-PARAMS=${PARAMS:-data/params/dem_default_grains.toml}  # the hvwe set every run is compared with: calibrated on these grains (data/calibration/dem_default_grains)
+PARAMS=${PARAMS:-data/params/truth_grains.toml}  # the hvwe set every run is compared with: calibrated on these grains (data/calibration/truth_grains)
 MODEL=${MODEL:-hvwe}
-JOBS=${JOBS:-2}
+JOBS=${JOBS:-1}  # runs at once, NP ranks each
+NP=${NP:-2}
 WORK=${WORK:-runs/reference}  # the full campaigns (VTK, engine inputs and logs): not committed
 DEST=data/reference
-SWEEPS=(reference_rn reference_d50)
+SWEEPS=(truth_rn truth_d50 truth_stress)
 stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(sweeps copy compare report)
 
@@ -35,36 +36,48 @@ copy_campaign() {
   done
 }
 
-# The committed runs of both sweeps, optionally only one boundary type (cnl, cns).
+# The committed runs of every sweep, or of one set: cnl (CNL at 50 kPa: names end _cnl), cns
+# (names end _cns-<K>), cnl200 (CNL at 200 kPa: _cnl-200).
 runs_of() {
   for s in "${SWEEPS[@]}"; do
     for r in "$DEST/$s"/runs/*; do
-      case "$1" in all) echo "$r" ;; *) [[ $(basename "$r") == *_"$1"* ]] && echo "$r" ;; esac
+      [ -d "$r" ] || continue
+      local n; n=$(basename "$r")
+      case "$1" in
+      all) echo "$r" ;;
+      cnl) [[ $n == *_cnl ]] && echo "$r" ;;
+      cns) [[ $n == *_cns-* ]] && echo "$r" ;;
+      cnl200) [[ $n == *_cnl-200 ]] && echo "$r" ;;
+      esac
     done
   done
+  return 0
 }
 
 for stage in "${stages[@]}"; do
   case $stage in
   sweeps)
-    for s in "${SWEEPS[@]}"; do "$IWB" sweep "data/sweeps/$s.toml" -j "$JOBS" -o "$WORK/$s"; done ;;
+    for s in "${SWEEPS[@]}"; do "$IWB" sweep "data/sweeps/$s.toml" -j "$JOBS" --np "$NP" -o "$WORK/$s"; done ;;
   copy)
-    for s in "${SWEEPS[@]}"; do copy_campaign "$WORK/$s" "$DEST/$s"; done ;;
+    for s in "${SWEEPS[@]}"; do [ -f "$WORK/$s/sweep.json" ] && copy_campaign "$WORK/$s" "$DEST/$s"; done ;;
   compare)
-    # All runs together, and CNL and CNS apart: the checks group runs by R_n and d50 only, and a
-    # CNS run dilates less than a CNL run, which would widen the seed scatter of a mixed group.
-    for set in all cnl cns; do
+    # All runs together, and CNL 50, CNS and CNL 200 apart: the checks group runs by R_n and d50
+    # only, and a CNS run dilates less than a CNL one, a run at 200 kPa less than one at 50, which
+    # would widen the seed scatter of a mixed group.
+    for set in all cnl cns cnl200; do
       mapfile -t runs < <(runs_of $set)
+      if [ ${#runs[@]} -eq 0 ]; then echo "make.sh: no complete runs in set $set yet" >&2; continue; fi
       "$IWB" compare --runs "${runs[@]}" --model "$MODEL" --params "$PARAMS" -o "$DEST/compare/$set" --force
     done
     # the per-run comparisons of the CNL and CNS sets are those of the set of all runs (same DEM
     # run, parameters and model): keep them once
-    for set in cnl cns; do find "$DEST/compare/$set" -mindepth 1 -maxdepth 1 -type d -exec rm -r {} +; done ;;
+    for set in cnl cns cnl200; do find "$DEST/compare/$set" -mindepth 1 -maxdepth 1 -type d -exec rm -r {} +; done ;;
   report)
     # One page: the verdicts of the three sets, then every run (from the set of all runs) once.
     rm -rf "$DEST/report"
-    "$IWB" report "$DEST/compare/all" "$DEST/compare/cnl/hypotheses.json" "$DEST/compare/cns/hypotheses.json" \
-      -o "$DEST/report/report.html"
+    sets=()
+    for set in cnl cns cnl200; do [ -f "$DEST/compare/$set/hypotheses.json" ] && sets+=("$DEST/compare/$set/hypotheses.json"); done
+    "$IWB" report "$DEST/compare/all" "${sets[@]}" -o "$DEST/report/report.html"
     # the PNGs repeat the SVGs (inline in the page, and beside their CSV and gnuplot script):
     # dropped to keep the committed campaign small; `gnuplot <figure>.gp` redraws any of them
     find "$DEST/report" -name '*.png' -delete ;;
