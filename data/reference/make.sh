@@ -71,7 +71,9 @@ for stage in "${stages[@]}"; do
     done
     # the per-run comparisons of the CNL and CNS sets are those of the set of all runs (same DEM
     # run, parameters and model): keep them once
-    for set in cnl cns cnl200; do find "$DEST/compare/$set" -mindepth 1 -maxdepth 1 -type d -exec rm -r {} +; done ;;
+    for set in cnl cns cnl200; do
+      [ -d "$DEST/compare/$set" ] && find "$DEST/compare/$set" -mindepth 1 -maxdepth 1 -type d -exec rm -r {} +
+    done ;;
   report)
     # One page: the verdicts of the three sets, then every run (from the set of all runs) once.
     rm -rf "$DEST/report"
