@@ -118,3 +118,27 @@ TEST_CASE(
   CHECK(pair_R_n[0] == Approx(0.5));
   CHECK(pair_R_n[1] == Approx(pair_R_n[0]));
 }
+
+TEST_CASE("every committed run of the truth reference campaign passes the DEM contract, its summary.json "
+          "recomputes, and it records its wall, grains and shear",
+          "[comparison][reference]") {
+  int runs = 0, complete_jobs = 0;
+  for (const auto* sweep : {"truth_rn", "truth_d50", "truth_stress"}) {
+    if (!fs::exists(kReference / sweep / "sweep.json")) continue;  // not run yet
+    for (const auto& entry : fs::directory_iterator(kReference / sweep / "runs")) {
+      const std::string job = entry.path().filename().string();
+      INFO(entry.path().string());
+      const auto run = comparison::load_dem_run(entry.path());
+      ++runs;
+      check_summary_recomputes(run);
+      CHECK(run.R_n == Approx(expected_R_n(job)).margin(1e-9));
+      // the truth scene shears 2.5 grain diameters: 5 mm of 2 mm grains, 2.5 mm of 1 mm grains
+      CHECK(run.u_x_mm.back() == Approx(2.5 * run.d50_mm).margin(0.02 * run.d50_mm));
+      CHECK(run.d50_mm == Approx(job.rfind("d1_", 0) == 0 ? 1.0 : 2.0));
+    }
+    const auto s = nlohmann::json::parse(io::read_file(kReference / sweep / "sweep.json"));
+    for (const auto& job : s["jobs"]) complete_jobs += job["status"] == "complete";
+  }
+  CHECK(runs == complete_jobs);  // every job the sweeps record as complete is committed
+  CHECK(runs >= 11);
+}
