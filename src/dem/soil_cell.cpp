@@ -91,7 +91,14 @@ TemplateValues liggghts_oedometer(const Scene& cell, const SoilCellSpec& c) {
                            steps, steps);
   // ave/time: every 10 steps over the last half of each window (oedometer.in)
   const long repeat = std::max(1L, cell.consolidation.window_steps / 20L);
+  // The plate must follow the ramp up to sigma_max, where the servo's loop number is smallest:
+  // a gain chosen at the first level (the consolidation's) fell 6 % short of 160 kPa on the smoke
+  // cell. The low levels' faster loop may chatter; their rows average over half a window.
+  const double top_Pa = *std::max_element(levels.begin(), levels.end()) * 1e3;
+  const double kp = std::max(cell.servo.kp, default_consolidation_servo_gain(
+                                                servo_loop_number(cell.particles.youngs_modulus_Pa, top_Pa)));
   return {{"oedometer_levels", program},
+          {"servo_kp_oedometer", fmt::format("{:g}", kp)},
           {"ramp_steps", std::to_string(steps)},
           {"hold_steps", std::to_string(steps)},
           {"avg_repeat", std::to_string(repeat)}};
