@@ -11,22 +11,12 @@ namespace {
 
 driver::Path dem_path(const DemRun& dem, double d_s_mm) {
   driver::Path path;
-  const double K_per_strain = dem.K_kPa_per_mm * d_s_mm;  // CONVENTIONS.md: K = K_per_mm d_s
+  // CNL follows the measured normal stress; CNS and CV are the scene's own boundary.
+  const auto bc = driver::with_stiffness_per_mm(dem.boundary, dem.K_kPa_per_mm, d_s_mm);
   for (std::size_t i = 1; i < dem.u_x_mm.size(); ++i) {
     const double dgamma = (dem.u_x_mm[i] - dem.u_x_mm[i - 1]) / d_s_mm;
     const int n = std::max(1, int(std::ceil(std::abs(dgamma) / kReplayStrainIncrement)));
-    driver::NormalControlRow row;
-    switch (dem.boundary) {
-      case driver::BoundaryKind::kCNL:  // follow the measured normal stress
-        row = {1.0, 0.0, (dem.sigma_n_kPa[i] - dem.sigma_n_kPa[i - 1]) / n};
-        break;
-      case driver::BoundaryKind::kCNS:
-        row = {1.0, -K_per_strain, 0.0};
-        break;
-      case driver::BoundaryKind::kCV:
-        row = {0.0, 1.0, 0.0};
-        break;
-    }
+    const auto row = bc.row((dem.sigma_n_kPa[i] - dem.sigma_n_kPa[i - 1]) / n);
     path.push_back({fmt::format("DEM row {}", i), dgamma, 0.0, row, n});
   }
   return path;

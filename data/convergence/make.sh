@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Convergence study of the DEM truth (issue 20 item 1; README.md here). Run from the repository
-# root after building. Stages: sweeps | copy (default: both). The sweeps are resumable (run again
+# root after building. Stages: restore | sweeps | copy | table (default: all; restore puts the
+# committed runs into WORK so that the sweeps reuse them on a new machine). The sweeps are resumable (run again
 # to continue, e.g. in the next session); `copy` commits the compact part of every complete run.
 #   data/convergence/make.sh            # run (or continue) every axis, then copy
 #   data/convergence/make.sh copy       # only copy what has completed
@@ -13,7 +14,7 @@ AXES=(stiffness box inertial timestep)
 # scatter there): their tables compare each of their levels with its runs.
 BASE_LEVEL=E690000000
 stages=("$@")
-[ ${#stages[@]} -eq 0 ] && stages=(sweeps copy table)
+[ ${#stages[@]} -eq 0 ] && stages=(restore sweeps copy table)
 
 # sweep.json, the job scenes, and per complete run its contract files without VTK or engine files.
 copy_axis() {
@@ -32,6 +33,7 @@ copy_axis() {
 
 for stage in "${stages[@]}"; do
   case $stage in
+  restore) for a in "${AXES[@]}"; do data/restore_campaign.sh "$DEST/$a" "$WORK/$a"; done ;;
   sweeps) for a in "${AXES[@]}"; do "$IWB" sweep "data/sweeps/convergence_$a.toml" -j 1 --np 2 -o "$WORK/$a"; done ;;
   copy) for a in "${AXES[@]}"; do copy_axis "$WORK/$a" "$DEST/$a"; done ;;
   table) for a in "${AXES[@]}"; do
@@ -39,6 +41,6 @@ for stage in "${stages[@]}"; do
            base=(); [ "$a" = stiffness ] || base=("$DEST/stiffness" "$BASE_LEVEL")
            /usr/bin/python3 "$DEST/table.py" "$DEST/$a" "${base[@]}" > "$DEST/$a/table.md"
          done ;;
-  *) echo "make.sh: unknown stage '$stage' (sweeps, copy, table)" >&2; exit 2 ;;
+  *) echo "make.sh: unknown stage '$stage' (restore, sweeps, copy, table)" >&2; exit 2 ;;
   esac
 done

@@ -2,7 +2,8 @@
 # Reproduces data/reference/ (README.md there): the reference campaign on the truth scene (three
 # sweeps, 51 LIGGGHTS runs), the copy of what is committed, the comparison of every run with hvwe
 # and the hypothesis checks, and the report. Run from the repository root after building:  data/reference/make.sh
-# Stages: sweeps | copy | compare | report (default: all, in that order). The sweeps are
+# Stages: restore | sweeps | copy | compare | report (default: all, in that order). restore puts the
+# committed runs into WORK so that the sweeps reuse them on a new machine. The sweeps are
 # resumable (run again to continue); the rest takes under a minute and can be rerun alone, e.g.
 # with another parameter set:  PARAMS=data/params/other.toml data/reference/make.sh compare report
 set -euo pipefail
@@ -15,7 +16,7 @@ WORK=${WORK:-runs/reference}  # the full campaigns (VTK, engine inputs and logs)
 DEST=data/reference
 SWEEPS=(truth_rn truth_d50 truth_stress)
 stages=("$@")
-[ ${#stages[@]} -eq 0 ] && stages=(sweeps copy compare report)
+[ ${#stages[@]} -eq 0 ] && stages=(restore sweeps copy compare report)
 
 # The committed part of a campaign: sweep.json, the job scenes, and per run the contract files
 # without VTK and without liggghts/ (inputs, logs, restart files).
@@ -56,6 +57,8 @@ runs_of() {
 
 for stage in "${stages[@]}"; do
   case $stage in
+  restore)
+    for s in "${SWEEPS[@]}"; do data/restore_campaign.sh "$DEST/$s" "$WORK/$s"; done ;;
   sweeps)
     for s in "${SWEEPS[@]}"; do "$IWB" sweep "data/sweeps/$s.toml" -j "$JOBS" --np "$NP" -o "$WORK/$s"; done ;;
   copy)
@@ -83,6 +86,6 @@ for stage in "${stages[@]}"; do
     # the PNGs repeat the SVGs (inline in the page, and beside their CSV and gnuplot script):
     # dropped to keep the committed campaign small; `gnuplot <figure>.gp` redraws any of them
     find "$DEST/report" -name '*.png' -delete ;;
-  *) echo "make.sh: unknown stage '$stage' (sweeps, copy, compare, report)" >&2; exit 2 ;;
+  *) echo "make.sh: unknown stage '$stage' (restore, sweeps, copy, compare, report)" >&2; exit 2 ;;
   esac
 done

@@ -20,6 +20,10 @@ NormalControlRow BoundaryCondition::row(double d_sigma_n) const {
   return {};
 }
 
+BoundaryCondition with_stiffness_per_mm(BoundaryKind kind, double K_kPa_per_mm, double d_s_mm) {
+  return {kind, K_kPa_per_mm * d_s_mm};
+}
+
 std::string BoundaryCondition::describe() const {
   if (kind == BoundaryKind::kCNS) return fmt::format("CNS, K = {:g} kPa per unit strain", K_kPa);
   return to_string(kind);

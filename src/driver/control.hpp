@@ -24,6 +24,10 @@ struct BoundaryCondition {
   std::string describe() const;
 };
 
+// A boundary whose CNS stiffness is given per mm of normal displacement, as the DEM and the test
+// files state it: K per unit strain = K_per_mm d_s (CONVENTIONS.md), the one place that says so.
+BoundaryCondition with_stiffness_per_mm(BoundaryKind kind, double K_kPa_per_mm, double d_s_mm);
+
 const char* to_string(BoundaryKind k);
 // "CNL", "CNS", "CV" (any case); InputError naming `where` otherwise.
 BoundaryKind parse_boundary_kind(const std::string& text, const std::string& where);

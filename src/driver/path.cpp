@@ -103,7 +103,7 @@ Path staged_path(double sigma_n0, double gamma, const std::vector<StagedStep>& s
 Path oedometric_path(double sigma_from, double sigma_to, int increments) {
   require_positive(increments, "path.increments");
   return {{fmt::format("oedometric {:g} -> {:g} kPa", sigma_from, sigma_to), 0.0, 0.0,
-           {1.0, 0.0, (sigma_to - sigma_from) / increments}, increments}};
+           BoundaryCondition{BoundaryKind::kCNL, 0.0}.row((sigma_to - sigma_from) / increments), increments}};
 }
 
 }  // namespace iwb::driver

@@ -183,7 +183,8 @@ void read_boundary(TableReader t, ElementTestSpec& spec) {
   if (spec.boundary.kind == driver::BoundaryKind::kCNS) {
     const std::string key = t.one_of({"K_kPa_per_mm", "K_kPa"});
     const double k = t.positive(key, kInf);
-    spec.boundary.K_kPa = key == "K_kPa" ? k : k * spec.zone.d_s_mm;  // K = K_per_mm d_s
+    spec.boundary = key == "K_kPa" ? driver::BoundaryCondition{spec.boundary.kind, k}
+                                   : driver::with_stiffness_per_mm(spec.boundary.kind, k, spec.zone.d_s_mm);
   }
   t.finish();
   spec.resolved["boundary"] = {{"type", driver::to_string(spec.boundary.kind)},
