@@ -4,6 +4,7 @@
 // that declaration and every message names the source, the key, the value and the allowed range.
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,12 +15,29 @@ struct Bound {
   bool open;  // true: the bound itself is excluded
 };
 
+// What a parameter is for beyond its bounds: the workbench reads parameters by role, never by key.
+enum class ParameterRole {
+  kMaterial,               // an ordinary constant of the model
+  kCriticalFrictionAngle,  // phi_c: the default K0 = 1 - sin phi_c, kappa_r from a wall angle
+  kOption,                 // a switch written as a number
+};
+
+// Where `iwb calibrate` may search a parameter: finite, usually narrower than the physical bounds.
+struct CalibrationBox {
+  double lower, upper;
+  bool logarithmic;  // fitted as ln x (h_s)
+};
+
 struct ParameterSpec {
   std::string key;   // as written in parameter files, unit in the key where it has one
   std::string unit;  // "kPa", "deg", "-"
   Bound lower;
   Bound upper;
   std::string doc;
+  // Appended with defaults so the tables written before the model contract compile unchanged.
+  std::string equation = {};  // "eq. 5.13", "Table 6.5"
+  ParameterRole role = ParameterRole::kMaterial;
+  std::optional<CalibrationBox> calibration = {};
 
   bool admits(double v) const;
   std::string range() const;  // "(0, 90) deg"
@@ -28,6 +46,9 @@ struct ParameterSpec {
 struct ParameterTable {
   std::string name;  // TOML table the values live in, e.g. "hypoplastic"
   std::vector<ParameterSpec> entries;
+  // Groups of keys of which exactly one is given, the others derived by the model (HCC's M or
+  // phi_c_deg, ERRATA 15); read by validate() once a table declares one.
+  std::vector<std::vector<std::string>> one_of = {};
   const ParameterSpec* find(const std::string& key) const;
 };
 

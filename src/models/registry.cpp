@@ -1,7 +1,9 @@
 #include "models/registry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/core.h>
+#include <stdexcept>
 
 #include "common/errors.hpp"
 
@@ -18,11 +20,67 @@ ModelSpec ahe_igs_spec();
 ModelSpec hvwe_igs_spec();
 ModelSpec hvwe_exact_igs_spec();
 
+namespace {
+
+std::string layout_problem(const StateLayout& l) {
+  if (l.size() > kMaxStateSize)
+    return fmt::format("{} state components, more than kMaxStateSize = {}", l.size(), kMaxStateSize);
+  if (l.size() == 0 || l.components[0].kind != ComponentKind::kStress)
+    return "state component 0 must be the normal stress (the driver reads sigma_n there)";
+  const auto names = l.names();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    for (std::size_t j = i + 1; j < names.size(); ++j)
+      if (names[i] == names[j]) return fmt::format("state component '{}' declared twice", names[i]);
+  if (l.void_ratio >= l.size() ||
+      (l.void_ratio >= 0 && l.components[std::size_t(l.void_ratio)].kind != ComponentKind::kVoidRatio))
+    return fmt::format("void_ratio index {} is not a void-ratio component", l.void_ratio);
+  for (int slot = 0; slot < kExternalSlots; ++slot) {
+    const int i = l.external[std::size_t(slot)];
+    if (i >= l.size() || (i >= 0 && l.components[std::size_t(i)].kind != ComponentKind::kExternal))
+      return fmt::format("external variable slot {} points at {}, not an external component", slot, i);
+  }
+  return {};
+}
+
+template <class Named>
+std::string duplicate_name(const std::vector<Named>& items, const char* what) {
+  for (std::size_t i = 0; i < items.size(); ++i)
+    for (std::size_t j = i + 1; j < items.size(); ++j)
+      if (items[i].name == items[j].name) return fmt::format("{} '{}' declared twice", what, items[i].name);
+  return {};
+}
+
+std::vector<ModelSpec> checked_and_ordered(std::vector<ModelSpec> specs) {
+  for (const auto& s : specs)
+    if (const auto why = declaration_problem(s); !why.empty())
+      throw std::logic_error(fmt::format("model '{}' is declared inconsistently: {}", s.name, why));
+  std::stable_sort(specs.begin(), specs.end(), [](const ModelSpec& a, const ModelSpec& b) {
+    return a.declaration.listing_order < b.declaration.listing_order;
+  });
+  return specs;
+}
+
+}  // namespace
+
+std::string declaration_problem(const ModelSpec& spec) {
+  const auto& d = spec.declaration;
+  if (auto why = layout_problem(d.layout); !why.empty()) return why;
+  if (auto why = duplicate_name(d.diagnostics, "diagnostic"); !why.empty()) return why;
+  if (auto why = duplicate_name(d.fit, "fit parameter"); !why.empty()) return why;
+  if (spec.uses_roughness == d.roughness.schemes.empty())
+    return "uses_roughness disagrees with the declared roughness schemes";
+  if (!spec.uses_roughness && !d.fit.empty()) return "fit parameters declared for a model without roughness";
+  for (std::size_t i = 0; i < spec.tables.size(); ++i)
+    for (std::size_t j = i + 1; j < spec.tables.size(); ++j)
+      if (spec.tables[i]->name == spec.tables[j]->name)
+        return fmt::format("parameter table [{}] listed twice", spec.tables[i]->name);
+  return {};
+}
+
 const std::vector<ModelSpec>& model_registry() {
-  static const std::vector<ModelSpec> specs{vw3d_spec(), ah_spec(),         ahe_spec(),
-                                            hvwe_spec(), hvwe_exact_spec(), hp1d_spec(),
-                                            vw3d_igs_spec(), ahe_igs_spec(), hvwe_igs_spec(),
-                                            hvwe_exact_igs_spec()};
+  static const std::vector<ModelSpec> specs = checked_and_ordered(
+      {vw3d_spec(), ah_spec(), ahe_spec(), hvwe_spec(), hvwe_exact_spec(), hp1d_spec(), vw3d_igs_spec(),
+       ahe_igs_spec(), hvwe_igs_spec(), hvwe_exact_igs_spec()});
   return specs;
 }
 

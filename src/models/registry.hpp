@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "models/declaration.hpp"
 #include "models/model.hpp"
 #include "models/parameters.hpp"
 #include "models/roughness/roughness.hpp"
@@ -28,7 +29,14 @@ struct ModelSpec {
   bool uses_roughness;
   std::vector<const ParameterTable*> tables;
   std::function<std::unique_ptr<Model>(const ModelInputs&)> make;
+  // What the rest of the workbench may know of the model (declaration.hpp).
+  ModelDeclaration declaration = {};
 };
+
+// Why a declaration is inconsistent (state over kMaxStateSize, component 0 not the normal stress,
+// names not unique, indices out of range or of the wrong kind, roughness flag and schemes
+// disagreeing); empty when it is consistent. The registry refuses such a model (std::logic_error).
+std::string declaration_problem(const ModelSpec& spec);
 
 const std::vector<ModelSpec>& model_registry();
 // Throws InputError listing the known names.

@@ -14,7 +14,10 @@ ModelSpec ah_spec() {
             return make_hypoplastic("ah", ReducedInterfaceKinematics<algebra::ReducedOps>{true},
                                     HypoplasticVariant{LodeRule::kZero, CoefficientARule::kArnoldHerle},
                                     in);
-          }};
+          },
+          with_plan_rank(hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(),
+                                                 true, InPlaneStart::kIsotropic, 1),
+                         2)};
 }
 
 }  // namespace iwb::models

@@ -17,7 +17,9 @@ ModelSpec ahe_spec() {
           "seed 5.16-5.19 with 5.10, 5.11, 5.15 (ERRATA 8)",
           true,
           {&HypoplasticParameters::table()},
-          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); }};
+          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); },
+          hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(), true,
+                                  InPlaneStart::kIsotropic, 2)};
 }
 
 ModelSpec ahe_igs_spec() { return with_intergranular_strain(ahe_spec(), build); }

@@ -14,7 +14,9 @@ ModelSpec hp1d_spec() {
             return make_hypoplastic("hp1d", ShearPlaneKinematics{},
                                     HypoplasticVariant{LodeRule::kStandard, CoefficientARule::kGutjahr1D},
                                     in);
-          }};
+          },
+          with_plan_rank(hypoplastic_declaration(ShearPlaneKinematics::component_names(), true, InPlaneStart::kNone, 5),
+                         1)};
 }
 
 }  // namespace iwb::models

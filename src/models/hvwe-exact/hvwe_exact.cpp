@@ -18,7 +18,9 @@ ModelSpec hvwe_exact_spec() {
           "seed 5.5, ERRATA 2",
           true,
           {&HypoplasticParameters::table()},
-          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); }};
+          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); },
+          hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(), true,
+                                  InPlaneStart::kFreeK0, 4)};
 }
 
 ModelSpec hvwe_exact_igs_spec() { return with_intergranular_strain(hvwe_exact_spec(), build); }

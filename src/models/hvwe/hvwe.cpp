@@ -17,9 +17,17 @@ ModelSpec hvwe_spec() {
           "seed 5.2, 5.4 (5.22-5.34), 5.5, roughness 5.35-5.41",
           true,
           {&HypoplasticParameters::table()},
-          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); }};
+          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); },
+          with_plan_rank(hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(),
+                                                 true, InPlaneStart::kFreeK0, 3),
+                         3)};
 }
 
-ModelSpec hvwe_igs_spec() { return with_intergranular_strain(hvwe_spec(), build); }
+// On cyclic paths `iwb plan` tries it after hvwe (the ladder's last rung).
+ModelSpec hvwe_igs_spec() {
+  auto spec = with_intergranular_strain(hvwe_spec(), build);
+  spec.declaration.plan_rank = 4;
+  return spec;
+}
 
 }  // namespace iwb::models

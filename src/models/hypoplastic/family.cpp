@@ -1,6 +1,65 @@
 #include "models/hypoplastic/family.hpp"
 
+#include <cmath>
+
 namespace iwb::models {
+
+namespace {
+
+// The same expression as oedometric_K0 (registry.hpp) over the table's critical friction angle.
+double oedometric_K0_of(const ModelInputs& in) {
+  return 1.0 - std::sin(require_table(in, "hypoplastic").at("phi_c_deg") * M_PI / 180.0);
+}
+
+std::vector<InitialInputSpec> hypoplastic_initial_inputs(InPlaneStart start) {
+  std::vector<InitialInputSpec> in{
+      {"sigma_n_kPa", "kPa", "initial normal stress sigma_n0, compression positive"}};
+  if (start == InPlaneStart::kFreeK0) {
+    InitialInputSpec k0{"K0", "-", "sigma_p0 = K0 sigma_n0 (default: 1 - sin phi_c)"};
+    k0.need = InitialInputSpec::Need::kOptional;
+    k0.default_value = oedometric_K0_of;
+    in.push_back(k0);
+  }
+  in.push_back({"e0", "-", "initial void ratio, inside (e_d, e_i) at the initial mean stress"});
+  return in;
+}
+
+std::vector<FitParameter> interface_fit_parameters() {
+  FitParameter kappa{"kappa_r", FitParameter::Target::kRoughness};
+  kappa.lower = kKappaRFloor, kappa.upper = 1.0;
+  FitParameter d_s{"d_s_mm", FitParameter::Target::kShearZone};
+  d_s.lower = 1.0, d_s.upper = 40.0, d_s.per_d50 = true, d_s.logarithmic = true;
+  return {kappa, d_s};
+}
+
+}  // namespace
+
+ModelDeclaration hypoplastic_declaration(const std::vector<std::string>& stress_components,
+                                         bool interface_model, InPlaneStart start, int listing_order) {
+  ModelDeclaration d;
+  d.listing_order = listing_order;
+  for (const auto& c : stress_components) d.layout.components.push_back({c, "kPa", ComponentKind::kStress});
+  d.layout.void_ratio = d.layout.size();
+  d.layout.components.push_back({"e", "-", ComponentKind::kVoidRatio});
+  d.initial = hypoplastic_initial_inputs(start);
+  d.diagnostics = {{"mean_stress_kPa", "kPa", "mean stress -tr T / tr 1", DiagnosticRole::kMeanStress},
+                   {"e_i", "-", "maximum void ratio at the mean stress (eq. 5.13)", DiagnosticRole::kMaxVoidRatio},
+                   {"e_c", "-", "critical void ratio at the mean stress (eq. 5.13)", DiagnosticRole::kCriticalVoidRatio},
+                   {"e_d", "-", "minimum void ratio at the mean stress (eq. 5.13)", DiagnosticRole::kMinVoidRatio}};
+  if (interface_model) {
+    d.roughness = {{RoughnessScheme::kGutjahr, RoughnessScheme::kArnoldHerle}, RoughnessScheme::kGutjahr, true,
+                   KappaFromAngle::kTangentRatio};
+    d.fit = interface_fit_parameters();
+  }
+  d.second_shear_direction = start != InPlaneStart::kNone;
+  d.calibration_recipe = "herle-gudehus";
+  d.example_parameters = "table_5_1_evaluation.toml";
+  d.example_start = {{"sigma_n_kPa", 100.0}, {"e0", 0.8}};
+  return d;
+}
+
+// -igs models list after every base model, in their bases' order.
+constexpr int kIntergranularListingOffset = 100;
 
 ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build) {
   base.name += "-igs";
@@ -8,6 +67,20 @@ ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build) {
   base.equations += "; intergranular strain 5.42-5.48 (ERRATA 10)";
   base.tables.push_back(&IntergranularStrainParameters::table());
   base.make = [build](const ModelInputs& in) { return build(in, WithIntergranularStrain::kYes); };
+  auto& d = base.declaration;
+  d.listing_order += kIntergranularListingOffset;
+  d.plan_rank = 0;  // a candidate of `iwb plan` only where its folder says so
+  const int stress_size = d.layout.void_ratio;  // the packed stress precedes e
+  for (int i = 0; i < stress_size; ++i)
+    d.layout.components.push_back(
+        {"delta" + d.layout.components[i].name.substr(1), "-", ComponentKind::kIntergranularStrain});
+  InitialInputSpec delta{"delta", "-", "initial intergranular strain [delta_n, delta_x, delta_y] "
+                                       "(default: the seed's, R/sqrt3 in both shear directions)"};
+  delta.kind = InitialInputSpec::Kind::kVector3;
+  delta.need = InitialInputSpec::Need::kOptional;
+  d.initial.push_back(delta);
+  d.diagnostics.push_back({"rho", "-", "||delta|| / R (eq. 5.45)", DiagnosticRole::kIntergranularRho});
+  d.example_parameters = "table_5_3_toyoura.toml";
   return base;
 }
 

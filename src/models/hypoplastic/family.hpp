@@ -24,6 +24,23 @@ std::unique_ptr<Model> make_hypoplastic(const std::string& name, const Kinematic
                                                         in.roughness, q);
 }
 
+// How a member of the family starts: K0 free with the oedometric default (hvwe, vw3d), fixed at
+// 1 by the kinematics (AH, AHE: eq. 5.16), or absent (hp1d has no in-plane stress).
+enum class InPlaneStart { kFreeK0, kIsotropic, kNone };
+
+// The declaration the sand family shares (src/models/README.md 8.1): the kinematics' stress
+// components and e, sigma_n_kPa, K0 and e0 at the start, mean stress and Bauer's limiting void
+// ratios as diagnostics, and for interface models Gutjahr's and Arnold & Herle's roughness with
+// kappa_r and d_s for `iwb compare` to fit.
+ModelDeclaration hypoplastic_declaration(const std::vector<std::string>& stress_components,
+                                         bool interface_model, InPlaneStart start, int listing_order);
+
+// `d` as a candidate of `iwb plan` at `rank` (simplest first).
+inline ModelDeclaration with_plan_rank(ModelDeclaration d, int rank) {
+  d.plan_rank = rank;
+  return d;
+}
+
 // Builds one member of the family, with or without the intergranular strain.
 using HypoplasticBuilder = std::unique_ptr<Model> (*)(const ModelInputs&, WithIntergranularStrain);
 

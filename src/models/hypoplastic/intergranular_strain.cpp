@@ -15,11 +15,11 @@ const ParameterTable& IntergranularStrainParameters::table() {
   static const ParameterTable t{
       "intergranular_strain",
       {
-          {"R", "-", {0.0, true}, {0.01, false}, "size R of the elastic range, max ||delta|| (eq. 5.43)"},
-          {"m_R", "-", {1.0, false}, {kMaxStiffnessFactor, false}, "stiffness factor m_R after a 180 deg reversal"},
-          {"m_T", "-", {1.0, false}, {kMaxStiffnessFactor, false}, "stiffness factor m_T after a 90 deg turn"},
-          {"beta_r", "-", {0.0, true}, {kMaxExponent, false}, "evolution exponent beta_r of delta (eq. 5.46)"},
-          {"chi", "-", {0.0, true}, {kMaxExponent, false}, "interpolation exponent chi of rho (eq. 5.45)"},
+          {"R", "-", {0.0, true}, {0.01, false}, "size R of the elastic range, max ||delta|| (eq. 5.43)", "eq. 5.43"},
+          {"m_R", "-", {1.0, false}, {kMaxStiffnessFactor, false}, "stiffness factor m_R after a 180 deg reversal", "eq. 5.44"},
+          {"m_T", "-", {1.0, false}, {kMaxStiffnessFactor, false}, "stiffness factor m_T after a 90 deg turn", "eq. 5.44"},
+          {"beta_r", "-", {0.0, true}, {kMaxExponent, false}, "evolution exponent beta_r of delta (eq. 5.46)", "eq. 5.46"},
+          {"chi", "-", {0.0, true}, {kMaxExponent, false}, "interpolation exponent chi of rho (eq. 5.45)", "eq. 5.45"},
       }};
   return t;
 }

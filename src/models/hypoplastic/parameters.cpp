@@ -17,14 +17,22 @@ const ParameterTable& HypoplasticParameters::table() {
   static const ParameterTable t{
       "hypoplastic",
       {
-          {"phi_c_deg", "deg", {0.0, true}, {90.0, true}, "critical state friction angle phi_c"},
-          {"hs_kPa", "kPa", {0.0, true}, {kMaxHardnessKPa, false}, "granular hardness h_s"},
-          {"n", "-", {0.0, true}, {1.0, true}, "exponent n of the compression law (eq. 5.13)"},
-          {"ed0", "-", {0.0, true}, {kMaxVoidRatio, false}, "minimum void ratio e_d0 at p = 0"},
-          {"ec0", "-", {0.0, true}, {kMaxVoidRatio, false}, "critical void ratio e_c0 at p = 0"},
-          {"ei0", "-", {0.0, true}, {kMaxVoidRatio, false}, "maximum void ratio e_i0 at p = 0"},
-          {"alpha", "-", {0.0, false}, {kMaxExponent, false}, "pyknotropy exponent alpha (eq. 5.14)"},
-          {"beta", "-", {0.0, false}, {kMaxExponent, false}, "stiffness exponent beta (eq. 5.12)"},
+          {"phi_c_deg", "deg", {0.0, true}, {90.0, true}, "critical state friction angle phi_c",
+           "eq. 5.15", ParameterRole::kCriticalFrictionAngle, CalibrationBox{15.0, 50.0, false}},
+          {"hs_kPa", "kPa", {0.0, true}, {kMaxHardnessKPa, false}, "granular hardness h_s",
+           "eq. 5.13", ParameterRole::kMaterial, CalibrationBox{1e4, 1e8, true}},
+          {"n", "-", {0.0, true}, {1.0, true}, "exponent n of the compression law (eq. 5.13)",
+           "eq. 5.13", ParameterRole::kMaterial, CalibrationBox{0.1, 0.9, false}},
+          {"ed0", "-", {0.0, true}, {kMaxVoidRatio, false}, "minimum void ratio e_d0 at p = 0",
+           "eq. 5.13", ParameterRole::kMaterial, CalibrationBox{0.2, 1.5, false}},
+          {"ec0", "-", {0.0, true}, {kMaxVoidRatio, false}, "critical void ratio e_c0 at p = 0",
+           "eq. 5.13", ParameterRole::kMaterial, CalibrationBox{0.3, 2.0, false}},
+          {"ei0", "-", {0.0, true}, {kMaxVoidRatio, false}, "maximum void ratio e_i0 at p = 0",
+           "eq. 5.13", ParameterRole::kMaterial, CalibrationBox{0.4, 2.5, false}},
+          {"alpha", "-", {0.0, false}, {kMaxExponent, false}, "pyknotropy exponent alpha (eq. 5.14)",
+           "eq. 5.14", ParameterRole::kMaterial, CalibrationBox{0.01, 1.0, false}},
+          {"beta", "-", {0.0, false}, {kMaxExponent, false}, "stiffness exponent beta (eq. 5.12)",
+           "eq. 5.12", ParameterRole::kMaterial, CalibrationBox{0.1, 5.0, false}},
       }};
   return t;
 }

@@ -18,7 +18,8 @@ ModelSpec vw3d_spec() {
           "seed 5.7-5.15 (ERRATA 4-6)",
           false,
           {&HypoplasticParameters::table()},
-          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); }};
+          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); },
+          hypoplastic_declaration(SimpleShearKinematics::component_names(), false, InPlaneStart::kFreeK0, 0)};
 }
 
 ModelSpec vw3d_igs_spec() { return with_intergranular_strain(vw3d_spec(), build); }

@@ -1,0 +1,117 @@
+// The model contract's declarations (src/models/README.md, sections 2.2-2.7) against what each
+// model does: a declaration the workbench reads instead of the model must say what the model is.
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "io/parameter_file.hpp"
+#include "models/registry.hpp"
+
+namespace iwb {
+
+namespace {
+
+models::ModelInputs example_inputs(const models::ModelSpec& spec) {
+  const auto file = "data/params/" + spec.declaration.example_parameters;
+  return {io::load_parameter_file(file), file, {}};
+}
+
+models::InitialState example_start(const models::ModelSpec& spec, const models::ModelInputs& in) {
+  models::InitialState s;
+  s.sigma_n = spec.declaration.example_start.at("sigma_n_kPa");
+  s.e0 = spec.declaration.example_start.at("e0");
+  for (const auto& input : spec.declaration.initial)
+    if (input.key == "K0") s.K0 = input.default_value(in);
+  return s;
+}
+
+std::vector<std::string> diagnostic_names(const std::vector<models::NamedValue>& values) {
+  std::vector<std::string> out;
+  for (const auto& v : values) out.push_back(v.name);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("every model's declaration says what the model does: state, diagnostics, shear directions") {
+  for (const auto& spec : models::model_registry()) {
+    INFO(spec.name);
+    const auto& d = spec.declaration;
+    REQUIRE(std::filesystem::exists("data/params/" + d.example_parameters));
+    const auto in = example_inputs(spec);
+    const auto model = spec.make(in);
+    CHECK(d.layout.names() == model->state_names());
+    CHECK(d.layout.size() == model->state_size());
+    CHECK(d.layout.size() <= models::kMaxStateSize);
+    CHECK(d.second_shear_direction == model->has_second_shear_direction());
+    const auto s = model->initial_state(example_start(spec, in));
+    CHECK(s(0) == Approx(-d.example_start.at("sigma_n_kPa")));  // component 0: the normal stress
+    REQUIRE(d.layout.void_ratio >= 0);
+    CHECK(s(d.layout.void_ratio) == d.example_start.at("e0"));
+    std::vector<std::string> declared;
+    for (const auto& diag : d.diagnostics) declared.push_back(diag.name);
+    CHECK(declared == diagnostic_names(model->diagnostics(s)));
+  }
+}
+
+TEST_CASE("the registry lists models in their declared order, today's order") {
+  std::vector<std::string> names;
+  for (const auto& spec : models::model_registry()) names.push_back(spec.name);
+  CHECK(names == std::vector<std::string>{"vw3d", "ah", "ahe", "hvwe", "hvwe-exact", "hp1d", "vw3d-igs", "ahe-igs",
+                                          "hvwe-igs", "hvwe-exact-igs"});
+}
+
+TEST_CASE("the plan's ladder is declared: hp1d, ah, hvwe, then hvwe-igs") {
+  std::vector<std::pair<int, std::string>> ranked;
+  for (const auto& spec : models::model_registry())
+    if (spec.declaration.plan_rank > 0) ranked.emplace_back(spec.declaration.plan_rank, spec.name);
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<std::string> ladder;
+  for (const auto& r : ranked) ladder.push_back(r.second);
+  CHECK(ladder == std::vector<std::string>{"hp1d", "ah", "hvwe", "hvwe-igs"});
+}
+
+TEST_CASE("the default K0 declared by the sand family is 1 - sin phi_c of the file's table") {
+  const auto& spec = models::find_model("hvwe");
+  const auto in = example_inputs(spec);
+  const double phi_c = in.tables.at("hypoplastic").at("phi_c_deg") * M_PI / 180.0;
+  for (const auto& input : spec.declaration.initial)
+    if (input.key == "K0") CHECK(input.default_value(in) == Approx(1.0 - std::sin(phi_c)).epsilon(1e-15));
+  for (const auto& input : models::find_model("ah").declaration.initial) CHECK(input.key != "K0");
+}
+
+TEST_CASE("an inconsistent declaration is refused, with the reason") {
+  auto spec = models::find_model("hvwe-igs");
+  CHECK(models::declaration_problem(spec).empty());
+
+  auto too_big = spec;
+  while (too_big.declaration.layout.size() <= models::kMaxStateSize)
+    too_big.declaration.layout.components.push_back(
+        {"x" + std::to_string(too_big.declaration.layout.size()), "-", models::ComponentKind::kHardening});
+  CHECK_THAT(models::declaration_problem(too_big), Catch::Contains("more than kMaxStateSize"));
+
+  auto e_first = spec;
+  std::swap(e_first.declaration.layout.components[0], e_first.declaration.layout.components[4]);
+  CHECK_THAT(models::declaration_problem(e_first), Catch::Contains("component 0 must be the normal stress"));
+
+  auto twice = spec;
+  twice.declaration.layout.components[1].name = "T_n";
+  CHECK_THAT(models::declaration_problem(twice), Catch::Contains("'T_n' declared twice"));
+
+  auto wrong_e = spec;
+  wrong_e.declaration.layout.void_ratio = 5;
+  CHECK_THAT(models::declaration_problem(wrong_e), Catch::Contains("not a void-ratio component"));
+
+  auto wrong_external = spec;
+  wrong_external.declaration.layout.external[0] = 4;
+  CHECK_THAT(models::declaration_problem(wrong_external), Catch::Contains("not an external component"));
+
+  auto no_schemes = spec;
+  no_schemes.declaration.roughness.schemes.clear();
+  CHECK_THAT(models::declaration_problem(no_schemes), Catch::Contains("uses_roughness disagrees"));
+
+  auto table_twice = spec;
+  table_twice.tables.push_back(table_twice.tables.front());
+  CHECK_THAT(models::declaration_problem(table_twice), Catch::Contains("listed twice"));
+}
+
+}  // namespace iwb
