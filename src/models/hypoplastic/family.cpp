@@ -58,6 +58,11 @@ ModelDeclaration hypoplastic_declaration(const std::vector<std::string>& stress_
   return d;
 }
 
+IntergranularStrainParameters intergranular_strain_parameters(const ModelInputs& in) {
+  return IntergranularStrainParameters::from(require_table(in, "intergranular_strain"),
+                                             in.source + " [intergranular_strain]");
+}
+
 // -igs models list after every base model, in their bases' order.
 constexpr int kIntergranularListingOffset = 100;
 

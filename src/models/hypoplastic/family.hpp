@@ -10,18 +10,19 @@ namespace iwb::models {
 
 enum class WithIntergranularStrain : bool { kNo = false, kYes = true };
 
+// The [intergranular_strain] table of `in`, checked; shared by every hypoplastic law.
+IntergranularStrainParameters intergranular_strain_parameters(const ModelInputs& in);
+
 template <class Kinematics>
 std::unique_ptr<Model> make_hypoplastic(const std::string& name, const Kinematics& kin,
                                         const HypoplasticVariant& variant, const ModelInputs& in,
                                         WithIntergranularStrain igs = WithIntergranularStrain::kNo) {
+  using Member = HypoplasticModel<Kinematics>;
   const auto p = HypoplasticParameters::from(require_table(in, "hypoplastic"),
                                              in.source + " [hypoplastic]");
-  if (igs == WithIntergranularStrain::kNo)
-    return std::make_unique<HypoplasticModel<Kinematics>>(name, kin, p, variant, in.roughness);
-  const auto q = IntergranularStrainParameters::from(require_table(in, "intergranular_strain"),
-                                                     in.source + " [intergranular_strain]");
-  return std::make_unique<HypoplasticModel<Kinematics>>(name + "-igs", kin, p, variant,
-                                                        in.roughness, q);
+  const auto c = make_constants(p, variant, in.roughness, Member::trace_of_unit());
+  if (igs == WithIntergranularStrain::kNo) return std::make_unique<Member>(name, kin, c);
+  return std::make_unique<Member>(name + "-igs", kin, c, intergranular_strain_parameters(in));
 }
 
 // How a member of the family starts: K0 free with the oedometric default (hvwe, vw3d), fixed at

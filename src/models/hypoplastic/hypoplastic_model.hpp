@@ -1,6 +1,9 @@
 #pragma once
-// The hypoplastic family as one class over a kinematics policy and variant data. State: the
-// packed stress tensor, the void ratio and, with intergranular strain, the packed delta.
+// The hypoplastic family as one class over a kinematics policy (how the element's strain maps onto
+// the algebra) and a rate law (von Wolffersdorff's for sand, Masin's for clay: anything with a
+// tangent L, N and a domain, see VonWolffersdorffLaw). State: the packed stress tensor, the void
+// ratio and, with intergranular strain, the packed delta; the intergranular strain is written once
+// (intergranular_strain.hpp) over the law's L and N.
 #include <fmt/core.h>
 
 #include <cmath>
@@ -15,20 +18,20 @@
 
 namespace iwb::models {
 
-template <class Kinematics>
+template <class Kinematics, class Law = VonWolffersdorffLaw>
 class HypoplasticModel final : public Model {
   using Ops = typename Kinematics::Ops;
+  using Constants = typename Law::Constants;
   static constexpr int kVoidRatio = Ops::kPackedSize;
   static constexpr int kDelta = kVoidRatio + 1;  // first intergranular strain component
 
  public:
-  HypoplasticModel(std::string name, Kinematics kin, const HypoplasticParameters& p,
-                   const HypoplasticVariant& variant, const Roughness& roughness,
+  // tr 1 of the element's algebra: 3 for tensors and reduced vectors, 1 for Gutjahr's 1D vectors.
+  static double trace_of_unit() { return value_of(Ops::trace(Ops::template unit<double>())); }
+
+  HypoplasticModel(std::string name, Kinematics kin, const Constants& constants,
                    std::optional<IntergranularStrainParameters> igs = std::nullopt)
-      : name_(std::move(name)),
-        kin_(kin),
-        c_(make_constants(p, variant, roughness, value_of(Ops::trace(Ops::template unit<double>())))),
-        igs_(igs) {}
+      : name_(std::move(name)), kin_(kin), c_(constants), igs_(igs) {}
 
   std::string_view name() const override { return name_; }
   int state_size() const override { return Ops::kPackedSize * (igs_ ? 2 : 1) + 1; }
@@ -40,7 +43,7 @@ class HypoplasticModel final : public Model {
     return names;
   }
   bool has_second_shear_direction() const override { return Kinematics::kSecondShearDirection; }
-  const VonWolffersdorffConstants& constants() const { return c_; }
+  const Constants& constants() const { return c_; }
 
   StateVector initial_state(const InitialState& init) const override {
     StateVector s(state_size());
@@ -75,12 +78,7 @@ class HypoplasticModel final : public Model {
     const double tr = Ops::trace(Ops::template unpack<double>(s, 0));
     if (!(tr < -kMinimumPressure_kPa))
       return fmt::format("no compression: tr T = {:.6g} kPa (contact lost)", tr);
-    const auto lim = limiting_void_ratios(-tr, c_.p);
-    const double e = s(kVoidRatio);
-    if (!(e > lim.e_d && e < lim.e_i))
-      return fmt::format("e = {:.6g} outside (e_d, e_i) = ({:.6g}, {:.6g}) at -tr T = {:.6g} kPa",
-                         e, lim.e_d, lim.e_i, -tr);
-    return {};
+    return Law::domain_violation(-tr, s(kVoidRatio), c_);
   }
 
   // Stress and intergranular strain each against their own largest component; e is a scalar.
@@ -99,13 +97,7 @@ class HypoplasticModel final : public Model {
 
   std::vector<NamedValue> diagnostics(const StateVector& s) const override {
     const auto t = Ops::template unpack<double>(s, 0);
-    const double pressure = -Ops::trace(t);
-    const auto lim = limiting_void_ratios(pressure, c_.p);
-    const double tr_unit = Ops::trace(Ops::template unit<double>());
-    std::vector<NamedValue> out{{"mean_stress_kPa", pressure / tr_unit},
-                                {"e_i", lim.e_i},
-                                {"e_c", lim.e_c},
-                                {"e_d", lim.e_d}};
+    auto out = Law::diagnostics(-Ops::trace(t), trace_of_unit(), s(kVoidRatio), c_);
     if (igs_) {
       const auto delta = Ops::template unpack<double>(s, kDelta);
       out.push_back({"rho", std::sqrt(Ops::contract(delta, delta)) / igs_->R});
@@ -122,12 +114,11 @@ class HypoplasticModel final : public Model {
     ds.resize(state_size());
     ds(kVoidRatio) = (1.0 + e) * Ops::trace(D);  // ERRATA item 6
     if (!igs_) {
-      Ops::template pack<S>(von_wolffersdorff_rate<Ops, S>(T, e, D, c_), ds, 0);
+      Ops::template pack<S>(Law::template rate<Ops, S>(T, e, D, c_), ds, 0);
       return;
     }
     const auto delta = Ops::template unpack<S>(s, kDelta);
-    const auto r = intergranular_strain_rate<Ops, S>(von_wolffersdorff_tangent<Ops, S>(T, e, c_),
-                                                     delta, D, *igs_);
+    const auto r = intergranular_strain_rate<Ops, S>(Law::template tangent<Ops, S>(T, e, c_), delta, D, *igs_);
     Ops::template pack<S>(r.stress, ds, 0);
     Ops::template pack<S>(kin_.template intergranular<S>(r.delta), ds, kDelta);
   }
@@ -142,7 +133,7 @@ class HypoplasticModel final : public Model {
 
   std::string name_;
   Kinematics kin_;
-  VonWolffersdorffConstants c_;
+  Constants c_;
   std::optional<IntergranularStrainParameters> igs_;
 };
 

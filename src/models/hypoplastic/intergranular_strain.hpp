@@ -48,8 +48,10 @@ struct IntergranularRates {
   typename Ops::template Tensor<S> delta;
 };
 
-template <class Ops, class S>
-IntergranularRates<Ops, S> intergranular_strain_rate(const HypoplasticTangent<Ops, S>& h,
+// Over any hypoplastic tangent: a type with `Tensor L(const Tensor&) const` and `Tensor N`
+// (T_rate = L : D + N ||D||): von Wolffersdorff's HypoplasticTangent, the clay laws' tangents.
+template <class Ops, class S, class Tangent>
+IntergranularRates<Ops, S> intergranular_strain_rate(const Tangent& h,
                                                      const typename Ops::template Tensor<S>& delta,
                                                      const typename Ops::template Tensor<S>& D,
                                                      const IntergranularStrainParameters& p) {

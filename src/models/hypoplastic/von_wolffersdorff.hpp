@@ -10,10 +10,13 @@
 // eq. 3.75 (derivation in src/models/hp1d/README.md).
 #include <cmath>
 #include <fmt/core.h>
+#include <string>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "common/scalar.hpp"
 #include "models/hypoplastic/parameters.hpp"
+#include "models/model.hpp"
 #include "models/roughness/roughness.hpp"
 
 namespace iwb::models {
@@ -152,6 +155,24 @@ HypoplasticTangent<Ops, S> von_wolffersdorff_tangent(const typename Ops::templat
   return {scale, F * F, c.a * c.a, t_hat, N};
 }
 
+// von Wolffersdorff's law as a rate law of HypoplasticModel (hypoplastic_model.hpp): what the
+// model class asks of any hypoplastic law, sand or clay (src/models/README.md, section 4).
+struct VonWolffersdorffLaw {
+  using Constants = VonWolffersdorffConstants;
+
+  template <class Ops, class S>
+  static HypoplasticTangent<Ops, S> tangent(const typename Ops::template Tensor<S>& T, const S& e,
+                                            const Constants& c);
+  template <class Ops, class S>
+  static typename Ops::template Tensor<S> rate(const typename Ops::template Tensor<S>& T, const S& e,
+                                               const typename Ops::template Tensor<S>& D, const Constants& c);
+  // Why a compressed state at `pressure` (-tr T, > 0) with void ratio e is outside the law's
+  // domain, (e_d, e_i) at that pressure; empty inside.
+  static std::string domain_violation(double pressure, double e, const Constants& c);
+  // mean_stress_kPa, e_i, e_c, e_d (the order the declarations state).
+  static std::vector<NamedValue> diagnostics(double pressure, double trace_of_unit, double e, const Constants& c);
+};
+
 template <class Ops, class S>
 typename Ops::template Tensor<S> von_wolffersdorff_rate(const typename Ops::template Tensor<S>& T,
                                                         const S& e,
@@ -159,6 +180,19 @@ typename Ops::template Tensor<S> von_wolffersdorff_rate(const typename Ops::temp
                                                         const VonWolffersdorffConstants& c) {
   const auto h = von_wolffersdorff_tangent<Ops, S>(T, e, c);
   return h.L(D) + safe_sqrt(Ops::contract(D, D)) * h.N;
+}
+
+template <class Ops, class S>
+HypoplasticTangent<Ops, S> VonWolffersdorffLaw::tangent(const typename Ops::template Tensor<S>& T, const S& e,
+                                                        const Constants& c) {
+  return von_wolffersdorff_tangent<Ops, S>(T, e, c);
+}
+
+template <class Ops, class S>
+typename Ops::template Tensor<S> VonWolffersdorffLaw::rate(const typename Ops::template Tensor<S>& T, const S& e,
+                                                           const typename Ops::template Tensor<S>& D,
+                                                           const Constants& c) {
+  return von_wolffersdorff_rate<Ops, S>(T, e, D, c);
 }
 
 }  // namespace iwb::models
