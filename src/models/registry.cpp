@@ -9,17 +9,6 @@
 
 namespace iwb::models {
 
-ModelSpec vw3d_spec();
-ModelSpec ah_spec();
-ModelSpec ahe_spec();
-ModelSpec hvwe_spec();
-ModelSpec hvwe_exact_spec();
-ModelSpec hp1d_spec();
-ModelSpec vw3d_igs_spec();
-ModelSpec ahe_igs_spec();
-ModelSpec hvwe_igs_spec();
-ModelSpec hvwe_exact_igs_spec();
-
 namespace {
 
 std::string layout_problem(const StateLayout& l) {
@@ -78,9 +67,11 @@ std::string declaration_problem(const ModelSpec& spec) {
 }
 
 const std::vector<ModelSpec>& model_registry() {
-  static const std::vector<ModelSpec> specs = checked_and_ordered(
-      {vw3d_spec(), ah_spec(), ahe_spec(), hvwe_spec(), hvwe_exact_spec(), hp1d_spec(), vw3d_igs_spec(),
-       ahe_igs_spec(), hvwe_igs_spec(), hvwe_exact_igs_spec()});
+  static const std::vector<ModelSpec> specs = [] {
+    ModelRegistry registry;
+    register_all_models(registry);
+    return checked_and_ordered(registry.take());
+  }();
   return specs;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// The list of models the workbench knows. Adding a model: one folder under src/models/ with a
-// spec function, and one line in registry.cpp.
+// The list of models the workbench knows. Adding a model: one folder under src/models/ whose
+// register.cpp names its specs (IWB_REGISTER_MODELS); nothing outside the folder changes.
 #include <functional>
 #include <map>
 #include <memory>
@@ -38,6 +38,30 @@ struct ModelSpec {
 // disagreeing); empty when it is consistent. The registry refuses such a model (std::logic_error).
 std::string declaration_problem(const ModelSpec& spec);
 
+// The models as their folders register them (register_all_models, generated from
+// src/models/*/register.cpp). `add` only collects: the declarations are checked and ordered once
+// all are in (model_registry()).
+class ModelRegistry {
+ public:
+  void add(ModelSpec spec) { specs_.push_back(std::move(spec)); }
+  std::vector<ModelSpec> take() { return std::move(specs_); }
+
+ private:
+  std::vector<ModelSpec> specs_;
+};
+
+// Generated: calls register_<folder>() of every model folder.
+void register_all_models(ModelRegistry& registry);
+
+// In a model folder's register.cpp, the one registration of its models:
+//   IWB_REGISTER_MODELS(hvwe, hvwe_spec(), hvwe_igs_spec())
+// defines register_hvwe(); the first argument is the folder's name as a C identifier.
+#define IWB_REGISTER_MODELS(folder, ...)                              \
+  void register_##folder(ModelRegistry& registry) {                   \
+    for (auto& spec : std::vector<ModelSpec>{__VA_ARGS__}) registry.add(std::move(spec)); \
+  }
+
+// Every registered model, checked (declaration_problem) and in listing order.
 const std::vector<ModelSpec>& model_registry();
 // Throws InputError listing the known names.
 const ModelSpec& find_model(const std::string& name);
