@@ -69,7 +69,7 @@ std::string missing_tables(const models::ModelInputs& in, const models::ModelSpe
 nlohmann::json bench_model(const models::ModelSpec& spec, const models::ModelInputs& in,
                            const std::string& label, const ElementBenchOptions& opt) {
   const auto model = spec.make(in);
-  const auto s0 = model->initial_state({100.0, models::oedometric_K0(in), 0.80});
+  const auto s0 = model->initial_state(models::offer(spec, in, {{"sigma_n_kPa", 100.0}, {"e0", 0.80}}));
   driver::RunSettings rs;
   rs.integrator.rtol = 1e-6;
   rs.output_every = 2000;

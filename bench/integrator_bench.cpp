@@ -108,8 +108,7 @@ std::vector<TradeoffPoint> run_tradeoff(const models::ModelSpec& spec,
                                         const TradeoffPath& tp,
                                         const std::vector<TradeoffSetting>& settings) {
   const auto model = spec.make(inputs);
-  const double K0 = models::oedometric_K0(inputs);
-  const auto s0 = model->initial_state({tp.sigma_n_kPa, K0, tp.e0});
+  const auto s0 = model->initial_state(models::offer(spec, inputs, {{"sigma_n_kPa", tp.sigma_n_kPa}, {"e0", tp.e0}}));
   const auto path = driver::monotonic_path({bc, tp.cns_K_kPa}, tp.gamma, driver::ShearDirection::kX,
                                            tp.increments);
   const auto ref = run_with(*model, s0, path, adaptive("rk54", kReferenceRtol));

@@ -26,9 +26,10 @@ driver::Path dem_path(const DemRun& dem, double d_s_mm) {
 
 Replay replay(const DemRun& dem, const Variant& v, const driver::RunSettings& settings) {
   Replay out{v, "", {}, {}, {}, {}, dem.e_band.front()};
-  const auto model = models::find_model(v.model).make(v.inputs);
-  models::InitialState init{dem.sigma_n_kPa.front(), models::oedometric_K0(v.inputs), out.e0};
-  if (std::isnan(init.K0)) init.K0 = 1.0;  // a model without phi_c starts isotropic
+  const auto& spec = models::find_model(v.model);
+  const auto model = spec.make(v.inputs);
+  // from the DEM's first state: its sigma_n, the void ratio of its wall band
+  const auto init = models::offer(spec, v.inputs, {{"sigma_n_kPa", dem.sigma_n_kPa.front()}, {"e0", out.e0}});
   const auto s0 = model->initial_state(init);  // InputError if e0 is outside the model's domain
   driver::RunSettings rs = settings;
   rs.output_every = 1;

@@ -161,7 +161,7 @@ void walk(const models::Model& m, const models::StateVector& s0, const Stability
 // Builds the model, finds the limits and the start; throws InputError if the start is refused.
 models::StateVector prepare(const models::Model& m, const models::ModelInputs& in,
                             const StabilityPoint& p, StabilityResult& out) {
-  const double K0 = std::isfinite(models::oedometric_K0(in)) ? models::oedometric_K0(in) : 1.0;
+  const double K0 = models::offer(models::find_model(std::string(m.name())), in, {}).K0;
   const auto lim = limiting_void_ratios_at(m, p.sigma_n_kPa, K0);
   out.e_d = lim[0];
   out.e_c = lim[1];

@@ -35,10 +35,10 @@ std::vector<double> control_of(const SyntheticSpec& s) {
 }
 
 // Bauer's e_c at the initial mean pressure -tr T = sigma0 (1 + 2 K0): a medium-dense start.
-double default_e0(const SoilTest& t, const models::ModelInputs& inputs) {
+double default_e0(const SoilTest& t, const std::string& model, const models::ModelInputs& inputs) {
   const auto p = models::HypoplasticParameters::from(models::require_table(inputs, "hypoplastic"),
                                                      inputs.source);
-  const double pressure = t.sigma0_kPa * (1.0 + 2.0 * initial_K0(t, inputs));
+  const double pressure = t.sigma0_kPa * (1.0 + 2.0 * initial_K0(t, model, inputs));
   return models::limiting_void_ratios(pressure, p).e_c;
 }
 
@@ -49,9 +49,9 @@ SoilTest synthesise(const SyntheticSpec& spec, const models::ModelInputs& inputs
   t.kind = spec.kind;
   t.boundary = spec.boundary;
   t.sigma0_kPa = spec.sigma0_kPa;
-  t.K0 = models::oedometric_K0(inputs);
+  t.K0 = models::offer(models::find_model(spec.model), inputs, {}).K0;
   t.control = control_of(spec);
-  t.e0 = spec.e0 ? *spec.e0 : default_e0(t, inputs);
+  t.e0 = spec.e0 ? *spec.e0 : default_e0(t, spec.model, inputs);
   t.source = "synthetic:" + spec.model;
   for (const auto& [table, values] : inputs.tables)
     for (const auto& [key, value] : values) t.source_parameters[table][key] = value;

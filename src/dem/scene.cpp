@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "common/errors.hpp"
+#include "common/physical_limits.hpp"
 #include "dem/shear_start.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
@@ -31,7 +32,6 @@ constexpr double kMaxFriction = 10.0;              // a coefficient, not an angl
 constexpr double kMaxSolidFraction = 0.75;         // densest sphere packing 0.7405
 constexpr double kMaxLengthD50 = 1e5;              // the particle count bounds the box anyway
 constexpr double kMaxParticles = 1e8;              // as for an explicit [specimen] particles
-constexpr double kMaxStressKPa = 1e5;              // 100 MPa: far beyond grain crushing
 constexpr double kMaxCnsStiffnessKPaPerMm = 1e7;   // stiffer than the grains: use CV
 constexpr double kMaxTravelMm = 1e4;               // 10 m of wall travel
 // I = gamma_dot d50 sqrt(rho/sigma_n) above 1 is a granular gas, not a sheared layer (DEM.md asks

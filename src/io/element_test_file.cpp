@@ -4,8 +4,10 @@
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
+#include "common/physical_limits.hpp"
 #include "io/parameter_file.hpp"
 #include "models/hypoplastic/intergranular_strain.hpp"
+#include "models/registry.hpp"
 #include "io/toml_reader.hpp"
 
 namespace iwb::io {
@@ -18,10 +20,8 @@ constexpr double kDegree = M_PI / 180.0;
 
 // Physical ranges of element-test values (beyond them a value is a typo or a units mistake; the
 // model's own domain checks, e.g. e0 in (e_d, e_i), come on top).
-constexpr double kMaxStressKPa = 1e5;      // 100 MPa: far beyond grain crushing
+// (kMaxStressKPa, kMaxVoidRatio, kMaxK0: common/physical_limits.hpp)
 constexpr double kMaxShearStrain = 10.0;   // 1000 % shear strain
-constexpr double kMaxVoidRatio = 10.0;
-constexpr double kMaxK0 = 10.0;            // lateral stress ratio
 constexpr double kMaxLengthMm = 1e4;       // shear-zone thickness, grain size
 constexpr double kMaxRoughness = 100.0;    // R_n = R_max / d50
 constexpr double kMaxIncrements = 1e8;     // a path longer than this would run for hours
@@ -75,7 +75,7 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
     origin = fmt::format("R_n = {:g}, eq. 5.35 with log base {:g}", rn, base);
   } else {
     const double delta = r->number_in("delta_deg", {0.0, 90.0, true, true});
-    k = models::kappa_r_from_friction_angles(delta * kDegree, models::critical_friction_angle(spec.inputs));
+    k = models::kappa_r_from_friction_angles(delta * kDegree, models::critical_friction_angle(models::find_model(spec.model), spec.inputs));
     origin = fmt::format("delta = {:g} deg, eq. 5.36", delta);
   }
   r->finish();
@@ -85,9 +85,7 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
 }
 
 bool has_intergranular_strain(const std::string& model) {
-  for (const auto* t : models::find_model(model).tables)
-    if (t == &models::IntergranularStrainParameters::table()) return true;
-  return false;
+  return models::find_initial_input(models::find_model(model).declaration.initial, "delta") != nullptr;
 }
 
 // Beyond this multiple of R an initial intergranular strain is taken as a units mistake (e.g. a
@@ -144,20 +142,32 @@ void read_delta(TableReader& t, ElementTestSpec& spec) {
                                        {"origin", origin}};
 }
 
+// One declared number of [initial]: its range, its default when absent (K0 = 1 - sin phi_c, the
+// oedometric start of CONVENTIONS.md), a fixed value kept with a warning when a file gives another.
+void read_initial_number(TableReader& t, const models::InitialInputSpec& in, ElementTestSpec& spec) {
+  using Need = models::InitialInputSpec::Need;
+  std::optional<double> v = in.need == Need::kRequired ? t.number_in(in.key, in.range)
+                                                        : t.optional_number_in(in.key, in.range);
+  if (in.need == Need::kFixed && v && *v != in.default_value(spec.inputs))
+    spec.warnings.push_back(fmt::format("{} = {:g} is ignored: {} ({})", t.where(in.key), *v, in.doc, spec.model));
+  if (in.need == Need::kFixed || (!v && in.default_value)) v = in.default_value(spec.inputs);
+  if (!v) return;  // optional without a default: not given
+  models::set_initial_input(spec.initial, in.key, *v);
+  spec.resolved["initial"][in.key] = *v;
+}
+
+// [initial] as the model declares it. A K0 for a model without an in-plane stress (hp1d) is
+// ignored with a warning: test files written for several models give one.
 void read_initial(TableReader t, ElementTestSpec& spec) {
-  spec.initial.sigma_n = t.positive("sigma_n_kPa", kMaxStressKPa);
-  spec.initial.e0 = t.positive("e0", kMaxVoidRatio);
-  if (auto k0 = t.optional_positive("K0", kMaxK0)) {
-    spec.initial.K0 = *k0;
-  } else if (const double k0_oed = models::oedometric_K0(spec.inputs); std::isfinite(k0_oed)) {
-    spec.initial.K0 = k0_oed;  // oedometric start (CONVENTIONS.md)
-  } else {
-    throw InputError(t.where("K0") + " is missing and no phi_c_deg gives the default 1 - sin(phi_c)");
-  }
-  spec.resolved["initial"] = {{"sigma_n_kPa", spec.initial.sigma_n},
-                              {"sigma_p_kPa", spec.initial.K0 * spec.initial.sigma_n},
-                              {"K0", spec.initial.K0},
-                              {"e0", spec.initial.e0}};
+  const auto& declared = models::find_model(spec.model).declaration.initial;
+  spec.resolved["initial"] = json::object();
+  for (const auto& in : declared)
+    if (in.kind == models::InitialInputSpec::Kind::kNumber) read_initial_number(t, in, spec);
+  if (models::find_initial_input(declared, "K0") != nullptr)
+    spec.resolved["initial"]["sigma_p_kPa"] = spec.initial.K0 * spec.initial.sigma_n;
+  else if (t.has("K0"))
+    spec.warnings.push_back(fmt::format("{} = {:g} is ignored: {} has no in-plane stress", t.where("K0"),
+                                        t.number_in("K0", positive(kMaxK0)), spec.model));
   read_delta(t, spec);
   t.finish();
 }

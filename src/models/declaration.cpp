@@ -9,4 +9,10 @@ std::vector<std::string> StateLayout::names() const {
   return out;
 }
 
+const InitialInputSpec* find_initial_input(const std::vector<InitialInputSpec>& inputs, const std::string& key) {
+  for (const auto& in : inputs)
+    if (in.key == key) return &in;
+  return nullptr;
+}
+
 }  // namespace iwb::models

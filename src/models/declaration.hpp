@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/range.hpp"
 #include "models/model.hpp"
 #include "models/parameters.hpp"
 #include "models/roughness/roughness.hpp"
@@ -18,6 +19,7 @@
 namespace iwb::models {
 
 struct ModelInputs;
+struct ModelSpec;
 
 // ---- 2.2 State layout ----
 
@@ -49,19 +51,23 @@ struct StateLayout {
 // One input of the initial state as a test file's [initial] table names it.
 struct InitialInputSpec {
   enum class Kind { kNumber, kVector3, kKeywordOrVector3, kChoice };
-  enum class Need { kRequired, kOptional, kOneOf };
+  // kFixed: the model's kinematics fix the value (AH's K0 = 1, eq. 5.16); a value given in a file is
+  // ignored with a warning, the default is what the manifest records.
+  enum class Need { kRequired, kOptional, kOneOf, kFixed };
   std::string key;  // "sigma_n_kPa", "K0", "e0", "OCR", "T_K", "s_kPa", "delta"
   std::string unit;
   std::string doc;
   Kind kind = Kind::kNumber;
   Need need = Need::kRequired;
   std::string group = {};  // Need::kOneOf: the inputs of which exactly one is given ("density")
-  Bound lower{0.0, true};
-  Bound upper{kUnbounded, true};
+  Range range = positive();  // beyond it a value is a typo or a units mistake (common/range.hpp)
   std::vector<std::string> choices = {};  // kChoice and keywords: "seed"
   // The value when absent, from the model's parameters (K0 = 1 - sin phi_c); empty: no default.
   std::function<double(const ModelInputs&)> default_value = {};
 };
+
+// The declared input `key` of a declaration, or nullptr.
+const InitialInputSpec* find_initial_input(const std::vector<InitialInputSpec>& inputs, const std::string& key);
 
 // ---- 2.4 External variables ----
 

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -67,6 +68,8 @@ struct InitialState {
   // Models with intergranular strain: [delta_n, delta_x, delta_y] as tensor components (opening
   // positive like eps_n, delta_x = delta_12); empty = the model's default (seed 5.6).
   std::optional<std::array<double, 3>> delta = std::nullopt;
+  // Every other input a model declares (src/models/declaration.hpp): "OCR", "T_K", "s_kPa", ...
+  std::map<std::string, double, std::less<>> named = {};
 };
 
 struct NamedValue {

@@ -84,13 +84,33 @@ const ModelSpec& find_model(const std::string& name) {
   throw InputError(fmt::format("unknown model '{}'; known models: {}", name, known));
 }
 
-double critical_friction_angle(const ModelInputs& inputs) {
-  for (const auto& [name, values] : inputs.tables)
-    if (const auto it = values.find("phi_c_deg"); it != values.end()) return it->second * M_PI / 180.0;
+double critical_friction_angle(const ModelSpec& spec, const ModelInputs& inputs) {
+  for (const auto* table : spec.tables)
+    for (const auto& p : table->entries)
+      if (p.role == ParameterRole::kCriticalFrictionAngle) return require_table(inputs, table->name).at(p.key) * M_PI / 180.0;
   return NAN;
 }
 
-double oedometric_K0(const ModelInputs& inputs) { return 1.0 - std::sin(critical_friction_angle(inputs)); }
+void set_initial_input(InitialState& s, const std::string& key, double value) {
+  if (key == "sigma_n_kPa") s.sigma_n = value;
+  else if (key == "K0") s.K0 = value;
+  else if (key == "e0") s.e0 = value;
+  else s.named[key] = value;
+}
+
+InitialState offer(const ModelSpec& spec, const ModelInputs& inputs,
+                   std::initializer_list<std::pair<std::string, double>> values) {
+  InitialState s;
+  for (const auto& input : spec.declaration.initial) {
+    if (input.kind != InitialInputSpec::Kind::kNumber) continue;
+    std::optional<double> v;
+    for (const auto& [key, value] : values)
+      if (key == input.key) v = value;
+    if (input.need == InitialInputSpec::Need::kFixed || (!v && input.default_value)) v = input.default_value(inputs);
+    if (v) set_initial_input(s, input.key, *v);
+  }
+  return s;
+}
 
 const ParameterValues& require_table(const ModelInputs& inputs, const std::string& name) {
   const auto it = inputs.tables.find(name);

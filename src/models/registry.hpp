@@ -66,10 +66,19 @@ const std::vector<ModelSpec>& model_registry();
 // Throws InputError listing the known names.
 const ModelSpec& find_model(const std::string& name);
 
-// phi_c (rad) of whichever parameter table declares `phi_c_deg`; NaN if none does.
-double critical_friction_angle(const ModelInputs& inputs);
-// The oedometric start K0 = 1 - sin(phi_c) (CONVENTIONS.md); NaN without a phi_c.
-double oedometric_K0(const ModelInputs& inputs);
+// phi_c (rad) of the parameter the model declares in the role kCriticalFrictionAngle, from its
+// own tables (never another model's table in the same file); NaN if it declares none.
+double critical_friction_angle(const ModelSpec& spec, const ModelInputs& inputs);
+
+// Puts a declared number input into an InitialState: the shared members, else `named`.
+void set_initial_input(InitialState& s, const std::string& key, double value);
+
+// The initial state a caller that does not know the model offers it (the DEM replay, the soil-test
+// simulation, the stability map, the benches): each offered value the model declares, every other
+// declared number at its default (K0 = 1 - sin phi_c for sand; a fixed value always). Values the
+// model does not declare are dropped (a replay offers e0 to every model alike).
+InitialState offer(const ModelSpec& spec, const ModelInputs& inputs,
+                   std::initializer_list<std::pair<std::string, double>> values);
 
 // The parameter table `name` of `inputs`; InputError if the file has no such table.
 const ParameterValues& require_table(const ModelInputs& inputs, const std::string& name);

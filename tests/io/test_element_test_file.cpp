@@ -207,3 +207,29 @@ TEST_CASE("element-test values are finite and within their physical range", "[io
   CHECK_THAT(error_of(replaced(kGood, "hs_kPa = 2.0e6", "hs_kPa = 1e300")),
              Catch::Contains("key 'hs_kPa' = 1e+300 is out of range; allowed (0, 1e+09] kPa"));
 }
+
+// src/models/README.md section 11, item 2: AH and AHE start from sigma_p = sigma_n whatever K0
+// (eq. 5.16), so their manifests say so; hp1d has no in-plane stress at all.
+TEST_CASE("[initial] is read as the model declares it: AH's fixed K0, hp1d's missing in-plane stress", "[io]") {
+  const auto ah = parse(replaced(kGood, "name = \"hvwe\"", "name = \"ah\""));
+  CHECK(ah.initial.K0 == 1.0);
+  CHECK(ah.resolved["initial"]["K0"] == 1.0);
+  CHECK(ah.resolved["initial"]["sigma_p_kPa"] == 100.0);
+  CHECK(ah.warnings.empty());
+
+  const auto given = parse(replaced(replaced(kGood, "name = \"hvwe\"", "name = \"ah\""), "e0 = 0.8", "e0 = 0.8\nK0 = 0.5"));
+  CHECK(given.initial.K0 == 1.0);
+  REQUIRE(given.warnings.size() == 1);
+  CHECK_THAT(given.warnings[0], Catch::Contains("key 'initial.K0' = 0.5 is ignored") && Catch::Contains("eq. 5.16"));
+
+  const auto hp1d = parse(replaced(replaced(kGood, "name = \"hvwe\"", "name = \"hp1d\""), "e0 = 0.8", "e0 = 0.8\nK0 = 0.5"));
+  CHECK_FALSE(hp1d.resolved["initial"].contains("sigma_p_kPa"));
+  CHECK_FALSE(hp1d.resolved["initial"].contains("K0"));
+  REQUIRE(hp1d.warnings.size() == 1);
+  CHECK_THAT(hp1d.warnings[0], Catch::Contains("hp1d has no in-plane stress"));
+
+  const auto hvwe = parse(replaced(kGood, "e0 = 0.8", "e0 = 0.8\nK0 = 0.5"));
+  CHECK(hvwe.initial.K0 == 0.5);
+  CHECK(hvwe.resolved["initial"]["sigma_p_kPa"] == 50.0);
+  CHECK(hvwe.warnings.empty());
+}

@@ -76,7 +76,11 @@ TEST_CASE("the default K0 declared by the sand family is 1 - sin phi_c of the fi
   const double phi_c = in.tables.at("hypoplastic").at("phi_c_deg") * M_PI / 180.0;
   for (const auto& input : spec.declaration.initial)
     if (input.key == "K0") CHECK(input.default_value(in) == Approx(1.0 - std::sin(phi_c)).epsilon(1e-15));
-  for (const auto& input : models::find_model("ah").declaration.initial) CHECK(input.key != "K0");
+  const auto* ah_K0 = models::find_initial_input(models::find_model("ah").declaration.initial, "K0");
+  REQUIRE(ah_K0 != nullptr);
+  CHECK(ah_K0->need == models::InitialInputSpec::Need::kFixed);
+  CHECK(ah_K0->default_value(in) == 1.0);
+  CHECK(models::find_initial_input(models::find_model("hp1d").declaration.initial, "K0") == nullptr);
 }
 
 TEST_CASE("an inconsistent declaration is refused, with the reason") {
@@ -112,6 +116,30 @@ TEST_CASE("an inconsistent declaration is refused, with the reason") {
   auto table_twice = spec;
   table_twice.tables.push_back(table_twice.tables.front());
   CHECK_THAT(models::declaration_problem(table_twice), Catch::Contains("listed twice"));
+}
+
+}  // namespace iwb
+
+namespace iwb {
+
+// src/models/README.md section 11, item 5: phi_c was taken from the alphabetically first table
+// holding a phi_c_deg key, whichever model it belonged to.
+TEST_CASE("the critical friction angle is read by role, from the model's own table") {
+  const auto& spec = models::find_model("hvwe");
+  models::ModelInputs in = example_inputs(spec);
+  in.tables["a_clay_table"] = {{"phi_c_deg", 10.0}};  // sorts before [hypoplastic]
+  CHECK(models::critical_friction_angle(spec, in) == Approx(28.0 * M_PI / 180.0));
+}
+
+TEST_CASE("offer: a caller that does not know the model gives what the model declares, defaults the rest") {
+  const auto& hvwe = models::find_model("hvwe");
+  const auto in = example_inputs(hvwe);
+  const auto s = models::offer(hvwe, in, {{"sigma_n_kPa", 50.0}, {"e0", 0.7}, {"OCR", 2.0}});
+  CHECK(s.sigma_n == 50.0);
+  CHECK(s.e0 == 0.7);
+  CHECK(s.K0 == Approx(1.0 - std::sin(28.0 * M_PI / 180.0)));
+  CHECK(s.named.empty());  // hvwe declares no OCR: dropped
+  CHECK(models::offer(models::find_model("ahe"), in, {{"K0", 0.4}}).K0 == 1.0);  // fixed by eq. 5.16
 }
 
 }  // namespace iwb

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "common/physical_limits.hpp"
+
 namespace iwb::models {
 
 namespace {
@@ -11,16 +13,24 @@ double oedometric_K0_of(const ModelInputs& in) {
   return 1.0 - std::sin(require_table(in, "hypoplastic").at("phi_c_deg") * M_PI / 180.0);
 }
 
+// In the order a test file's [initial] is read (the first bad value is the one reported).
 std::vector<InitialInputSpec> hypoplastic_initial_inputs(InPlaneStart start) {
-  std::vector<InitialInputSpec> in{
-      {"sigma_n_kPa", "kPa", "initial normal stress sigma_n0, compression positive"}};
-  if (start == InPlaneStart::kFreeK0) {
-    InitialInputSpec k0{"K0", "-", "sigma_p0 = K0 sigma_n0 (default: 1 - sin phi_c)"};
-    k0.need = InitialInputSpec::Need::kOptional;
-    k0.default_value = oedometric_K0_of;
-    in.push_back(k0);
+  InitialInputSpec sigma_n{"sigma_n_kPa", "kPa", "initial normal stress sigma_n0, compression positive"};
+  sigma_n.range = positive(kMaxStressKPa);
+  InitialInputSpec e0{"e0", "-", "initial void ratio, inside (e_d, e_i) at the initial mean stress"};
+  e0.range = positive(kMaxVoidRatio);
+  std::vector<InitialInputSpec> in{sigma_n, e0};
+  if (start == InPlaneStart::kNone) return in;
+  InitialInputSpec k0{"K0", "-", "sigma_p0 = K0 sigma_n0 (default: 1 - sin phi_c)"};
+  k0.range = positive(kMaxK0);
+  k0.need = InitialInputSpec::Need::kOptional;
+  k0.default_value = oedometric_K0_of;
+  if (start == InPlaneStart::kIsotropic) {
+    k0.doc = "fixed at 1: the kinematics start from sigma_p = sigma_n (eq. 5.16)";
+    k0.need = InitialInputSpec::Need::kFixed;
+    k0.default_value = [](const ModelInputs&) { return 1.0; };
   }
-  in.push_back({"e0", "-", "initial void ratio, inside (e_d, e_i) at the initial mean stress"});
+  in.push_back(k0);
   return in;
 }
 

@@ -4,13 +4,13 @@
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
+#include "common/physical_limits.hpp"
 
 namespace iwb::models {
 
 // Upper bounds: far beyond every published set (h_s 1e3-1e8 kPa, void ratios below 2, alpha
 // 0.1-0.35, beta 1-3), so only a units mistake or a typo is refused (1e300 kPa reached the rate).
 constexpr double kMaxHardnessKPa = 1e9;
-constexpr double kMaxVoidRatio = 10.0;
 constexpr double kMaxExponent = 10.0;
 
 const ParameterTable& HypoplasticParameters::table() {
