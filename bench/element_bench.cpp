@@ -6,6 +6,7 @@
 
 #include "driver/element_test.hpp"
 #include "io/parameter_file.hpp"
+#include "io/parameter_sets.hpp"
 #include "models/registry.hpp"
 
 namespace iwb::bench {
@@ -14,14 +15,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-models::ModelInputs table_5_1() {
-  models::ModelInputs in;
-  in.tables["hypoplastic"] = {{"phi_c_deg", 28.0}, {"hs_kPa", 2.0e6}, {"n", 0.29},
-                              {"ed0", 0.61},       {"ec0", 0.96},     {"ei0", 1.09},
-                              {"alpha", 0.13},     {"beta", 2.0}};
-  in.source = "seed Table 5.1";
-  return in;
-}
+// The set every model that it can drive runs on: seed Table 5.1, as the sand family declares it.
+constexpr const char* kBaseSet = "table_5_1_evaluation.toml";
 
 // Nanoseconds per rate evaluation on `s`, measured over at least `min_seconds`.
 template <class S>
@@ -101,7 +96,7 @@ nlohmann::json bench_model(const models::ModelSpec& spec, const models::ModelInp
 }  // namespace
 
 nlohmann::json run_element_bench(const ElementBenchOptions& opt) {
-  const auto base = table_5_1();
+  const auto base = io::shipped_inputs(kBaseSet);
   const auto extra = parameter_set(opt.igs_params);
   nlohmann::json out = nlohmann::json::array();
   fmt::print("iwb bench element: Table 5.1 sand, e0 = 0.80, sigma_n = 100 kPa, CNL simple shear,\n"

@@ -10,6 +10,7 @@
 #include "comparison/figure.hpp"
 #include "driver/element_test.hpp"
 #include "io/output_path.hpp"
+#include "io/parameter_sets.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::bench {
@@ -27,16 +28,7 @@ constexpr double kNewtonTolerance = 1e-13;
 constexpr int kTimingRepeats = 3;  // wall time: best of these
 
 // Seed Table 5.3, Toyoura sand (Arnold 2008): both column groups, so the -igs model runs too.
-models::ModelInputs table_5_3_toyoura() {
-  models::ModelInputs in;
-  in.tables["hypoplastic"] = {{"phi_c_deg", 30.0}, {"hs_kPa", 2.6e6}, {"n", 0.27},
-                              {"ed0", 0.61},       {"ec0", 0.98},     {"ei0", 1.1},
-                              {"alpha", 0.18},     {"beta", 1.0}};
-  in.tables["intergranular_strain"] = {
-      {"R", 1e-4}, {"m_R", 5.0}, {"m_T", 2.0}, {"beta_r", 0.12}, {"chi", 1.0}};
-  in.source = "seed Table 5.3 Toyoura";
-  return in;
-}
+constexpr const char* kParameterSet = "table_5_3_toyoura.toml";
 
 integration::IntegratorSettings adaptive(const std::string& pair, double rtol) {
   integration::IntegratorSettings s;
@@ -298,7 +290,7 @@ std::string markdown(const std::vector<TradeoffPoint>& pts, const std::vector<Ov
 }  // namespace
 
 nlohmann::json run_integrator_bench(const IntegratorBenchOptions& opt) {
-  const auto inputs = table_5_3_toyoura();
+  const auto inputs = io::shipped_inputs(kParameterSet);
   const TradeoffPath tp;
   const auto settings = tradeoff_settings();
   std::vector<TradeoffPoint> all;

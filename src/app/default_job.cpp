@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/element_run.hpp"
+#include "io/parameter_sets.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
 
@@ -16,15 +17,7 @@ const char* const kDefaultElementTest = R"(# Embedded default element test (iwb 
 description = "Table 5.1 sand, e0 = 0.80, sigma_n0 = 100 kPa, simple shear to gamma = 0.3"
 [model]
 name = "{model}"
-[model.parameters.hypoplastic]  # seed Table 5.1 ("Evaluation")
-phi_c_deg = 28
-hs_kPa = 2.0e6
-n = 0.29
-ed0 = 0.61
-ec0 = 0.96
-ei0 = 1.09
-alpha = 0.13
-beta = 2
+parameters = "{parameters}"  # seed Table 5.1 ("Evaluation"), data/params/table_5_1_evaluation.toml
 [initial]
 sigma_n_kPa = 100
 e0 = 0.80
@@ -43,13 +36,24 @@ every = 10
 
 namespace {
 
-std::string test_text(const std::string& model, const std::string& bc) {
+// The shipped set the study runs on, built into iwb (data/params/), so that `iwb run` works from
+// any directory; written into the output directory for the run directories to name.
+constexpr const char* kStudyParameters = "table_5_1_evaluation.toml";
+
+std::filesystem::path study_parameters(const std::filesystem::path& out) {
+  for (const auto& set : io::parameter_sets({}))
+    if (set.name == kStudyParameters) return io::parameter_set_file(set, out / "parameters");
+  throw std::logic_error(fmt::format("{} is not among the parameter sets built into iwb", kStudyParameters));
+}
+
+std::string test_text(const std::string& model, const std::string& bc, const std::filesystem::path& parameters) {
   std::string t = kDefaultElementTest;
   auto replace = [&t](const std::string& key, const std::string& value) {
     for (auto p = t.find(key); p != std::string::npos; p = t.find(key)) t.replace(p, key.size(), value);
   };
   replace("{model}", model);
   replace("{boundary}", bc);
+  replace("{parameters}", parameters.string());
   if (bc != "CNS") replace("K_kPa_per_mm = 1000\n", "");
   return t;
 }
@@ -91,12 +95,13 @@ int run_default_job(const std::filesystem::path& out, bool force, const std::str
   fmt::print("{:<4} {:>9} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>9} {:>9} | {}\n", "BC", "peak t/s",
              "end t/s", "end s_n", "end e", "tau kPa", "s_n kPa", "s_p kPa", "e", "status");
   bool ok = true;
+  const auto parameters = study_parameters(out);
   for (const std::string bc : {"CNL", "CNS", "CV"}) {
     Curve curves[2];
     int i = 0;
     std::string status;
     for (const std::string model : {"hvwe", "vw3d"}) {
-      const std::string text = test_text(model, bc);
+      const std::string text = test_text(model, bc, parameters);
       const std::string name = fmt::format("<embedded:default {} {}>", model, bc);
       const auto spec = io::parse_element_test(io::parse_toml_text(text, name), name, ".");
       io::ElementRunOptions opt{out / fmt::format("{}-{}", model, bc), force, command_line, text, nullptr};

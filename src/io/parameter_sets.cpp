@@ -55,4 +55,10 @@ fs::path parameter_set_file(const ParameterSet& set, const fs::path& dir) {
   return dir / set.name;
 }
 
+models::ModelInputs shipped_inputs(const std::string& name) {
+  for (const auto& set : parameter_sets({}))
+    if (set.name == name) return {set.tables, set.origin, {}};
+  throw std::logic_error(fmt::format("{} is not among the parameter sets built into iwb (data/params/)", name));
+}
+
 }  // namespace iwb::io

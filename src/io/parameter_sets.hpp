@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/parameter_file.hpp"
+#include "models/registry.hpp"
 
 namespace iwb::io {
 
@@ -27,6 +28,11 @@ const std::map<std::string, std::string>& embedded_parameter_sets();
 // directory when it is missing or holds no .toml file, or naming the file, key and value of a set
 // that is not a parameter file.
 std::vector<ParameterSet> parameter_sets(const std::filesystem::path& dir);
+
+// A set built into iwb by its file name ("table_5_1_evaluation.toml") as a model's inputs, for
+// code that needs a known set wherever it runs (the benches, `iwb run`, a model's declared
+// example); std::logic_error if the binary was built without it.
+models::ModelInputs shipped_inputs(const std::string& name);
 
 // One parameter file as a set; InputError naming the file when it is missing or not a parameter file.
 ParameterSet read_parameter_set(const std::filesystem::path& file);

@@ -5,79 +5,52 @@
 #include <string>
 
 #include "driver/element_test.hpp"
+#include "io/parameter_file.hpp"
 #include "models/registry.hpp"
 
 namespace iwb::test {
 
+// A set of data/params/ (the tests run from the source tree): the seed's tables live there only.
+inline models::ModelInputs shipped(const std::string& file) {
+  const std::string path = "data/params/" + file;
+  return {io::load_parameter_file(path), path, {}};
+}
+
 inline models::ModelInputs table_5_1(double kappa_r = 1.0,
                                      models::RoughnessScheme scheme = models::RoughnessScheme::kGutjahr) {
-  models::ModelInputs in;
-  in.tables["hypoplastic"] = {{"phi_c_deg", 28.0}, {"hs_kPa", 2.0e6}, {"n", 0.29},
-                              {"ed0", 0.61},       {"ec0", 0.96},     {"ei0", 1.09},
-                              {"alpha", 0.13},     {"beta", 2.0}};
-  in.source = "seed Table 5.1";
+  auto in = shipped("table_5_1_evaluation.toml");
   in.roughness = {scheme, kappa_r};
   return in;
 }
 
-inline models::ModelInputs table_5_2_hostun() {
-  models::ModelInputs in;
-  in.tables["hypoplastic"] = {{"phi_c_deg", 31.0}, {"hs_kPa", 1.0e6}, {"n", 0.29},
-                              {"ed0", 0.61},       {"ec0", 0.96},     {"ei0", 1.09},
-                              {"alpha", 0.13},     {"beta", 2.0}};
-  in.source = "seed Table 5.2 Hostun";
-  return in;
-}
+inline models::ModelInputs table_5_2_hostun() { return shipped("table_5_2_hostun.toml"); }
 
-// data/params/table_5_2_toyoura.toml (Table 5.2 differs from 5.3 in alpha: 0.25, not 0.18).
-inline models::ModelInputs table_5_2_toyoura() {
-  models::ModelInputs in;
-  in.tables["hypoplastic"] = {{"phi_c_deg", 30.0}, {"hs_kPa", 2.6e6}, {"n", 0.27},
-                              {"ed0", 0.61},       {"ec0", 0.98},     {"ei0", 1.1},
-                              {"alpha", 0.25},     {"beta", 1.0}};
-  in.source = "seed Table 5.2 Toyoura";
-  return in;
-}
+// Table 5.2 differs from 5.3 in alpha: 0.25, not 0.18.
+inline models::ModelInputs table_5_2_toyoura() { return shipped("table_5_2_toyoura.toml"); }
 
-// Table 5.3's intergranular-strain columns for Toyoura sand (Arnold 2008).
+// Seed Table 5.3, Toyoura sand (Arnold 2008), both column groups (seed 5.7.5).
+inline models::ModelInputs table_5_3_toyoura() { return shipped("table_5_3_toyoura.toml"); }
+
+// Table 5.3's intergranular-strain columns for Toyoura sand.
 inline models::ParameterValues table_5_3_toyoura_igs() {
-  return {{"R", 1e-4}, {"m_R", 5.0}, {"m_T", 2.0}, {"beta_r", 0.12}, {"chi", 1.0}};
+  return table_5_3_toyoura().tables.at("intergranular_strain");
 }
 
-// Seed Table 5.3, Toyoura sand, both column groups (seed 5.7.5).
-inline models::ModelInputs table_5_3_toyoura() {
-  models::ModelInputs in;
-  in.tables["hypoplastic"] = {{"phi_c_deg", 30.0}, {"hs_kPa", 2.6e6}, {"n", 0.27},
-                              {"ed0", 0.61},       {"ec0", 0.98},     {"ei0", 1.1},
-                              {"alpha", 0.18},     {"beta", 1.0}};
-  in.tables["intergranular_strain"] = table_5_3_toyoura_igs();
-  in.source = "seed Table 5.3 Toyoura";
-  return in;
-}
+// Seed Table 5.3, homo-gravel (Zhang and Zhang 2006), both column groups: h_s = 20 MPa and
+// m_R = 7 make its reversals the stiffest of the seed's sets.
+inline models::ModelInputs table_5_3_homo_gravel() { return shipped("table_5_3_homo_gravel.toml"); }
 
-// Seed Table 5.3, homo-gravel (Zhang and Zhang 2006), both column groups
-// (data/params/table_5_3_homo_gravel.toml): h_s = 20 MPa and m_R = 7 make its reversals the
-// stiffest of the seed's sets.
-inline models::ModelInputs table_5_3_homo_gravel() {
-  models::ModelInputs in;
-  in.tables["hypoplastic"] = {{"phi_c_deg", 44.0}, {"hs_kPa", 2.0e7}, {"n", 0.18},
-                              {"ed0", 0.26},       {"ec0", 0.45},     {"ei0", 0.5},
-                              {"alpha", 0.1},      {"beta", 2.0}};
-  in.tables["intergranular_strain"] = {
-      {"R", 1e-4}, {"m_R", 7.0}, {"m_T", 2.0}, {"beta_r", 0.12}, {"chi", 0.75}};
-  in.source = "seed Table 5.3 homo-gravel";
-  return in;
-}
-
+// Whether the model declares an initial intergranular strain (the -igs models).
 inline bool has_intergranular_strain(const std::string& model) {
-  return model.size() > 4 && model.compare(model.size() - 4, 4, "-igs") == 0;
+  return models::find_initial_input(models::find_model(model).declaration.initial, "delta") != nullptr;
 }
 
 inline const double kPhiC51 = 28.0 * M_PI / 180.0;
 inline const double kK0Oedometric51 = 1.0 - std::sin(kPhiC51);
 
 // `in`, with Table 5.3's Toyoura intergranular-strain columns added for the -igs models when it
-// has none (the seed gives them only with Table 5.3).
+// has none (the seed gives them only with Table 5.3): a merge of two shipped files, not a set of
+// its own.
 inline std::unique_ptr<models::Model> make(const std::string& name,
                                            const models::ModelInputs& in = table_5_1()) {
   models::ModelInputs with = in;
