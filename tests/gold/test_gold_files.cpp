@@ -134,6 +134,13 @@ TEST_CASE("gold: oedometric loading of every model that has one matches its gold
 }
 
 // A model added to the registry without gold files, or a gold file no case produces, fails here.
+TEST_CASE("gold: the clay models on their paths (Table 6.4) match their gold files", "[gold][gold-files]") {
+  for (const std::string path : {"clay_CNL", "clay_CNS", "clay_CV", "clay_oedometric", "clay_cyclic_CNL"}) {
+    INFO(path);
+    check_path(path);
+  }
+}
+
 TEST_CASE("gold: every registered model has gold cases and every gold file a case", "[gold]") {
   std::set<std::string> expected;
   for (const auto& c : all_cases()) {

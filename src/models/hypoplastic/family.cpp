@@ -8,13 +8,9 @@ namespace iwb::models {
 
 namespace {
 
-// The same expression as oedometric_K0 (registry.hpp) over the table's critical friction angle.
-double oedometric_K0_of(const ModelInputs& in) {
-  return 1.0 - std::sin(require_table(in, "hypoplastic").at("phi_c_deg") * M_PI / 180.0);
-}
-
-// In the order a test file's [initial] is read (the first bad value is the one reported).
-std::vector<InitialInputSpec> hypoplastic_initial_inputs(InPlaneStart start) {
+// In the order a test file's [initial] is read (the first bad value is the one reported). The
+// default K0 is the oedometric 1 - sin phi_c of the phi_c_deg in `friction_table`.
+std::vector<InitialInputSpec> rate_form_initial_inputs(InPlaneStart start, const std::string& friction_table) {
   InitialInputSpec sigma_n{"sigma_n_kPa", "kPa", "initial normal stress sigma_n0, compression positive"};
   sigma_n.range = positive(kMaxStressKPa);
   InitialInputSpec e0{"e0", "-", "initial void ratio, inside (e_d, e_i) at the initial mean stress"};
@@ -24,7 +20,9 @@ std::vector<InitialInputSpec> hypoplastic_initial_inputs(InPlaneStart start) {
   InitialInputSpec k0{"K0", "-", "sigma_p0 = K0 sigma_n0 (default: 1 - sin phi_c)"};
   k0.range = positive(kMaxK0);
   k0.need = InitialInputSpec::Need::kOptional;
-  k0.default_value = oedometric_K0_of;
+  k0.default_value = [friction_table](const ModelInputs& inputs) {
+    return 1.0 - std::sin(require_table(inputs, friction_table).at("phi_c_deg") * M_PI / 180.0);
+  };
   if (start == InPlaneStart::kIsotropic) {
     k0.doc = "fixed at 1: the kinematics start from sigma_p = sigma_n (eq. 5.16)";
     k0.need = InitialInputSpec::Need::kFixed;
@@ -34,6 +32,8 @@ std::vector<InitialInputSpec> hypoplastic_initial_inputs(InPlaneStart start) {
   return in;
 }
 
+}  // namespace
+
 std::vector<FitParameter> interface_fit_parameters() {
   FitParameter kappa{"kappa_r", FitParameter::Target::kRoughness};
   kappa.lower = kKappaRFloor, kappa.upper = 1.0;
@@ -42,16 +42,21 @@ std::vector<FitParameter> interface_fit_parameters() {
   return {kappa, d_s};
 }
 
-}  // namespace
-
-ModelDeclaration hypoplastic_declaration(const std::vector<std::string>& stress_components,
-                                         bool interface_model, InPlaneStart start, int listing_order) {
+ModelDeclaration rate_form_declaration(const std::vector<std::string>& stress_components, InPlaneStart start,
+                                       int listing_order, const std::string& friction_table) {
   ModelDeclaration d;
   d.listing_order = listing_order;
   for (const auto& c : stress_components) d.layout.components.push_back({c, "kPa", ComponentKind::kStress});
   d.layout.void_ratio = d.layout.size();
   d.layout.components.push_back({"e", "-", ComponentKind::kVoidRatio});
-  d.initial = hypoplastic_initial_inputs(start);
+  d.initial = rate_form_initial_inputs(start, friction_table);
+  d.second_shear_direction = start != InPlaneStart::kNone;
+  return d;
+}
+
+ModelDeclaration hypoplastic_declaration(const std::vector<std::string>& stress_components,
+                                         bool interface_model, InPlaneStart start, int listing_order) {
+  ModelDeclaration d = rate_form_declaration(stress_components, start, listing_order, "hypoplastic");
   d.diagnostics = {{"mean_stress_kPa", "kPa", "mean stress -tr T / tr 1", DiagnosticRole::kMeanStress},
                    {"e_i", "-", "maximum void ratio at the mean stress (eq. 5.13)", DiagnosticRole::kMaxVoidRatio},
                    {"e_c", "-", "critical void ratio at the mean stress (eq. 5.13)", DiagnosticRole::kCriticalVoidRatio},
@@ -61,7 +66,6 @@ ModelDeclaration hypoplastic_declaration(const std::vector<std::string>& stress_
                    KappaFromAngle::kTangentRatio};
     d.fit = interface_fit_parameters();
   }
-  d.second_shear_direction = start != InPlaneStart::kNone;
   d.calibration_recipe = "herle-gudehus";
   d.example_parameters = "table_5_1_evaluation.toml";
   d.example_start = {{"sigma_n_kPa", 100.0}, {"e0", 0.8}};
@@ -76,7 +80,7 @@ IntergranularStrainParameters intergranular_strain_parameters(const ModelInputs&
 // -igs models list after every base model, in their bases' order.
 constexpr int kIntergranularListingOffset = 100;
 
-ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build) {
+ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build, const std::string& example_parameters) {
   base.name += "-igs";
   base.summary += ", with Niemunis & Herle's intergranular strain";
   base.equations += "; intergranular strain 5.42-5.48 (ERRATA 10)";
@@ -95,7 +99,7 @@ ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build) {
   delta.need = InitialInputSpec::Need::kOptional;
   d.initial.push_back(delta);
   d.diagnostics.push_back({"rho", "-", "||delta|| / R (eq. 5.45)", DiagnosticRole::kIntergranularRho});
-  d.example_parameters = "table_5_3_toyoura.toml";
+  d.example_parameters = example_parameters;
   return base;
 }
 

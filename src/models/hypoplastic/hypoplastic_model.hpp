@@ -53,7 +53,10 @@ class HypoplasticModel final : public Model {
     else if (init.delta)
       throw InputError(fmt::format("{} has no intergranular strain; an initial delta is meaningless "
                                    "for it (use {}-igs)", name_, name_));
-    if (const std::string why = domain_violation(s); !why.empty())
+    std::string why = domain_violation(s);
+    if constexpr (requires { Law::initial_violation(StressInvariants{}, 0.0, c_); })
+      if (why.empty()) why = Law::initial_violation(stress_invariants<Ops>(Ops::template unpack<double>(s, 0)), s(kVoidRatio), c_);
+    if (!why.empty())
       throw InputError(fmt::format("initial state (sigma_n0 = {:g} kPa, K0 = {:g}, e0 = {:g}) is "
                                    "not admissible for {}: {}",
                                    init.sigma_n, init.K0, init.e0, name_, why));
@@ -78,7 +81,7 @@ class HypoplasticModel final : public Model {
     const double tr = Ops::trace(Ops::template unpack<double>(s, 0));
     if (!(tr < -kMinimumPressure_kPa))
       return fmt::format("no compression: tr T = {:.6g} kPa (contact lost)", tr);
-    return Law::domain_violation(-tr, s(kVoidRatio), c_);
+    return Law::domain_violation(stress_invariants<Ops>(Ops::template unpack<double>(s, 0)), s(kVoidRatio), c_);
   }
 
   // Stress and intergranular strain each against their own largest component; e is a scalar.
@@ -97,7 +100,7 @@ class HypoplasticModel final : public Model {
 
   std::vector<NamedValue> diagnostics(const StateVector& s) const override {
     const auto t = Ops::template unpack<double>(s, 0);
-    auto out = Law::diagnostics(-Ops::trace(t), trace_of_unit(), s(kVoidRatio), c_);
+    auto out = Law::diagnostics(stress_invariants<Ops>(t), s(kVoidRatio), c_);
     if (igs_) {
       const auto delta = Ops::template unpack<double>(s, kDelta);
       out.push_back({"rho", std::sqrt(Ops::contract(delta, delta)) / igs_->R});

@@ -63,7 +63,8 @@ VonWolffersdorffConstants make_constants(const HypoplasticParameters& p,
   return {p, v.lode, a, alpha, barotropy};
 }
 
-std::string VonWolffersdorffLaw::domain_violation(double pressure, double e, const Constants& c) {
+std::string VonWolffersdorffLaw::domain_violation(const StressInvariants& s, double e, const Constants& c) {
+  const double pressure = s.pressure;
   const auto lim = limiting_void_ratios(pressure, c.p);
   if (!(e > lim.e_d && e < lim.e_i))
     return fmt::format("e = {:.6g} outside (e_d, e_i) = ({:.6g}, {:.6g}) at -tr T = {:.6g} kPa", e, lim.e_d,
@@ -71,10 +72,10 @@ std::string VonWolffersdorffLaw::domain_violation(double pressure, double e, con
   return {};
 }
 
-std::vector<NamedValue> VonWolffersdorffLaw::diagnostics(double pressure, double trace_of_unit, double /*e*/,
+std::vector<NamedValue> VonWolffersdorffLaw::diagnostics(const StressInvariants& s, double /*e*/,
                                                          const Constants& c) {
-  const auto lim = limiting_void_ratios(pressure, c.p);
-  return {{"mean_stress_kPa", pressure / trace_of_unit}, {"e_i", lim.e_i}, {"e_c", lim.e_c}, {"e_d", lim.e_d}};
+  const auto lim = limiting_void_ratios(s.pressure, c.p);
+  return {{"mean_stress_kPa", s.mean_stress}, {"e_i", lim.e_i}, {"e_c", lim.e_c}, {"e_d", lim.e_d}};
 }
 
 }  // namespace iwb::models

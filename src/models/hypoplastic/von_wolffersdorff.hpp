@@ -155,6 +155,24 @@ HypoplasticTangent<Ops, S> von_wolffersdorff_tangent(const typename Ops::templat
   return {scale, F * F, c.a * c.a, t_hat, N};
 }
 
+// What a rate law's domain and diagnostics read of a stress: -tr T, the mean stress -tr T / tr 1
+// and eta^2 = (3/2) ||T*||^2 / p^2 (q/p squared; 0 in Gutjahr's 1D algebra's isotropic sense).
+struct StressInvariants {
+  double pressure;     // -tr T, kPa
+  double mean_stress;  // -tr T / tr 1, kPa
+  double eta2;         // (q / p)^2
+};
+
+template <class Ops>
+StressInvariants stress_invariants(const typename Ops::template Tensor<double>& T) {
+  const auto unit = Ops::template unit<double>();
+  const double tr_unit = Ops::trace(unit);
+  const double pressure = -Ops::trace(T);
+  const double p = pressure / tr_unit;
+  const typename Ops::template Tensor<double> deviator = T + p * unit;
+  return {pressure, p, 1.5 * Ops::contract(deviator, deviator) / (p * p)};
+}
+
 // von Wolffersdorff's law as a rate law of HypoplasticModel (hypoplastic_model.hpp): what the
 // model class asks of any hypoplastic law, sand or clay (src/models/README.md, section 4).
 struct VonWolffersdorffLaw {
@@ -166,11 +184,11 @@ struct VonWolffersdorffLaw {
   template <class Ops, class S>
   static typename Ops::template Tensor<S> rate(const typename Ops::template Tensor<S>& T, const S& e,
                                                const typename Ops::template Tensor<S>& D, const Constants& c);
-  // Why a compressed state at `pressure` (-tr T, > 0) with void ratio e is outside the law's
-  // domain, (e_d, e_i) at that pressure; empty inside.
-  static std::string domain_violation(double pressure, double e, const Constants& c);
+  // Why a compressed state (-tr T > 0) with void ratio e is outside the law's domain, (e_d, e_i)
+  // at that pressure; empty inside.
+  static std::string domain_violation(const StressInvariants& s, double e, const Constants& c);
   // mean_stress_kPa, e_i, e_c, e_d (the order the declarations state).
-  static std::vector<NamedValue> diagnostics(double pressure, double trace_of_unit, double e, const Constants& c);
+  static std::vector<NamedValue> diagnostics(const StressInvariants& s, double e, const Constants& c);
 };
 
 template <class Ops, class S>

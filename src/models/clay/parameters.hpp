@@ -1,0 +1,24 @@
+#pragma once
+// Parameters of Masin's clay hypoplasticity (seed 6.2.2-6.2.3, Table 6.1): the `[hypoplastic_clay]`
+// table shared by the clay models (hcc, and hce to come). N is ln(1+e) on the isotropic normal
+// compression line at p = 1 kPa (ERRATA 15).
+#include <string>
+
+#include "models/parameters.hpp"
+
+namespace iwb::models {
+
+struct ClayParameters {
+  double lambda_star;  // slope of the NCL in ln(1+e) - ln p
+  double kappa_star;   // slope of the unloading line in ln(1+e) - ln p
+  double nu;           // ratio of shear to bulk stiffness (eq. 6.6)
+  double phi_c;        // critical state friction angle, rad
+  double N;            // ln(1+e) on the NCL at p = 1 kPa
+
+  static const ParameterTable& table();
+  // Validated against table(); also lambda* > kappa* (a normal compression line stiffer than
+  // unloading is not a clay). InputError naming `source`.
+  static ClayParameters from(const ParameterValues& v, const std::string& source);
+};
+
+}  // namespace iwb::models
