@@ -50,7 +50,8 @@ void read_model(TableReader model, ElementTestSpec& spec, const std::filesystem:
 
 void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
   const auto& model = models::find_model(spec.model);
-  json out = {{"scheme", "gutjahr"}, {"kappa_r", 1.0}, {"origin", "default (fully rough)"}};
+  const auto& support = model.declaration.roughness;
+  json out = {{"scheme", models::to_string(support.default_scheme)}, {"kappa_r", 1.0}, {"origin", "default (fully rough)"}};
   if (!r) {
     spec.resolved["roughness"] = model.uses_roughness ? out : json(nullptr);
     return;
@@ -58,11 +59,19 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
   if (!model.uses_roughness)
     throw InputError(fmt::format("{}: model '{}' is a continuum model and takes no wall roughness; "
                                  "remove the table", r->where(), spec.model));
-  const std::string scheme = r->optional_text("scheme").value_or("gutjahr");
-  if (scheme == "gutjahr") spec.inputs.roughness.scheme = models::RoughnessScheme::kGutjahr;
-  else if (scheme == "arnold-herle") spec.inputs.roughness.scheme = models::RoughnessScheme::kArnoldHerle;
-  else throw InputError(fmt::format("{} = \"{}\"; allowed \"gutjahr\" or \"arnold-herle\"", r->where("scheme"), scheme));
+  spec.inputs.roughness.scheme = support.default_scheme;
+  const std::string scheme = r->optional_text("scheme").value_or(models::to_string(support.default_scheme));
+  std::string allowed;
+  bool known = false;
+  for (const auto s : support.schemes) {
+    allowed += fmt::format("{}\"{}\"", allowed.empty() ? "" : " or ", models::to_string(s));
+    if (scheme == models::to_string(s)) spec.inputs.roughness.scheme = s, known = true;
+  }
+  if (!known) throw InputError(fmt::format("{} = \"{}\"; allowed {}", r->where("scheme"), scheme, allowed));
   const std::string source = r->one_of({"kappa_r", "R_n", "delta_deg"});
+  if (source == "R_n" && !support.from_normalized_roughness)
+    throw InputError(fmt::format("{}: model '{}' takes no R_n (eq. 5.35 is Gutjahr's for sand); give kappa_r or "
+                                 "delta_deg", r->where("R_n"), spec.model));
   models::KappaR k{1.0, {}};
   std::string origin;
   if (source == "kappa_r") {
@@ -75,8 +84,11 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
     origin = fmt::format("R_n = {:g}, eq. 5.35 with log base {:g}", rn, base);
   } else {
     const double delta = r->number_in("delta_deg", {0.0, 90.0, true, true});
-    k = models::kappa_r_from_friction_angles(delta * kDegree, models::critical_friction_angle(models::find_model(spec.model), spec.inputs));
-    origin = fmt::format("delta = {:g} deg, eq. 5.36", delta);
+    const double phi_c = models::critical_friction_angle(model, spec.inputs);
+    const bool angles = support.from_angle == models::KappaFromAngle::kAngleRatio;
+    k = angles ? models::kappa_r_from_angle_ratio(delta * kDegree, phi_c)
+               : models::kappa_r_from_friction_angles(delta * kDegree, phi_c);
+    origin = fmt::format("delta = {:g} deg, eq. {}", delta, angles ? "6.21" : "5.36");
   }
   r->finish();
   spec.inputs.roughness.kappa_r = k.value;

@@ -233,3 +233,34 @@ TEST_CASE("[initial] is read as the model declares it: AH's fixed K0, hp1d's mis
   CHECK(hvwe.resolved["initial"]["sigma_p_kPa"] == 50.0);
   CHECK(hvwe.warnings.empty());
 }
+
+// The wall roughness as the model declares it: hcc takes Arnold & Herle's scheme (its default),
+// kappa_r from an angle ratio (eq. 6.21), and no R_n (eq. 5.35 is Gutjahr's, for sand).
+TEST_CASE("[roughness] is read as the model declares it: clay's scheme, angle rule and no R_n", "[io]") {
+  const std::string clay = R"(
+[model]
+name = "hcc"
+parameters = "data/params/table_6_1_evaluation.toml"
+[initial]
+sigma_n_kPa = 100
+e0 = 0.7
+[boundary]
+type = "CV"
+[path]
+kind = "monotonic"
+gamma = 0.1
+increments = 100
+)";
+  const auto with = [&](const std::string& roughness) { return clay + "[roughness]\n" + roughness; };
+  const auto by_angle = parse(with("delta_deg = 20\n"));
+  CHECK(by_angle.inputs.roughness.scheme == models::RoughnessScheme::kArnoldHerle);
+  CHECK(by_angle.inputs.roughness.kappa_r == Approx(20.0 / 25.0));
+  CHECK(by_angle.resolved["roughness"]["scheme"] == "arnold-herle");
+  CHECK_THAT(error_of(with("R_n = 0.5\n")), Catch::Contains("model 'hcc' takes no R_n"));
+  CHECK_THAT(error_of(with("scheme = \"gutjahr\"\nkappa_r = 0.8\n")),
+             Catch::Contains("allowed \"arnold-herle\""));
+  // sand keeps both schemes, Gutjahr's by default and eq. 5.36's tangent ratio
+  const auto sand = parse(replaced(kGood, "[initial]", "[roughness]\ndelta_deg = 20\n[initial]"));
+  CHECK(sand.inputs.roughness.scheme == models::RoughnessScheme::kGutjahr);
+  CHECK(sand.inputs.roughness.kappa_r == Approx(std::tan(20.0 * M_PI / 180.0) / std::tan(28.0 * M_PI / 180.0)));
+}

@@ -35,12 +35,22 @@ KappaR kappa_r_from_normalized_roughness(double R_n, double log_base) {
   return clamped(raw, fmt::format("R_n = {:g} (eq. 5.35, log base {:g})", R_n, log_base));
 }
 
-KappaR kappa_r_from_friction_angles(double delta, double phi_c) {
+namespace {
+void require_interface_angle(double delta) {
   if (!(delta > 0.0) || !(delta < M_PI / 2))
-    throw InputError(fmt::format("interface friction angle {:g} deg must be in (0, 90)",
-                                 delta * 180.0 / M_PI));
+    throw InputError(fmt::format("interface friction angle {:g} deg must be in (0, 90)", delta * 180.0 / M_PI));
+}
+}  // namespace
+
+KappaR kappa_r_from_friction_angles(double delta, double phi_c) {
+  require_interface_angle(delta);
   return clamped(std::tan(delta) / std::tan(phi_c),
                  fmt::format("delta = {:g} deg (eq. 5.36)", delta * 180.0 / M_PI));
+}
+
+KappaR kappa_r_from_angle_ratio(double delta, double phi_c) {
+  require_interface_angle(delta);
+  return clamped(delta / phi_c, fmt::format("delta = {:g} deg (eq. 6.21)", delta * 180.0 / M_PI));
 }
 
 const char* to_string(RoughnessScheme s) {

@@ -39,6 +39,8 @@ struct KappaR {
 KappaR kappa_r_from_normalized_roughness(double R_n, double log_base = 10.0);
 // Eq. 5.36 (granular): kappa_r = tan(delta) / tan(phi_c), capped at 1; angles in radians.
 KappaR kappa_r_from_friction_angles(double delta, double phi_c);
+// Eq. 6.21 (clay): kappa_r = delta / phi_c, capped at 1; angles in radians.
+KappaR kappa_r_from_angle_ratio(double delta, double phi_c);
 
 const char* to_string(RoughnessScheme s);
 
