@@ -40,6 +40,14 @@ inline models::ParameterValues table_5_3_toyoura_igs() {
 // m_R = 7 make its reversals the stiffest of the seed's sets.
 inline models::ModelInputs table_5_3_homo_gravel() { return shipped("table_5_3_homo_gravel.toml"); }
 
+// The sand family: Bauer's limiting void ratios among its diagnostics. The tests written on Table
+// 5.1 run these; the other families bring their own sets (their declared example).
+inline bool is_sand(const models::ModelSpec& spec) {
+  for (const auto& d : spec.declaration.diagnostics)
+    if (d.role == models::DiagnosticRole::kMinVoidRatio) return true;
+  return false;
+}
+
 // Whether the model declares an initial intergranular strain (the -igs models).
 inline bool has_intergranular_strain(const std::string& model) {
   return models::find_initial_input(models::find_model(model).declaration.initial, "delta") != nullptr;

@@ -66,7 +66,13 @@ ModelSpec hcc3d_spec() {
           clay_declaration(SimpleShearKinematics::component_names(), false, kListingOrder + 1)};
 }
 
-ModelSpec hcc_igs_spec() { return with_intergranular_strain(hcc_spec(), build_interface, "table_6_4_cyclic.toml"); }
-ModelSpec hcc3d_igs_spec() { return with_intergranular_strain(hcc3d_spec(), build_3d, "table_6_4_cyclic.toml"); }
+// Table 6.4 is the seed's clay set with intergranular strain; e0 1.45 is OCR 1.2 at 100 kPa.
+const std::map<std::string, double> kTable64Start{{"sigma_n_kPa", 100.0}, {"e0", 1.45}};
+ModelSpec hcc_igs_spec() {
+  return with_intergranular_strain(hcc_spec(), build_interface, "table_6_4_cyclic.toml", kTable64Start);
+}
+ModelSpec hcc3d_igs_spec() {
+  return with_intergranular_strain(hcc3d_spec(), build_3d, "table_6_4_cyclic.toml", kTable64Start);
+}
 
 }  // namespace iwb::models

@@ -80,7 +80,8 @@ IntergranularStrainParameters intergranular_strain_parameters(const ModelInputs&
 // -igs models list after every base model, in their bases' order.
 constexpr int kIntergranularListingOffset = 100;
 
-ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build, const std::string& example_parameters) {
+ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build, const std::string& example_parameters,
+                                    std::map<std::string, double> example_start) {
   base.name += "-igs";
   base.summary += ", with Niemunis & Herle's intergranular strain";
   base.equations += "; intergranular strain 5.42-5.48 (ERRATA 10)";
@@ -100,6 +101,7 @@ ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build, co
   d.initial.push_back(delta);
   d.diagnostics.push_back({"rho", "-", "||delta|| / R (eq. 5.45)", DiagnosticRole::kIntergranularRho});
   d.example_parameters = example_parameters;
+  if (!example_start.empty()) d.example_start = std::move(example_start);
   return base;
 }
 

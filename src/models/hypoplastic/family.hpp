@@ -65,6 +65,7 @@ using HypoplasticBuilder = std::unique_ptr<Model> (*)(const ModelInputs&, WithIn
 // parameter table, the delta components, the initial delta, rho, and `make` = `build` with the
 // extension; its example set is `example_parameters` (a file of data/params/ with both tables).
 ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build,
-                                    const std::string& example_parameters = "table_5_3_toyoura.toml");
+                                    const std::string& example_parameters = "table_5_3_toyoura.toml",
+                                    std::map<std::string, double> example_start = {});
 
 }  // namespace iwb::models

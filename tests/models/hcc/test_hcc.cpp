@@ -147,3 +147,25 @@ TEST_CASE("hcc: a start above the normal compression line is refused, naming the
 }
 
 }  // namespace iwb
+
+namespace iwb {
+
+TEST_CASE("hcc: every clay model is rate independent: rate(s, l d) = l rate(s, d) for l > 0", "[models][hcc]") {
+  for (const std::string name : {"hcc", "hcc3d", "hcc-igs", "hcc3d-igs"}) {
+    const auto& spec = models::find_model(name);
+    const auto model = test::make(name, test::shipped(spec.declaration.example_parameters));
+    auto s = model->initial_state(models::offer(spec, test::shipped(spec.declaration.example_parameters),
+                                                {{"sigma_n_kPa", 100.0}, {"e0", spec.declaration.example_start.at("e0")}}));
+    for (const models::InterfaceStrain d : {models::InterfaceStrain{-1e-4, 3e-4, 1e-4}, models::InterfaceStrain{2e-4, -1e-4, 0.0}}) {
+      models::StateVector r1, r2;
+      model->rate(s, d, r1);
+      for (double l : {1e-3, 0.5, 7.0}) {
+        model->rate(s, {l * d.eps_n, l * d.gamma_x, l * d.gamma_y}, r2);
+        INFO(name);
+        CHECK((r2 - l * r1).cwiseAbs().maxCoeff() <= 1e-12 * l * r1.cwiseAbs().maxCoeff());
+      }
+    }
+  }
+}
+
+}  // namespace iwb
