@@ -2,6 +2,7 @@
 // [sigma_n, sigma_p, tau_x, tau_y] with independent in-plane stress (as hvwe), and hcc3d on full
 // 3x3 tensors in simple shear (as vw3d), the reference the interface form is checked against.
 // Rough walls: Arnold & Herle's scheme for clay, M from phi_c kappa_r (eq. 6.22).
+#include "models/clay/declaration.hpp"
 #include "models/clay/hypoplastic_cam_clay.hpp"
 #include "models/hypoplastic/family.hpp"
 
@@ -27,21 +28,11 @@ std::unique_ptr<Model> build_3d(const ModelInputs& in, WithIntergranularStrain i
   return build("hcc3d", SimpleShearKinematics{}, in, igs);
 }
 
-ModelDeclaration clay_declaration(const std::vector<std::string>& stress_components, bool interface_model,
-                                  int listing_order) {
-  auto d = rate_form_declaration(stress_components, InPlaneStart::kFreeK0, listing_order, "hypoplastic_clay");
-  d.initial[1].doc = "initial void ratio, on or below the normal compression line (OCR >= 1)";
-  d.diagnostics = {{"mean_stress_kPa", "kPa", "mean stress -tr T / 3", DiagnosticRole::kMeanStress},
-                   {"p_e_kPa", "kPa", "Hvorslev's equivalent pressure p_e* (eq. 6.7)", DiagnosticRole::kEquivalentPressure},
-                   {"OCR", "-", "p_e* over the ASBS pressure p (M^2 + eta^2)/M^2: 1 on the ASBS",
-                    DiagnosticRole::kOverconsolidation}};
-  if (interface_model) {
-    d.roughness = {{RoughnessScheme::kArnoldHerle}, RoughnessScheme::kArnoldHerle, false, KappaFromAngle::kAngleRatio};
-    d.fit = interface_fit_parameters();
-  }
-  d.example_parameters = "table_6_1_evaluation.toml";
-  d.example_start = {{"sigma_n_kPa", 100.0}, {"e0", 0.70}};  // OCR 1.12 at K0 = 1 - sin 25 deg (Table 6.1)
-  return d;
+ModelDeclaration hcc_declaration(const std::vector<std::string>& stress_components, bool interface_model,
+                                 int listing_order) {
+  return clay_declaration(stress_components, interface_model, listing_order, RoughnessScheme::kArnoldHerle,
+                          {{"OCR", "-", "p_e* over the ASBS pressure p (M^2 + eta^2)/M^2: 1 on the ASBS",
+                            DiagnosticRole::kOverconsolidation}});
 }
 
 }  // namespace
@@ -53,7 +44,7 @@ ModelSpec hcc_spec() {
           true,
           {&ClayParameters::table()},
           [](const ModelInputs& in) { return build_interface(in, WithIntergranularStrain::kNo); },
-          clay_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(), true, kListingOrder)};
+          hcc_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(), true, kListingOrder)};
 }
 
 ModelSpec hcc3d_spec() {
@@ -63,7 +54,7 @@ ModelSpec hcc3d_spec() {
           false,
           {&ClayParameters::table()},
           [](const ModelInputs& in) { return build_3d(in, WithIntergranularStrain::kNo); },
-          clay_declaration(SimpleShearKinematics::component_names(), false, kListingOrder + 1)};
+          hcc_declaration(SimpleShearKinematics::component_names(), false, kListingOrder + 1)};
 }
 
 // Table 6.4 is the seed's clay set with intergranular strain; e0 1.45 is OCR 1.2 at 100 kPa.

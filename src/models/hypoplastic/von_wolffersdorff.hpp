@@ -161,7 +161,26 @@ struct StressInvariants {
   double pressure;     // -tr T, kPa
   double mean_stress;  // -tr T / tr 1, kPa
   double eta2;         // (q / p)^2
+  double F_m = NAN;    // Matsuoka-Nakai's (9 I3 + I1 I2)/(I3 + I1 I2), eq. 6.16; NaN in 1D (no I3)
 };
+
+// Matsuoka-Nakai's F_m (eq. 6.16, with the seed's I2 = (T:T - I1^2)/2): 0 for an isotropic stress,
+// sin^2 phi on the cone of friction angle phi. I3 from Cayley-Hamilton with tr(T^3) from the
+// deviator s = T - m 1 (tr T^3 = tr s^3 + 3 m s:s + 3 m^3): the seed's reduced operators give
+// tr(X^3) right only for deviatoric X (algebra/ops.hpp), and this way all three algebras agree.
+template <class Ops, class S>
+S matsuoka_nakai(const typename Ops::template Tensor<S>& T) {
+  const auto unit = Ops::template unit<S>();
+  const S I1 = Ops::trace(T);
+  const S m = I1 / 3.0;
+  const typename Ops::template Tensor<S> s = T - m * unit;
+  const S ss = Ops::contract(s, s);
+  const S TT = ss + 3.0 * m * m;
+  const S I2 = 0.5 * (TT - I1 * I1);
+  const S cube = Ops::trace_of_cube(s) + 3.0 * m * ss + 3.0 * m * m * m;
+  const S I3 = (I1 * I1 * I1 - 3.0 * I1 * TT + 2.0 * cube) / 6.0;
+  return (9.0 * I3 + I1 * I2) / (I3 + I1 * I2);
+}
 
 template <class Ops>
 StressInvariants stress_invariants(const typename Ops::template Tensor<double>& T) {
@@ -170,7 +189,9 @@ StressInvariants stress_invariants(const typename Ops::template Tensor<double>& 
   const double pressure = -Ops::trace(T);
   const double p = pressure / tr_unit;
   const typename Ops::template Tensor<double> deviator = T + p * unit;
-  return {pressure, p, 1.5 * Ops::contract(deviator, deviator) / (p * p)};
+  StressInvariants s{pressure, p, 1.5 * Ops::contract(deviator, deviator) / (p * p)};
+  if constexpr (Ops::kHasLodeAngle) s.F_m = matsuoka_nakai<Ops, double>(T);
+  return s;
 }
 
 // von Wolffersdorff's law as a rate law of HypoplasticModel (hypoplastic_model.hpp): what the

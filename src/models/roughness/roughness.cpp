@@ -54,7 +54,12 @@ KappaR kappa_r_from_angle_ratio(double delta, double phi_c) {
 }
 
 const char* to_string(RoughnessScheme s) {
-  return s == RoughnessScheme::kGutjahr ? "gutjahr" : "arnold-herle";
+  switch (s) {
+    case RoughnessScheme::kGutjahr: return "gutjahr";
+    case RoughnessScheme::kArnoldHerle: return "arnold-herle";
+    case RoughnessScheme::kStutzMasin: return "stutz-masin";
+  }
+  return "?";
 }
 
 }  // namespace iwb::models

@@ -10,7 +10,8 @@
 
 namespace iwb::models {
 
-enum class RoughnessScheme { kGutjahr, kArnoldHerle };
+// kStutzMasin: the clay scheme of seed 6.2.4 (eqs. 6.23-6.28), for hce.
+enum class RoughnessScheme { kGutjahr, kArnoldHerle, kStutzMasin };
 
 struct Roughness {
   RoughnessScheme scheme = RoughnessScheme::kGutjahr;
