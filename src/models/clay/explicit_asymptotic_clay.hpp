@@ -51,9 +51,7 @@ struct ExplicitAsymptoticClayLaw {
     using std::pow;
     using std::sqrt;
     using Tensor = typename Ops::template Tensor<S>;
-    const S tr = Ops::trace(T);
-    if (!(value_of(tr) < -kMinimumPressure_kPa))
-      throw DomainError(fmt::format("no compression: tr T = {:.6g} kPa (contact lost)", value_of(tr)));
+    const S tr = compressed_trace<Ops, S>(T);
     const Tensor unit = Ops::template unit<S>();
     const S p = -tr / 3.0;
     // 0 for an isotropic stress up to round-off, which may be of either sign; there its powers
@@ -70,16 +68,13 @@ struct ExplicitAsymptoticClayLaw {
                          (power(F_m, c.xi / 2.0) - c.sin_xi) / (1.0 - c.sin_xi);        // eq. 6.19, ERRATA 11
     const Tensor d_A = -t_dev + volumetric * unit;
     const Tensor d = d_A / safe_sqrt(Ops::contract(d_A, d_A));                         // eq. 6.18
-    const ClayTangent<Ops, S> h{c.fs_per_p * p, c.nu_ratio, Tensor()};
-    const Tensor A_d = h.L(d) + (Ops::trace(d) / c.p.lambda_star) * T;
-    return {h.f_s, c.nu_ratio, -(f_d / f_dA) * A_d};
+    return masin_tangent<Ops, S>(T, S(c.fs_per_p * p), S(f_d / f_dA), d, c.nu_ratio, c.p.lambda_star);
   }
 
   template <class Ops, class S>
   static typename Ops::template Tensor<S> rate(const typename Ops::template Tensor<S>& T, const S& e,
                                                const typename Ops::template Tensor<S>& D, const Constants& c) {
-    const auto h = tangent<Ops, S>(T, e, c);
-    return h.L(D) + safe_sqrt(Ops::contract(D, D)) * h.N;
+    return rate_of<Ops, S>(tangent<Ops, S>(T, e, c), D);
   }
 
   // cos 3theta of the normalised deviator (eq. 5.11), 0 where it vanishes.

@@ -46,6 +46,17 @@ struct ClayTangent {
   }
 };
 
+// The frame both of Masin's clay laws share (eqs. 6.3-6.6, ERRATA 13): L and f_s, and
+// N = -(f_d / f_d^A) (f_s L + T x 1 / lambda*) : d for the law's own f_d / f_d^A and direction d.
+template <class Ops, class S>
+ClayTangent<Ops, S> masin_tangent(const typename Ops::template Tensor<S>& T, const S& f_s, const S& f_d_ratio,
+                                  const typename Ops::template Tensor<S>& d, double nu_ratio, double lambda_star) {
+  using Tensor = typename Ops::template Tensor<S>;
+  const ClayTangent<Ops, S> h{f_s, nu_ratio, Tensor()};
+  const Tensor A_d = h.L(d) + (Ops::trace(d) / lambda_star) * T;  // A : d, eq. 6.4 (ERRATA 13)
+  return {f_s, nu_ratio, -f_d_ratio * A_d};
+}
+
 struct HypoplasticCamClayLaw {
   using Constants = HypoplasticCamClayConstants;
 
@@ -54,11 +65,8 @@ struct HypoplasticCamClayLaw {
     using std::exp;
     using std::log;
     using Tensor = typename Ops::template Tensor<S>;
-    const S tr = Ops::trace(T);
-    if (!(value_of(tr) < -kMinimumPressure_kPa))
-      throw DomainError(fmt::format("no compression: tr T = {:.6g} kPa (contact lost)", value_of(tr)));
     const Tensor unit = Ops::template unit<S>();
-    const S p = -tr / 3.0;
+    const S p = -compressed_trace<Ops, S>(T) / 3.0;
     const Tensor deviator = T + p * unit;
     const S eta2 = 1.5 * Ops::contract(deviator, deviator) / (p * p);
     const double M2 = c.M * c.M;
@@ -67,16 +75,13 @@ struct HypoplasticCamClayLaw {
     const S f_d_ratio = p / p_e * (M2 + eta2) / M2;                    // f_d / f_d^A (eq. 6.5)
     const Tensor d_raw = 3.0 * deviator + ((eta2 - M2) * p / 3.0) * unit;  // eq. 6.8, ERRATA 13
     const Tensor d = d_raw / safe_sqrt(Ops::contract(d_raw, d_raw));
-    const ClayTangent<Ops, S> h{f_s, c.nu_ratio, Tensor()};
-    const Tensor A_d = h.L(d) + (Ops::trace(d) / c.p.lambda_star) * T;  // A : d, eq. 6.4 (ERRATA 13)
-    return {f_s, c.nu_ratio, -f_d_ratio * A_d};
+    return masin_tangent<Ops, S>(T, f_s, f_d_ratio, d, c.nu_ratio, c.p.lambda_star);
   }
 
   template <class Ops, class S>
   static typename Ops::template Tensor<S> rate(const typename Ops::template Tensor<S>& T, const S& e,
                                                const typename Ops::template Tensor<S>& D, const Constants& c) {
-    const auto h = tangent<Ops, S>(T, e, c);
-    return h.L(D) + safe_sqrt(Ops::contract(D, D)) * h.N;
+    return rate_of<Ops, S>(tangent<Ops, S>(T, e, c), D);
   }
 
   // Any compressed state: the ASBS is asymptotic, and a change of stress path carries the state

@@ -27,6 +27,21 @@ namespace iwb::models {
 // underflow at 1e-30 kPa.
 inline constexpr double kMinimumPressure_kPa = 1e-6;
 
+// tr T of a compressed state; DomainError (contact lost) otherwise. Every hypoplastic law starts here.
+template <class Ops, class S>
+S compressed_trace(const typename Ops::template Tensor<S>& T) {
+  const S tr = Ops::trace(T);
+  if (!(value_of(tr) < -kMinimumPressure_kPa))
+    throw DomainError(fmt::format("no compression: tr T = {:.6g} kPa (contact lost)", value_of(tr)));
+  return tr;
+}
+
+// T_rate = L : D + N ||D|| of a law's tangent (any type with L(X) and N).
+template <class Ops, class S, class Tangent>
+typename Ops::template Tensor<S> rate_of(const Tangent& h, const typename Ops::template Tensor<S>& D) {
+  return h.L(D) + safe_sqrt(Ops::contract(D, D)) * h.N;
+}
+
 enum class LodeRule {
   kStandard,  // cos 3theta from T^* (eq. 5.11)
   kZero,      // cos 3theta = 0 (Arnold & Herle 2006, ERRATA item 8)
@@ -130,9 +145,7 @@ HypoplasticTangent<Ops, S> von_wolffersdorff_tangent(const typename Ops::templat
                                                      const VonWolffersdorffConstants& c) {
   using std::pow;
   using Tensor = typename Ops::template Tensor<S>;
-  const S tr = Ops::trace(T);
-  if (!(value_of(tr) < -kMinimumPressure_kPa))
-    throw DomainError(fmt::format("no compression: tr T = {:.6g} kPa (contact lost)", value_of(tr)));
+  const S tr = compressed_trace<Ops, S>(T);
   const Tensor unit = Ops::template unit<S>();
   const double tr_unit = value_of(Ops::trace(unit));
   const Tensor t_hat = T / tr;
@@ -217,8 +230,7 @@ typename Ops::template Tensor<S> von_wolffersdorff_rate(const typename Ops::temp
                                                         const S& e,
                                                         const typename Ops::template Tensor<S>& D,
                                                         const VonWolffersdorffConstants& c) {
-  const auto h = von_wolffersdorff_tangent<Ops, S>(T, e, c);
-  return h.L(D) + safe_sqrt(Ops::contract(D, D)) * h.N;
+  return rate_of<Ops, S>(von_wolffersdorff_tangent<Ops, S>(T, e, c), D);
 }
 
 template <class Ops, class S>

@@ -7,6 +7,7 @@
 #include "algebra/ops.hpp"
 #include "models/clay/hypoplastic_cam_clay.hpp"
 #include "support/fixtures.hpp"
+#include "support/reduced_vs_3d.hpp"
 
 namespace iwb {
 
@@ -105,27 +106,8 @@ TEST_CASE("hcc: CV shear of a normally consolidated clay ends at the critical st
 }
 
 TEST_CASE("hcc: the reduced interface form equals the 3D form in simple shear (ERRATA 13)", "[models][hcc]") {
-  for (auto kind : {driver::BoundaryKind::kCV, driver::BoundaryKind::kCNL}) {
-    test::ShearSpec s;
-    s.inputs = table_6_1();
-    s.bc = {kind, 0.0};
-    s.K0 = 0.6;
-    s.e0 = 0.70;
-    s.gamma = 0.2;
-    s.increments = 1000;
-    s.model = "hcc";
-    const auto reduced = test::shear(s);
-    s.model = "hcc3d";
-    const auto full = test::shear(s);
-    REQUIRE(reduced.result.complete());
-    REQUIRE(full.result.complete());
-    for (std::size_t i = 0; i < full.result.rows.size(); i += 50) {
-      const auto a = reduced.stress(i), b = full.stress(i);
-      CHECK(a.sigma_n == Approx(b.sigma_n).epsilon(1e-10));
-      CHECK(*a.sigma_p == Approx(*b.sigma_p).epsilon(1e-10));
-      CHECK(a.tau_x == Approx(b.tau_x).epsilon(1e-10).margin(1e-10));
-    }
-  }
+  for (auto kind : {driver::BoundaryKind::kCV, driver::BoundaryKind::kCNL})
+    test::check_reduced_equals_3d(test::table_6_1_shear(kind), "hcc", "hcc3d");
 }
 
 TEST_CASE("hcc: a smoother wall (kappa_r < 1) lowers the critical shear stress by M(phi_c kappa_r) (eq. 6.22)", "[models][hcc]") {

@@ -6,6 +6,7 @@
 #include "algebra/ops.hpp"
 #include "models/clay/explicit_asymptotic_clay.hpp"
 #include "support/fixtures.hpp"
+#include "support/reduced_vs_3d.hpp"
 
 namespace iwb {
 
@@ -85,27 +86,8 @@ TEST_CASE("hce: CV shear ends at Matsuoka-Nakai's critical state, F_m = sin^2 ph
 }
 
 TEST_CASE("hce: the reduced interface form equals the 3D form in simple shear", "[models][hce]") {
-  for (auto kind : {driver::BoundaryKind::kCV, driver::BoundaryKind::kCNL}) {
-    test::ShearSpec s;
-    s.inputs = table_6_1();
-    s.bc = {kind, 0.0};
-    s.K0 = 0.6;
-    s.e0 = 0.70;
-    s.gamma = 0.2;
-    s.increments = 1000;
-    s.model = "hce";
-    const auto reduced = test::shear(s);
-    s.model = "hce3d";
-    const auto full = test::shear(s);
-    REQUIRE(reduced.result.complete());
-    REQUIRE(full.result.complete());
-    for (std::size_t i = 0; i < full.result.rows.size(); i += 50) {
-      const auto a = reduced.stress(i), b = full.stress(i);
-      CHECK(a.sigma_n == Approx(b.sigma_n).epsilon(1e-10));
-      CHECK(*a.sigma_p == Approx(*b.sigma_p).epsilon(1e-10));
-      CHECK(a.tau_x == Approx(b.tau_x).epsilon(1e-10).margin(1e-10));
-    }
-  }
+  for (auto kind : {driver::BoundaryKind::kCV, driver::BoundaryKind::kCNL})
+    test::check_reduced_equals_3d(test::table_6_1_shear(kind), "hce", "hce3d");
 }
 
 // Seed 6.4.2, Figure 6.3 (and ERRATA 12's reason for 0.3): HCE's critical state follows
