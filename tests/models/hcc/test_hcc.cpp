@@ -6,6 +6,7 @@
 
 #include "algebra/ops.hpp"
 #include "models/clay/hypoplastic_cam_clay.hpp"
+#include "support/clay.hpp"
 #include "support/fixtures.hpp"
 #include "support/reduced_vs_3d.hpp"
 
@@ -16,32 +17,17 @@ namespace {
 using Ops = algebra::Tensor3Ops;
 using Tensor = Ops::Tensor<double>;
 
-// Table 6.1: lambda* 0.1, kappa* 0.01, nu 0.2, phi_c 25 deg, N 1.0.
-models::ModelInputs table_6_1(double kappa_r = 1.0) {
-  auto in = test::shipped("table_6_1_evaluation.toml");
-  in.roughness = {models::RoughnessScheme::kArnoldHerle, kappa_r};
-  return in;
+models::ModelInputs table_6_1(double kappa_r = 1.0) { return test::table_6_1(models::RoughnessScheme::kArnoldHerle, kappa_r); }
+
+models::HypoplasticCamClayConstants constants() {
+  const auto in = table_6_1();
+  return models::make_hypoplastic_cam_clay_constants(test::clay_parameters(in), in.roughness);
 }
 
-models::HypoplasticCamClayConstants constants(double kappa_r = 1.0) {
-  const auto in = table_6_1(kappa_r);
-  return models::make_hypoplastic_cam_clay_constants(
-      models::ClayParameters::from(in.tables.at("hypoplastic_clay"), in.source), in.roughness);
-}
+double e_on_ncl(double p) { return test::e_on_table_6_1_ncl(p); }
 
-// e on the isotropic normal compression line at p: ln(1+e) = N - lambda* ln p (p in kPa).
-double e_on_ncl(double p) { return std::exp(1.0 - 0.1 * std::log(p)) - 1.0; }
-
-// d ln(1+e) / d ln p of an isotropic stretching D = rate * 1 at an isotropic state on the NCL.
 double isotropic_slope(double p, double rate) {
-  const auto c = constants();
-  const double e = e_on_ncl(p);
-  const Tensor T = -p * Tensor::Identity();
-  const Tensor D = rate * Tensor::Identity();
-  const Tensor T_rate = models::HypoplasticCamClayLaw::rate<Ops, double>(T, e, D, c);
-  const double p_rate = -T_rate.trace() / 3.0;
-  const double e_rate = (1.0 + e) * D.trace();  // the model's void-ratio rate (ERRATA 6)
-  return (e_rate / (1.0 + e)) / (p_rate / p);
+  return test::isotropic_slope<models::HypoplasticCamClayLaw>(constants(), p, rate);
 }
 
 const double kM25 = 6.0 * std::sin(25.0 * M_PI / 180.0) / (3.0 - std::sin(25.0 * M_PI / 180.0));

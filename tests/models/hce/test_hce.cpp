@@ -5,6 +5,7 @@
 
 #include "algebra/ops.hpp"
 #include "models/clay/explicit_asymptotic_clay.hpp"
+#include "support/clay.hpp"
 #include "support/fixtures.hpp"
 #include "support/reduced_vs_3d.hpp"
 
@@ -17,27 +18,15 @@ using Tensor = Ops::Tensor<double>;
 
 const double kPhi = 25.0 * M_PI / 180.0;  // Table 6.1
 
-models::ModelInputs table_6_1(double kappa_r = 1.0) {
-  auto in = test::shipped("table_6_1_evaluation.toml");
-  in.roughness = {models::RoughnessScheme::kStutzMasin, kappa_r};
-  return in;
-}
+models::ModelInputs table_6_1(double kappa_r = 1.0) { return test::table_6_1(models::RoughnessScheme::kStutzMasin, kappa_r); }
 
 models::ExplicitAsymptoticClayConstants constants(double kappa_r = 1.0) {
   const auto in = table_6_1(kappa_r);
-  return models::make_explicit_asymptotic_clay_constants(
-      models::ClayParameters::from(in.tables.at("hypoplastic_clay"), in.source), in.roughness);
+  return models::make_explicit_asymptotic_clay_constants(test::clay_parameters(in), in.roughness);
 }
 
-double e_on_ncl(double p) { return std::exp(1.0 - 0.1 * std::log(p)) - 1.0; }
-
 double isotropic_slope(double p, double rate) {
-  const auto c = constants();
-  const double e = e_on_ncl(p);
-  const Tensor T = -p * Tensor::Identity();
-  const Tensor D = rate * Tensor::Identity();
-  const Tensor T_rate = models::ExplicitAsymptoticClayLaw::rate<Ops, double>(T, e, D, c);
-  return (D.trace()) / ((-T_rate.trace() / 3.0) / p);  // d ln(1+e) / d ln p, e_rate = (1+e) tr D
+  return test::isotropic_slope<models::ExplicitAsymptoticClayLaw>(constants(), p, rate);
 }
 
 test::Run cv_shear(const std::string& model, double gamma, double kappa_r = 1.0, double e0 = 0.7185) {
