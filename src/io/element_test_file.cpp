@@ -52,6 +52,7 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
   const auto& model = models::find_model(spec.model);
   const auto& support = model.declaration.roughness;
   json out = {{"scheme", models::to_string(support.default_scheme)}, {"kappa_r", 1.0}, {"origin", "default (fully rough)"}};
+  spec.inputs.roughness.scheme = support.default_scheme;
   if (!r) {
     spec.resolved["roughness"] = model.uses_roughness ? out : json(nullptr);
     return;
@@ -59,7 +60,6 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
   if (!model.uses_roughness)
     throw InputError(fmt::format("{}: model '{}' is a continuum model and takes no wall roughness; "
                                  "remove the table", r->where(), spec.model));
-  spec.inputs.roughness.scheme = support.default_scheme;
   const std::string scheme = r->optional_text("scheme").value_or(models::to_string(support.default_scheme));
   std::string allowed;
   bool known = false;
