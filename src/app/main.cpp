@@ -145,8 +145,9 @@ int cmd_models(bool json) {
     all.push_back(m);
   }
   if (json) fmt::print("{}\n", all.dump(2));
-  else fmt::print("Roughness (interface models): [roughness] scheme = \"gutjahr\" | \"arnold-herle\", "
-                  "and one of kappa_r, R_n (+ log_base), delta_deg. See data/tests/README.md.\n");
+  else fmt::print("Roughness (interface models): [roughness] scheme = the model's own (sand: \"gutjahr\" | "
+                  "\"arnold-herle\"; hcc: \"arnold-herle\"; hce: \"stutz-masin\"), and one of kappa_r, R_n "
+                  "(sand, + log_base), delta_deg. See data/tests/README.md.\n");
   return 0;
 }
 
