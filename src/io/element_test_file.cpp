@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fmt/core.h>
+#include <map>
 
 #include "common/errors.hpp"
 #include "common/physical_limits.hpp"
@@ -160,12 +161,30 @@ void read_initial_number(TableReader& t, const models::InitialInputSpec& in, Ele
   using Need = models::InitialInputSpec::Need;
   std::optional<double> v = in.need == Need::kRequired ? t.number_in(in.key, in.range)
                                                         : t.optional_number_in(in.key, in.range);
+  if (in.need == Need::kOneOf && !v) return;  // the group's check says whether one was given
   if (in.need == Need::kFixed && v && *v != in.default_value(spec.inputs))
     spec.warnings.push_back(fmt::format("{} = {:g} is ignored: {} ({})", t.where(in.key), *v, in.doc, spec.model));
   if (in.need == Need::kFixed || (!v && in.default_value)) v = in.default_value(spec.inputs);
   if (!v) return;  // optional without a default: not given
   models::set_initial_input(spec.initial, in.key, *v);
   spec.resolved["initial"][in.key] = *v;
+}
+
+// Of each group of alternative inputs (a clay's e0 | OCR) exactly one is given.
+void require_one_of_each_group(const TableReader& t, const std::vector<models::InitialInputSpec>& declared) {
+  std::map<std::string, std::vector<std::string>> groups;
+  for (const auto& in : declared)
+    if (in.need == models::InitialInputSpec::Need::kOneOf) groups[in.group].push_back(in.key);
+  for (const auto& [group, keys] : groups) {
+    std::string names, given;
+    for (const auto& k : keys) {
+      names += (names.empty() ? "" : " or ") + k;
+      if (t.has(k)) given += (given.empty() ? "" : " and ") + k;
+    }
+    if (given.empty()) throw InputError(fmt::format("{}: give the {} as {}", t.where(), group, names));
+    if (given.find(" and ") != std::string::npos)
+      throw InputError(fmt::format("{}: {} both set the {}; give one", t.where(), given, group));
+  }
 }
 
 // [initial] as the model declares it. A K0 for a model without an in-plane stress (hp1d) is
@@ -175,6 +194,7 @@ void read_initial(TableReader t, ElementTestSpec& spec) {
   spec.resolved["initial"] = json::object();
   for (const auto& in : declared)
     if (in.kind == models::InitialInputSpec::Kind::kNumber) read_initial_number(t, in, spec);
+  require_one_of_each_group(t, declared);
   if (models::find_initial_input(declared, "K0") != nullptr)
     spec.resolved["initial"]["sigma_p_kPa"] = spec.initial.K0 * spec.initial.sigma_n;
   else if (t.has("K0"))

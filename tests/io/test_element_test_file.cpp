@@ -264,3 +264,26 @@ increments = 100
   CHECK(sand.inputs.roughness.scheme == models::RoughnessScheme::kGutjahr);
   CHECK(sand.inputs.roughness.kappa_r == Approx(std::tan(20.0 * M_PI / 180.0) / std::tan(28.0 * M_PI / 180.0)));
 }
+
+TEST_CASE("a clay's density is e0 or OCR, exactly one", "[io]") {
+  const std::string clay = R"(
+[model]
+name = "hcc"
+parameters = "data/params/table_6_1_evaluation.toml"
+[boundary]
+type = "CV"
+[path]
+kind = "monotonic"
+gamma = 0.1
+increments = 100
+[initial]
+sigma_n_kPa = 100
+)";
+  const auto by_ocr = parse(clay + "OCR = 2\n");
+  CHECK(by_ocr.initial.named.at("OCR") == 2.0);
+  CHECK(by_ocr.resolved["initial"]["OCR"] == 2.0);
+  CHECK_THAT(error_of(clay), Catch::Contains("give the density as e0 or OCR"));
+  CHECK_THAT(error_of(clay + "OCR = 2\ne0 = 0.7\n"), Catch::Contains("e0 and OCR both set the density"));
+  CHECK_THAT(error_of(clay + "OCR = 0.5\n"), Catch::Contains("key 'initial.OCR' = 0.5 is out of range"));
+  CHECK_THAT(error_of(replaced(kGood, "e0 = 0.8", "e0 = 0.8\nOCR = 2")), Catch::Contains("OCR"));  // sand: no OCR
+}

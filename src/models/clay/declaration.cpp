@@ -7,7 +7,16 @@ namespace iwb::models {
 ModelDeclaration clay_declaration(const std::vector<std::string>& stress_components, bool interface_model,
                                   int listing_order, RoughnessScheme scheme, std::vector<DiagnosticSpec> own_diagnostics) {
   auto d = rate_form_declaration(stress_components, InPlaneStart::kFreeK0, listing_order, "hypoplastic_clay");
-  d.initial[1].doc = "initial void ratio, on or below the normal compression line";
+  // The density as e0 or as an overconsolidation ratio: a clay is usually known by its OCR
+  d.initial[1].doc = "initial void ratio, on or below the normal compression line (or give OCR)";
+  d.initial[1].need = InitialInputSpec::Need::kOneOf;
+  d.initial[1].group = "density";
+  InitialInputSpec ocr{"OCR", "-", "overconsolidation ratio at the start: p_e* over its value on the ASBS at the "
+                                   "initial stress (1: normally consolidated), which sets e0"};
+  ocr.need = InitialInputSpec::Need::kOneOf;
+  ocr.group = "density";
+  ocr.range = closed(1.0, 1000.0);
+  d.initial.insert(d.initial.begin() + 2, ocr);
   d.diagnostics = {{"mean_stress_kPa", "kPa", "mean stress -tr T / 3", DiagnosticRole::kMeanStress},
                    {"p_e_kPa", "kPa", "Hvorslev's equivalent pressure p_e* (eq. 6.7)", DiagnosticRole::kEquivalentPressure}};
   for (auto& own : own_diagnostics) d.diagnostics.push_back(std::move(own));

@@ -47,6 +47,12 @@ std::string ExplicitAsymptoticClayLaw::initial_violation(const StressInvariants&
   return {};
 }
 
+double ExplicitAsymptoticClayLaw::void_ratio_at(const StressInvariants& s, double ocr, const Constants& c) {
+  const double omega = c.omega_0 + 0.3 * (s.F_m - c.sin2_phi);
+  const double p_e = ocr * s.mean_stress / std::pow(1.0 - s.F_m, 1.0 / omega);
+  return std::exp(c.p.N - c.p.lambda_star * std::log(p_e)) - 1.0;
+}
+
 std::vector<NamedValue> ExplicitAsymptoticClayLaw::diagnostics(const StressInvariants& s, double e, const Constants& c) {
   return {{"mean_stress_kPa", s.mean_stress}, {"p_e_kPa", hvorslev_pressure(e, c.p)}, {"F_m", s.F_m},
           {"f_d_over_f_dA", asbs_ratio(s, e, c)}};

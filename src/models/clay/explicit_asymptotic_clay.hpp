@@ -92,7 +92,10 @@ struct ExplicitAsymptoticClayLaw {
   // Any compressed state inside Matsuoka-Nakai's cone (F_m < 1, where f_d^A is defined).
   static std::string domain_violation(const StressInvariants& s, double e, const Constants& c);
   static std::string initial_violation(const StressInvariants& s, double e, const Constants& c);
-  // mean_stress_kPa, p_e_kPa, F_m (sin^2 phi_c at the critical state)
+  // The void ratio at which p_e* is `ocr` times its value on the ASBS at these invariants, where
+  // f_d = f_d^A: p_e*(ASBS) = p / (1 - F_m)^(1/omega). Then f_d / f_d^A = ocr^(-alpha_f).
+  static double void_ratio_at(const StressInvariants& s, double ocr, const Constants& c);
+  // mean_stress_kPa, p_e_kPa, F_m (sin^2 phi_c at the critical state), f_d / f_d^A
   static std::vector<NamedValue> diagnostics(const StressInvariants& s, double e, const Constants& c);
 };
 

@@ -33,6 +33,11 @@ std::string HypoplasticCamClayLaw::initial_violation(const StressInvariants& s, 
   return {};
 }
 
+double HypoplasticCamClayLaw::void_ratio_at(const StressInvariants& s, double ocr, const Constants& c) {
+  const double M2 = c.M * c.M;
+  return std::exp(c.p.N - c.p.lambda_star * std::log(ocr * s.mean_stress * (M2 + s.eta2) / M2)) - 1.0;
+}
+
 std::vector<NamedValue> HypoplasticCamClayLaw::diagnostics(const StressInvariants& s, double e, const Constants& c) {
   return {{"mean_stress_kPa", s.mean_stress},
           {"p_e_kPa", hvorslev_pressure(e, c.p)},

@@ -90,6 +90,9 @@ struct HypoplasticCamClayLaw {
   // A start outside the ASBS (an e0 above the normal compression line): no loading history puts
   // a clay there, so it is refused as an input mistake.
   static std::string initial_violation(const StressInvariants& s, double e, const Constants& c);
+  // The void ratio at which a state of these invariants has overconsolidation `ocr`:
+  // p_e* = ocr p (M^2 + eta^2)/M^2, ln(1+e) = N - lambda* ln p_e*.
+  static double void_ratio_at(const StressInvariants& s, double ocr, const Constants& c);
   // mean_stress_kPa, p_e_kPa (Hvorslev's equivalent pressure), OCR = p_e* / p_ASBS (1 on the ASBS).
   static std::vector<NamedValue> diagnostics(const StressInvariants& s, double e, const Constants& c);
 };

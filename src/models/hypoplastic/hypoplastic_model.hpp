@@ -49,6 +49,10 @@ class HypoplasticModel final : public Model {
     StateVector s(state_size());
     Ops::template pack<double>(kin_.initial_stress(init), s, 0);
     s(kVoidRatio) = init.e0;
+    // a law that knows its asymptotic state boundary surface may be given the density as an OCR
+    if constexpr (requires { Law::void_ratio_at(StressInvariants{}, 1.0, c_); })
+      if (const auto ocr = init.named.find("OCR"); ocr != init.named.end())
+        s(kVoidRatio) = Law::void_ratio_at(stress_invariants<Ops>(Ops::template unpack<double>(s, 0)), ocr->second, c_);
     if (igs_) Ops::template pack<double>(initial_intergranular_strain(init), s, kDelta);
     else if (init.delta)
       throw InputError(fmt::format("{} has no intergranular strain; an initial delta is meaningless "
@@ -59,7 +63,7 @@ class HypoplasticModel final : public Model {
     if (!why.empty())
       throw InputError(fmt::format("initial state (sigma_n0 = {:g} kPa, K0 = {:g}, e0 = {:g}) is "
                                    "not admissible for {}: {}",
-                                   init.sigma_n, init.K0, init.e0, name_, why));
+                                   init.sigma_n, init.K0, s(kVoidRatio), name_, why));
     return s;
   }
 

@@ -137,3 +137,19 @@ TEST_CASE("hcc: every clay model is rate independent: rate(s, l d) = l rate(s, d
 }
 
 }  // namespace iwb
+
+namespace iwb {
+
+TEST_CASE("hcc: a start given by OCR lands where the OCR diagnostic says it is", "[models][hcc]") {
+  const auto& spec = models::find_model("hcc");
+  const auto in = test::table_6_1(models::RoughnessScheme::kArnoldHerle);
+  const auto model = spec.make(in);
+  for (double ocr : {1.0, 2.0, 8.0}) {
+    auto start = models::offer(spec, in, {{"sigma_n_kPa", 100.0}});
+    start.named["OCR"] = ocr;
+    const auto s = model->initial_state(start);
+    CHECK(model->diagnostics(s)[2].value == Approx(ocr).epsilon(1e-12));
+  }
+}
+
+}  // namespace iwb

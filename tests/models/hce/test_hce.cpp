@@ -101,3 +101,21 @@ TEST_CASE("hce: Stutz & Masin's roughness keeps nu at kappa_r = 1 and lowers the
 }
 
 }  // namespace iwb
+
+namespace iwb {
+
+// f_d = (2p/p_e*)^alpha_f and f_d^A its value on the ASBS: a start at OCR has f_d/f_d^A = OCR^-alpha_f.
+TEST_CASE("hce: a start given by OCR has f_d / f_d^A = OCR^-alpha_f", "[models][hce]") {
+  const auto& spec = models::find_model("hce");
+  const auto in = test::table_6_1(models::RoughnessScheme::kStutzMasin);
+  const auto model = spec.make(in);
+  const double alpha_f = constants().alpha_f;
+  for (double ocr : {1.0, 2.0, 8.0}) {
+    auto start = models::offer(spec, in, {{"sigma_n_kPa", 100.0}});
+    start.named["OCR"] = ocr;
+    const auto s = model->initial_state(start);
+    CHECK(model->diagnostics(s)[3].value == Approx(std::pow(ocr, -alpha_f)).epsilon(1e-12));
+  }
+}
+
+}  // namespace iwb
