@@ -7,6 +7,7 @@
 // same type the file readers check values with.
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "common/range.hpp"
 
@@ -26,6 +27,9 @@ CLI::Validator input_path();
 CLI::Validator output_file();
 // A directory to be written: not an existing file.
 CLI::Validator output_directory();
+
+// The items of a comma-separated option value ("liggghts,yade"), empty items dropped.
+std::vector<std::string> split_list(const std::string& csv);
 
 // Physical ranges shared by the commands (kPa, d50, strain).
 inline constexpr double kMaxStressKPa = 1e5;  // 100 MPa: far beyond grain crushing

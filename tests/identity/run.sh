@@ -70,9 +70,13 @@ for mp in $models; do
   run_both "gold-$model-$path" element "$work/cases/$model-$path.toml"
 done
 for t in data/tests/*.toml; do run_both "test-$(basename "$t" .toml)" element "$t"; done
+# both into one directory, then moved: `iwb run` writes its parameter set there and its manifests
+# name (and hash) that path
 for side in base new; do
   bin=$base; [ $side = new ] && bin=$new
-  "$bin" run --out "$work/$side/run" --force >/dev/null 2>&1 || true
+  rm -rf "$work/run"
+  "$bin" run --out "$work/run" --force >/dev/null 2>&1 || true
+  rm -rf "$work/$side/run" && mv "$work/run" "$work/$side/run"
 done
 compare_dirs run "$work/base/run" "$work/new/run"
 for d in "$work"/base/run/*/; do compare_dirs "run-$(basename "$d")" "$d" "$work/new/run/$(basename "$d")"; done

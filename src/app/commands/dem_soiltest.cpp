@@ -1,25 +1,60 @@
-#include "app/dem_soiltest.hpp"
-
+// `iwb dem soiltest SCENE.toml --test ...`: a soil element test on a DEM cell (dem/soil_cell.hpp).
 #include <fmt/core.h>
 
-#include "app/option_checks.hpp"
+#include <memory>
 
+#include "app/command_list.hpp"
+#include "app/commands/commands.hpp"
+#include "app/option_checks.hpp"
+#include "app/progress.hpp"
 #include "dem/soil_cell.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::app {
 
+namespace {
+
 struct DemSoiltestCommand {
-  CLI::App* command = nullptr;
   std::string scene, test = "oedometer", bc = "CNL", density = "dense", out;
   dem::SoilCellSpec spec;
   int np = 1;
   bool resume = false, force = false;
 };
 
-std::shared_ptr<DemSoiltestCommand> add_dem_soiltest(CLI::App& dem) {
+int run_dem_soiltest(const DemSoiltestCommand& c, const CommandContext& context) {
+  dem::SoilCellSpec spec = c.spec;
+  spec.test = c.test == "oedometer" ? calibration::SoilTestKind::kOedometer
+                                    : calibration::SoilTestKind::kSimpleShear;
+  spec.boundary = driver::parse_boundary_kind(c.bc, "--bc");
+  spec.density = dem::parse_soil_density(c.density, "--density");
+  const bool oed = spec.test == calibration::SoilTestKind::kOedometer;
+  const std::filesystem::path dir =
+      !c.out.empty()
+          ? std::filesystem::path(c.out)
+          : std::filesystem::path("runs") /
+                fmt::format("soil-{}-{}{}-{}{}", std::filesystem::path(c.scene).stem().string(),
+                            c.test, oed ? "" : "-" + c.bc, c.density,
+                            spec.engine == "liggghts" ? "" : "-" + spec.engine);
+  dem::RunOptions opt{dir, c.np, c.resume, c.force, context.command_line, context.interrupt,
+                      engine_progress(), {}};
+  fmt::print(
+      stderr,
+      "iwb dem soiltest: {} of {} in {} ({}, {:g} kPa, cell {:g} x {:g} x {:g} d50, {} rank(s)) -> "
+      "{}\n",
+      oed ? "oedometer" : "simple shear " + c.bc, c.scene, spec.engine, c.density,
+      spec.initial_stress_kPa(), spec.length_d50, spec.width_d50, spec.height_d50, c.np,
+      dir.string());
+  const auto outcome = dem::run_soil_test(io::read_file(c.scene), c.scene, spec, opt);
+  fmt::print(outcome.complete() ? stdout : stderr, "{}: {} ({} particles) -> {}\n", c.scene, outcome.status,
+             outcome.manifest.value("particle_count", 0), dir.string());
+  return outcome.complete() ? 0 : 1;
+}
+
+}  // namespace
+
+void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
   auto c = std::make_shared<DemSoiltestCommand>();
-  auto* s = c->command = dem.add_subcommand(
+  auto* s = dem.add_subcommand(
       "soiltest",
       "A soil element test on a DEM cell of a scene's grains (same particles, contact law and "
       "seed; no "
@@ -99,38 +134,7 @@ std::shared_ptr<DemSoiltestCommand> add_dem_soiltest(CLI::App& dem) {
   s->add_flag("--resume", c->resume,
               "continue an interrupted run of the same cell from its last finished stage");
   s->add_flag("--force", c->force, "replace an earlier run in the same directory");
-  return c;
-}
-
-std::optional<int> run_dem_soiltest(const DemSoiltestCommand& c, const std::string& command_line,
-                                    const std::atomic<bool>* interrupt,
-                                    std::function<void(const std::string&)> progress) {
-  if (!*c.command) return std::nullopt;
-  dem::SoilCellSpec spec = c.spec;
-  spec.test = c.test == "oedometer" ? calibration::SoilTestKind::kOedometer
-                                    : calibration::SoilTestKind::kSimpleShear;
-  spec.boundary = driver::parse_boundary_kind(c.bc, "--bc");
-  spec.density = dem::parse_soil_density(c.density, "--density");
-  const bool oed = spec.test == calibration::SoilTestKind::kOedometer;
-  const std::filesystem::path dir =
-      !c.out.empty()
-          ? std::filesystem::path(c.out)
-          : std::filesystem::path("runs") /
-                fmt::format("soil-{}-{}{}-{}{}", std::filesystem::path(c.scene).stem().string(),
-                            c.test, oed ? "" : "-" + c.bc, c.density,
-                            spec.engine == "liggghts" ? "" : "-" + spec.engine);
-  dem::RunOptions opt{dir, c.np, c.resume, c.force, command_line, interrupt, std::move(progress)};
-  fmt::print(
-      stderr,
-      "iwb dem soiltest: {} of {} in {} ({}, {:g} kPa, cell {:g} x {:g} x {:g} d50, {} rank(s)) -> "
-      "{}\n",
-      oed ? "oedometer" : "simple shear " + c.bc, c.scene, spec.engine, c.density,
-      spec.initial_stress_kPa(), spec.length_d50, spec.width_d50, spec.height_d50, c.np,
-      dir.string());
-  const auto outcome = dem::run_soil_test(io::read_file(c.scene), c.scene, spec, opt);
-  fmt::print(outcome.complete() ? stdout : stderr, "{}: {} ({} particles) -> {}\n", c.scene, outcome.status,
-             outcome.manifest.value("particle_count", 0), dir.string());
-  return outcome.complete() ? 0 : 1;
+  commands.add(s, [c](const CommandContext& context) { return run_dem_soiltest(*c, context); });
 }
 
 }  // namespace iwb::app

@@ -1,0 +1,35 @@
+#pragma once
+// Every `iwb` command, one file each in this folder: each adds its subcommand and options to a
+// parent and registers what runs when it is given (app/command_list.hpp). all.cpp lists them in
+// the order `iwb --help` shows.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "app/command_list.hpp"
+
+namespace iwb::app {
+
+void add_element_command(CLI::App& app, CommandList& commands);
+void add_models_command(CLI::App& app, CommandList& commands);
+void add_run_command(CLI::App& app, CommandList& commands);
+void add_dem_run_command(CLI::App& dem, CommandList& commands);
+void add_dem_soiltest_command(CLI::App& dem, CommandList& commands);
+void add_dem_crosscheck_command(CLI::App& dem, CommandList& commands);
+void add_dem_summary_command(CLI::App& dem, CommandList& commands);
+void add_compare_command(CLI::App& app, CommandList& commands);
+void add_sweep_command(CLI::App& app, CommandList& commands);
+void add_report_command(CLI::App& app, CommandList& commands);
+void add_validate_command(CLI::App& app, CommandList& commands);
+void add_stability_command(CLI::App& app, CommandList& commands);
+void add_bench_element_command(CLI::App& bench, CommandList& commands);
+void add_bench_integrators_command(CLI::App& bench, CommandList& commands);
+void add_bench_dem_command(CLI::App& bench, CommandList& commands);
+void add_soiltest_synthetic_command(CLI::App& soiltest, CommandList& commands);
+void add_calibrate_command(CLI::App& app, CommandList& commands);
+void add_tradeoff_command(CLI::App& app, CommandList& commands);
+void add_plan_command(CLI::App& app, CommandList& commands);
+
+// The hypothesis verdicts of a set of comparisons (`compare --runs`, `sweep`), title and verdict.
+void print_hypothesis_checks(const nlohmann::json& hypotheses);
+
+}  // namespace iwb::app

@@ -1,0 +1,93 @@
+// `iwb plan SCENE`: the cheapest DEM setting and the simplest continuum model that meet a scene's
+// requirements (tradeoff/plan.hpp).
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "app/command_list.hpp"
+#include "app/commands/commands.hpp"
+#include "app/option_checks.hpp"
+#include "app/parameter_choice.hpp"
+#include "io/json_file.hpp"
+#include "io/run_directory.hpp"
+#include "tradeoff/plan.hpp"
+
+namespace iwb::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct PlanCommand {
+  std::string scene, tradeoff, params, out;
+};
+
+CLI::App* add_plan_options(CLI::App& app, PlanCommand& c) {
+  auto* plan = app.add_subcommand(
+      "plan",
+      "Choose from a scene's [requirements] (data/scenes/README.md: a relative tolerance per "
+      "quantity of "
+      "interest, or \"not needed\") and its tradeoff (run `iwb tradeoff` first): the cheapest DEM "
+      "setting whose "
+      "errors plus the seed noise floor meet every tolerance, and the simplest continuum model "
+      "(hp1d, ah, hvwe; "
+      "hvwe-igs too for cyclic paths) whose errors, averaged over the scene's own runs (the base "
+      "seeds) replayed along their own "
+      "paths with kappa_r and d_s fitted, meet them. Prints the decision and which setting or model "
+      "failed which "
+      "tolerance by how much; writes plan.json.\n"
+      "It needs the tradeoff's run directories (the base runs are replayed), not only its "
+      "tables.\n"
+      "Example: iwb plan data/scenes/default.toml --tradeoff runs/tradeoff-default");
+  plan->add_option("scene", c.scene, "scene TOML file with a [requirements] table")
+      ->required()
+      ->check(input_file());
+  plan->add_option("--tradeoff", c.tradeoff,
+                     "tradeoff directory (default runs/tradeoff-<scene stem>)");  // run_plan says what to run
+  plan->add_option(
+      "--params", c.params,
+      "parameter file of the continuum models (default: the set iwb validate chooses from those "
+      "built into iwb: dem_default_grains.toml for the default scene's grains, else phi_c closest "
+      "to the reference's residual friction)")
+      ->check(input_file());
+  plan->add_option("--out,-o", c.out,
+                     "where plan.json goes (default: the tradeoff directory)")
+      ->check(output_directory());
+  return plan;
+}
+
+// --params, else the set `iwb validate` would choose for the tradeoff's reference run from the
+// sets built into iwb (app/parameter_choice.hpp).
+io::ParameterSet plan_parameters(const tradeoff::PlanOptions& opt, const std::string& params, std::string& why) {
+  if (!params.empty()) {
+    why = "given with --params";
+    return io::read_parameter_set(params);
+  }
+  const auto summary =
+      io::read_json_file(tradeoff::reference_run(opt) / "summary.json");
+  const auto scene = dem::parse_scene(io::read_file(opt.scene_file), opt.scene_file.string());
+  const auto sets = io::parameter_sets({});
+  return parameters_for(sets, scene, summary["residual_friction"].get<double>(), why);
+}
+
+int run_plan_command(const PlanCommand& c, const std::string& cl) {
+  dem::load_scene(c.scene);  // every value checked before the tradeoff is read
+  tradeoff::PlanOptions opt{c.scene, c.tradeoff, {}, "", c.out, cl};
+  opt.params = plan_parameters(opt, c.params, opt.params_why);
+  const auto plan = tradeoff::run_plan(opt);
+  const fs::path written =
+      opt.out.empty() ? fs::path(plan["tradeoff"].get<std::string>()).parent_path() : opt.out;
+  fmt::print("{}parameters: {} ({})\n-> {}\n", tradeoff::plan_text(plan), opt.params.origin,
+             opt.params_why, (written / "plan.json").string());
+  return 0;
+}
+
+}  // namespace
+
+void add_plan_command(CLI::App& app, CommandList& commands) {
+  auto c = std::make_shared<PlanCommand>();
+  auto* plan = add_plan_options(app, *c);
+  commands.add(plan, [c](const CommandContext& context) { return run_plan_command(*c, context.command_line); });
+}
+
+}  // namespace iwb::app

@@ -1,0 +1,105 @@
+// `iwb soiltest synthetic`: a soil test from a continuum model with known parameters, the target a
+// calibration must recover (calibration/synthetic.hpp).
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "app/command_list.hpp"
+#include "app/commands/commands.hpp"
+#include "app/option_checks.hpp"
+#include "calibration/synthetic.hpp"
+#include "io/parameter_file.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::app {
+
+namespace {
+
+struct SyntheticCommand {
+  calibration::SyntheticSpec spec;
+  std::string params, test = "oedometer", bc = "CNL", out;
+  double e0 = 0.0;
+  bool force = false;
+};
+
+CLI::App* add_synthetic_options(CLI::App& soiltest, SyntheticCommand& c) {
+  auto* s = soiltest.add_subcommand(
+      "synthetic",
+      "Write a soil-test run directory (contract: src/calibration/README.md) from a continuum "
+      "model "
+      "with known parameters: the target a calibration must find them again from.\n"
+      "  oedometer:   sigma_v from --sigma up to --sigma-max in geometric steps, then down to "
+      "--sigma-end\n"
+      "  simpleshear: monotonic shear to --gamma under --bc CNL (sigma_n held) or CV (volume "
+      "held)\n"
+      "Example: iwb soiltest synthetic --params data/params/table_5_2_hostun.toml --test "
+      "simpleshear "
+      "--bc CV --e0 0.70 -o runs/soil/dense-cv");
+  s->add_option("--model", c.spec.model, "continuum model (iwb models)")->capture_default_str();
+  s->add_option("--params", c.params, "parameter file (data/params/)")
+      ->required()
+      ->check(input_file());
+  s->add_option("--test", c.test, "oedometer or simpleshear")
+      ->check(CLI::IsMember({"oedometer", "simpleshear"}))
+      ->capture_default_str();
+  s->add_option("--bc", c.bc, "simple shear boundary: CNL or CV")
+      ->check(CLI::IsMember({"CNL", "CV"}))
+      ->capture_default_str();
+  s->add_option("--e0", c.e0,
+                "initial void ratio (default: Bauer's critical e_c at the initial mean stress)")
+      ->check(number_in(positive(kMaxVoidRatio)));
+  s->add_option("--sigma", c.spec.sigma0_kPa,
+                "initial sigma_v (oedometer) or sigma_n (simple shear), kPa")
+      ->check(number_in(positive(kMaxStressKPa), "kPa"))
+      ->capture_default_str();
+  s->add_option("--sigma-max", c.spec.sigma_max_kPa, "oedometer: largest sigma_v, kPa")
+      ->check(number_in(positive(kMaxStressKPa), "kPa"))
+      ->capture_default_str();
+  s->add_option("--sigma-end", c.spec.sigma_end_kPa,
+                "oedometer: sigma_v after unloading, kPa (>= --sigma-max: no unloading)")
+      ->check(number_in(positive(kMaxStressKPa), "kPa"))
+      ->capture_default_str();
+  s->add_option("--gamma", c.spec.gamma_max, "simple shear: final engineering shear strain")
+      ->check(number_in(positive(kMaxShearStrain)))
+      ->capture_default_str();
+  s->add_option("--rows", c.spec.rows, "data rows per branch")
+      ->check(whole_in(3, 100000))
+      ->capture_default_str();
+  s->add_option("--out,-o", c.out, "run directory")->required()->check(output_directory());
+  s->add_flag("--force", c.force, "replace an earlier soil test in the same directory");
+  return s;
+}
+
+int run_synthetic(SyntheticCommand c, const std::string& command_line) {
+  c.spec.kind = c.test == "oedometer" ? calibration::SoilTestKind::kOedometer
+                                      : calibration::SoilTestKind::kSimpleShear;
+  c.spec.boundary = driver::parse_boundary_kind(c.bc, "--bc");
+  if (c.e0 > 0.0) c.spec.e0 = c.e0;
+  models::ModelInputs in;
+  in.tables = io::load_parameter_file(c.params);
+  in.source = c.params;
+  auto t = calibration::synthesise(c.spec, in);
+  t.name = c.out;
+  calibration::write_soil_test(
+      t, c.out, c.force,
+      {{"command_line", command_line},
+       {"workbench", {{"name", "iwb"}}},
+       {"inputs",
+        {{"parameters",
+          {{"source", c.params}, {"sha256", io::sha256_hex(io::read_file(c.params))}}}}},
+       {"finished", io::utc_timestamp()}});
+  fmt::print("{} {}{} from {} (e0 = {:.4f}, sigma0 = {:g} kPa): {} rows -> {}\n", c.test,
+             c.test == "simpleshear" ? c.bc + " " : "", c.spec.model, c.params, t.e0, t.sigma0_kPa,
+             t.rows(), c.out);
+  return 0;
+}
+
+}  // namespace
+
+void add_soiltest_synthetic_command(CLI::App& soiltest, CommandList& commands) {
+  auto c = std::make_shared<SyntheticCommand>();
+  auto* s = add_synthetic_options(soiltest, *c);
+  commands.add(s, [c](const CommandContext& context) { return run_synthetic(*c, context.command_line); });
+}
+
+}  // namespace iwb::app

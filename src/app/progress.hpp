@@ -1,0 +1,18 @@
+#pragma once
+// Progress lines on stderr for commands that take longer than a second or two.
+#include <functional>
+#include <string>
+
+namespace iwb::app {
+
+// Element-test increments: "increment k/n (p %), t s elapsed, ETA s", at most once a second and
+// only once the run has taken a second.
+std::function<void(long, long)> increment_progress();
+
+// Engine lines: at most one every two seconds, and every change of stage (the word before ':').
+std::function<void(const std::string&)> engine_progress();
+
+// Campaign lines (sweep, tradeoff): every line, indented.
+void print_progress_line(const std::string& line);
+
+}  // namespace iwb::app
