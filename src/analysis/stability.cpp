@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -39,6 +40,7 @@ StabilitySweep StabilitySweep::reduced() {
   s.boundaries = {BoundaryKind::kCNL, BoundaryKind::kCNS, BoundaryKind::kCV};
   s.sigma_n_kPa = {1.0, 100.0, 1e4};
   s.density_index = {0.02, 0.3, 0.98};
+  s.ocr = {1.0, 2.0, 8.0};
   s.kappa_r = {0.05, 1.0};
   s.d_gamma = {1e-6, 1e-2};
   s.gamma_total = 0.1;
@@ -53,6 +55,7 @@ StabilitySweep StabilitySweep::full() {
   s.boundaries = {BoundaryKind::kCNL, BoundaryKind::kCNS, BoundaryKind::kCV};
   s.sigma_n_kPa = {1.0, 10.0, 100.0, 1e3, 1e4};
   s.density_index = {0.01, 0.25, 0.5, 0.75, 0.99};
+  s.ocr = {1.0, 1.5, 2.0, 4.0, 10.0};
   s.kappa_r = {0.05, 0.25, 0.5, 1.0};
   s.d_gamma = {1e-6, 1e-5, 1e-4, 1e-3, 1e-2};
   s.gamma_total = 0.2;
@@ -62,13 +65,34 @@ StabilitySweep StabilitySweep::full() {
   return s;
 }
 
-std::vector<StabilityPoint> StabilitySweep::points(bool uses_roughness) const {
+DensityAxis density_axis_of(const models::ModelSpec& spec) {
+  const bool has_limits = std::any_of(spec.declaration.diagnostics.begin(), spec.declaration.diagnostics.end(),
+                                      [](const auto& d) { return d.name == "e_d"; });
+  if (!has_limits && models::find_initial_input(spec.declaration.initial, "OCR"))
+    return DensityAxis::kOverconsolidationRatio;
+  return DensityAxis::kDensityIndex;
+}
+
+const char* column_of(DensityAxis axis) {
+  return axis == DensityAxis::kOverconsolidationRatio ? "OCR" : "density_index";
+}
+
+const char* label_of(DensityAxis axis) {
+  return axis == DensityAxis::kOverconsolidationRatio ? "overconsolidation ratio OCR"
+                                                      : "density index I = (e0 - e_d)/(e_i - e_d)";
+}
+
+const std::vector<double>& StabilitySweep::densities(DensityAxis axis) const {
+  return axis == DensityAxis::kOverconsolidationRatio ? ocr : density_index;
+}
+
+std::vector<StabilityPoint> StabilitySweep::points(const models::ModelSpec& spec) const {
   // A continuum model ignores kappa_r: one value instead of identical copies.
-  const std::vector<double> kappas = uses_roughness ? kappa_r : std::vector<double>{1.0};
+  const std::vector<double> kappas = spec.uses_roughness ? kappa_r : std::vector<double>{1.0};
   std::vector<StabilityPoint> out;
   for (auto bc : boundaries)
     for (double s : sigma_n_kPa)
-      for (double i : density_index) {
+      for (double i : densities(density_axis_of(spec))) {
         for (double k : kappas)
           for (double dg : d_gamma) out.push_back({bc, s, i, k, dg, PathKind::kMonotonic});
         out.push_back({bc, s, i, 1.0, cyclic_amplitude / cyclic_per_quarter, PathKind::kCyclic});
@@ -159,14 +183,21 @@ void walk(const models::Model& m, const models::StateVector& s0, const Stability
 }
 
 // Builds the model, finds the limits and the start; throws InputError if the start is refused.
-models::StateVector prepare(const models::Model& m, const models::ModelInputs& in,
+models::StateVector prepare(const models::ModelSpec& spec, const models::Model& m, const models::ModelInputs& in,
                             const StabilityPoint& p, StabilityResult& out) {
-  const double K0 = models::offer(models::find_model(std::string(m.name())), in, {}).K0;
+  const double K0 = models::offer(spec, in, {}).K0;
+  if (density_axis_of(spec) == DensityAxis::kOverconsolidationRatio) {
+    // the model turns the OCR into e0 (its asymptotic state boundary surface); no e_d, e_i
+    out.e_d = out.e_c = out.e_i = NAN;
+    const auto s0 = m.initial_state({p.sigma_n_kPa, K0, NAN, std::nullopt, {{"OCR", p.density}}});
+    out.e0 = m.void_ratio(s0);
+    return s0;
+  }
   const auto lim = limiting_void_ratios_at(m, p.sigma_n_kPa, K0);
   out.e_d = lim[0];
   out.e_c = lim[1];
   out.e_i = lim[2];
-  out.e0 = out.e_d + p.density_index * (out.e_i - out.e_d);
+  out.e0 = out.e_d + p.density * (out.e_i - out.e_d);
   return m.initial_state({p.sigma_n_kPa, K0, out.e0});
 }
 
@@ -199,7 +230,7 @@ StabilityResult run_stability_point(const models::ModelSpec& spec,
     const auto model = spec.make(in);
     models::StateVector s0;
     try {
-      s0 = prepare(*model, in, p, out);
+      s0 = prepare(spec, *model, in, p, out);
     } catch (const InputError& e) {
       fail(out, Outcome::kInadmissibleStart, e.what());
     }
@@ -217,7 +248,7 @@ std::vector<StabilityResult> run_stability_sweep(const models::ModelSpec& spec,
                                                  const models::ModelInputs& inputs,
                                                  const StabilitySweep& sweep) {
   std::vector<StabilityResult> out;
-  for (const auto& p : sweep.points(spec.uses_roughness))
+  for (const auto& p : sweep.points(spec))
     out.push_back(run_stability_point(spec, inputs, p, sweep));
   return out;
 }

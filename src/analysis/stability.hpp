@@ -39,17 +39,26 @@ enum class PathKind { kMonotonic, kCyclic };
 struct StabilityPoint {
   driver::BoundaryKind boundary = driver::BoundaryKind::kCNL;
   double sigma_n_kPa = 100.0;
-  // Where e0 lies between the limits at sigma_n: e0 = e_d + density_index (e_i - e_d), so 0 is
-  // e_d and 1 is e_i. Values outside [0, 1] ask for an inadmissible start on purpose.
-  double density_index = 0.5;
+  // Where e0 lies, on the sweep's density axis (DensityAxis): for sand the density index
+  // e0 = e_d + I (e_i - e_d), so 0 is e_d and 1 is e_i (values outside [0, 1] ask for an
+  // inadmissible start on purpose); for clay the overconsolidation ratio (1: normally consolidated).
+  double density = 0.5;
   double kappa_r = 1.0;
   double d_gamma = 1e-4;  // shear strain per increment
   PathKind path = PathKind::kMonotonic;
 };
 
+// How the map places e0 at each sigma_n0, chosen by what a model declares: between its limiting
+// void ratios when it reports e_d and e_i (sand, Bauer eq. 5.13), else by its overconsolidation
+// ratio when it declares an OCR input (clay, seed 6.2: 1 on the asymptotic state boundary surface).
+enum class DensityAxis { kDensityIndex, kOverconsolidationRatio };
+DensityAxis density_axis_of(const models::ModelSpec& spec);
+const char* column_of(DensityAxis axis);  // "density_index", "OCR"
+const char* label_of(DensityAxis axis);   // the axis title of the maps
+
 struct StabilitySweep {
   std::vector<driver::BoundaryKind> boundaries;
-  std::vector<double> sigma_n_kPa, density_index, kappa_r, d_gamma;
+  std::vector<double> sigma_n_kPa, density_index, ocr, kappa_r, d_gamma;
   double gamma_total = 0.2;   // monotonic shear ends here ...
   int max_increments = 1000;  // ... or after this many increments, whichever comes first
   int cycles = 3;             // cyclic runs: cycles 0 -> +A -> -A -> 0 at kappa_r = 1
@@ -62,7 +71,8 @@ struct StabilitySweep {
   static StabilitySweep reduced();
   // 1 kPa to 10 MPa, e_d to e_i, kappa_r 0.05 to 1, 1e-6 to 1e-2 per increment, 1000 cycles.
   static StabilitySweep full();
-  std::vector<StabilityPoint> points(bool uses_roughness) const;
+  std::vector<StabilityPoint> points(const models::ModelSpec& spec) const;
+  const std::vector<double>& densities(DensityAxis axis) const;
 };
 
 // CNS stiffness per unit normal strain as a multiple of sigma_n0, so the spring means the same

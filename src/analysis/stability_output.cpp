@@ -38,9 +38,9 @@ std::map<Outcome, long> count_outcomes(const std::vector<StabilityResult>& resul
   return n;
 }
 
-std::string stability_csv(const std::vector<StabilityResult>& results) {
+std::string stability_csv(const std::vector<StabilityResult>& results, DensityAxis axis) {
   std::string out =
-      "boundary,path,sigma_n0_kPa,density_index,e0,e_d,e_c,e_i,kappa_r,d_gamma,outcome,reason,"
+      "boundary,path,sigma_n0_kPa," + std::string(column_of(axis)) + ",e0,e_d,e_c,e_i,kappa_r,d_gamma,outcome,reason,"
       "increments,increments_planned,rate_evaluations,rejected_substeps,domain_cutbacks,seconds,"
       "sigma_n_end_kPa,tau_end_kPa,e_end,message\n";
   for (const auto& r : results) {
@@ -48,7 +48,7 @@ std::string stability_csv(const std::vector<StabilityResult>& results) {
     out += fmt::format(
         "{},{},{:g},{:g},{:.6g},{:.6g},{:.6g},{:.6g},{:g},{:g},{},{},{},{},{},{},{},{:.4g},"
         "{:.8g},{:.8g},{:.8g},{}\n",
-        driver::to_string(p.boundary), path_name(p.path), p.sigma_n_kPa, p.density_index, r.e0,
+        driver::to_string(p.boundary), path_name(p.path), p.sigma_n_kPa, p.density, r.e0,
         r.e_d, r.e_c, r.e_i, p.kappa_r, p.d_gamma, to_string(r.outcome), csv_text(r.reason),
         r.increments, r.increments_planned, r.rate_evaluations, r.rejected_substeps,
         r.domain_cutbacks, r.seconds, r.sigma_n_end_kPa, r.tau_end_kPa, r.e_end,
@@ -77,7 +77,7 @@ std::string outcome_table(const std::vector<StabilityResult>& results,
   return md;
 }
 
-std::string reason_table(const std::vector<StabilityResult>& results) {
+std::string reason_table(const std::vector<StabilityResult>& results, DensityAxis axis) {
   std::map<std::string, std::pair<long, const StabilityResult*>> reasons;
   for (const auto& r : results)
     if (r.outcome != Outcome::kComplete) {
@@ -91,9 +91,9 @@ std::string reason_table(const std::vector<StabilityResult>& results) {
     std::string msg = v.second->message.substr(0, 300);
     std::replace(msg.begin(), msg.end(), '|', '/');
     md += fmt::format(
-        "| {} | {} | {} {} sigma_n0 = {:g} kPa, I = {:g}, kappa_r = {:g}, d gamma = {:g}: {} |\n",
+        "| {} | {} | {} {} sigma_n0 = {:g} kPa, {} = {:g}, kappa_r = {:g}, d gamma = {:g}: {} |\n",
         why, v.first, driver::to_string(p.boundary), path_name(p.path), p.sigma_n_kPa,
-        p.density_index, p.kappa_r, p.d_gamma, msg);
+        axis == DensityAxis::kOverconsolidationRatio ? "OCR" : "I", p.density, p.kappa_r, p.d_gamma, msg);
   }
   return md;
 }
@@ -120,7 +120,7 @@ std::string stability_markdown(const std::vector<StabilityResult>& results,
   std::string md = fmt::format("# Stability map: {} ({} form)\n\nParameters: `{}`. {} points.\n\n",
                                info.model, info.form, info.parameter_file, results.size());
   md += fmt::format(
-      "Axes: sigma_n0 {} kPa; density index I = (e0 - e_d)/(e_i - e_d) at sigma_n0 {}; kappa_r {}; "
+      "Axes: sigma_n0 {} kPa; {} at sigma_n0 {}; kappa_r {}; "
       "shear strain per increment {} (monotonic shear to gamma = {:g} or {} increments, whichever "
       "comes "
       "first); cyclic: {} cycles of amplitude {:g} in {} increments per quarter at kappa_r = 1. "
@@ -128,12 +128,12 @@ std::string stability_markdown(const std::vector<StabilityResult>& results,
       "stiffness {:g} sigma_n0 per unit normal strain. Budget {:g} s per point, {} substeps per "
       "increment. "
       "Adaptive rk32, rtol 1e-6.\n\n",
-      fmt::join(sw.sigma_n_kPa, ", "), fmt::join(sw.density_index, ", "),
+      fmt::join(sw.sigma_n_kPa, ", "), label_of(info.axis), fmt::join(sw.densities(info.axis), ", "),
       fmt::join(sw.kappa_r, ", "), fmt::join(sw.d_gamma, ", "), sw.gamma_total, sw.max_increments,
       sw.cycles, sw.cyclic_amplitude, sw.cyclic_per_quarter, kCnsStiffnessPerSigma,
       sw.budget_seconds, sw.max_substeps);
   md += "## Outcomes\n\n" + outcome_table(results, sw) + "\n## Why points stopped\n\n" +
-        reason_table(results);
+        reason_table(results, info.axis);
   md += "\n## Integrator cut-backs\n\n" + cutback_summary(results);
   return md;
 }
@@ -144,7 +144,7 @@ namespace {
 // its points (kappa_r, increment sizes, cyclic), labelled completed/points, crossed where the
 // integrator cut back.
 comparison::Figure boundary_map(const std::vector<StabilityResult>& results,
-                                driver::BoundaryKind bc, const std::string& model) {
+                                driver::BoundaryKind bc, const std::string& model, DensityAxis axis) {
   struct Cell {
     int worst = 0;
     long done = 0, all = 0, cut = 0;
@@ -152,7 +152,7 @@ comparison::Figure boundary_map(const std::vector<StabilityResult>& results,
   std::map<std::pair<double, double>, Cell> cells;
   for (const auto& r : results) {
     if (r.point.boundary != bc) continue;
-    auto& c = cells[{r.point.sigma_n_kPa, r.point.density_index}];
+    auto& c = cells[{r.point.sigma_n_kPa, r.point.density}];
     c.worst = std::max(c.worst, int(r.outcome));
     c.done += r.outcome == Outcome::kComplete;
     c.all += 1;
@@ -163,12 +163,12 @@ comparison::Figure boundary_map(const std::vector<StabilityResult>& results,
       fmt::format("{} under {}: worst outcome per cell (label: completed/points; x: cut back)",
                   model, driver::to_string(bc)),
       "sigma_n0 (kPa)",
-      "density index I = (e0 - e_d)/(e_i - e_d)",
+      label_of(axis),
       {},
       {},
       "",
       ""};
-  f.data.columns = {"sigma_n0_kPa", "density_index", "worst_outcome",
+  f.data.columns = {"sigma_n0_kPa", column_of(axis), "worst_outcome",
                     "completed",    "points",        "cut_back"};
   for (const auto& [key, c] : cells)
     f.data.rows.push_back(
@@ -179,6 +179,9 @@ comparison::Figure boundary_map(const std::vector<StabilityResult>& results,
     f.extra += fmt::format("set linetype {} lc rgb '{}'\n", i + 1, kColours[i]);
   f.extra +=
       "set logscale x\nset xrange [*:*] noextend\nset offsets graph 0.08, graph 0.08, 0.08, 0.08\n";
+  // OCR spans decades: logarithmic, with margins in graph units like x's
+  if (axis == DensityAxis::kOverconsolidationRatio)
+    f.extra += "set logscale y\nset yrange [*:*] noextend\nset offsets graph 0.08, graph 0.08, graph 0.1, graph 0.1\n";
   const std::string csv = comparison::gnuplot_string(f.name + ".csv");
   f.plot = fmt::format(
       "plot {0} using 1:2:($3+1) skip 1 with points pt 5 ps 5 lc variable notitle, "
@@ -197,11 +200,11 @@ std::vector<fs::path> write_stability_map(const std::vector<StabilityResult>& re
                                           const StabilitySweep& sweep, const StabilityMapInfo& info,
                                           const fs::path& dir) {
   io::StagedDirectory staged(dir);  // the table, its summary and its maps together or not at all
-  io::write_atomically(staged.path() / "stability.csv", stability_csv(results));
+  io::write_atomically(staged.path() / "stability.csv", stability_csv(results, info.axis));
   io::write_atomically(staged.path() / "stability.md", stability_markdown(results, sweep, info));
   std::vector<fs::path> figures;
   for (auto bc : sweep.boundaries)
-    figures.push_back(dir / comparison::draw(boundary_map(results, bc, info.model), staged.path()).filename());
+    figures.push_back(dir / comparison::draw(boundary_map(results, bc, info.model, info.axis), staged.path()).filename());
   staged.commit_into();
   return figures;
 }

@@ -16,12 +16,13 @@ struct StabilityMapInfo {
   std::string model;
   std::string parameter_file;
   std::string form;  // "reduced" or "full"
+  DensityAxis axis = DensityAxis::kDensityIndex;  // how e0 was placed (density_axis_of)
 };
 
 // Points per outcome, every outcome of the closed set present (zero if none).
 std::map<Outcome, long> count_outcomes(const std::vector<StabilityResult>& results);
 
-std::string stability_csv(const std::vector<StabilityResult>& results);
+std::string stability_csv(const std::vector<StabilityResult>& results, DensityAxis axis);
 std::string stability_markdown(const std::vector<StabilityResult>& results,
                                const StabilitySweep& sweep, const StabilityMapInfo& info);
 // Writes the CSV, the markdown and the figures into `dir` (created); returns the figures' SVGs.

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fmt/core.h>
 #include <fstream>
+#include <map>
 
 #include "analysis/stability.hpp"
 #include "analysis/stability_output.hpp"
@@ -47,7 +48,7 @@ TEST_CASE(
     const auto& spec = models::find_model(name);
     const auto sweep = StabilitySweep::reduced();
     const auto results = analysis::run_stability_sweep(spec, inputs_for(name), sweep);
-    REQUIRE(results.size() == sweep.points(spec.uses_roughness).size());
+    REQUIRE(results.size() == sweep.points(spec).size());
     long counted = 0;
     for (const auto& [o, n] : analysis::count_outcomes(results)) counted += n;
     CHECK(counted == long(results.size()));
@@ -153,6 +154,30 @@ TEST_CASE(
   CHECK(lower.find("nan") == std::string::npos);
   CHECK(lower.find("inf,") == std::string::npos);
   CHECK_THAT(io::read_file(dir / "stability.md"), Catch::Contains("| complete |"));
+}
+
+// A clay model has no e_d, e_i: the map places e0 by the declared OCR. At a fixed stress state
+// p_e* is proportional to OCR (Masin's p_e* = OCR x its value on the ASBS) and ln(1+e) = N -
+// lambda* ln p_e* (eq. 6.7), so ln(1+e0) falls by lambda* ln(OCR) from OCR 1: 0.1 ln 8 for Table 6.1.
+TEST_CASE("stability: clay models are mapped over OCR, e0 following lambda* ln OCR", "[analysis]") {
+  for (const std::string name : {"hcc", "hce"}) {
+    INFO(name);
+    const auto& spec = models::find_model(name);
+    CHECK(analysis::density_axis_of(spec) == analysis::DensityAxis::kOverconsolidationRatio);
+    StabilitySweep sweep = StabilitySweep::reduced();
+    sweep.d_gamma = {1e-2};
+    const auto results = analysis::run_stability_sweep(spec, test::shipped("table_6_1_evaluation.toml"), sweep);
+    std::map<std::pair<double, double>, double> e0;  // (sigma_n0, OCR) -> e0 of a CNL point
+    for (const auto& r : results) {
+      INFO(r.message);
+      CHECK(r.outcome == Outcome::kComplete);
+      if (r.point.boundary == driver::BoundaryKind::kCNL) e0[{r.point.sigma_n_kPa, r.point.density}] = r.e0;
+    }
+    for (double s : sweep.sigma_n_kPa)
+      CHECK(std::log(1.0 + e0.at({s, 8.0})) - std::log(1.0 + e0.at({s, 1.0})) ==
+            Approx(-0.1 * std::log(8.0)).epsilon(1e-12));
+  }
+  CHECK(analysis::density_axis_of(models::find_model("hvwe")) == analysis::DensityAxis::kDensityIndex);
 }
 
 // The full sweep (1575 points for hvwe, 1000-cycle runs; about 40 s here): opt-in.

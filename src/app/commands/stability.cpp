@@ -13,10 +13,10 @@ void add_stability_command(CLI::App& app, CommandList& commands) {
   auto* stability = app.add_subcommand(
       "stability",
       "Stability map of a model: sweeps sigma_n0 (1 kPa to 10 MPa), e0 (just above e_d to just below e_i at "
-      "sigma_n0), kappa_r (0.05 to 1), shear strain per increment (1e-6 to 1e-2) and cyclic runs, under CNL, "
+      "sigma_n0; for clay models the overconsolidation ratio, 1 to 10), kappa_r (0.05 to 1), shear strain per increment (1e-6 to 1e-2) and cyclic runs, under CNL, "
       "CNS and CV, and writes stability.csv (one row per point: outcome, reason, message, counts of rejected "
       "substeps), stability.md (counts per outcome, why points stopped) and stability_<BC>.svg/.png (sigma_n0 x "
-      "density index coloured by the worst outcome). Outcomes: complete, domain error, no convergence, budget "
+      "density index or OCR, coloured by the worst outcome). Outcomes: complete, domain error, no convergence, budget "
       "exceeded, inadmissible start, non-finite value, other error. The reduced form takes seconds, --full "
       "(1000-cycle runs) minutes.\n\nExample: iwb stability hvwe data/params/table_5_1_evaluation.toml --full");
   stability->add_option("model", o->model, "model name (iwb models)")->required();
