@@ -16,11 +16,14 @@ using nlohmann::json;
 namespace {
 
 // kappa_r from the wall's R_n by eq. 5.35; a flat wall (R_n = 0) gets the floor.
-std::pair<double, std::string> gutjahr_kappa(double R_n) {
-  if (!(R_n > 0.0))
-    return {models::kKappaRFloor, fmt::format("kappa_r = {} (flat wall: eq. 5.35's floor)", models::kKappaRFloor)};
-  const double k = gutjahr_kappa_r(R_n);
-  return {k, fmt::format("kappa_r = {:.3f} (eq. 5.35, R_n = {:.3g})", k, R_n)};
+// kappa_r of the variants that need no fit: the model's declared prediction from the wall (sand:
+// eq. 5.35 from R_n), else the parameter file's value (1, fully rough, when it gives none).
+std::pair<double, std::string> predicted_kappa(const models::ModelSpec& spec, const DemRun& dem,
+                                               const models::ModelInputs& parameters) {
+  for (const auto& f : spec.declaration.fit)
+    if (f.target == models::FitParameter::Target::kRoughness && f.predict) return f.predict({dem.R_n, dem.d50_mm});
+  const double k = parameters.roughness.kappa_r;
+  return {k, fmt::format("kappa_r = {:g} ({} predicts none from the wall)", k, spec.name)};
 }
 
 std::string curves_csv(const DemRun& dem, const std::vector<Replay>& replays) {
@@ -104,7 +107,8 @@ double gutjahr_kappa_r(double R_n, double log_base) {
 
 std::vector<Variant> standard_variants(const DemRun& dem, const std::string& model,
                                        const models::ModelInputs& parameters, double predicted_ds_d50) {
-  const auto [kappa, kappa_label] = gutjahr_kappa(dem.R_n);
+  const auto& spec = models::find_model(model);
+  const auto [kappa, kappa_label] = predicted_kappa(spec, dem, parameters);
   std::vector<std::pair<double, std::string>> thicknesses = {
       {predicted_ds_d50 * dem.d50_mm, fmt::format("d_s = {:g} d50", predicted_ds_d50)}};
   for (double k : {5.0, 10.0})
@@ -114,7 +118,7 @@ std::vector<Variant> standard_variants(const DemRun& dem, const std::string& mod
   std::vector<Variant> out;
   for (const auto& [d_s, label] : thicknesses) {
     Variant v{fmt::format("{}, {}", kappa_label, label), model, parameters, d_s};
-    v.inputs.roughness = {models::RoughnessScheme::kGutjahr, kappa};
+    v.inputs.roughness = {spec.declaration.roughness.default_scheme, kappa};
     out.push_back(v);
   }
   out.front().label = "predicted: " + out.front().label;

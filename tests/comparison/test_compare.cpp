@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
+#include "comparison/compare.hpp"
 #include "comparison/fit.hpp"
 #include "comparison/metrics.hpp"
 #include "comparison/replay.hpp"
@@ -125,4 +126,31 @@ TEST_CASE("identifiability: the fit recovers a known kappa_r and d_s within 2 %"
   CHECK(fit.rms_scaled < 0.05);         // the generating curve is reachable (tau in kPa: scale 1)
   CHECK(fit.sigma_kappa_r < 0.02 * 0.7);  // and the data pin the parameters down
   CHECK(fit.sigma_d_s_mm < 0.02 * 2.0);
+}
+
+// Step 7 of the model contract: the comparison reads the model's declaration, not the sand family's
+// habits. A clay model declares no prediction of kappa_r from R_n (eq. 5.35 is Gutjahr's, for
+// sand) and only its own roughness schemes; hvwe keeps eq. 5.35 (its floor 0.05 on a flat wall).
+// A variant whose start the model refuses is a replay that reaches no row: for hcc at kappa_r 0.05,
+// M = 6 sin(1.25 deg)/(3 - sin(1.25 deg)) = 0.044 (eq. 6.22) while the DEM starts at the oedometric
+// q/p = 3(1 - K0)/(1 + 2 K0) = 0.59 (K0 = 1 - sin 25 deg): the ASBS pressure p (M^2 + eta^2)/M^2 is
+// 180 p, so the DEM's e lies far above it.
+TEST_CASE("compare replays a clay model by its declaration, and an inadmissible start is a missed replay", "[comparison]") {
+  const auto dem = comparison::load_dem_run("data/reference/truth_rn/runs/flat_s1_cnl");
+  const auto clay = test::shipped("table_6_1_evaluation.toml");
+  const auto hcc = comparison::standard_variants(dem, "hcc", clay, 5.0);
+  CHECK(hcc.front().inputs.roughness.kappa_r == 1.0);
+  CHECK(hcc.front().inputs.roughness.scheme == models::RoughnessScheme::kArnoldHerle);
+  CHECK_THAT(hcc.front().label, Catch::Contains("hcc predicts none"));
+  const auto hvwe = comparison::standard_variants(dem, "hvwe", test::table_5_1(1.0), 5.0);
+  CHECK(hvwe.front().inputs.roughness.kappa_r == models::kKappaRFloor);
+  CHECK(hvwe.front().inputs.roughness.scheme == models::RoughnessScheme::kGutjahr);
+
+  CHECK(comparison::replay(dem, hcc.front()).status == "complete");
+  auto smooth = hcc.front();
+  smooth.inputs.roughness.kappa_r = 0.05;
+  const auto missed = comparison::replay(dem, smooth);
+  CHECK_THAT(missed.status, Catch::StartsWith("failed: inadmissible start"));
+  CHECK(missed.u_x_mm.empty());
+  CHECK(comparison::compare(dem, missed).rows_compared == 0);
 }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <fmt/core.h>
+
 #include "common/physical_limits.hpp"
 
 namespace iwb::models {
@@ -42,6 +44,17 @@ std::vector<FitParameter> interface_fit_parameters() {
   return {kappa, d_s};
 }
 
+std::vector<FitParameter> interface_fit_parameters_from_normalized_roughness() {
+  auto fit = interface_fit_parameters();
+  fit.front().predict = [](const WallDescription& wall) -> std::pair<double, std::string> {
+    if (!(wall.R_n > 0.0))
+      return {kKappaRFloor, fmt::format("kappa_r = {} (flat wall: eq. 5.35's floor)", kKappaRFloor)};
+    const double k = kappa_r_from_normalized_roughness(wall.R_n).value;
+    return {k, fmt::format("kappa_r = {:.3f} (eq. 5.35, R_n = {:.3g})", k, wall.R_n)};
+  };
+  return fit;
+}
+
 ModelDeclaration rate_form_declaration(const std::vector<std::string>& stress_components, InPlaneStart start,
                                        int listing_order, const std::string& friction_table) {
   ModelDeclaration d;
@@ -64,7 +77,7 @@ ModelDeclaration hypoplastic_declaration(const std::vector<std::string>& stress_
   if (interface_model) {
     d.roughness = {{RoughnessScheme::kGutjahr, RoughnessScheme::kArnoldHerle}, RoughnessScheme::kGutjahr, true,
                    KappaFromAngle::kTangentRatio};
-    d.fit = interface_fit_parameters();
+    d.fit = interface_fit_parameters_from_normalized_roughness();
   }
   d.calibration_recipe = "herle-gudehus";
   d.example_parameters = "table_5_1_evaluation.toml";

@@ -44,6 +44,9 @@ ModelDeclaration rate_form_declaration(const std::vector<std::string>& stress_co
 
 // kappa_r in [0.05, 1] and d_s in [1, 40] d50 (log): what `iwb compare` fits of an interface model.
 std::vector<FitParameter> interface_fit_parameters();
+// The same with kappa_r predicted from the wall's normalized roughness by Gutjahr's eq. 5.35 (sand):
+// what `iwb compare` replays without a fit.
+std::vector<FitParameter> interface_fit_parameters_from_normalized_roughness();
 
 // The declaration the sand family shares (src/models/README.md 8.1): the kinematics' stress
 // components and e, sigma_n_kPa, K0 and e0 at the start, mean stress and Bauer's limiting void
