@@ -32,7 +32,7 @@ int list_models(bool json) {
   }
   if (json) fmt::print("{}\n", all.dump(2));
   else fmt::print("Roughness (interface models): [roughness] scheme = the model's own (sand: \"gutjahr\" | "
-                  "\"arnold-herle\"; hcc: \"arnold-herle\"; hce: \"stutz-masin\"), and one of kappa_r, R_n "
+                  "\"arnold-herle\"; hcc, hce: \"arnold-herle\" | \"stutz-masin\"), and one of kappa_r, R_n "
                   "(sand, + log_base), delta_deg. See data/tests/README.md.\n");
   return 0;
 }

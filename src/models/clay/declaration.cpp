@@ -21,7 +21,8 @@ ModelDeclaration clay_declaration(const std::vector<std::string>& stress_compone
                    {"p_e_kPa", "kPa", "Hvorslev's equivalent pressure p_e* (eq. 6.7)", DiagnosticRole::kEquivalentPressure}};
   for (auto& own : own_diagnostics) d.diagnostics.push_back(std::move(own));
   if (interface_model) {
-    d.roughness = {{scheme}, scheme, false, KappaFromAngle::kAngleRatio};
+    // both clay schemes (6.2.4) for both laws; the default is each model's own
+    d.roughness = {{RoughnessScheme::kArnoldHerle, RoughnessScheme::kStutzMasin}, scheme, false, KappaFromAngle::kAngleRatio};
     d.fit = interface_fit_parameters();
   }
   d.example_parameters = "table_6_1_evaluation.toml";

@@ -19,11 +19,9 @@ double asbs_ratio(const StressInvariants& s, double e, const ExplicitAsymptoticC
 }  // namespace
 
 ExplicitAsymptoticClayConstants make_explicit_asymptotic_clay_constants(const ClayParameters& p, const Roughness& r) {
-  // Stutz & Masin (6.23-6.25): the shear stiffness r scaled by kappa_r, through nu_r
+  const double nu = poisson_ratio_on_wall(p, r);  // Stutz & Masin: nu_r (6.23-6.25)
   const double lk = p.lambda_star + p.kappa_star;
-  const double r_r = r.kappa_r * 4.0 / 3.0 * p.kappa_star / lk * (1.0 + p.nu) / (1.0 - 2.0 * p.nu);
-  const double nu = (3.0 * r_r * lk - 4.0 * p.kappa_star) / (6.0 * r_r * lk + 4.0 * p.kappa_star);
-  const double phi = p.phi_c * r.kappa_r;  // eqs. 6.26-6.28
+  const double phi = p.phi_c * r.kappa_r;  // eqs. 6.26-6.28 (both schemes: the critical state)
   const double s = std::sin(phi);
   const double a_f = std::sqrt(3.0) * (3.0 - s) / (2.0 * std::sqrt(2.0) * s);  // 6.13 / 6.26
   const double alpha_f =

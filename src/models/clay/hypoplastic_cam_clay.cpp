@@ -20,8 +20,9 @@ double overconsolidation(const StressInvariants& s, double e, const HypoplasticC
 
 HypoplasticCamClayConstants make_hypoplastic_cam_clay_constants(const ClayParameters& p, const Roughness& r) {
   const double sin_phi = std::sin(p.phi_c * r.kappa_r);  // eq. 6.22 (kappa_r = 1: eq. 6.10)
-  return {p, 6.0 * sin_phi / (3.0 - sin_phi), p.nu / (1.0 - 2.0 * p.nu),
-          1.5 * (1.0 / p.lambda_star + 1.0 / p.kappa_star) * (1.0 - 2.0 * p.nu) / (1.0 + p.nu)};
+  const double nu = poisson_ratio_on_wall(p, r);          // Stutz & Masin: nu_r (6.23-6.25)
+  return {p, 6.0 * sin_phi / (3.0 - sin_phi), nu / (1.0 - 2.0 * nu),
+          1.5 * (1.0 / p.lambda_star + 1.0 / p.kappa_star) * (1.0 - 2.0 * nu) / (1.0 + nu)};
 }
 
 std::string HypoplasticCamClayLaw::initial_violation(const StressInvariants& s, double e, const Constants& c) {

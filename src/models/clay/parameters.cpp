@@ -42,4 +42,11 @@ ClayParameters ClayParameters::from(const ParameterValues& v, const std::string&
   return {lambda, kappa, v.at("nu"), v.at("phi_c_deg") * M_PI / 180.0, v.at("N")};
 }
 
+double poisson_ratio_on_wall(const ClayParameters& p, const Roughness& r) {
+  if (r.scheme != RoughnessScheme::kStutzMasin) return p.nu;
+  const double lk = p.lambda_star + p.kappa_star;
+  const double r_r = r.kappa_r * 4.0 / 3.0 * p.kappa_star / lk * (1.0 + p.nu) / (1.0 - 2.0 * p.nu);  // 6.24
+  return (3.0 * r_r * lk - 4.0 * p.kappa_star) / (6.0 * r_r * lk + 4.0 * p.kappa_star);            // 6.25
+}
+
 }  // namespace iwb::models

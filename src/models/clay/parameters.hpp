@@ -5,6 +5,7 @@
 #include <string>
 
 #include "models/parameters.hpp"
+#include "models/roughness/roughness.hpp"
 
 namespace iwb::models {
 
@@ -20,5 +21,12 @@ struct ClayParameters {
   // unloading is not a clay). InputError naming `source`.
   static ClayParameters from(const ParameterValues& v, const std::string& source);
 };
+
+// The Poisson ratio a clay law uses on a wall of roughness r. Both clay schemes put phi_c kappa_r
+// into the critical state (eqs. 6.22, 6.26-6.28, in each law's constants); Stutz & Masin's also
+// scales the ratio r of eq. 6.23 by kappa_r (eq. 6.24) and replaces nu by nu_r (eq. 6.25), which
+// leaves the bulk stiffness and multiplies the shear stiffness (1 - 2nu)/(1 + nu) by 1/kappa_r.
+// Arnold & Herle's keeps nu.
+double poisson_ratio_on_wall(const ClayParameters& p, const Roughness& r);
 
 }  // namespace iwb::models
