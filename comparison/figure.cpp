@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "common/subprocess.hpp"
@@ -27,6 +29,29 @@ std::string series_lines(const Figure& f) {
   return plot;
 }
 }  // namespace
+
+Figure curves_figure(const std::string& name, const std::string& title, const std::string& xlabel,
+                     const std::string& ylabel, const std::vector<PlotCurve>& curves) {
+  Figure f{name, title, xlabel, ylabel, {}, {}, "set datafile missing 'nan'\n", ""};
+  std::size_t rows = 0;
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    f.data.columns.push_back(fmt::format("x{}", i));
+    f.data.columns.push_back(fmt::format("y{}", i));
+    f.titles.push_back(curves[i].title);
+    rows = std::max(rows, std::min(curves[i].x.size(), curves[i].y.size()));
+  }
+  f.data.rows.assign(rows, std::vector<double>(2 * curves.size(), NAN));
+  for (std::size_t i = 0; i < curves.size(); ++i)
+    for (std::size_t k = 0; k < std::min(curves[i].x.size(), curves[i].y.size()); ++k) {
+      f.data.rows[k][2 * i] = curves[i].x[k];
+      f.data.rows[k][2 * i + 1] = curves[i].y[k];
+    }
+  f.plot = "plot ";
+  for (std::size_t i = 0; i < curves.size(); ++i)
+    f.plot += fmt::format("{}{} using {}:{} skip 1 with lines lw 2 title {}", i ? ", " : "",
+                          gnuplot_string(name + ".csv"), 2 * i + 1, 2 * i + 2, gnuplot_string(curves[i].title));
+  return f;
+}
 
 fs::path draw(const Figure& f, const fs::path& dir) {
   io::write_atomically(dir / (f.name + ".csv"), f.data.to_csv(8));

@@ -20,6 +20,18 @@ struct Figure {
   std::string plot;
 };
 
+// A curve with its own abscissae: the curves of one figure need not share x (stress paths, runs of
+// different lengths).
+struct PlotCurve {
+  std::string title;
+  std::vector<double> x, y;
+};
+
+// A figure of such curves: its CSV holds an x and a y column per curve (shorter curves padded with
+// nan, which the plot skips), drawn as lines.
+Figure curves_figure(const std::string& name, const std::string& title, const std::string& xlabel,
+                     const std::string& ylabel, const std::vector<PlotCurve>& curves);
+
 // A single-quoted gnuplot string.
 std::string gnuplot_string(const std::string& s);
 

@@ -7,6 +7,7 @@
 
 #include "common/errors.hpp"
 #include "comparison/figure.hpp"
+#include "comparison/html.hpp"
 #include "comparison/quantities.hpp"
 #include "comparison/verdict_table.hpp"
 #include "io/csv_table.hpp"
@@ -19,20 +20,6 @@ namespace iwb::comparison {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string escape_html(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // The DEM's seed band of one quantity (mean - SD, mean + SD per row), from the comparison's
 // seed_band.csv; empty without seeds.
@@ -113,12 +100,6 @@ Figure velocity_profile(const io::CsvTable& prof, const nlohmann::json& summary)
                            "set label 'plate band' at 0.75,{0} offset 0,0.7 tc rgb '#0055cc'\n",
                            f.data.rows.back()[1] - summary["plate_band_d50"].get<double>());
   return f;
-}
-
-std::string inline_svg(const fs::path& svg) {
-  std::string s = io::read_file(svg);
-  const auto start = s.find("<svg");
-  return start == std::string::npos ? s : s.substr(start);
 }
 
 std::string metrics_table(const nlohmann::json& cmp) {
@@ -462,16 +443,11 @@ std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs:
     body += section.html;
     for (const auto& svg : section.figures) figures.push_back(files.final_path() / fs::relative(svg, files.path()));
   }
-  const std::string page = fmt::format(
-      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>iwb validation report</title>\n"
-      "<style>body{{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}}table{{border-collapse:collapse;margin:1em 0}}"
-      "td,th{{border:1px solid #bbb;padding:3px 8px;text-align:left;font-size:0.9em}}figure{{margin:1em 0}}"
-      ".holds{{color:#1a7f37;font-weight:bold}}.breaks{{color:#c62828;font-weight:bold}}.scatter{{color:#b26a00;font-weight:bold}}"
-      "figure svg{{max-width:100%;height:auto}}pre{{font-size:0.8em;background:#f6f6f6;padding:1em;overflow:auto}}</style>\n"
-      "</head><body><h1>iwb validation report</h1>\n<p>Generated {} by iwb {}. Compression positive, u_n &gt; 0 is "
-      "dilation, kPa and mm. Figures are also in {} as SVG and PNG, each with its data (CSV) and gnuplot script.</p>\n{}"
-      "</body></html>\n",
-      io::utc_timestamp(), IWB_VERSION, escape_html(files.final_path().filename().string()), body);
+  const std::string page = html_page(
+      "iwb validation report",
+      fmt::format("<p>Generated {} by iwb {}. Compression positive, u_n &gt; 0 is dilation, kPa and mm. Figures are also "
+                  "in {} as SVG and PNG, each with its data (CSV) and gnuplot script.</p>\n{}",
+                  io::utc_timestamp(), IWB_VERSION, escape_html(files.final_path().filename().string()), body));
   files.commit();
   io::write_atomically(html, page);
   return figures;

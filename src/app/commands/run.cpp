@@ -1,4 +1,5 @@
-// `iwb run`: the continuum study on seed Table 5.1 (app/default_job.hpp).
+// `iwb run [--study sand|clay]`: the continuum studies. sand: hvwe against vw3d on seed Table 5.1
+// (app/default_job.hpp); clay: the seed's 6.4 comparisons of the clay models (studies/).
 #include <memory>
 #include <string>
 
@@ -6,24 +7,37 @@
 #include "app/commands/commands.hpp"
 #include "app/default_job.hpp"
 #include "app/option_checks.hpp"
+#include "studies/clay_study.hpp"
 
 namespace iwb::app {
 
 namespace {
 struct RunOptions {
-  std::string out = "runs/default";
+  std::string study = "sand", out;
   bool force = false;
 };
+
+int run_study(const RunOptions& o, const CommandContext& c) {
+  if (o.study == "clay")
+    return studies::run_clay_study({o.out.empty() ? "runs/clay" : o.out, o.force, c.command_line, c.interrupt});
+  return run_default_job(o.out.empty() ? "runs/default" : o.out, o.force, c.command_line);
+}
 }  // namespace
 
 void add_run_command(CLI::App& app, CommandList& commands) {
   auto o = std::make_shared<RunOptions>();
   auto* run = app.add_subcommand(
-      "run", "The main job on the embedded default: hvwe against its 3D reference vw3d in simple "
-             "shear under CNL, CNS and CV (seed Table 5.1), with a table of their differences.");
-  run->add_option("--out,-o", o->out, "output directory")->check(output_directory())->capture_default_str();
+      "run", "The continuum studies. sand (default): hvwe against its 3D reference vw3d in simple shear under CNL, "
+             "CNS and CV (seed Table 5.1), with a table of their differences. clay: the seed's section 6.4 "
+             "comparisons of the clay interface models (HCC against HCE under CV, CNL and CNS; roughness kappa_r and "
+             "the two roughness schemes; intergranular strain under cyclic CNL and CV), each case an element run "
+             "directory, the seed's claims checked in study.md and study.json, and clay.html with the figures "
+             "(src/studies/README.md).");
+  run->add_option("--study", o->study, "sand or clay")->check(CLI::IsMember({"sand", "clay"}))->capture_default_str();
+  run->add_option("--out,-o", o->out, "output directory (default runs/default for sand, runs/clay for clay)")
+      ->check(output_directory());
   run->add_flag("--force", o->force, "replace earlier runs in the output directory");
-  commands.add(run, [o](const CommandContext& c) { return run_default_job(o->out, o->force, c.command_line); });
+  commands.add(run, [o](const CommandContext& c) { return run_study(*o, c); });
 }
 
 }  // namespace iwb::app

@@ -1,0 +1,125 @@
+#include "studies/clay_figures.hpp"
+
+#include <fmt/core.h>
+
+#include "comparison/figure.hpp"
+#include "comparison/html.hpp"
+#include "io/output_path.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::studies {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+enum class Axis { kGamma, kEpsN, kTau, kSigmaN };
+
+const std::vector<double>& values(const ClayCurve& c, Axis a) {
+  switch (a) {
+    case Axis::kGamma: return c.gamma;
+    case Axis::kEpsN: return c.eps_n;
+    case Axis::kTau: return c.tau;
+    case Axis::kSigmaN: return c.sigma_n;
+  }
+  return c.tau;
+}
+
+const char* label(Axis a) {
+  switch (a) {
+    case Axis::kGamma: return "shear strain gamma_x";
+    case Axis::kEpsN: return "normal strain eps_n (opening positive)";
+    case Axis::kTau: return "shear stress tau_x (kPa)";
+    case Axis::kSigmaN: return "normal stress sigma_n (kPa)";
+  }
+  return "";
+}
+
+struct FigureSpec {
+  std::string name, title;
+  Axis x, y;
+  std::vector<std::pair<std::string, std::string>> curves;  // case, title
+  double gamma_limit = 1.0;                                 // rows beyond this shear strain are left out
+};
+
+std::vector<FigureSpec> figure_specs() {
+  const std::vector<std::pair<std::string, std::string>> cv{
+      {"cv100_hcc", "HCC 100 kPa"}, {"cv100_hce", "HCE 100 kPa"}, {"cv300_hcc", "HCC 300 kPa"}, {"cv300_hce", "HCE 300 kPa"}};
+  const std::vector<std::pair<std::string, std::string>> cnl{
+      {"cnl100_hcc", "HCC 100 kPa"}, {"cnl100_hce", "HCE 100 kPa"}, {"cnl300_hcc", "HCC 300 kPa"}, {"cnl300_hce", "HCE 300 kPa"}};
+  const std::vector<std::pair<std::string, std::string>> cns{
+      {"cnl100_hcc", "HCC CNL"},          {"cns100_K100_hcc", "HCC K = 100 kPa"}, {"cns100_K1000_hcc", "HCC K = 1000 kPa"},
+      {"cnl100_hce", "HCE CNL"},          {"cns100_K100_hce", "HCE K = 100 kPa"}, {"cns100_K1000_hce", "HCE K = 1000 kPa"}};
+  return {
+      {"fig_6_3a_cv_tau", "CV: shear stress (seed Fig. 6.3a)", Axis::kGamma, Axis::kTau, cv},
+      {"fig_6_3b_cv_sigma_n", "CV: normal stress (seed Fig. 6.3b)", Axis::kGamma, Axis::kSigmaN, cv},
+      {"fig_6_4_cv_path", "CV: stress path (seed Fig. 6.4)", Axis::kSigmaN, Axis::kTau, cv},
+      {"fig_6_5a_cnl_tau", "CNL: shear stress (seed Fig. 6.5a)", Axis::kGamma, Axis::kTau, cnl},
+      {"fig_6_5b_cnl_eps_n", "CNL: normal strain (seed Fig. 6.5b)", Axis::kGamma, Axis::kEpsN, cnl},
+      {"fig_6_6a_cns_tau", "CNS from 100 kPa: shear stress (seed Fig. 6.6)", Axis::kGamma, Axis::kTau, cns},
+      {"fig_6_6b_cns_sigma_n", "CNS from 100 kPa: normal stress (seed Fig. 6.6)", Axis::kGamma, Axis::kSigmaN, cns},
+      {"fig_6_7a_roughness", "CNL 100 kPa, kappa_r 1, 0.75, 0.5, each model's own scheme (seed Fig. 6.7a)", Axis::kGamma,
+       Axis::kTau,
+       {{"cnl100_hcc", "HCC 1"}, {"cnl100_hcc_k0.75", "HCC 0.75"}, {"cnl100_hcc_k0.5", "HCC 0.5"},
+        {"cnl100_hce", "HCE 1"}, {"cnl100_hce_k0.75", "HCE 0.75"}, {"cnl100_hce_k0.5", "HCE 0.5"}}},
+      {"fig_6_7b_schemes", "kappa_r 0.5: Arnold & Herle against Stutz & Masin, small strains (seed Fig. 6.7b)", Axis::kGamma,
+       Axis::kTau,
+       {{"cnl100_hcc_k0.5", "HCC Arnold & Herle"}, {"cnl100_hcc_k0.5_stutz-masin", "HCC Stutz & Masin"},
+        {"cnl100_hce_k0.5_arnold-herle", "HCE Arnold & Herle"}, {"cnl100_hce_k0.5", "HCE Stutz & Masin"}},
+       0.02},
+      {"fig_6_11a_cyclic_cnl", "HCE without and with intergranular strain, cyclic CNL 100 kPa, Table 6.4 (seed Fig. 6.11)",
+       Axis::kGamma, Axis::kTau, {{"cyclic_cnl_hce", "HCE"}, {"cyclic_cnl_hce-igs", "HCE with intergranular strain"}}},
+      {"fig_6_11b_cyclic_cv", "HCE without and with intergranular strain, cyclic CV from 100 kPa: stress path", Axis::kSigmaN,
+       Axis::kTau, {{"cyclic_cv_hce", "HCE"}, {"cyclic_cv_hce-igs", "HCE with intergranular strain"}}},
+  };
+}
+
+comparison::Figure figure_of(const FigureSpec& spec, const std::map<std::string, ClayCurve>& curves) {
+  std::vector<comparison::PlotCurve> plotted;
+  for (const auto& [name, title] : spec.curves) {
+    const auto& c = curves.at(name);
+    comparison::PlotCurve p{title, {}, {}};
+    for (std::size_t k = 0; k < c.gamma.size() && c.gamma[k] <= spec.gamma_limit; ++k) {
+      p.x.push_back(values(c, spec.x)[k]);
+      p.y.push_back(values(c, spec.y)[k]);
+    }
+    plotted.push_back(p);
+  }
+  return comparison::curves_figure(spec.name, spec.title, label(spec.x), label(spec.y), plotted);
+}
+
+}  // namespace
+
+std::vector<StudyFigure> draw_clay_figures(const std::map<std::string, ClayCurve>& curves, const fs::path& out) {
+  io::StagedDirectory staged(out / "figures");
+  std::vector<StudyFigure> figures;
+  for (const auto& spec : figure_specs()) {
+    comparison::draw(figure_of(spec, curves), staged.path());
+    figures.push_back({out / "figures" / (spec.name + ".svg"), spec.title});
+  }
+  staged.commit();
+  return figures;
+}
+
+std::string clay_page(const std::vector<ClayClaim>& claims, const std::vector<StudyFigure>& figures, const fs::path& out) {
+  using comparison::escape_html;
+  std::string body = fmt::format(
+      "<p>Generated {} by iwb {} (<code>iwb run --study clay</code>). Seed section 6.4 redrawn: Table 6.1 (lambda* 0.1, "
+      "kappa* 0.01, nu 0.2, phi_c 25 deg, N 1.0) and Table 6.4 for the intergranular strain, normally consolidated "
+      "starts (OCR 1) at K0 = 1 - sin phi_c, d_s = 1 mm; compression positive, kPa. Each case is an element run "
+      "directory beside this page; each figure is also an SVG and PNG with its CSV and gnuplot script in figures/.</p>\n"
+      "<section><h2>The seed's claims</h2>\n<table><tr><th>seed</th><th>claim</th><th>measured</th><th>verdict</th></tr>\n",
+      io::utc_timestamp(), IWB_VERSION);
+  for (const auto& c : claims)
+    body += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"{}\">{}</td></tr>\n", escape_html(c.section),
+                        escape_html(c.claim), escape_html(c.measured), c.holds ? "holds" : "breaks",
+                        c.holds ? "holds" : "does not hold");
+  body += "</table></section>\n<section><h2>Figures</h2>\n";
+  for (const auto& f : figures)
+    body += fmt::format("<figure>{}<figcaption>{} (data: {})</figcaption></figure>\n", comparison::inline_svg(f.svg),
+                        escape_html(f.caption),
+                        escape_html(fs::relative(f.svg.parent_path() / (f.svg.stem().string() + ".csv"), out).string()));
+  return comparison::html_page("iwb clay study: the interface models of seed 6.4", body + "</section>\n");
+}
+
+}  // namespace iwb::studies
