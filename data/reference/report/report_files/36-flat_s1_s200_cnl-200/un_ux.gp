@@ -1,0 +1,14 @@
+set datafile separator ','
+set key below
+set grid
+set title 'u_n (mm), dilation positive against u_x'
+set xlabel 'u_x (mm)'
+set ylabel 'u_n (mm), dilation positive'
+
+set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'
+set output 'un_ux.svg'
+plot 'un_ux.csv' using 1:6:7 skip 1 with filledcurves fc rgb '#d8d8d8' fs solid 0.6 title 'DEM, mean ± SD over seeds', 'un_ux.csv' using 1:3 skip 1 with lines lw 1.5 title 'predicted: kappa_r = 0.05 (flat wall: eq. 5.35''s floor), d_s = 5 d50', 'un_ux.csv' using 1:4 skip 1 with lines lw 1.5 title 'fitted to tau alone: kappa_r = 0.724 +- 0.004, d_s = 3.33 +- 0.17 mm (1.7 d50)', 'un_ux.csv' using 1:5 skip 1 with lines lw 1.5 title 'fitted to tau and u_n: kappa_r = 0.875 +- 0.009, d_s = 7.35 +- 0.48 mm (3.7 d50)', 'un_ux.csv' using 1:2 skip 1 with lines lw 3 lc rgb '#000000' title 'DEM (this run)'
+set terminal pngcairo size 900,560 font 'sans,10' noenhanced
+set output 'un_ux.png'
+replot
+unset output
