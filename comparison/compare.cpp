@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "common/errors.hpp"
 #include "comparison/feasibility.hpp"
 #include "comparison/metrics.hpp"
 #include "comparison/verdicts.hpp"
@@ -125,6 +126,30 @@ std::vector<Variant> standard_variants(const DemRun& dem, const std::string& mod
   return out;
 }
 
+namespace {
+// --roughness-scheme and --f-c applied to a variant's wall; InputError for what the model does not take.
+void chosen_roughness(const CompareOptions& opt, models::Roughness& r) {
+  const auto& support = models::find_model(opt.model).declaration.roughness;
+  if (!opt.roughness_scheme.empty()) {
+    std::string allowed;
+    bool known = false;
+    for (const auto s : support.schemes) {
+      allowed += fmt::format("{}{}", allowed.empty() ? "" : ", ", models::to_string(s));
+      if (opt.roughness_scheme == models::to_string(s)) r.scheme = s, known = true;
+    }
+    if (!known)
+      throw InputError(fmt::format("--roughness-scheme {}: {} takes {}", opt.roughness_scheme, opt.model,
+                                   allowed.empty() ? "no wall roughness" : allowed));
+  }
+  if (!opt.f_c.empty()) {
+    if (r.scheme != models::RoughnessScheme::kArnoldHerle || !support.from_normalized_roughness)
+      throw InputError(fmt::format("--f-c {}: the rate factor of Arnold & Herle's sand scheme; give --roughness-scheme "
+                                   "arnold-herle with a sand model", opt.f_c));
+    r.f_c = models::parse_arnold_herle_factor(opt.f_c, "--f-c");
+  }
+}
+}  // namespace
+
 models::ModelInputs validated_parameters(const std::string& model, const std::string& params) {
   models::ModelInputs in;
   in.tables = io::load_parameter_file(params);
@@ -141,9 +166,13 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
   const models::ModelInputs params = validated_parameters(opt.model, opt.params);
   io::prepare_run_directory(opt.out, opt.force);
   json manifest = manifest_of(opt);
+  if (!opt.roughness_scheme.empty()) manifest["inputs"]["roughness_scheme"] = opt.roughness_scheme;
+  if (!opt.f_c.empty()) manifest["inputs"]["f_c"] = opt.f_c;
   io::write_manifest(opt.out, manifest);
 
   auto candidates = standard_variants(dem, opt.model, params, opt.predicted_ds_d50);
+  if (!opt.roughness_scheme.empty() || !opt.f_c.empty())
+    for (auto& v : candidates) chosen_roughness(opt, v.inputs.roughness);
   const Variant predicted = candidates.front();
   const FitResult tau_fit = fit_kappa_and_ds(dem, predicted, tau_only_targets());
   const FitTargets joint = joint_targets(dem, scatter);

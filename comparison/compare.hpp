@@ -32,6 +32,9 @@ struct CompareOptions {
   std::string command_line;
   std::vector<std::filesystem::path> seed_dirs;  // runs of the same scene with other seeds
   double predicted_ds_d50 = kDefaultPredictedDsD50;
+  // The wall's scheme for every variant instead of the model's default (one it declares), and
+  // Arnold & Herle's f_c reading (ERRATA 9): empty = the defaults.
+  std::string roughness_scheme, f_c;
 };
 
 // kappa_r from the wall's R_n by Gutjahr's eq. 5.35 in the given log base; a flat wall (R_n = 0)

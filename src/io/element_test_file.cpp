@@ -69,6 +69,14 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
     if (scheme == models::to_string(s)) spec.inputs.roughness.scheme = s, known = true;
   }
   if (!known) throw InputError(fmt::format("{} = \"{}\"; allowed {}", r->where("scheme"), scheme, allowed));
+  // ERRATA 9: the reading of Arnold & Herle's f_c (eq. 5.40), for their sand scheme only
+  const auto f_c = r->optional_text("f_c");
+  const bool sand_arnold_herle = spec.inputs.roughness.scheme == models::RoughnessScheme::kArnoldHerle &&
+                                 support.from_normalized_roughness;
+  if (f_c && !sand_arnold_herle)
+    throw InputError(fmt::format("{}: f_c is the rate factor of Arnold & Herle's sand scheme (eq. 5.40); "
+                                 "give scheme = \"arnold-herle\" with a sand model, or drop it", r->where("f_c")));
+  if (f_c) spec.inputs.roughness.f_c = models::parse_arnold_herle_factor(*f_c, r->where("f_c"));
   const std::string source = r->one_of({"kappa_r", "R_n", "delta_deg"});
   if (source == "R_n" && !support.from_normalized_roughness)
     throw InputError(fmt::format("{}: model '{}' takes no R_n (eq. 5.35 is Gutjahr's for sand); give kappa_r or "
@@ -95,6 +103,7 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
   spec.inputs.roughness.kappa_r = k.value;
   for (auto& w : k.warnings) spec.warnings.push_back(r->where() + ": " + w);
   spec.resolved["roughness"] = {{"scheme", scheme}, {"kappa_r", k.value}, {"origin", origin}};
+  if (f_c) spec.resolved["roughness"]["f_c"] = models::to_string(spec.inputs.roughness.f_c);
 }
 
 bool has_intergranular_strain(const std::string& model) {

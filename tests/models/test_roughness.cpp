@@ -38,6 +38,32 @@ TEST_CASE("the two schemes as data: Gutjahr scales alpha, Arnold & Herle the rat
   CHECK(ah.rate_factor == Approx(1.0 / 0.6));
 }
 
+// ERRATA 9: f_c multiplies the whole stress rate (eq. 5.41), so the two readings differ at any state
+// by the factor (1/kappa_r) / kappa_r = 1/kappa_r^2 in every stress component, and coincide at
+// kappa_r = 1; the void ratio's rate (1 + e) tr D is kinematic and the same in both.
+TEST_CASE("Arnold & Herle's f_c: the printed 1/kappa_r and the reading kappa_r differ by 1/kappa_r^2", "[roughness]") {
+  for (double k : {0.5, 1.0}) {
+    INFO("kappa_r " << k);
+    auto printed = test::table_5_1(k, RoughnessScheme::kArnoldHerle);
+    auto reading = printed;
+    reading.roughness.f_c = models::ArnoldHerleFactor::kProportional;
+    const auto& spec = models::find_model("hvwe");
+    const auto a = spec.make(printed), b = spec.make(reading);
+    const auto s0 = a->initial_state(models::offer(spec, printed, {{"sigma_n_kPa", 100.0}, {"e0", 0.75}}));
+    models::StateVector ra(s0.size()), rb(s0.size());
+    a->rate(s0, {-1e-5, 1e-4, 0.0}, ra);
+    b->rate(s0, {-1e-5, 1e-4, 0.0}, rb);
+    const auto ta = a->stress(ra), tb = b->stress(rb);
+    CHECK(ta.sigma_n == Approx(tb.sigma_n / (k * k)).epsilon(1e-12));
+    CHECK(*ta.sigma_p == Approx(*tb.sigma_p / (k * k)).epsilon(1e-12));
+    CHECK(ta.tau_x == Approx(tb.tau_x / (k * k)).epsilon(1e-12));
+    CHECK(a->void_ratio(ra) == b->void_ratio(rb));
+  }
+  CHECK(models::parse_arnold_herle_factor("kappa_r", "x") == models::ArnoldHerleFactor::kProportional);
+  CHECK_THROWS_WITH(models::parse_arnold_herle_factor("2", "file.toml [roughness] f_c"),
+                    Catch::Contains("file.toml [roughness] f_c") && Catch::Contains("1/kappa_r"));
+}
+
 namespace {
 test::Run cnl(double kappa, RoughnessScheme scheme) {
   test::ShearSpec s;

@@ -93,6 +93,12 @@ void add_compare_command(CLI::App& app, CommandList& commands) {
   compare->add_option("--model", copt.model, "continuum model (iwb models)")->capture_default_str();
   compare->add_option("--params", copt.params, "parameter file (data/params/)")->required()->check(input_file());
   compare->add_option("--out,-o", o->out, "output directory (default runs/compare-<dem run>)")->check(output_directory());
+  compare->add_option("--roughness-scheme", copt.roughness_scheme,
+                      "the wall's roughness scheme for every variant instead of the model's default (one the model "
+                      "declares: iwb models)")->excludes("--runs");
+  compare->add_option("--f-c", copt.f_c, "Arnold & Herle's rate factor: 1/kappa_r (eq. 5.40 as printed, default) or "
+                                         "kappa_r (ERRATA 9); with --roughness-scheme arnold-herle")
+      ->check(CLI::IsMember({"1/kappa_r", "kappa_r"}))->excludes("--runs");
   compare->add_flag("--allow-partial", copt.allow_partial, "compare a failed or interrupted DEM run");
   compare->add_flag("--force", copt.force, "replace an earlier comparison in the same directory");
   commands.add(compare, [o](const CommandContext& c) {

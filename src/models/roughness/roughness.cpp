@@ -11,8 +11,17 @@ namespace iwb::models {
 RoughnessEffect effect_of(const Roughness& r) {
   const double k = r.kappa_r;
   if (r.scheme == RoughnessScheme::kGutjahr) return {k, k * k, 1.0};  // eqs. 5.37-5.39
-  return {k, 1.0, 1.0 / k};                                           // eqs. 5.37, 5.40, 5.41
+  return {k, 1.0, r.f_c == ArnoldHerleFactor::kReciprocal ? 1.0 / k : k};  // eqs. 5.37, 5.40, 5.41; ERRATA 9
 }
+
+ArnoldHerleFactor parse_arnold_herle_factor(const std::string& text, const std::string& where) {
+  if (text == "1/kappa_r") return ArnoldHerleFactor::kReciprocal;
+  if (text == "kappa_r") return ArnoldHerleFactor::kProportional;
+  throw InputError(fmt::format("{}: f_c = '{}': Arnold & Herle's rate factor is \"1/kappa_r\" (eq. 5.40 as printed) or "
+                               "\"kappa_r\" (the reading of 5.7.3, ERRATA 9)", where, text));
+}
+
+const char* to_string(ArnoldHerleFactor f) { return f == ArnoldHerleFactor::kReciprocal ? "1/kappa_r" : "kappa_r"; }
 
 namespace {
 KappaR clamped(double raw, const std::string& origin) {

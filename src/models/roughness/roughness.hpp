@@ -13,10 +13,20 @@ namespace iwb::models {
 // kStutzMasin: the clay scheme of seed 6.2.4 (eqs. 6.23-6.28), for hce.
 enum class RoughnessScheme { kGutjahr, kArnoldHerle, kStutzMasin };
 
+// Arnold & Herle's factor on the whole rate (ERRATA 9): eq. 5.40 prints f_c = 1/kappa_r, which
+// makes a smoother wall stiffer; the text of 5.7.3-5.7.4 calls it softer, which fits f_c = kappa_r.
+// Both are offered until the DEM decides.
+enum class ArnoldHerleFactor { kReciprocal, kProportional };
+
 struct Roughness {
   RoughnessScheme scheme = RoughnessScheme::kGutjahr;
   double kappa_r = 1.0;  // (0, 1]; 1 = fully rough
+  ArnoldHerleFactor f_c = ArnoldHerleFactor::kReciprocal;  // read only by Arnold & Herle's sand scheme
 };
+
+// "1/kappa_r" (as printed, the default) or "kappa_r"; InputError naming `where` otherwise.
+ArnoldHerleFactor parse_arnold_herle_factor(const std::string& text, const std::string& where);
+const char* to_string(ArnoldHerleFactor f);
 
 // How kappa_r enters the hypoplastic rate.
 struct RoughnessEffect {
