@@ -131,18 +131,14 @@ namespace {
 void chosen_roughness(const CompareOptions& opt, models::Roughness& r) {
   const auto& support = models::find_model(opt.model).declaration.roughness;
   if (!opt.roughness_scheme.empty()) {
-    std::string allowed;
-    bool known = false;
-    for (const auto s : support.schemes) {
-      allowed += fmt::format("{}{}", allowed.empty() ? "" : ", ", models::to_string(s));
-      if (opt.roughness_scheme == models::to_string(s)) r.scheme = s, known = true;
-    }
-    if (!known)
+    const auto named = support.scheme_named(opt.roughness_scheme);
+    if (!named)
       throw InputError(fmt::format("--roughness-scheme {}: {} takes {}", opt.roughness_scheme, opt.model,
-                                   allowed.empty() ? "no wall roughness" : allowed));
+                                   support.schemes.empty() ? "no wall roughness" : support.scheme_names(", ")));
+    r.scheme = *named;
   }
   if (!opt.f_c.empty()) {
-    if (r.scheme != models::RoughnessScheme::kArnoldHerle || !support.from_normalized_roughness)
+    if (!support.reads_arnold_herle_factor(r.scheme))
       throw InputError(fmt::format("--f-c {}: the rate factor of Arnold & Herle's sand scheme; give --roughness-scheme "
                                    "arnold-herle with a sand model", opt.f_c));
     r.f_c = models::parse_arnold_herle_factor(opt.f_c, "--f-c");
@@ -164,15 +160,15 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
   const SeedScatter scatter = seed_scatter(dem, seeds);  // InputError for a seed of another scene
   const Tolerances tolerances = tolerances_for(dem);
   const models::ModelInputs params = validated_parameters(opt.model, opt.params);
+  auto candidates = standard_variants(dem, opt.model, params, opt.predicted_ds_d50);
+  if (!opt.roughness_scheme.empty() || !opt.f_c.empty())  // refused before anything is written
+    for (auto& v : candidates) chosen_roughness(opt, v.inputs.roughness);
   io::prepare_run_directory(opt.out, opt.force);
   json manifest = manifest_of(opt);
   if (!opt.roughness_scheme.empty()) manifest["inputs"]["roughness_scheme"] = opt.roughness_scheme;
   if (!opt.f_c.empty()) manifest["inputs"]["f_c"] = opt.f_c;
   io::write_manifest(opt.out, manifest);
 
-  auto candidates = standard_variants(dem, opt.model, params, opt.predicted_ds_d50);
-  if (!opt.roughness_scheme.empty() || !opt.f_c.empty())
-    for (auto& v : candidates) chosen_roughness(opt, v.inputs.roughness);
   const Variant predicted = candidates.front();
   const FitResult tau_fit = fit_kappa_and_ds(dem, predicted, tau_only_targets());
   const FitTargets joint = joint_targets(dem, scatter);

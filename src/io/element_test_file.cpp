@@ -62,18 +62,13 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
     throw InputError(fmt::format("{}: model '{}' is a continuum model and takes no wall roughness; "
                                  "remove the table", r->where(), spec.model));
   const std::string scheme = r->optional_text("scheme").value_or(models::to_string(support.default_scheme));
-  std::string allowed;
-  bool known = false;
-  for (const auto s : support.schemes) {
-    allowed += fmt::format("{}\"{}\"", allowed.empty() ? "" : " or ", models::to_string(s));
-    if (scheme == models::to_string(s)) spec.inputs.roughness.scheme = s, known = true;
-  }
-  if (!known) throw InputError(fmt::format("{} = \"{}\"; allowed {}", r->where("scheme"), scheme, allowed));
+  const auto named = support.scheme_named(scheme);
+  if (!named)
+    throw InputError(fmt::format("{} = \"{}\"; allowed {}", r->where("scheme"), scheme, support.scheme_names(" or ")));
+  spec.inputs.roughness.scheme = *named;
   // ERRATA 9: the reading of Arnold & Herle's f_c (eq. 5.40), for their sand scheme only
   const auto f_c = r->optional_text("f_c");
-  const bool sand_arnold_herle = spec.inputs.roughness.scheme == models::RoughnessScheme::kArnoldHerle &&
-                                 support.from_normalized_roughness;
-  if (f_c && !sand_arnold_herle)
+  if (f_c && !support.reads_arnold_herle_factor(*named))
     throw InputError(fmt::format("{}: f_c is the rate factor of Arnold & Herle's sand scheme (eq. 5.40); "
                                  "give scheme = \"arnold-herle\" with a sand model, or drop it", r->where("f_c")));
   if (f_c) spec.inputs.roughness.f_c = models::parse_arnold_herle_factor(*f_c, r->where("f_c"));

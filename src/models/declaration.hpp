@@ -7,6 +7,7 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -109,6 +110,15 @@ struct RoughnessSupport {
   RoughnessScheme default_scheme = RoughnessScheme::kGutjahr;
   bool from_normalized_roughness = false;  // eq. 5.35 (Gutjahr, granular) allowed
   KappaFromAngle from_angle = KappaFromAngle::kNone;
+
+  // The declared scheme called `name` ("gutjahr", ...), nullopt if the model declares none such.
+  std::optional<RoughnessScheme> scheme_named(const std::string& name) const;
+  // The declared schemes' names, quoted and joined by `separator`, for messages.
+  std::string scheme_names(const std::string& separator) const;
+  // Whether Arnold & Herle's rate factor f_c (eq. 5.40, ERRATA 9) applies: their sand scheme only.
+  bool reads_arnold_herle_factor(RoughnessScheme scheme) const {
+    return scheme == RoughnessScheme::kArnoldHerle && from_normalized_roughness;
+  }
 };
 
 // What a prediction may use of a DEM run: a plain struct, so models/ does not depend on comparison/.
