@@ -10,6 +10,8 @@ PACKAGES=(
   libeigen3-dev catch2 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev libssl-dev
   liggghts libliggghts-dev yade gnuplot-nox libnlopt-cxx-dev
   chromium  # the report test opens the HTML in headless Chromium
+  libvtk9-dev  # VTK's legacy readers and XML writers (issue 21); beside YADE's python3-vtk9
+  paraview     # the tests open the .pvd outputs in ParaView itself (pvpython, below)
 )
 
 missing=()
@@ -22,6 +24,21 @@ if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}"
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# ParaView's Python (pvpython) is Debian's python3-paraview, which declares a conflict with
+# python3-vtk9 (both ship a `vtkmodules` package) and so cannot be installed beside YADE. Its files
+# work from a private prefix: the package is unpacked there, not installed (tools/paraview/pvpython).
+PARAVIEW_PREFIX=/opt/iwb-paraview
+if [ ! -x "$PARAVIEW_PREFIX/usr/bin/pvpython3.11" ]; then
+  echo "setup: unpacking python3-paraview into $PARAVIEW_PREFIX"
+  sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  download=$(mktemp -d)
+  chmod 777 "$download"
+  (cd "$download" && apt-get download -qq python3-paraview)
+  $sudo dpkg -x "$download"/python3-paraview_*.deb "$PARAVIEW_PREFIX"
+  rm -rf "$download"
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fmt/core.h>
 
+#include "coarse_graining/run_fields.hpp"
 #include "common/errors.hpp"
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
@@ -11,14 +12,34 @@
 
 namespace iwb::bench {
 
+namespace {
+
+struct FieldsCost {
+  double per_snapshot_s, engine_per_snapshot_s;
+};
+
+// The coarse-graining of the run's snapshots timed on its own, against the engine's time to
+// produce a snapshot (the shear stage's loop time over the intervals between snapshots).
+FieldsCost fields_cost(const std::filesystem::path& dir, const nlohmann::json& manifest) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto fields = coarse_graining::coarse_grain_run(dir, {std::nullopt, true, nullptr});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double snapshots = fields.value("snapshots", 1.0);
+  const double shear = manifest["stages"]["shear"]["facts"].value("engine_loop_seconds", 0.0);
+  return {seconds / snapshots, shear / std::max(1.0, snapshots - 1.0)};
+}
+
+}  // namespace
+
 nlohmann::json run_dem_bench(const DemBenchOptions& opt) {
   dem::make_engine(opt.engine);  // an unknown engine is refused before anything runs
   const std::string text = io::read_file(opt.scene);
   const auto scene = dem::parse_scene(text, opt.scene);
   fmt::print("iwb bench dem: {} in {} ({} particles requested), one full run per rank count\n\n",
              opt.scene, opt.engine, scene.particle_count);
-  fmt::print("{:>5} {:>10} {:>14} {:>12} {:>16} {:>10} {:>12} {:>10}\n", "ranks", "particles",
-             "particle-steps", "engine loop s", "particle-steps/s", "total s", "workbench s", "share");
+  fmt::print("{:>5} {:>10} {:>14} {:>12} {:>16} {:>10} {:>12} {:>10} {:>14} {:>14}\n", "ranks", "particles",
+             "particle-steps", "engine loop s", "particle-steps/s", "total s", "workbench s", "share",
+             "cg s/snapshot", "shear s/snapshot");
   nlohmann::json out = nlohmann::json::array();
   const auto tmp = std::filesystem::temp_directory_path() / fmt::format("iwb-bench-dem-{}", ::getpid());
   for (int np : opt.ranks) {
@@ -38,16 +59,21 @@ nlohmann::json run_dem_bench(const DemBenchOptions& opt) {
     // The workbench's own time: generating inputs, and everything outside the engine process
     // (following its output is done while it runs and costs no wall time of its own).
     const double workbench = total - process;
-    fmt::print("{:>5} {:>10} {:>14.4g} {:>12.2f} {:>16.3g} {:>10.2f} {:>12.3f} {:>9.2f}%\n", np,
+    const FieldsCost cg = fields_cost(dir, outcome.manifest);
+    fmt::print("{:>5} {:>10} {:>14.4g} {:>12.2f} {:>16.3g} {:>10.2f} {:>12.3f} {:>9.2f}% {:>14.3f} {:>14.2f}\n", np,
                outcome.manifest.value("particle_count", 0), steps, loop, steps / loop, total, workbench,
-               100.0 * workbench / total);
+               100.0 * workbench / total, cg.per_snapshot_s, cg.engine_per_snapshot_s);
     out.push_back({{"ranks", np}, {"particle_steps", steps}, {"engine_loop_seconds", loop},
                    {"particle_steps_per_second", steps / loop}, {"total_seconds", total},
-                   {"workbench_seconds", workbench}, {"generation_seconds", generation}});
+                   {"workbench_seconds", workbench}, {"generation_seconds", generation},
+                   {"coarse_graining_seconds_per_snapshot", cg.per_snapshot_s},
+                   {"shear_engine_seconds_per_snapshot", cg.engine_per_snapshot_s}});
   }
   std::filesystem::remove_all(tmp);
   fmt::print("\nengine loop: the engine's own time in its run loops (IWB_COST: LIGGGHTS' 'Loop time', YADE's O.run); total: the whole `iwb dem run`; workbench: total\n"
-             "minus the engine processes (input generation, output parsing, contract assembly, summary)\n");
+             "minus the engine processes (input generation, output parsing, contract assembly, summary, coarse-graining);\n"
+             "cg s/snapshot: `iwb dem fields --force` per particle snapshot (x-z image, profile, checks); shear s/snapshot:\n"
+             "the engine's shear-stage loop time between two snapshots\n");
   return out;
 }
 

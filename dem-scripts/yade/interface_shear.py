@@ -402,6 +402,33 @@ def stress_volume_sums(volumes):
     return sums
 
 
+def export_snapshot(vtk):
+    """Particles, walls and contacts in the raw layout of src/dem/snapshots.hpp (LIGGGHTS's): point
+    arrays id, mass, v, omega (radius is VTKExporter's own); contact rows of 15 columns, the force on
+    the first body. Positions are YADE's (unwrapped, lifted by ZS): the workbench shifts them."""
+    vtk.exportSpheres(ids=IDS["grains"], numLabel=O.iter,
+                      what=dict(id="b.id", mass="b.state.mass", v="b.state.vel", omega="b.state.angVel"))
+    vtk.exportFacets(ids=[i for i in IDS["wall"] if isinstance(O.bodies[i].shape, Facet)] + IDS["plate"],
+                     numLabel=O.iter)
+    boundary = set(IDS["wall"]) | set(IDS["plate"])
+    fmt = " ".join(["%.9g"] * 15) + "\n"
+    with open("dumps/pairs_%d.txt" % O.iter, "w") as pairs, open("dumps/wall_contacts_%d.txt" % O.iter, "w") as walls:
+        for i in O.interactions:
+            if not i.isReal:
+                continue
+            f2 = i.phys.normalForce + i.phys.shearForce  # YADE's law adds it to id2 and its negative to id1
+            c = i.geom.contactPoint
+            if i.id1 in boundary or i.id2 in boundary:
+                grain, f = (i.id2, f2) if i.id1 in boundary else (i.id1, -f2)
+                x = O.bodies[grain].state.pos
+                walls.write(fmt % (c[0], c[1], c[2], x[0], x[1], x[2], 0, 0, grain, f[0], f[1], f[2], 0, 0, 0))
+                continue
+            x1 = O.bodies[i.id1].state.pos
+            x2 = O.bodies[i.id2].state.pos + O.cell.hSize * i.cellDist  # the image in contact
+            f = -f2
+            pairs.write(fmt % (x1[0], x1[1], x1[2], x2[0], x2[1], x2[2], i.id1, i.id2, 0, f[0], f[1], f[2], c[0], c[1], c[2]))
+
+
 def shear():
     load_consolidated()
     run(P["relax_steps"])
@@ -422,8 +449,9 @@ def shear():
     # One loop over the shear in chunks of the smallest output period; outputs fall on chunk ends.
     chunk = 10
     sample_every = max(chunk, (sh["profile_every"] // max(1, min(20, sh["profile_repeat"]))) // chunk * chunk)
-    vtk = export.VTKExporter("../vtk/yade")
+    vtk = export.VTKExporter("dumps/yade")
     out.timeseries(0.0)  # the state when shear starts (u_x = 0): the relaxation's last step
+    export_snapshot(vtk)
     done = 0
     while done < sh["steps"]:
         n = min(chunk, sh["steps"] - done)
@@ -438,9 +466,7 @@ def shear():
         if step % sh["profile_every"] < chunk and out.samples:
             out.profile(O.iter)
         if step % sh["vtk_every"] < chunk:
-            vtk.exportSpheres(ids=IDS["grains"], what=dict(velocity="b.state.vel"), numLabel=O.iter)
-            vtk.exportFacets(ids=[i for i in IDS["wall"] if isinstance(O.bodies[i].shape, Facet)] + IDS["plate"],
-                             numLabel=O.iter)
+            export_snapshot(vtk)
         if step % sh["progress_every"] < chunk:
             say("IWB_PROGRESS %.9g %.9g" % (sh["velocity"] * t if sh["cyclic"] else wall_displacement(t), sh["u_total"]))
     ux = O.bodies[IDS["wall"][0]].state.pos[0] - REF["wall_x"]

@@ -81,21 +81,6 @@ io::CsvTable profile_table(const Scene& s, const Numerics& n, const ProfileBlock
   return t;
 }
 
-void write_pvd(const fs::path& dir, const std::string& stem, const std::string& pattern, long step0, double dt) {
-  const std::regex re(pattern);
-  std::map<long, std::string> files;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    std::smatch m;
-    const std::string name = e.path().filename().string();
-    if (std::regex_match(name, m, re)) files[std::stol(m[1])] = name;
-  }
-  std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  for (const auto& [step, name] : files)
-    xml += fmt::format("  <DataSet timestep=\"{:.9g}\" file=\"{}\"/>\n", double(step - step0) * dt, name);
-  xml += "</Collection>\n</VTKFile>\n";
-  io::write_atomically(dir / (stem + ".pvd"), xml);
-}
-
 nlohmann::json plate_facts(const Scene& s, const io::CsvTable& timeseries) {
   const double target0 = s.boundary.sigma_n_Pa / 1e3, K = s.boundary.K_Pa_per_m * 1e-3 / 1e3;
   double worst = 0.0, plate_move = 0.0;

@@ -1,7 +1,7 @@
 #pragma once
 // From an engine's raw outputs to the run-directory contract (DEM.md), once for all engines: both
 // runners write timeseries.raw with the same columns (SI) and report height bins of the profile,
-// so the unit conversion, the bin smoothing, the .pvd indexes and the servo's report card live
+// so the unit conversion, the bin smoothing and the servo's report card live
 // here. An engine's own code only parses what its output format makes different.
 #include <filesystem>
 #include <map>
@@ -29,11 +29,6 @@ struct ProfileBin {
 using ProfileBlocks = std::map<long, std::vector<ProfileBin>>;  // by engine step
 
 io::CsvTable profile_table(const Scene& s, const Numerics& n, const ProfileBlocks& blocks, long step0);
-
-// <dir>/<stem>.pvd indexing the files in dir whose names match `pattern` (one capture group: the
-// engine step) by shear time.
-void write_pvd(const std::filesystem::path& dir, const std::string& stem, const std::string& pattern,
-               long step0, double dt);
 
 // How well the plate did what the boundary condition asks, from the time series.
 nlohmann::json plate_facts(const Scene& s, const io::CsvTable& timeseries);

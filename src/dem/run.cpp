@@ -4,6 +4,7 @@
 #include <chrono>
 #include <fmt/core.h>
 
+#include "coarse_graining/run_fields.hpp"
 #include "common/errors.hpp"
 #include "dem/consolidation_cache.hpp"
 #include "dem/plausibility.hpp"
@@ -101,6 +102,17 @@ StageResult run_recorded_stage(Engine& engine, const std::string& stage, const S
   return r;
 }
 
+// The fields of the snapshots (coarse_graining/run_fields.hpp) once the run is complete. They are
+// a view of the run, not part of it: a failure is a warning, and `iwb dem fields` can redo them.
+void coarse_grain_fields(const RunOptions& opt, nlohmann::json& m) {
+  try {
+    coarse_graining::coarse_grain_run(opt.out, {std::nullopt, false, opt.progress});
+    m["files"].push_back("fields/fields.pvd");
+  } catch (const std::exception& e) {
+    m["warnings"].push_back(fmt::format("coarse-graining failed ({}); `iwb dem fields {}` retries", e.what(), opt.out.string()));
+  }
+}
+
 }  // namespace
 
 std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text, Engine& engine,
@@ -124,6 +136,7 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
   const fs::path work = opt.out / engine.name();
   fs::create_directories(work);
   fs::create_directories(opt.out / "vtk");
+  fs::create_directories(work / "dumps");  // the engines' raw snapshots (snapshots.hpp)
   io::write_manifest(opt.out, m);
 
   StagedRun run{StageContext{scene, opt.out, work, opt.processes, opt.interrupt, opt.progress},
@@ -170,7 +183,7 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
   io::write_atomically(opt.out / "profiles.csv", tables.profiles.to_csv());
   const Summary summary = summarize(scene, tables.timeseries, tables.profiles);
   io::write_atomically(opt.out / "summary.json", to_json(summary).dump(2) + "\n");
-  m["files"] = {"timeseries.csv", "profiles.csv", "summary.json", "vtk/particles.pvd", "vtk/walls.pvd"};
+  m["files"] = {"timeseries.csv", "profiles.csv", "summary.json", "vtk/particles.pvd", "vtk/contacts.pvd", "vtk/walls.pvd"};
   m["engine_facts"] = tables.facts;
   m["particle_count"] = facts.value("/consolidate/particles"_json_pointer, 0);
   // complete only if the run did what the scene asked; the files stay for a look at why not
@@ -182,6 +195,7 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
   const auto failure = failure_reason(checks);
   out.status = failure ? "failed: implausible: " + *failure : "complete";
   m["status"] = out.status;
+  if (out.complete() && scene.coarse_graining.enabled) coarse_grain_fields(opt, m);
   io::write_manifest(opt.out, m);
   return out;
 }
@@ -203,8 +217,13 @@ nlohmann::json resummarize(const fs::path& dir) {
   // never a worse summary over a good one: files that no longer show what the scene asked are refused
   if (const auto why = failure_reason(plausibility_checks(asked_by(scene), ts)))
     throw InputError(fmt::format("{}: {}; summary.json left as it was", timeseries.string(), *why));
-  const auto summary = to_json(summarize(scene, ts, io::read_csv_table(dir / "profiles.csv")));
-  io::write_atomically(dir / "summary.json", summary.dump(2) + "\n");
+  auto summary = to_json(summarize(scene, ts, io::read_csv_table(dir / "profiles.csv")));
+  const fs::path earlier = dir / "summary.json";  // the coarse-grained checks are not derived here: kept
+  if (fs::exists(earlier)) {
+    const auto before = io::read_json_file(earlier);
+    if (before.contains("coarse_graining")) summary["coarse_graining"] = before["coarse_graining"];
+  }
+  io::write_atomically(earlier, summary.dump(2) + "\n");
   return summary;
 }
 

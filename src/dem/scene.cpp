@@ -410,6 +410,12 @@ Scene parse_scene(const std::string& text, const std::string& source) {
     s.outputs.vtk_every_m = o->optional_positive("vtk_every_mm", kMaxTravelMm).value_or(0.5) * kMm;
     o->finish();
   }
+  if (auto cg = top.table("coarse_graining")) {
+    s.coarse_graining.enabled = cg->optional_flag("enabled").value_or(true);
+    // wider than the specimen's half height, the kernel would average the band away
+    s.coarse_graining.width_d50 = cg->optional_positive("width_d50", 0.5 * s.height_m / d50).value_or(0.5);
+    cg->finish();
+  }
 
   const double loop_number = servo_loop_number(s.particles.youngs_modulus_Pa, s.boundary.sigma_n_Pa);
   const double kp = default_consolidation_servo_gain(loop_number);

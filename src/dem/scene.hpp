@@ -99,6 +99,13 @@ struct Outputs {
   double vtk_every_m;
 };
 
+// The continuum fields coarse-grained from every snapshot after the run (src/coarse_graining):
+// off for campaigns that need only the wall's forces.
+struct CoarseGraining {
+  bool enabled = true;
+  double width_d50 = 0.5;  // the Gaussian's standard deviation (Weinhart et al. 2012: ~ d/2)
+};
+
 // The plate servo: plate speed = vel_max * kp * e, e the relative force error (measured on
 // LIGGGHTS 3.8.0: kp 0.01 at vel_max 0.1 moved a free plate at 1e-3 m/s).
 struct Servo {
@@ -143,6 +150,7 @@ struct Scene {
   Shear shear;
   Consolidation consolidation;
   Outputs outputs;
+  CoarseGraining coarse_graining;
   Servo servo;
   double dt_fraction = 0.15;  // [numerics]: timestep as a fraction of the smallest grain's Rayleigh time
   Requirements requirements;  // [requirements]: empty when the scene states none

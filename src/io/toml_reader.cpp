@@ -126,6 +126,13 @@ std::optional<std::string> TableReader::optional_text(const std::string& key) {
   throw InputError(fmt::format("{} = {} is not a string", where(key), describe(*n)));
 }
 
+std::optional<bool> TableReader::optional_flag(const std::string& key) {
+  const toml::node* n = node(key);
+  if (n == nullptr) return std::nullopt;
+  if (auto b = n->value<bool>()) return *b;
+  throw InputError(fmt::format("{} = {} is not true or false", where(key), describe(*n)));
+}
+
 std::string TableReader::text(const std::string& key) {
   if (auto v = optional_text(key)) return *v;
   throw InputError(missing(key, "a string"));

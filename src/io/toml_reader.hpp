@@ -27,6 +27,7 @@ class TableReader {
   std::optional<int> optional_count(const std::string& key);
   std::string text(const std::string& key);
   std::optional<std::string> optional_text(const std::string& key);
+  std::optional<bool> optional_flag(const std::string& key);  // true or false
   std::optional<TableReader> table(const std::string& key);
   TableReader required_table(const std::string& key);
   std::vector<TableReader> array_of_tables(const std::string& key);

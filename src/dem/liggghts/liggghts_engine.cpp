@@ -185,7 +185,7 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
       {"progress_every", std::to_string(n.progress_every)}, {"u_total", g(s.shear.travel_m())},
       {"profile_repeat", std::to_string(n.profile_repeat)}, {"profile_every", std::to_string(n.profile_every)},
       {"bin_dz", g(s.outputs.profile_bin_d50 * n.d50)}, {"vtk_every", std::to_string(n.vtk_every)},
-      {"shear_steps", std::to_string(n.shear_steps)}, {"vtk_dir", "../vtk"},
+      {"shear_steps", std::to_string(n.shear_steps)}, {"vtk_dir", "dumps"},
       {"z0_consolidated", g(z0_consolidated)},
       {"band_d50", g((n.band_zhi - n.band_zlo) / n.d50)}, {"band_zlo", g(n.band_zlo)},
       {"band_zhi", g(n.band_zhi)}, {"servo_kp_shear", g(s.servo.kp_shear)},

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "dem/contract_outputs.hpp"
+#include "dem/snapshots.hpp"
 
 namespace iwb::dem {
 
@@ -45,8 +46,8 @@ ContractTables assemble_liggghts_outputs(const StageContext& ctx, const nlohmann
   ContractTables out;
   out.timeseries = timeseries_table(s, n, ctx.work_dir / "timeseries.raw", z0);
   out.profiles = profile_table(s, n, profile_blocks(ctx.work_dir / "profiles.raw", s, n), step0);
-  write_pvd(ctx.run_dir / "vtk", "particles", "particles_([0-9]+)\\.vtk", step0, n.dt);
-  write_pvd(ctx.run_dir / "vtk", "walls", "walls_([0-9]+)\\.vtk", step0, n.dt);
+  write_snapshot_series(s, ctx.work_dir / "dumps", {"particles_([0-9]+)\\.vtk", "walls_([0-9]+)\\.vtk"},
+                        {Eigen::Vector3d::Zero(), step0, n.dt}, ctx.run_dir / "vtk");
   out.facts = plate_facts(s, out.timeseries);
   out.facts["timestep_s"] = n.dt;
   out.facts["shear_start_step"] = step0;

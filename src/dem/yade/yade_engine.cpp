@@ -9,6 +9,7 @@
 #include "common/subprocess.hpp"
 #include "dem/contract_outputs.hpp"
 #include "dem/shear_start.hpp"
+#include "dem/snapshots.hpp"
 #include "dem/stage_follower.hpp"
 #include "dem/wall_geometry.hpp"
 #include "io/run_directory.hpp"
@@ -171,8 +172,10 @@ ContractTables YadeEngine::assemble(const StageContext& ctx, const nlohmann::jso
   ContractTables out;
   out.timeseries = timeseries_table(ctx.scene, n, ctx.work_dir / "timeseries.raw", z0);
   out.profiles = profile_table(ctx.scene, n, profile_blocks(ctx.work_dir / "profiles.raw", ctx.scene, n), step0);
-  write_pvd(ctx.run_dir / "vtk", "particles", "yade-spheres-0*([0-9]+)\\.vtk", step0, n.dt);
-  write_pvd(ctx.run_dir / "vtk", "walls", "yade-facets-0*([0-9]+)\\.vtk", step0, n.dt);
+  // interface_shear.py lifts the scene by d_max - zlo (YADE's cell starts at z = 0)
+  const Eigen::Vector3d shift(0.0, 0.0, -(ctx.scene.particles.d_max() - n.zlo));
+  write_snapshot_series(ctx.scene, ctx.work_dir / "dumps", {"yade-spheres-0*([0-9]+)\\.vtk", "yade-facets-0*([0-9]+)\\.vtk"},
+                        {shift, step0, n.dt}, ctx.run_dir / "vtk");
   out.facts = plate_facts(ctx.scene, out.timeseries);
   out.facts["timestep_s"] = n.dt;
   out.facts["shear_start_step"] = step0;

@@ -1,0 +1,31 @@
+#pragma once
+// The checks the coarse-grained fields make possible (issue 21), per run: the momentum balance
+// (the shear stress uniform across the height and equal to the wall's tau; the normal stress equal
+// to the wall's sigma_n), the mass balance (the solid fraction integrates to the grains' volume),
+// the band's thickness from the shear-rate profile against the run summary's velocity measure,
+// and the band's void ratio snapshot by snapshot. Each check has a tolerance and a verdict.
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "dem/numerics.hpp"
+#include "dem/scene.hpp"
+#include "io/csv_table.hpp"
+
+namespace iwb::coarse_graining {
+
+struct SnapshotProfile {
+  double time_s;            // since the start of shear
+  io::CsvTable profile;     // run_fields.hpp's profile_<step>.csv
+  double grains_volume_m3;  // sum of the grains' volumes
+};
+
+struct BandChecks {
+  io::CsvTable per_snapshot;  // fields/band.csv
+  io::CsvTable mean_profile;  // fields/band_profile.csv: the second half of the travel
+  nlohmann::json json;        // summary.json's "coarse_graining"
+};
+
+BandChecks band_checks(const dem::Scene& scene, const dem::Numerics& numerics, const io::CsvTable& timeseries,
+                       const nlohmann::json& summary, const std::vector<SnapshotProfile>& profiles, double width_m);
+
+}  // namespace iwb::coarse_graining
