@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "common/errors.hpp"
+#include "comparison/band_figures.hpp"
 #include "comparison/figure.hpp"
 #include "comparison/html.hpp"
 #include "comparison/quantities.hpp"
@@ -357,6 +358,12 @@ Section comparison_section(const LoadedComparison& c, std::size_t k, const io::S
       versus_u_x("sigman_ux", "sigma_n (kPa)", "sigma_n_dem_kPa", "sigma_n_model_kPa", curves, vs, shown,
                  seed_band(seeds, "sigma_n_mean_kPa", "sigma_n_sd_kPa")),
       velocity_profile(profiles, summary)};
+  std::vector<ShearZoneMark> marks;
+  for (const auto& [which, label] : {std::pair{"predicted_variant", "d_s predicted"}, {"fitted_variant", "d_s fitted"}})
+    if (cmp["verdicts"].contains(which))
+      marks.push_back({label, vs[cmp["verdicts"][which].get<std::size_t>()]["d_s_mm"].get<double>() /
+                                  cmp["dem"]["d50_mm"].get<double>()});
+  for (auto& f : band_figures(dem_dir, marks)) figs.push_back(std::move(f));
   std::vector<std::string> notes(figs.size());
   if (cmp["dem"]["boundary"] == "CNL")
     notes[2] = ". Under CNL every model follows the DEM's measured sigma_n by construction: its curves lie under the DEM's";

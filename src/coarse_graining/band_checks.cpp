@@ -122,6 +122,9 @@ BandChecks band_checks(const dem::Scene& s, const dem::Numerics& n, const io::Cs
   }
   auto& j = out.json;
   j["width_d50"] = width_m / d50;
+  j["wall_mean_height_m"] = s.wall.mean_height_m();  // the fields' z = 0 of z_over_d50, in the .vti's frame
+  j["d50_m"] = d50;
+  j["wall_speed_m_s"] = s.shear.velocity_m_s;
   j["snapshots"] = profiles.size();
   j["checks"] = nlohmann::json::array();
   j["checks"].push_back(check("mass_balance", *std::max_element(mass_err.begin(), mass_err.end()), "<=", kMassTolerance,

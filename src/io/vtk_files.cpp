@@ -14,6 +14,7 @@
 #include <vtkPolyData.h>
 #include <vtkTransform.h>
 #include <vtkTransformFilter.h>
+#include <vtkXMLImageDataReader.h>
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -186,6 +187,23 @@ void write_image(const fs::path& vti, const ImageGrid& image) {
   vtkNew<vtkXMLImageDataWriter> w;
   w->SetInputData(grid);
   write_through(w.GetPointer(), vti);
+}
+
+ImageGrid read_image(const fs::path& vti) {
+  if (!fs::exists(vti)) throw InputError(fmt::format("{}: no such file", vti.string()));
+  vtkNew<vtkXMLImageDataReader> r;
+  r->SetFileName(vti.c_str());
+  r->Update();
+  vtkImageData* grid = r->GetOutput();
+  if (r->GetErrorCode() != 0 || !grid) throw InputError(fmt::format("{}: not a VTK XML image data file", vti.string()));
+  ImageGrid im;
+  int dims[3];
+  grid->GetDimensions(dims);
+  im.nx = dims[0], im.ny = dims[1], im.nz = dims[2];
+  grid->GetOrigin(im.origin.data());
+  grid->GetSpacing(im.spacing.data());
+  im.arrays = arrays_of(grid->GetPointData());
+  return im;
 }
 
 void write_collection(const fs::path& pvd, const std::vector<TimedFile>& files) {

@@ -48,6 +48,7 @@ void write_segments(const std::filesystem::path& vtp, const Segments& segments);
 void convert_to_polydata(const std::filesystem::path& legacy, const std::filesystem::path& vtp,
                          const Eigen::Vector3d& shift = Eigen::Vector3d::Zero());
 void write_image(const std::filesystem::path& vti, const ImageGrid& image);
+ImageGrid read_image(const std::filesystem::path& vti);
 
 struct TimedFile {
   double time;
