@@ -92,6 +92,15 @@ TEST_CASE("broken scenes are refused with file, key and value", "[dem]") {
   CHECK_THAT(error_of(replaced(smoke(), "profile = \"sawtooth\"", "profile = \"knurled\"")),
              Catch::Contains("key 'wall.profile' = \"knurled\"; allowed \"flat\", \"sawtooth\", \"sinusoid\""));
   CHECK_THAT(error_of(smoke() + "\n[shaer]\nx = 1\n"), Catch::Contains("key 'shaer' is not a known key"));
+  // the coarse-graining: a flag and a width up to half the specimen (8 d50 high: 4)
+  CHECK_THAT(error_of(smoke() + "\n[coarse_graining]\nenabled = \"yes\"\n"),
+             Catch::Contains("key 'coarse_graining.enabled' = \"yes\" is not true or false"));
+  CHECK_THAT(error_of(smoke() + "\n[coarse_graining]\nwidth_d50 = 5\n"),
+             Catch::Contains("key 'coarse_graining.width_d50' = 5 is out of range; allowed (0, 4]"));
+  CHECK_THAT(error_of(smoke() + "\n[coarse_graining]\nwidht_d50 = 1\n"), Catch::Contains("widht_d50"));
+  const auto off = dem::parse_scene(smoke() + "\n[coarse_graining]\nenabled = false\nwidth_d50 = 1\n", "scene.toml");
+  CHECK_FALSE(off.coarse_graining.enabled);
+  CHECK(off.coarse_graining.width_d50 == 1.0);
 }
 
 TEST_CASE("numerics dt_fraction sets the timestep as a fraction of the Rayleigh time, validated", "[dem]") {
