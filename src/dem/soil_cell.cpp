@@ -333,7 +333,7 @@ RunOutcome run_soil_test(const std::string& text, const std::string& source, con
       m["cell_summary"] = summary;
       m["engine_facts"] = tables.facts;
       m["gamma_reached"] = t.control.back();
-      m["files"] = {"timeseries.csv", "profiles.csv", "vtk/particles.pvd", "vtk/walls.pvd"};
+      m["files"] = {"timeseries.csv", "profiles.csv", "vtk/particles.pvd", "vtk/contacts.pvd", "vtk/walls.pvd"};
     }
     t.name = opt.out.string();
     t.source = "dem:" + engine.name();
