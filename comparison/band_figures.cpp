@@ -71,6 +71,33 @@ Figure profiles_figure(const io::CsvTable& p, const std::vector<ShearZoneMark>& 
   return f;
 }
 
+// The void ratio's change since the start of shear inside each marked shear zone: where the DEM's
+// dilation happens against where the model puts it.
+Figure void_ratio_figure(const fs::path& fields, const std::vector<std::string>& profiles, const std::vector<double>& u,
+                         const std::vector<ShearZoneMark>& marks, double d50_mm) {
+  std::vector<PlotCurve> curves;
+  for (const auto& m : marks) {
+    PlotCurve dem{fmt::format("DEM, coarse-grained, z <= {} ({:.1f} d50)", m.label, m.d_s_d50), {}, {}};
+    double e_start = NAN;
+    for (std::size_t i = 0; i < profiles.size(); ++i) {
+      const auto p = io::read_csv_table(fields / profiles[i]);
+      const auto z = p.values("z_over_d50"), nu = p.values("solid_fraction");
+      double sum = 0.0;
+      int n = 0;
+      for (std::size_t j = 0; j < z.size(); ++j)
+        if (z[j] >= 0.0 && z[j] <= m.d_s_d50) sum += nu[j], ++n;
+      const double e = double(n) / sum - 1.0;
+      if (i == 0) e_start = e;
+      dem.x.push_back(u[i]), dem.y.push_back(e - e_start);
+    }
+    PlotCurve model{fmt::format("model, (1 + e0) u_n / d_s ({})", m.label), m.u_x_mm, {}};
+    for (double un : m.u_n_mm) model.y.push_back((1.0 + m.e0) * un / (m.d_s_d50 * d50_mm));
+    curves.push_back(std::move(dem));
+    curves.push_back(std::move(model));
+  }
+  return curves_figure("band_void_ratio", "Void ratio change inside the shear zone", "u_x (mm)", "e - e(start of shear)", curves);
+}
+
 }  // namespace
 
 std::vector<Figure> band_figures(const fs::path& dem_dir, const std::vector<ShearZoneMark>& marks) {
@@ -98,6 +125,11 @@ std::vector<Figure> band_figures(const fs::path& dem_dir, const std::vector<Shea
     const auto vx = mean.values("velocity_x_m_s");
     const double v = v_wall > 0.0 ? v_wall : *std::max_element(vx.begin(), vx.end());
     out.push_back(profiles_figure(mean, marks, v, 1e3 * sigma.back()));
+  }
+  if (!marks.empty()) {
+    std::vector<std::string> profiles;
+    for (const auto& f : files) profiles.push_back(std::regex_replace(f, std::regex("fields_([0-9]+)\\.vti"), "profile_$1.csv"));
+    out.push_back(void_ratio_figure(fields, profiles, u, marks, 1e3 * d50));
   }
   return out;
 }

@@ -360,9 +360,15 @@ Section comparison_section(const LoadedComparison& c, std::size_t k, const io::S
       velocity_profile(profiles, summary)};
   std::vector<ShearZoneMark> marks;
   for (const auto& [which, label] : {std::pair{"predicted_variant", "d_s predicted"}, {"fitted_variant", "d_s fitted"}})
-    if (cmp["verdicts"].contains(which))
-      marks.push_back({label, vs[cmp["verdicts"][which].get<std::size_t>()]["d_s_mm"].get<double>() /
-                                  cmp["dem"]["d50_mm"].get<double>()});
+    if (cmp["verdicts"].contains(which)) {
+      const std::size_t v = cmp["verdicts"][which].get<std::size_t>();
+      ShearZoneMark m{label, vs[v]["d_s_mm"].get<double>() / cmp["dem"]["d50_mm"].get<double>(), {}, {},
+                      cmp["dem"]["e0_band"].get<double>()};
+      for (const auto& r : curves.rows)
+        if (std::size_t(r[curves.column("variant")]) == v)
+          m.u_x_mm.push_back(r[curves.column("u_x_mm")]), m.u_n_mm.push_back(r[curves.column("u_n_model_mm")]);
+      marks.push_back(std::move(m));
+    }
   for (auto& f : band_figures(dem_dir, marks)) figs.push_back(std::move(f));
   std::vector<std::string> notes(figs.size());
   if (cmp["dem"]["boundary"] == "CNL")
