@@ -112,12 +112,14 @@ std::vector<Figure> band_figures(const fs::path& dem_dir, const std::vector<Shea
   const auto u = band.values("u_x_mm");
   std::vector<Figure> out;
   if (d50 <= 0.0 || files.size() != u.size()) return out;
-  // up to three maps spread over the travel, the last snapshot always among them
-  for (int k = 0; k < kMaps && k < int(files.size()); ++k) {
-    const std::size_t i = files.size() - 1 - std::size_t(k) * (files.size() - 1) / kMaps;
-    out.push_back(shear_rate_map(fields / files[i], u[i], wall_mean, d50, std::size_t(kMaps - k)));
+  // up to three maps spread over the travel after its start, the last snapshot always among them
+  std::vector<std::size_t> shown;
+  for (int j = 1; j <= kMaps; ++j) {
+    const auto i = std::size_t(std::lround(double(files.size() - 1) * j / kMaps));
+    if (i > 0 && (shown.empty() || shown.back() != i)) shown.push_back(i);
   }
-  std::reverse(out.begin(), out.end());
+  for (std::size_t k = 0; k < shown.size(); ++k)
+    out.push_back(shear_rate_map(fields / files[shown[k]], u[shown[k]], wall_mean, d50, k + 1));
   const auto mean = io::read_csv_table(fields / "band_profile.csv");
   if (!mean.rows.empty()) {
     const auto sigma = band.values("sigma_n_kPa");

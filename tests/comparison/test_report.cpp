@@ -121,3 +121,31 @@ TEST_CASE("report: a DEM run that did not complete, compared with --allow-partia
   CHECK_THAT(html, Catch::Contains("Warning: the DEM run " + run.string() + " did not complete (status: failed: implausible"));
   CHECK_THAT(html, Catch::Contains("<td class=\"breaks\">failed: implausible: normal_stress_held"));  // glance table
 }
+
+TEST_CASE("report: a DEM run with coarse-grained fields shows its band (maps, profiles, void ratio in d_s)",
+          "[comparison]") {
+  // the smoke scene in LIGGGHTS (~10 s), coarse-grained when it completes (issue 21)
+  const fs::path run = kWork / "smoke-with-fields";
+  const auto dem = test::run_iwb({"dem", "run", "data/scenes/smoke.toml", "--out", run.string(), "--force"});
+  INFO(dem.output);
+  REQUIRE(dem.exit_code == 0);
+  const fs::path out = comparison("smoke-with-fields-compare", run);
+  const fs::path html = kWork / "band-report" / "report.html";
+  const auto r = test::run_iwb({"report", out.string(), "-o", html.string()});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const fs::path figures = html.parent_path() / "report_files" / "0-smoke-with-fields-compare";
+  // three snapshots (0, 1, 2 mm): the maps at 1 and 2 mm
+  for (const char* f : {"band_map_1", "band_map_2", "band_profiles", "band_void_ratio"})
+    CHECK(fs::exists(figures / (std::string(f) + ".svg")));
+  const std::string page = io::read_file(html);
+  CHECK_THAT(page, Catch::Contains("over x-z at u_x = 1.") && Catch::Contains("Void ratio change inside the shear zone"));
+  // the DEM's void ratio change starts at zero in each zone (columns x0 y0: the predicted d_s)
+  // (the figure's CSV pads shorter curves with nan, which read_csv_table refuses: read its first row)
+  const std::string csv = io::read_file(figures / "band_void_ratio.csv");
+  const auto first = csv.substr(csv.find('\n') + 1);
+  CHECK(first.rfind("x0", 0) != 0);
+  CHECK(std::stod(first.substr(0, first.find(','))) == 0.0);
+  const auto rest = first.substr(first.find(',') + 1);
+  CHECK(std::stod(rest.substr(0, rest.find(','))) == 0.0);
+}
