@@ -43,11 +43,11 @@ const io::VtkArray& required(const io::PointCloud& c, const std::string& name, c
   return *a;
 }
 
-// One snapshot's grains in the scene frame: positions wrapped into the cell, and unwrapped ones
-// for the displacement.
+// One snapshot's grains in the scene frame: positions wrapped into the cell, and as the engine gives
+// them (unwrapped by LIGGGHTS's image flags; YADE's may be wrapped) for the displacement.
 struct Grains {
   io::PointCloud wrapped;
-  std::unordered_map<long, Eigen::Vector3d> unwrapped;  // by id
+  std::unordered_map<long, Eigen::Vector3d> unwrapped;  // by id, see above
   std::unordered_map<long, int> type;                   // every particle of the dump, glued ones too
 };
 
@@ -114,16 +114,43 @@ io::Segments read_contacts(const Scene& s, const fs::path& pairs, const fs::path
   return out;
 }
 
-io::VtkArray displacement(const Grains& now, const Grains& start, const fs::path& file) {
+// Where each grain was at the previous snapshot and how far it had moved since the start of shear.
+// Displacements are summed snapshot to snapshot over the nearest periodic image: LIGGGHTS's
+// positions unwrap with its image flags, but YADE wraps a grain that crosses the cell (its smoke
+// runs had grains 24 mm "behind" the others), and the increment's nearest image is right for both
+// while no grain moves half a cell between snapshots (the wall moves vtk_every_mm: 0.5 mm against
+// cells of 24 mm and more).
+struct Track {
+  std::unordered_map<long, std::pair<Eigen::Vector3d, Eigen::Vector3d>> at;  // id -> (position, displacement)
+};
+
+Track track_of(const io::PointCloud& cloud) {
+  Track t;
+  const auto& ids = *cloud.find("id");
+  const io::VtkArray* d = cloud.find("displacement_m");
+  for (std::size_t i = 0; i < cloud.points.size(); ++i)
+    t.at[std::lround(ids.values[i])] = {cloud.points[i], d ? Eigen::Vector3d(d->values[3 * i], d->values[3 * i + 1], d->values[3 * i + 2])
+                                                           : Eigen::Vector3d(Eigen::Vector3d::Zero())};
+  return t;
+}
+
+io::VtkArray displacement(const Scene& s, const Grains& now, Track& track, const fs::path& file) {
   io::VtkArray d{"displacement_m", 3, {}};
-  const auto& ids = *now.wrapped.find("id");
-  for (double id : ids.values) {
-    const auto a = now.unwrapped.at(std::lround(id));
-    const auto it = start.unwrapped.find(std::lround(id));
-    if (it == start.unwrapped.end())
-      throw std::runtime_error(fmt::format("{}: grain {} is not in the first snapshot", file.string(), id));
-    for (int c = 0; c < 3; ++c) d.values.push_back(a[c] - it->second[c]);
+  Track next;
+  for (const auto& [id, r] : now.unwrapped) {
+    const auto it = track.at.find(id);
+    if (it == track.at.end())
+      throw std::runtime_error(fmt::format("{}: grain {} is not in the previous snapshot", file.string(), id));
+    const Eigen::Vector3d step = r - it->second.first;
+    const Eigen::Vector3d moved = it->second.second + Eigen::Vector3d(nearest_image(step.x(), s.length_m),
+                                                                      nearest_image(step.y(), s.width_m), step.z());
+    next.at[id] = {r, moved};
   }
+  for (double id : now.wrapped.find("id")->values) {
+    const Eigen::Vector3d& moved = next.at.at(std::lround(id)).second;
+    for (int c = 0; c < 3; ++c) d.values.push_back(moved[c]);
+  }
+  track = std::move(next);
   return d;
 }
 
@@ -134,17 +161,22 @@ std::string stem_file(const char* stem, long step) { return fmt::format("{}_{}.v
 int write_snapshot_series(const Scene& s, const fs::path& dumps, const DumpNames& names, const SnapshotFrame& frame,
                           const fs::path& vtk_dir) {
   const auto raw = raw_files(dumps, names);
-  std::optional<Grains> start;
+  std::optional<Track> track;  // from the first dump on: a snapshot converted earlier is read back
   for (const auto& [step, files] : raw) {
-    if (files.particles.empty() || fs::exists(vtk_dir / stem_file("particles", step))) continue;
-    if (!start) start = read_grains(s, raw.begin()->second.particles, frame);  // displacement from the first dump
+    if (files.particles.empty()) continue;
+    const fs::path vtp = vtk_dir / stem_file("particles", step);
+    if (fs::exists(vtp)) {
+      track = track_of(io::read_points(vtp));
+      continue;
+    }
     Grains g = read_grains(s, files.particles, frame);
-    g.wrapped.arrays.push_back(displacement(g, *start, files.particles));
+    if (!track) track = track_of(g.wrapped);  // the first dump: displacement zero
+    g.wrapped.arrays.push_back(displacement(s, g, *track, files.particles));
     io::write_segments(vtk_dir / stem_file("contacts", step),
                        read_contacts(s, dumps / fmt::format("pairs_{}.txt", step),
                                      dumps / fmt::format("wall_contacts_{}.txt", step), g, frame));
     if (!files.walls.empty()) io::convert_to_polydata(files.walls, vtk_dir / stem_file("walls", step), frame.shift);
-    io::write_points(vtk_dir / stem_file("particles", step), g.wrapped);  // last: it marks the snapshot done
+    io::write_points(vtp, g.wrapped);  // last: it marks the snapshot done
   }
   std::vector<io::TimedFile> series[3];
   const char* stems[] = {"particles", "contacts", "walls"};

@@ -81,7 +81,12 @@ void coarse_grained_facts(const SmokeRun& r) {
   const auto last = io::read_points(r.dir / "vtk" / files.back());
   const auto& d = last.find("displacement_m")->values;
   std::vector<std::pair<double, double>> by_height;  // (z, u_x) of every grain
-  for (std::size_t i = 0; i < last.points.size(); ++i) by_height.emplace_back(last.points[i].z(), d[3 * i]);
+  int jumped = 0;  // a grain that crossed the periodic cell is not a cell length behind the others
+  for (std::size_t i = 0; i < last.points.size(); ++i) {
+    by_height.emplace_back(last.points[i].z(), d[3 * i]);
+    if (std::abs(d[3 * i]) > 0.5 * r.scene.length_m || std::abs(d[3 * i + 1]) > 0.5 * r.scene.width_m) ++jumped;
+  }
+  CHECK(jumped == 0);
   std::sort(by_height.begin(), by_height.end());
   double moved = 0.0;  // the lowest ten grains, locked in the wall's valleys
   for (std::size_t i = 0; i < 10; ++i) moved += by_height[i].second / 10.0;
