@@ -9,7 +9,7 @@ set -euo pipefail
 IWB=${IWB:-build/iwb}
 WORK=${WORK:-runs/convergence-v2}  # the full runs (VTK, engine inputs, restarts): not committed; -v2: with the loop-number servo gain
 DEST=data/convergence
-AXES=(stiffness box inertial timestep)
+AXES=(stiffness box inertial timestep damping)
 STALE_AXES=(box)  # committed runs that must be re-run, not restored (drop an axis once its re-run is committed)
 # The one-knob axes start from this level of the stiffness axis (converged within the seed
 # scatter there): their tables compare each of their levels with its runs.
@@ -17,7 +17,8 @@ BASE_LEVEL=E690000000
 stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(restore sweeps copy table)
 
-# sweep.json, the job scenes, and per complete run its contract files without VTK or engine files.
+# sweep.json, the job scenes, and per complete run its contract files without VTK or engine files
+# (and its coarse-grained fields/band.csv and band_profile.csv, not the .vti images).
 copy_axis() {
   local from=$1 to=$2
   [ -f "$from/sweep.json" ] || return 0  # an axis not started yet
@@ -29,6 +30,11 @@ copy_axis() {
     grep -q '"status": "complete"' "$run/manifest.json" 2>/dev/null || continue
     mkdir -p "$to/runs/$name"
     cp "$run"/{manifest.json,summary.json,timeseries.csv,profiles.csv} "$to/runs/$name/"
+    # the coarse-grained balances and the band's mean profile (issue 21), where the run has them
+    if [ -f "$run/fields/band.csv" ]; then
+      mkdir -p "$to/runs/$name/fields"
+      cp "$run"/fields/{band.csv,band_profile.csv} "$to/runs/$name/fields/"
+    fi
   done
 }
 
@@ -45,6 +51,8 @@ for stage in "${stages[@]}"; do
   table) for a in "${AXES[@]}"; do
            [ -d "$DEST/$a/runs" ] || continue
            base=(); [ "$a" = stiffness ] || base=("$DEST/stiffness" "$BASE_LEVEL")
+           # the damping axis asks whether the rate effect is the damping's: against I = 3e-4 at e = 0.5
+           [ "$a" = damping ] && base=("$DEST/inertial" "${BASE_LEVEL}_I0.0003")
            /usr/bin/python3 "$DEST/table.py" "$DEST/$a" "${base[@]}" > "$DEST/$a/table.md"
          done ;;
   *) echo "make.sh: unknown stage '$stage' (restore, sweeps, copy, table)" >&2; exit 2 ;;

@@ -146,7 +146,8 @@ namespace fs = std::filesystem;
 // The default scene copied into a scratch directory as `name`, the first `from` replaced by `to`.
 tradeoff::PlanOptions plan_on_copy(const std::string& name, const std::string& from = "",
                                    const std::string& to = "", const fs::path& tradeoff_dir = "data/tradeoff/default") {
-  const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / "plan-scene-copy";
+  // one directory per copy's name: ctest -j2 runs these test cases at once (they raced on one)
+  const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / ("plan-scene-copy-" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::string text = io::read_file("data/scenes/default.toml");
