@@ -70,20 +70,23 @@ DensityAxis density_axis_of(const models::ModelSpec& spec) {
                                       [](const auto& d) { return d.name == "e_d"; });
   if (!has_limits && models::find_initial_input(spec.declaration.initial, "OCR"))
     return DensityAxis::kOverconsolidationRatio;
+  if (!has_limits && spec.declaration.layout.void_ratio < 0) return DensityAxis::kNone;
   return DensityAxis::kDensityIndex;
 }
 
 const char* column_of(DensityAxis axis) {
-  return axis == DensityAxis::kOverconsolidationRatio ? "OCR" : "density_index";
+  return axis == DensityAxis::kOverconsolidationRatio ? "OCR" : axis == DensityAxis::kNone ? "density_none" : "density_index";
 }
 
 const char* label_of(DensityAxis axis) {
   return axis == DensityAxis::kOverconsolidationRatio ? "overconsolidation ratio OCR"
+         : axis == DensityAxis::kNone                 ? "no density (the model has no void ratio)"
                                                       : "density index I = (e0 - e_d)/(e_i - e_d)";
 }
 
 const std::vector<double>& StabilitySweep::densities(DensityAxis axis) const {
-  return axis == DensityAxis::kOverconsolidationRatio ? ocr : density_index;
+  static const std::vector<double> one_level{0.0};
+  return axis == DensityAxis::kOverconsolidationRatio ? ocr : axis == DensityAxis::kNone ? one_level : density_index;
 }
 
 std::vector<StabilityPoint> StabilitySweep::points(const models::ModelSpec& spec) const {
@@ -186,6 +189,10 @@ void walk(const models::Model& m, const models::StateVector& s0, const Stability
 models::StateVector prepare(const models::ModelSpec& spec, const models::Model& m, const models::ModelInputs& in,
                             const StabilityPoint& p, StabilityResult& out) {
   const double K0 = models::offer(spec, in, {}).K0;
+  if (density_axis_of(spec) == DensityAxis::kNone) {  // no void ratio to place
+    out.e_d = out.e_c = out.e_i = out.e0 = NAN;
+    return m.initial_state({p.sigma_n_kPa, K0, NAN});
+  }
   if (density_axis_of(spec) == DensityAxis::kOverconsolidationRatio) {
     // the model turns the OCR into e0 (its asymptotic state boundary surface); no e_d, e_i
     out.e_d = out.e_c = out.e_i = NAN;

@@ -51,7 +51,8 @@ struct StabilityPoint {
 // How the map places e0 at each sigma_n0, chosen by what a model declares: between its limiting
 // void ratios when it reports e_d and e_i (sand, Bauer eq. 5.13), else by its overconsolidation
 // ratio when it declares an OCR input (clay, seed 6.2: 1 on the asymptotic state boundary surface).
-enum class DensityAxis { kDensityIndex, kOverconsolidationRatio };
+// kNone: a model without a void ratio or an OCR input (mc): one level, the map's density axis unused.
+enum class DensityAxis { kDensityIndex, kOverconsolidationRatio, kNone };
 DensityAxis density_axis_of(const models::ModelSpec& spec);
 const char* column_of(DensityAxis axis);  // "density_index", "OCR"
 const char* label_of(DensityAxis axis);   // the axis title of the maps

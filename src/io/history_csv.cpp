@@ -17,11 +17,14 @@ std::string history_csv(const models::Model& model, const driver::ShearZone& zon
     const auto s = model.stress(r.state);
     // sigma_p is empty for models without an in-plane stress (hp1d), never NaN.
     const std::string sigma_p = s.sigma_p ? fmt::format("{:.10g}", *s.sigma_p) : "";
+    // e is empty for models without a void ratio (mc: NaN from void_ratio), like sigma_p
+    const double e = model.void_ratio(r.state);
+    const std::string e_field = std::isnan(e) ? "" : fmt::format("{:.10g}", e);
     out += fmt::format("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.10g},"
-                       "{:.10g},{:.10g},{:.10g}",
+                       "{:.10g},{:.10g},{}",
                        r.increment, r.segment, zone.u_of(r.gamma_x), zone.u_of(r.gamma_y),
                        zone.u_n_of(r.eps_n), r.gamma_x, r.gamma_y, r.eps_n, s.sigma_n, sigma_p,
-                       s.tau_x, s.tau_y, s.tau_x / s.sigma_n, model.void_ratio(r.state));
+                       s.tau_x, s.tau_y, s.tau_x / s.sigma_n, e_field);
     for (const auto& d : model.diagnostics(r.state)) out += fmt::format(",{:.10g}", d.value);
     out += fmt::format(",{},{},{}\n", r.newton_iterations, r.rate_evaluations, r.rejected_substeps);
   }

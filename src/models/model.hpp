@@ -93,6 +93,13 @@ class Model {
   virtual void rate(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d,
                     StateVectorT<Dual>& ds) const = 0;
 
+  // Models that declare StressPointUpdate::kIncrement (declaration.hpp; an elasto-plastic return)
+  // give the state after a whole increment d in closed form; the integrator calls update instead
+  // of integrating rate. On Dual numbers it carries the increment's consistent derivative.
+  virtual bool updates_by_increment() const { return false; }
+  virtual void update(const StateVector& s, const InterfaceStrain& d, StateVector& out) const;
+  virtual void update(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d, StateVectorT<Dual>& out) const;
+
   virtual InterfaceStress stress(const StateVector& s) const = 0;
   virtual double void_ratio(const StateVector& s) const = 0;
   // Why s is outside the model's domain; empty when it is inside.

@@ -133,6 +133,13 @@ TEST_CASE("gold: oedometric loading of every model that has one matches its gold
   check_path("oedometric");
 }
 
+TEST_CASE("gold: the Mohr-Coulomb interface model on CNL, CNS and CV matches its gold files", "[gold][gold-files]") {
+  for (const std::string path : {"mc_CNL", "mc_CNS", "mc_CV"}) {
+    INFO(path);
+    check_path(path);
+  }
+}
+
 // A model added to the registry without gold files, or a gold file no case produces, fails here.
 TEST_CASE("gold: the clay models on their paths (Table 6.4) match their gold files", "[gold][gold-files]") {
   for (const std::string path : {"clay_CNL", "clay_CNS", "clay_CV", "clay_oedometric", "clay_cyclic_CNL"}) {
