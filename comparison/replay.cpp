@@ -27,7 +27,9 @@ driver::Path dem_path(const DemRun& dem, double d_s_mm) {
 Replay replay(const DemRun& dem, const Variant& v, const driver::RunSettings& settings) {
   Replay out{v, "", {}, {}, {}, {}, dem.e_band.front()};
   const auto& spec = models::find_model(v.model);
-  const auto model = spec.make(v.inputs);
+  models::ModelInputs in = v.inputs;
+  in.shear_zone_mm = v.d_s_mm;  // a model with stiffness per displacement scales by it (hyperbolic)
+  const auto model = spec.make(in);
   // from the DEM's first state: its sigma_n, the void ratio of its wall band
   const auto init = models::offer(spec, v.inputs, {{"sigma_n_kPa", dem.sigma_n_kPa.front()}, {"e0", out.e0}});
   models::StateVector s0;

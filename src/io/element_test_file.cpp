@@ -364,6 +364,7 @@ ElementTestSpec parse_element_test(const toml::table& root, const std::string& s
   models::find_model(spec.model).make(spec.inputs);  // parameters validated before anything runs
   read_initial(top.required_table("initial"), spec);
   read_zone(top.table("shear_zone"), spec);
+  spec.inputs.shear_zone_mm = spec.zone.d_s_mm;
   read_boundary(top.required_table("boundary"), spec);
   read_path(top.required_table("path"), spec);
   read_integration(top.table("integration"), spec);

@@ -20,6 +20,10 @@ struct ModelInputs {
   std::map<std::string, ParameterValues> tables;
   std::string source;
   Roughness roughness;
+  // The element's shear-zone thickness d_s (mm): what a model whose stiffness is per unit
+  // displacement (hyperbolic, eq. 3.49) scales by to act on strains. Element tests set it from
+  // [shear_zone], the replay per variant; elsewhere (stability map, benches) 1 mm, u = gamma.
+  double shear_zone_mm = 1.0;
 };
 
 struct ModelSpec {

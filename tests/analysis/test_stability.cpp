@@ -208,16 +208,18 @@ TEST_CASE("stability: a map whose figures cannot be drawn leaves no file behind"
     CHECK(e.path().filename().string().find("stability-no-gnuplot.tmp") == std::string::npos);
 }
 
-TEST_CASE("stability: the Mohr-Coulomb model (no void ratio: one density level) completes every point, finite") {
-  const auto& spec = models::find_model("mc");
-  CHECK(analysis::density_axis_of(spec) == analysis::DensityAxis::kNone);
-  const auto results =
-      analysis::run_stability_sweep(spec, test::shipped(spec.declaration.example_parameters), StabilitySweep::reduced());
-  CHECK(results.size() == 27);  // 3 BCs x 3 stresses x (2 increment sizes + 1 cyclic), one kappa_r, one density
-  for (const auto& r : results) {
-    INFO(driver::to_string(r.point.boundary) << " " << r.point.sigma_n_kPa << " kPa: " << r.message);
-    CHECK(r.outcome == Outcome::kComplete);
-    CHECK(std::isfinite(r.sigma_n_end_kPa));
-    CHECK(std::isfinite(r.tau_end_kPa));
+TEST_CASE("stability: the reference models (no void ratio: one density level) complete every point, finite") {
+  for (const std::string name : {"mc", "hyperbolic"}) {
+    const auto& spec = models::find_model(name);
+    CHECK(analysis::density_axis_of(spec) == analysis::DensityAxis::kNone);
+    const auto results = analysis::run_stability_sweep(spec, test::shipped(spec.declaration.example_parameters),
+                                                       StabilitySweep::reduced());
+    CHECK(results.size() == 27);  // 3 BCs x 3 stresses x (2 increment sizes + 1 cyclic), one kappa_r, one density
+    for (const auto& r : results) {
+      INFO(name << " " << driver::to_string(r.point.boundary) << " " << r.point.sigma_n_kPa << " kPa: " << r.message);
+      CHECK(r.outcome == Outcome::kComplete);
+      CHECK(std::isfinite(r.sigma_n_end_kPa));
+      CHECK(std::isfinite(r.tau_end_kPa));
+    }
   }
 }

@@ -133,8 +133,9 @@ TEST_CASE("gold: oedometric loading of every model that has one matches its gold
   check_path("oedometric");
 }
 
-TEST_CASE("gold: the Mohr-Coulomb interface model on CNL, CNS and CV matches its gold files", "[gold][gold-files]") {
-  for (const std::string path : {"mc_CNL", "mc_CNS", "mc_CV"}) {
+TEST_CASE("gold: the reference interface models (mc, hyperbolic) on CNL, CNS and CV match their gold files",
+          "[gold][gold-files]") {
+  for (const std::string path : {"mc_CNL", "mc_CNS", "mc_CV", "hyperbolic_CNL", "hyperbolic_CNS", "hyperbolic_CV"}) {
     INFO(path);
     check_path(path);
   }
