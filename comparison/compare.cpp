@@ -144,6 +144,18 @@ void chosen_roughness(const CompareOptions& opt, models::Roughness& r) {
     r.f_c = models::parse_arnold_herle_factor(opt.f_c, "--f-c");
   }
 }
+// The comparison fits kappa_r and d_s; a model that reads no roughness would be fitted a kappa_r
+// it ignores (its uncertainty infinite), which reads as a verdict and is none.
+void refuse_without_roughness(const std::string& model) {
+  if (models::find_model(model).uses_roughness) return;
+  std::string with;
+  for (const auto& s : models::model_registry())
+    if (s.uses_roughness) with += (with.empty() ? "" : ", ") + s.name;
+  throw InputError(fmt::format("--model {}: it reads no wall roughness, and `iwb compare` fits kappa_r and d_s (a 3D "
+                               "continuum model, or a reference model whose own parameters `iwb assess` is to fit, "
+                               "issue 17); models it can judge: {}",
+                               model, with));
+}
 }  // namespace
 
 models::ModelInputs validated_parameters(const std::string& model, const std::string& params) {
@@ -160,6 +172,7 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
   const SeedScatter scatter = seed_scatter(dem, seeds);  // InputError for a seed of another scene
   const Tolerances tolerances = tolerances_for(dem);
   const models::ModelInputs params = validated_parameters(opt.model, opt.params);
+  refuse_without_roughness(opt.model);
   auto candidates = standard_variants(dem, opt.model, params, opt.predicted_ds_d50);
   if (!opt.roughness_scheme.empty() || !opt.f_c.empty())  // refused before anything is written
     for (auto& v : candidates) chosen_roughness(opt, v.inputs.roughness);
