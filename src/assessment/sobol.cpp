@@ -42,7 +42,9 @@ double jansen(const std::vector<double>& ya, const std::vector<double>& yb, cons
   for (auto r : rows) var += (ya[r] - mean) * (ya[r] - mean) + (yb[r] - mean) * (yb[r] - mean);
   var /= 2.0 * double(rows.size()) - 1.0;
   for (auto r : rows) num += (ya[r] - yi[r]) * (ya[r] - yi[r]);
-  return var > 0.0 ? num / (2.0 * double(rows.size())) / var : 0.0;
+  // a quantity the samples do not move (sigma_n under CNL) has no variance to share: 0, not the
+  // ratio of two round-offs
+  return var > 1e-24 * (mean * mean + 1e-300) ? num / (2.0 * double(rows.size())) / var : 0.0;
 }
 
 }  // namespace

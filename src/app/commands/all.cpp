@@ -28,6 +28,7 @@ void add_all_commands(CLI::App& app, CommandList& commands) {
   add_report_command(app, commands);
   add_validate_command(app, commands);
   add_stability_command(app, commands);
+  add_assess_command(app, commands);
   auto& bench = add_group(app, "bench", "Benchmarks that print figures.");
   add_bench_element_command(bench, commands);
   add_bench_integrators_command(bench, commands);

@@ -22,6 +22,7 @@ void add_sweep_command(CLI::App& app, CommandList& commands);
 void add_report_command(CLI::App& app, CommandList& commands);
 void add_validate_command(CLI::App& app, CommandList& commands);
 void add_stability_command(CLI::App& app, CommandList& commands);
+void add_assess_command(CLI::App& app, CommandList& commands);
 void add_bench_element_command(CLI::App& bench, CommandList& commands);
 void add_bench_integrators_command(CLI::App& bench, CommandList& commands);
 void add_bench_dem_command(CLI::App& bench, CommandList& commands);

@@ -1,0 +1,37 @@
+#pragma once
+// The total Sobol indices of an interface model's element test (issue 17; seed 4.3.1, Tables
+// 4.3-4.7): every material parameter of the model's tables is normal about its value in the
+// parameter file with one coefficient of variation (the seed's sensitivity study takes COV 0.05 and
+// 0.1), the element test is monotonic simple shear under CNL, CNS or CV, and the quantities of
+// interest are its peak, path-averaged and end friction tau/sigma_n, its end normal strain and normal
+// stress.
+#include <functional>
+#include <string>
+
+#include "assessment/sobol.hpp"
+#include "driver/control.hpp"
+#include "models/registry.hpp"
+
+namespace iwb::assessment {
+
+struct ElementSensitivityOptions {
+  models::ModelInputs inputs;  // the parameter file: the distributions' means
+  double cov = 0.1;
+  driver::BoundaryKind boundary = driver::BoundaryKind::kCNL;
+  double sigma_n_kPa = 100.0;
+  double e0 = 0.0;  // for a model with a void ratio; ignored by one without
+  double K_kPa_per_unit_strain = 0.0;  // CNS
+  double gamma = 0.1;
+  int increments = 200;
+  int samples = 1000;  // N: the runs are N (k + 2)
+  unsigned seed = 1;
+  std::function<void(long done, long total)> progress;
+};
+
+// The parameters varied: the tables' kMaterial entries with a non-zero value (a zero, such as no
+// cohesion, has no spread to give).
+std::vector<Distribution> varied_parameters(const models::ModelSpec& spec, const models::ModelInputs& inputs, double cov);
+
+SobolResult element_sensitivity(const models::ModelSpec& spec, const ElementSensitivityOptions& options);
+
+}  // namespace iwb::assessment
