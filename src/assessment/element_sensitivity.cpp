@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "driver/element_test.hpp"
+#include "common/errors.hpp"
 #include "driver/path.hpp"
+#include <fmt/core.h>
 
 namespace iwb::assessment {
 
@@ -20,7 +22,7 @@ std::vector<std::pair<std::string, std::string>> locations(const models::ModelSp
   return out;
 }
 
-constexpr std::size_t kQuantities = 5;
+constexpr std::size_t kQuantities = 5;  // kQuantityNames below
 
 // One element test; NaN quantities where the model refuses the sample or the run stops.
 std::vector<double> run_once(const models::ModelSpec& spec, const ElementSensitivityOptions& o,
@@ -59,6 +61,9 @@ std::vector<Distribution> varied_parameters(const models::ModelSpec& spec, const
   return out;
 }
 
+const std::vector<std::string> kQuantityNames{"peak_friction", "mean_friction", "end_friction", "end_normal_strain",
+                                              "end_sigma_n_kPa"};
+
 SobolResult element_sensitivity(const models::ModelSpec& spec, const ElementSensitivityOptions& o) {
   const auto where = locations(spec, o.inputs);
   const auto params = varied_parameters(spec, o.inputs, o.cov);
@@ -69,8 +74,26 @@ SobolResult element_sensitivity(const models::ModelSpec& spec, const ElementSens
     if (o.progress) o.progress(++done, total);
     return q;
   };
-  return total_sobol_indices(params, {"peak_friction", "mean_friction", "end_friction", "end_normal_strain", "end_sigma_n_kPa"}, f,
-                             o.samples, o.seed);
+  return total_sobol_indices(params, kQuantityNames, f, o.samples, o.seed);
+}
+
+UncertaintyResult element_uncertainty(const models::ModelSpec& spec, const ElementSensitivityOptions& o,
+                                      const std::vector<Distribution>& distributions) {
+  std::vector<std::pair<std::string, std::string>> where;
+  for (const auto& d : distributions) {
+    const models::ParameterTable* found = nullptr;
+    for (const auto* table : spec.tables)
+      if (table->find(d.name)) found = table;
+    if (!found) throw InputError(fmt::format("{} has no parameter '{}' to distribute", spec.name, d.name));
+    where.emplace_back(found->name, d.name);
+  }
+  long done = 0;
+  const Quantities f = [&](const std::vector<double>& x) {
+    auto q = run_once(spec, o, where, x);
+    if (o.progress) o.progress(++done, o.samples);
+    return q;
+  };
+  return parameter_uncertainty(distributions, kQuantityNames, f, o.samples, o.seed);
 }
 
 }  // namespace iwb::assessment

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "assessment/sobol.hpp"
+#include "assessment/uncertainty.hpp"
 #include "driver/control.hpp"
 #include "models/registry.hpp"
 
@@ -33,5 +34,11 @@ struct ElementSensitivityOptions {
 std::vector<Distribution> varied_parameters(const models::ModelSpec& spec, const models::ModelInputs& inputs, double cov);
 
 SobolResult element_sensitivity(const models::ModelSpec& spec, const ElementSensitivityOptions& options);
+
+// The CV of each quantity when the parameters named in `distributions` (keys of the model's tables)
+// follow them and the others keep the file's values (seed 4.3.2, Table 4.8); options.samples Latin
+// hypercube samples. InputError naming a key the model does not have.
+UncertaintyResult element_uncertainty(const models::ModelSpec& spec, const ElementSensitivityOptions& options,
+                                      const std::vector<Distribution>& distributions);
 
 }  // namespace iwb::assessment

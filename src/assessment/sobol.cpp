@@ -1,6 +1,8 @@
 #include "assessment/sobol.hpp"
 
 #include <algorithm>
+#include <boost/math/distributions/lognormal.hpp>
+#include <boost/math/distributions/normal.hpp>
 #include <cmath>
 #include <stdexcept>
 
@@ -17,6 +19,22 @@ double Distribution::sample(std::mt19937_64& rng) const {
     case Kind::kUniform: {
       const double half = std::sqrt(3.0) * cov * std::abs(mean);
       return std::uniform_real_distribution<double>(mean - half, mean + half)(rng);
+    }
+  }
+  throw std::logic_error("unknown distribution");
+}
+
+double Distribution::quantile(double p) const {
+  switch (kind) {
+    case Kind::kNormal:
+      return boost::math::quantile(boost::math::normal(mean, cov * std::abs(mean)), p);
+    case Kind::kLognormal: {
+      const double s2 = std::log(1.0 + cov * cov);
+      return boost::math::quantile(boost::math::lognormal(std::log(mean) - 0.5 * s2, std::sqrt(s2)), p);
+    }
+    case Kind::kUniform: {
+      const double half = std::sqrt(3.0) * cov * std::abs(mean);
+      return mean - half + 2.0 * half * p;
     }
   }
   throw std::logic_error("unknown distribution");

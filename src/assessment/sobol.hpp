@@ -19,6 +19,7 @@ struct Distribution {
   Kind kind = Kind::kNormal;
   double mean = 0.0, cov = 0.0;  // kUniform: mean +- sqrt(3) cov mean (the same SD)
   double sample(std::mt19937_64& rng) const;
+  double quantile(double probability) const;  // the inverse CDF, for Latin hypercube samples
 };
 
 struct TotalIndex {

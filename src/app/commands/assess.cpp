@@ -13,13 +13,14 @@
 #include "common/errors.hpp"
 #include "io/parameter_file.hpp"
 #include "io/run_directory.hpp"
+#include "io/toml_reader.hpp"
 
 namespace iwb::app {
 
 namespace {
 
 struct AssessOptions {
-  std::string model, params, out, boundary = "CNL";
+  std::string model, params, out, boundary = "CNL", uncertainty;
   double cov = 0.1, sigma_n = 100.0, e0 = 0.0, K = 0.0, gamma = 0.1;
   int samples = 1000, increments = 200;
   unsigned seed = 1;
@@ -53,6 +54,36 @@ std::string csv(const assessment::SobolResult& r) {
   return out;
 }
 
+// A distribution file (data/assessment/distributions/): [[parameter]] key, distribution
+// ("normal", "lognormal", "uniform"), mean, cov.
+std::vector<assessment::Distribution> read_distributions(const std::string& file) {
+  const auto root = toml::parse_file(file);
+  io::TableReader top(root, file);
+  std::vector<assessment::Distribution> out;
+  for (auto& p : top.array_of_tables("parameter")) {
+    const std::string kind = p.text("distribution");
+    const auto k = kind == "normal"      ? assessment::Distribution::Kind::kNormal
+                   : kind == "lognormal" ? assessment::Distribution::Kind::kLognormal
+                   : kind == "uniform"   ? assessment::Distribution::Kind::kUniform
+                                         : throw InputError(fmt::format("{} = \"{}\"; allowed \"normal\", \"lognormal\", \"uniform\"",
+                                                                        p.where("distribution"), kind));
+    out.push_back({p.text("key"), k, p.positive("mean"), p.positive("cov", 1.0)});
+    p.finish();
+  }
+  top.finish();
+  return out;
+}
+
+std::string uncertainty_markdown(const assessment::UncertaintyResult& r, const AssessOptions& o) {
+  std::string md = fmt::format(
+      "# Parameter uncertainty: {} ({}, distributions {})\n\nLatin hypercube, {} samples ({} failed and left out); "
+      "monotonic simple shear under {} from sigma_n0 = {} kPa to gamma = {}.\n\n| quantity | mean | SD | CV_Y |\n"
+      "|---|---|---|---|\n",
+      o.model, o.params, o.uncertainty, r.samples, r.failed, o.boundary, o.sigma_n, o.gamma);
+  for (const auto& q : r.quantities) md += fmt::format("| {} | {:.4g} | {:.4g} | {:.3f} |\n", q.name, q.mean, q.sd, q.cv);
+  return md;
+}
+
 int run_assess(const AssessOptions& o) {
   const auto& spec = models::find_model(o.model);
   assessment::ElementSensitivityOptions opt;
@@ -67,6 +98,14 @@ int run_assess(const AssessOptions& o) {
   const auto dir = o.out.empty() ? std::filesystem::path("runs") / ("assess-" + o.model) : std::filesystem::path(o.out);
   const auto tick = increment_progress();
   opt.progress = [&](long done, long total) { tick(done, total); };
+  if (!o.uncertainty.empty()) {
+    const auto r = assessment::element_uncertainty(spec, opt, read_distributions(o.uncertainty));
+    io::prepare_run_directory(dir, true);
+    const auto md = uncertainty_markdown(r, o);
+    io::write_atomically(dir / "uncertainty.md", md);
+    fmt::print("{}", md);
+    return 0;
+  }
   const auto r = assessment::element_sensitivity(spec, opt);
   io::prepare_run_directory(dir, true);
   io::write_atomically(dir / "sobol.csv", csv(r));
@@ -99,6 +138,11 @@ void add_assess_command(CLI::App& app, CommandList& commands) {
   cmd->add_option("--increments", o->increments, "increments of the test")->check(whole_in(10, 100000));
   cmd->add_option("--samples", o->samples, "N, the base sample size")->check(whole_in(10, 1000000));
   cmd->add_option("--seed", o->seed, "random seed of the samples");
+  cmd->add_option("--uncertainty", o->uncertainty,
+                  "instead of the Sobol indices: the CV of each quantity when the parameters follow the distributions of "
+                  "this file ([[parameter]] key, distribution, mean, cov; data/assessment/distributions/, seed Table 4.8), "
+                  "from --samples Latin hypercube samples")
+      ->check(input_file());
   cmd->add_option("--out,-o", o->out, "output directory (default runs/assess-<model>)")->check(output_directory());
   commands.add(cmd, [o](const CommandContext&) { return run_assess(*o); });
 }
