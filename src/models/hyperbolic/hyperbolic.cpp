@@ -14,6 +14,7 @@
 
 #include "common/errors.hpp"
 #include "models/registry.hpp"
+#include "models/traction/traction_model.hpp"
 
 namespace iwb::models {
 
@@ -39,9 +40,9 @@ struct HyperbolicParameters {
 
 // State: [T_n, tau_x, tau_y, stress_level_max]: T_n = -sigma_n; the largest stress level
 // ||tau|| / tau_f reached, which decides loading against unloading.
-enum : int { kTn = 0, kTauX = 1, kTauY = 2, kLevelMax = 3, kSize = 4 };
+enum : int { kTn = kTractionN, kTauX = kTractionX, kTauY = kTractionY, kLevelMax = 3, kSize = 4 };
 
-class Hyperbolic final : public Model {
+class Hyperbolic final : public TractionModel<Hyperbolic> {
  public:
   explicit Hyperbolic(HyperbolicParameters p) : p_(p) {}
   std::string_view name() const override { return "hyperbolic"; }
@@ -52,31 +53,19 @@ class Hyperbolic final : public Model {
     if (!(in.sigma_n > 0.0))
       throw InputError(fmt::format("sigma_n_kPa = {} is not admissible for hyperbolic: its stiffness (eq. 3.49) needs "
                                    "compression", in.sigma_n));
-    StateVector s = StateVector::Zero(kSize);
-    s(kTn) = -in.sigma_n;
-    return s;
+    return unsheared(in.sigma_n, kSize);
   }
 
-  void rate(const StateVector& s, const InterfaceStrain& d, StateVector& ds) const override { rate_of(s, d, ds); }
-  void rate(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d, StateVectorT<Dual>& ds) const override {
-    rate_of(s, d, ds);
-  }
-  InterfaceStress stress(const StateVector& s) const override { return {-s(kTn), std::nullopt, s(kTauX), s(kTauY)}; }
-  double void_ratio(const StateVector&) const override { return std::nan(""); }
   std::string domain_violation(const StateVector& s) const override {
     if (!s.allFinite()) return "non-finite state";
     if (!(-s(kTn) > 0.0)) return fmt::format("sigma_n = {:.6g} kPa: the hyperbolic stiffness needs compression", -s(kTn));
     return {};
   }
-  StateVector error_scale(const StateVector& s) const override {
-    StateVector e = StateVector::Constant(kSize, std::max(1.0, std::abs(s(kTn))));
-    e(kLevelMax) = 1.0;
-    return e;
-  }
+  StateVector error_scale(const StateVector& s) const override { return traction_error_scale(s, 1.0); }
   std::vector<NamedValue> diagnostics(const StateVector& s) const override {
     return {{"stress_level", level(s)}, {"K_s_kPa_per_mm", 1e-3 * loading_stiffness(s)}};
   }
-  bool has_second_shear_direction() const override { return true; }
+  friend class TractionModel<Hyperbolic>;
 
  private:
   HyperbolicParameters p_;
@@ -127,10 +116,8 @@ class Hyperbolic final : public Model {
 ModelSpec hyperbolic_spec() {
   ModelDeclaration d;
   d.listing_order = 21;  // after mc
-  d.layout.components = {{"T_n", "kPa", ComponentKind::kStress},
-                         {"tau_x", "kPa", ComponentKind::kStress},
-                         {"tau_y", "kPa", ComponentKind::kStress},
-                         {"stress_level_max", "-", ComponentKind::kHardening}};
+  d.layout.components = traction_components();
+  d.layout.components.push_back({"stress_level_max", "-", ComponentKind::kHardening});
   d.layout.void_ratio = -1;
   d.initial = {{"sigma_n_kPa", "kPa", "initial normal stress (compression positive)"}};
   d.diagnostics = {{"stress_level", "-", "||tau|| / (sigma_n tan delta): 1 at failure"},

@@ -11,6 +11,7 @@
 
 #include "common/errors.hpp"
 #include "models/registry.hpp"
+#include "models/traction/traction_model.hpp"
 
 namespace iwb::models {
 
@@ -54,9 +55,9 @@ McParameters read(const ModelInputs& in) {
 
 // State: [T_n, tau_x, tau_y, eps_p_n, gamma_p]: T_n = -sigma_n (tension positive, every model's
 // component 0), the shear stresses, the accumulated plastic opening and plastic shear strain.
-enum : int { kTn = 0, kTauX = 1, kTauY = 2, kEpsPN = 3, kGammaP = 4, kSize = 5 };
+enum : int { kTn = kTractionN, kTauX = kTractionX, kTauY = kTractionY, kEpsPN = 3, kGammaP = 4, kSize = 5 };
 
-class MohrCoulomb final : public Model {
+class MohrCoulomb final : public TractionModel<MohrCoulomb> {
  public:
   explicit MohrCoulomb(McParameters p) : p_(p) {}
   std::string_view name() const override { return "mc"; }
@@ -67,40 +68,26 @@ class MohrCoulomb final : public Model {
     if (!(in.sigma_n > -p_.sigma_t))
       throw InputError(fmt::format("sigma_n_kPa = {} is not admissible for mc: beyond the tension cut-off {} kPa", in.sigma_n,
                                    -p_.sigma_t));
-    StateVector s = StateVector::Zero(kSize);
-    s(kTn) = -in.sigma_n;
-    return s;
+    return unsheared(in.sigma_n, kSize);
   }
 
-  // The rate form is the return's limit for a small increment: elastic inside, D^ep on the surface
-  // when the trial direction loads it. Homogeneous of degree one in d, like every rate.
-  void rate(const StateVector& s, const InterfaceStrain& d, StateVector& ds) const override { rate_of(s, d, ds); }
-  void rate(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d, StateVectorT<Dual>& ds) const override {
-    rate_of(s, d, ds);
-  }
   bool updates_by_increment() const override { return true; }
   void update(const StateVector& s, const InterfaceStrain& d, StateVector& out) const override { update_of(s, d, out); }
   void update(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d, StateVectorT<Dual>& out) const override {
     update_of(s, d, out);
   }
 
-  InterfaceStress stress(const StateVector& s) const override { return {-s(kTn), std::nullopt, s(kTauX), s(kTauY)}; }
-  double void_ratio(const StateVector&) const override { return std::nan(""); }
   std::string domain_violation(const StateVector& s) const override {
     if (!s.allFinite()) return "non-finite state";
     if (-s(kTn) < -p_.sigma_t * (1.0 + 1e-12) - 1e-12) return fmt::format("sigma_n = {:.6g} kPa beyond the tension cut-off", -s(kTn));
     return {};
   }
-  StateVector error_scale(const StateVector& s) const override {
-    StateVector e = StateVector::Constant(kSize, std::max(1.0, std::abs(s(kTn))));
-    e(kEpsPN) = e(kGammaP) = 1e-3;
-    return e;
-  }
+  StateVector error_scale(const StateVector& s) const override { return traction_error_scale(s, 1e-3); }
   std::vector<NamedValue> diagnostics(const StateVector& s) const override {
     const double sigma_n = -s(kTn), tau = std::hypot(s(kTauX), s(kTauY));
     return {{"f_yield", tau - sigma_n * p_.tan_phi - p_.c}, {"mobilised_friction", sigma_n > 0.0 ? tau / sigma_n : 0.0}};
   }
-  bool has_second_shear_direction() const override { return true; }
+  friend class TractionModel<MohrCoulomb>;
 
  private:
   McParameters p_;
@@ -144,6 +131,8 @@ class MohrCoulomb final : public Model {
     out(kGammaP) += lambda1;
   }
 
+  // The rate form is the return's limit for a small increment: elastic inside, D^ep on the surface
+  // when the trial direction loads it. Homogeneous of degree one in d, like every rate.
   template <class S>
   void rate_of(const StateVectorT<S>& s, const InterfaceStrainT<S>& d, StateVectorT<S>& ds) const {
     ds = StateVectorT<S>::Zero(kSize);
@@ -169,11 +158,9 @@ class MohrCoulomb final : public Model {
 ModelSpec mc_spec() {
   ModelDeclaration d;
   d.listing_order = 20;  // after the hypoplastic sand (0-5) and clay (10-13) models, before the -igs forms
-  d.layout.components = {{"T_n", "kPa", ComponentKind::kStress},
-                         {"tau_x", "kPa", ComponentKind::kStress},
-                         {"tau_y", "kPa", ComponentKind::kStress},
-                         {"eps_p_n", "-", ComponentKind::kHardening},
-                         {"gamma_p", "-", ComponentKind::kHardening}};
+  d.layout.components = traction_components();
+  d.layout.components.push_back({"eps_p_n", "-", ComponentKind::kHardening});
+  d.layout.components.push_back({"gamma_p", "-", ComponentKind::kHardening});
   d.layout.void_ratio = -1;
   d.initial = {{"sigma_n_kPa", "kPa", "initial normal stress (compression positive)"}};
   d.diagnostics = {{"f_yield", "kPa", "yield function ||tau|| - sigma_n tan(phi_i) - c (eq. 3.38): 0 on the surface",
