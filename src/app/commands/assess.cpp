@@ -57,7 +57,7 @@ std::string csv(const assessment::SobolResult& r) {
 // A distribution file (data/assessment/distributions/): [[parameter]] key, distribution
 // ("normal", "lognormal", "uniform"), mean, cov.
 std::vector<assessment::Distribution> read_distributions(const std::string& file) {
-  const auto root = toml::parse_file(file);
+  const auto root = io::parse_toml_file(file);  // a syntax error is bad input (exit 2), naming the file
   io::TableReader top(root, file);
   std::vector<assessment::Distribution> out;
   for (auto& p : top.array_of_tables("parameter")) {
