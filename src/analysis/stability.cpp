@@ -194,9 +194,10 @@ models::StateVector prepare(const models::ModelSpec& spec, const models::Model& 
     return m.initial_state({p.sigma_n_kPa, K0, NAN});
   }
   if (density_axis_of(spec) == DensityAxis::kOverconsolidationRatio) {
-    // the model turns the OCR into e0 (its asymptotic state boundary surface); no e_d, e_i
+    // the model turns the OCR into e0 (its asymptotic state boundary surface) or into its
+    // preconsolidation (modified Cam clay, whose e0 is a default label); no e_d, e_i
     out.e_d = out.e_c = out.e_i = NAN;
-    const auto s0 = m.initial_state({p.sigma_n_kPa, K0, NAN, std::nullopt, {{"OCR", p.density}}});
+    const auto s0 = m.initial_state(models::offer(spec, in, {{"sigma_n_kPa", p.sigma_n_kPa}, {"K0", K0}, {"OCR", p.density}}));
     out.e0 = m.void_ratio(s0);
     return s0;
   }

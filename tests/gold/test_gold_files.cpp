@@ -141,6 +141,14 @@ TEST_CASE("gold: the reference interface models (mc, hyperbolic) on CNL, CNS and
   }
 }
 
+TEST_CASE("gold: the models of seed chapter 8 (modified Cam clay) on CNL, CNS and CV match their gold files",
+          "[gold][gold-files]") {
+  for (const std::string path : {"cam_clay_CNL", "cam_clay_CNS", "cam_clay_CV"}) {
+    INFO(path);
+    check_path(path);
+  }
+}
+
 // A model added to the registry without gold files, or a gold file no case produces, fails here.
 TEST_CASE("gold: the clay models on their paths (Table 6.4) match their gold files", "[gold][gold-files]") {
   for (const std::string path : {"clay_CNL", "clay_CNS", "clay_CV", "clay_oedometric", "clay_cyclic_CNL"}) {
