@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "models/registry.hpp"
+
 namespace iwb::studies {
 
 namespace {
@@ -51,12 +53,14 @@ std::vector<ClayCase> clay_cases() {
 std::string element_test_text(const ClayCase& c, const std::string& parameters) {
   std::string t = fmt::format("# iwb run --study clay: {}\ndescription = \"{}\"\n\n[model]\nname = \"{}\"\nparameters = \"{}\"\n\n",
                               c.name, c.name, c.model, parameters);
-  if (c.model.find("3d") == std::string::npos) {
+  if (models::find_model(c.model).uses_roughness) {
     t += fmt::format("[roughness]\nkappa_r = {}\n", c.kappa_r);
     if (!c.scheme.empty()) t += fmt::format("scheme = \"{}\"\n", c.scheme);
     t += "\n";
   }
-  t += fmt::format("[initial]\nsigma_n_kPa = {}\nOCR = {}\n", c.sigma_n_kPa, c.OCR);
+  t += fmt::format("[initial]\nsigma_n_kPa = {}\n", c.sigma_n_kPa);
+  t += std::isnan(c.e0) ? fmt::format("OCR = {}\n", c.OCR) : fmt::format("e0 = {}\n", c.e0);
+  if (!std::isnan(c.K0)) t += fmt::format("K0 = {}\n", c.K0);
   if (c.model.ends_with("-igs")) t += "delta = \"seed\"\n";
   t += fmt::format("\n[shear_zone]\nd_s_mm = 1.0\n\n[boundary]\ntype = \"{}\"\n", c.boundary);
   if (c.boundary == "CNS") t += fmt::format("K_kPa = {}\n", c.K_kPa);

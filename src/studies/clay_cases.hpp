@@ -1,7 +1,9 @@
 #pragma once
-// The element tests of the clay study (seed 6.4) as data: which model, set, boundary, stress,
-// roughness and path, written out as the element-test TOML that `iwb element` reads.
+// The element tests of the clay studies (seed 6.4, chapter 8) as data: which model, set, boundary,
+// stress, density, roughness and path, written out as the element-test TOML that `iwb element` reads.
 #include <nlohmann/json.hpp>
+
+#include <cmath>
 
 #include <string>
 #include <vector>
@@ -19,6 +21,8 @@ struct ClayCase {
   double kappa_r = 1.0;     // interface models only
   std::string scheme = {};  // empty: the model's own
   bool cyclic = false;      // cycles of +-kCyclicAmplitude instead of monotonic shear
+  double e0 = NAN;          // given instead of OCR where the study needs one void ratio for every model
+  double K0 = NAN;          // NaN: the model's default
 };
 
 // Monotonic shear to gamma 0.2 in 2000 increments (data/tests/hce_cv_table_6_1.toml); cyclic paths

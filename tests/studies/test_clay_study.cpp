@@ -26,7 +26,7 @@ TEST_CASE("clay study: every case completes, the page holds every figure, the nu
           "[studies]") {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "clay-study";
   fs::remove_all(dir);
-  REQUIRE(studies::run_clay_study({dir, false, "test", nullptr}) == 0);
+  REQUIRE(studies::run_study(studies::clay_study(), {dir, false, "test", nullptr}) == 0);
   const auto cases = studies::clay_cases();
   for (const auto& c : cases) {
     INFO(c.name);
@@ -61,6 +61,6 @@ TEST_CASE("clay study: every case completes, the page holds every figure, the nu
     }
   // A second run into the same directory is refused without --force, before anything is written
   const auto before = fs::last_write_time(dir / "parameters" / "table_6_1_evaluation.toml");
-  CHECK_THROWS_WITH(studies::run_clay_study({dir, false, "test", nullptr}), Catch::Contains("--force"));
+  CHECK_THROWS_WITH(studies::run_study(studies::clay_study(), {dir, false, "test", nullptr}), Catch::Contains("--force"));
   CHECK(fs::last_write_time(dir / "parameters" / "table_6_1_evaluation.toml") == before);
 }

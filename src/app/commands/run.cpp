@@ -19,7 +19,7 @@ struct RunOptions {
 
 int run_study(const RunOptions& o, const CommandContext& c) {
   if (o.study == "clay")
-    return studies::run_clay_study({o.out.empty() ? "runs/clay" : o.out, o.force, c.command_line, c.interrupt});
+    return studies::run_study(studies::clay_study(), {o.out.empty() ? "runs/clay" : o.out, o.force, c.command_line, c.interrupt});
   return run_default_job(o.out.empty() ? "runs/default" : o.out, o.force, c.command_line);
 }
 }  // namespace
