@@ -33,6 +33,9 @@ struct ReducedOps {
   static S trace_of_cube(const Tensor<S>& x) { return reduced::trace_of_cube(x); }
   template <class S>
   static Tensor<S> unit() { return reduced::unit<S>(); }
+  // X . Y, eq. 5.31 (ERRATA 2: the embedding is not closed under it)
+  template <class S>
+  static Tensor<S> product(const Tensor<S>& x, const Tensor<S>& y) { return reduced::inner_product(x, y); }
 
   template <class S, class V>
   static Tensor<S> unpack(const V& v, int offset) { return v.template segment<4>(offset); }
@@ -69,6 +72,8 @@ struct Tensor3Ops {
   static S trace_of_cube(const Tensor<S>& x) { return tensor3::trace_of_cube(x); }
   template <class S>
   static Tensor<S> unit() { return Tensor<S>::Identity(); }
+  template <class S>
+  static Tensor<S> product(const Tensor<S>& x, const Tensor<S>& y) { return x * y; }
 
   template <class S, class V>
   static Tensor<S> unpack(const V& v, int o) {

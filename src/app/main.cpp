@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
       "  iwb models                                  list models, parameters, units, bounds\n"
       "  iwb element data/tests/hvwe_cnl_dense.toml  run one element test into runs/<name>/\n"
       "  iwb run --study clay                        the seed's clay interface comparisons (6.4)\n"
+      "  iwb run --study chapter8                    HCE, Barodesy, modified Cam clay under CV (seed 8.4)\n"
       "  iwb dem run data/scenes/smoke.toml          a DEM interface-shear scene in LIGGGHTS\n"
       "  iwb sweep data/sweeps/example.toml -j 2     a campaign of scenes (R_n x d50 x CNL/CNS/CV x seed)\n"
       "  iwb tradeoff data/scenes/default.toml -j 2  DEM speed against accuracy, knob by knob\n"

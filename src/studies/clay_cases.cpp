@@ -69,7 +69,7 @@ std::string element_test_text(const ClayCase& c, const std::string& parameters) 
                      kCyclicAmplitude, kCycles, kIncrementsPerQuarter);
   else
     t += fmt::format("\n[path]\nkind = \"monotonic\"\ngamma = {}\nincrements = {}\n\n[output]\nevery = 10\n",
-                     kShearStrain, kIncrements);
+                     c.gamma, int(std::lround(c.gamma * kIncrementsPerUnitGamma)));
   return t;
 }
 

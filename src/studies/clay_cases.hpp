@@ -23,13 +23,13 @@ struct ClayCase {
   bool cyclic = false;      // cycles of +-kCyclicAmplitude instead of monotonic shear
   double e0 = NAN;          // given instead of OCR where the study needs one void ratio for every model
   double K0 = NAN;          // NaN: the model's default
+  double gamma = 0.2;       // monotonic paths: the shear strain reached, in kIncrementsPerUnitGamma steps per unit
 };
 
-// Monotonic shear to gamma 0.2 in 2000 increments (data/tests/hce_cv_table_6_1.toml); cyclic paths
+// Monotonic shear to gamma (0.2 by default) in increments of 1e-4 (data/tests/hce_cv_table_6_1.toml); cyclic paths
 // of 10 cycles of +-0.001 in 50 increments a quarter: Table 6.4 gives no amplitude; 10 R keeps the
 // cycles in the intergranular strain's range, steps of R/5 resolve it.
-inline constexpr double kShearStrain = 0.2;
-inline constexpr int kIncrements = 2000;
+inline constexpr int kIncrementsPerUnitGamma = 10000;
 inline constexpr double kCyclicAmplitude = 0.001;
 inline constexpr int kCycles = 10;
 inline constexpr int kIncrementsPerQuarter = 50;

@@ -17,15 +17,6 @@ constexpr double kDiffer = 0.01;
 // "Small strain" of Figure 6.7b: the secant over the first 0.1 % of shear.
 constexpr double kSmallStrain = 1e-3;
 
-double largest_relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  double diff = 0.0, scale = 1e-12;
-  for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k) {
-    diff = std::max(diff, std::abs(a[k] - b[k]));
-    scale = std::max(scale, std::abs(b[k]));
-  }
-  return a.size() == b.size() ? diff / scale : INFINITY;
-}
-
 ClayClaim reduced_equals_3d(const std::map<std::string, ClayCurve>& c) {
   ClayClaim out{"6.4.1", "the enhanced reduced interface model coincides with the 3D model (CV, 100 kPa)", "", true, {}};
   for (const std::string m : {"hcc", "hce"}) {
@@ -170,6 +161,15 @@ ClayClaim less_ratcheting(const std::map<std::string, ClayCurve>& c, const std::
 }
 
 }  // namespace
+
+double largest_relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double diff = 0.0, scale = 1e-12;
+  for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k) {
+    diff = std::max(diff, std::abs(a[k] - b[k]));
+    scale = std::max(scale, std::abs(b[k]));
+  }
+  return a.size() == b.size() ? diff / scale : INFINITY;
+}
 
 double initial_tangent(const ClayCurve& c) { return (c.tau[1] - c.tau[0]) / (c.gamma[1] - c.gamma[0]); }
 

@@ -22,6 +22,9 @@ struct ClayClaim {
 // The claims, from the curves of clay_cases() by name.
 std::vector<ClayClaim> clay_claims(const std::map<std::string, ClayCurve>& curves);
 
+// max |a - b| over max |b|, row by row; infinite when the curves have different lengths.
+double largest_relative_difference(const std::vector<double>& a, const std::vector<double>& b);
+
 // d tau / d gamma over the first increment after the first reversal of a cyclic curve, and over
 // its first increment from the start.
 double tangent_after_first_reversal(const ClayCurve& c);

@@ -141,9 +141,9 @@ TEST_CASE("gold: the reference interface models (mc, hyperbolic) on CNL, CNS and
   }
 }
 
-TEST_CASE("gold: the models of seed chapter 8 (modified Cam clay) on CNL, CNS and CV match their gold files",
+TEST_CASE("gold: the models of seed chapter 8 (modified Cam clay, Barodesy) on CNL, CNS and CV match their gold files",
           "[gold][gold-files]") {
-  for (const std::string path : {"cam_clay_CNL", "cam_clay_CNS", "cam_clay_CV"}) {
+  for (const std::string path : {"table_8_1_CNL", "table_8_1_CNS", "table_8_1_CV"}) {
     INFO(path);
     check_path(path);
   }

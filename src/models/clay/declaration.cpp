@@ -5,8 +5,9 @@
 namespace iwb::models {
 
 ModelDeclaration clay_declaration(const std::vector<std::string>& stress_components, bool interface_model,
-                                  int listing_order, RoughnessScheme scheme, std::vector<DiagnosticSpec> own_diagnostics) {
-  auto d = rate_form_declaration(stress_components, InPlaneStart::kFreeK0, listing_order, "hypoplastic_clay");
+                                  int listing_order, RoughnessScheme scheme, std::vector<DiagnosticSpec> own_diagnostics,
+                                  const std::string& table) {
+  auto d = rate_form_declaration(stress_components, InPlaneStart::kFreeK0, listing_order, table);
   // The density as e0 or as an overconsolidation ratio: a clay is usually known by its OCR
   d.initial[1].doc = "initial void ratio, on or below the normal compression line (or give OCR)";
   d.initial[1].need = InitialInputSpec::Need::kOneOf;

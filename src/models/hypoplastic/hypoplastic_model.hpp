@@ -50,9 +50,14 @@ class HypoplasticModel final : public Model {
     Ops::template pack<double>(kin_.initial_stress(init), s, 0);
     s(kVoidRatio) = init.e0;
     // a law that knows its asymptotic state boundary surface may be given the density as an OCR
-    if constexpr (requires { Law::void_ratio_at(StressInvariants{}, 1.0, c_); })
-      if (const auto ocr = init.named.find("OCR"); ocr != init.named.end())
-        s(kVoidRatio) = Law::void_ratio_at(stress_invariants<Ops>(Ops::template unpack<double>(s, 0)), ocr->second, c_);
+    // (from the invariants, or from the stress tensor where the surface needs the principal ratio)
+    if (const auto ocr = init.named.find("OCR"); ocr != init.named.end()) {
+      const auto T = Ops::template unpack<double>(s, 0);
+      if constexpr (requires { Law::void_ratio_at(StressInvariants{}, 1.0, c_); })
+        s(kVoidRatio) = Law::void_ratio_at(stress_invariants<Ops>(T), ocr->second, c_);
+      else if constexpr (requires { Law::template void_ratio_at_stress<Ops>(T, 1.0, c_); })
+        s(kVoidRatio) = Law::template void_ratio_at_stress<Ops>(T, ocr->second, c_);
+    }
     if (igs_) Ops::template pack<double>(initial_intergranular_strain(init), s, kDelta);
     else if (init.delta)
       throw InputError(fmt::format("{} has no intergranular strain; an initial delta is meaningless "
@@ -124,10 +129,14 @@ class HypoplasticModel final : public Model {
       Ops::template pack<S>(Law::template rate<Ops, S>(T, e, D, c_), ds, 0);
       return;
     }
-    const auto delta = Ops::template unpack<S>(s, kDelta);
-    const auto r = intergranular_strain_rate<Ops, S>(Law::template tangent<Ops, S>(T, e, c_), delta, D, *igs_);
-    Ops::template pack<S>(r.stress, ds, 0);
-    Ops::template pack<S>(kin_.template intergranular<S>(r.delta), ds, kDelta);
+    // the intergranular strain needs the law's split L : D + N ||D|| (a Law without `tangent`,
+    // Barodesy, is never built with it: make_member)
+    if constexpr (requires { Law::template tangent<Ops, S>(T, e, c_); }) {
+      const auto delta = Ops::template unpack<S>(s, kDelta);
+      const auto r = intergranular_strain_rate<Ops, S>(Law::template tangent<Ops, S>(T, e, c_), delta, D, *igs_);
+      Ops::template pack<S>(r.stress, ds, 0);
+      Ops::template pack<S>(kin_.template intergranular<S>(r.delta), ds, kDelta);
+    }
   }
 
   // Given [delta_n, delta_x, delta_y] or the seed's default, as the stretching-shaped tensor of

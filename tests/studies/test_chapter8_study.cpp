@@ -1,0 +1,61 @@
+// iwb run --study chapter8 (src/studies/): every case runs, the page holds its figures, and the
+// study's numbers obey facts derived from the models' equations, not from the study's code.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "io/json_file.hpp"
+#include "io/run_directory.hpp"
+#include "studies/chapter8_study.hpp"
+
+using namespace iwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The last row's value of `column` in a run's history.csv.
+double last_value(const fs::path& run, const std::string& column) {
+  std::istringstream in(io::read_file(run / "history.csv"));
+  std::string header, line, last;
+  std::getline(in, header);
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  std::istringstream h(header), l(last);
+  std::string name, value;
+  while (std::getline(h, name, ',') && std::getline(l, value, ','))
+    if (name == column) return std::stod(value);
+  return NAN;
+}
+
+}  // namespace
+
+TEST_CASE("chapter8 study: every case completes, the page holds every figure, the ends obey the critical state lines",
+          "[studies]") {
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "chapter8-study";
+  fs::remove_all(dir);
+  const auto study = studies::chapter8_study();
+  REQUIRE(studies::run_study(study, {dir, false, "test", nullptr}) == 0);
+  for (const auto& c : study.cases) {
+    INFO(c.name);
+    CHECK(io::read_json_file(dir / c.name / "manifest.json")["status"] == "complete");
+  }
+  const auto json = io::read_json_file(dir / "study.json");
+  REQUIRE(json["claims"].size() == 8);
+  const std::string html = io::read_file(dir / "chapter8.html");
+  std::size_t svgs = 0;
+  for (auto p = html.find("<svg"); p != std::string::npos; p = html.find("<svg", p + 1)) ++svgs;
+  CHECK(svgs == 6);
+
+  // Modified Cam clay: reduced = 3D (the return reads p and the deviator only)
+  CHECK(json["claims"][0]["holds"] == true);
+  // Under CV e stays at e0 on the isotropic NCL (p_e = 100 kPa); HCE's and Barodesy's critical
+  // state lines are both ln(1+e) = N - lambda* ln(2p) (eqs. 6.7 with p_e* = 2p; 8.7), so both end
+  // at p = p_e / 2 = 50 kPa; MCC at p0 / 2^((lambda - kappa)/lambda) (65.29 kPa for London's set).
+  for (const std::string clay : {"london", "kaolin"})
+    for (const std::string m : {"hce", "barodesy-clay", "barodesy-clay3d"}) {
+      INFO(clay << " " << m);
+      CHECK(last_value(dir / (clay + "_" + m), "mean_stress_kPa") == Approx(50.0).epsilon(2e-3));
+    }
+  CHECK(last_value(dir / "london_mcc", "mean_stress_kPa") == Approx(100.0 / std::pow(2.0, 0.099 / 0.161)).epsilon(1e-3));
+}
