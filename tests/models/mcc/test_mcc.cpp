@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "algebra/ops.hpp"
+#include "models/mcc/modified_cam_clay.hpp"
 #include "models/registry.hpp"
 #include "support/fixtures.hpp"
 #include "support/reduced_vs_3d.hpp"
@@ -113,4 +115,52 @@ TEST_CASE("mcc: the increment's Dual derivative is its central difference", "[mo
     for (int i = 0; i < s.size(); ++i)
       CHECK(derivative_of(out(i)) == Approx((up(i) - down(i)) / (2 * h)).epsilon(1e-5).margin(1e-4));
   }
+}
+
+namespace {
+
+using Tensor3 = algebra::Tensor3Ops::Tensor<double>;
+
+models::CamClayParameters london_parameters() { return {kLambda, kKappa, kM, kNu}; }
+
+Tensor3 diagonal(double a, double r) { return Eigen::Vector3d(a, r, r).asDiagonal(); }
+
+}  // namespace
+
+TEST_CASE("mcc: undrained triaxial compression from the isotropic NCL ends at q = M p, p = p0 / 2^((lambda-kappa)/lambda)",
+          "[models][mcc]") {
+  models::CamClayPoint<algebra::Tensor3Ops, double> s{diagonal(-100.0, -100.0), 100.0};
+  // to an axial strain of 2 in steps of 1e-3: the end is exact whatever the step (e constant)
+  for (int i = 0; i < 2000; ++i) s = models::cam_clay_increment<algebra::Tensor3Ops, double>(s, diagonal(-1e-3, 0.5e-3), london_parameters());
+  const models::CamClayInvariants<algebra::Tensor3Ops, double> inv(s.T);
+  CHECK(inv.p == Approx(100.0 / std::pow(2.0, (kLambda - kKappa) / kLambda)).epsilon(1e-6));
+  CHECK(inv.q == Approx(kM * inv.p).epsilon(1e-6));
+}
+
+TEST_CASE("mcc: drained triaxial compression from the isotropic NCL ends at p = 3 p0 / (3 - M), "
+          "eps_v = lambda ln(p/p0) + (lambda - kappa) ln 2",
+          "[models][mcc]") {
+  // sigma_3 held at p0: each axial increment's lateral strain found by the secant method. Axial
+  // steps of 1e-3 to 10: the end depends on the step through neither the stress path (p = p0 + q/3)
+  // nor the exact elastic and hardening laws.
+  const double p0 = 100.0;
+  models::CamClayPoint<algebra::Tensor3Ops, double> s{diagonal(-p0, -p0), p0};
+  double eps_v = 0.0;  // compression positive
+  for (int i = 0; i < 10000; ++i) {
+    const auto lateral_error = [&](double d_r) {
+      return models::cam_clay_increment<algebra::Tensor3Ops, double>(s, diagonal(-1e-3, d_r), london_parameters()).T(1, 1) + p0;
+    };
+    double a = 0.0, b = 0.5e-3, fa = lateral_error(a), fb = lateral_error(b);
+    for (int k = 0; k < 50 && std::abs(fb) > 1e-12 * p0; ++k) {
+      const double c = b - fb * (b - a) / (fb - fa);
+      a = b, fa = fb, b = c, fb = lateral_error(c);
+    }
+    s = models::cam_clay_increment<algebra::Tensor3Ops, double>(s, diagonal(-1e-3, b), london_parameters());
+    eps_v -= -1e-3 + 2.0 * b;
+  }
+  const models::CamClayInvariants<algebra::Tensor3Ops, double> inv(s.T);
+  const double p_cs = 3.0 * p0 / (3.0 - kM);
+  CHECK(inv.p == Approx(p_cs).epsilon(1e-6));
+  CHECK(inv.q == Approx(kM * p_cs).epsilon(1e-6));
+  CHECK(eps_v == Approx(kLambda * std::log(p_cs / p0) + (kLambda - kKappa) * std::log(2.0)).epsilon(1e-5));
 }
