@@ -13,6 +13,7 @@ PACKAGES=(
   chromium  # the report test opens the HTML in headless Chromium
   libvtk9-dev  # VTK's legacy readers and XML writers (issue 21); beside YADE's python3-vtk9
   paraview     # the tests open the .pvd outputs in ParaView itself (pvpython, below)
+  gfortran pybind11-dev python3-dev python3-numpy  # the C interface's Fortran and Python callers (src/c_api)
 )
 
 missing=()
@@ -42,6 +43,7 @@ if [ ! -x "$PARAVIEW_PREFIX/usr/bin/pvpython3.11" ]; then
   rm -rf "$download"
 fi
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+# Debian's Python (numpy, and the module the C interface's Python caller builds) is /usr/bin/python3
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3
 cmake --build build -j"$(nproc)"
 echo "setup: done; the workbench is build/iwb"

@@ -381,6 +381,22 @@ ElementTestSpec parse_element_test(const toml::table& root, const std::string& s
   return spec;
 }
 
+integration::IntegratorSettings parse_integrator_settings(const toml::table& integration, const std::string& source) {
+  ElementTestSpec spec;
+  spec.source = source;
+  read_integration(TableReader(integration, source), spec);
+  return spec.settings.integrator;
+}
+
+models::InitialState parse_initial_state(const toml::table& initial, const std::string& model,
+                                         const models::ModelInputs& inputs, const std::string& source) {
+  ElementTestSpec spec;
+  spec.model = model;
+  spec.inputs = inputs;
+  read_initial(TableReader(initial, source), spec);
+  return spec.initial;
+}
+
 ElementTestSpec load_element_test(const std::string& path) {
   return parse_element_test(parse_toml_file(path), path,
                             std::filesystem::path(path).parent_path());

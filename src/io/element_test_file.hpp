@@ -26,6 +26,16 @@ struct ElementTestSpec {
   nlohmann::json resolved;  // every input after defaults and conversions, for the manifest
 };
 
+// Stress-point integration settings from a table laid out as a test file's [integration] (scheme,
+// substeps, pair, rtol), for the C interface. InputError naming `source`.
+integration::IntegratorSettings parse_integrator_settings(const toml::table& integration, const std::string& source);
+
+// The initial state of `model` from a table laid out as a test file's [initial] (the model's
+// declared inputs, their ranges, defaults and groups; unknown keys refused), for callers without a
+// test file (the C interface). InputError naming `source`.
+models::InitialState parse_initial_state(const toml::table& initial, const std::string& model,
+                                         const models::ModelInputs& inputs, const std::string& source);
+
 ElementTestSpec load_element_test(const std::string& path);
 // `base_dir` resolves relative parameter-file paths.
 ElementTestSpec parse_element_test(const toml::table& root, const std::string& source,

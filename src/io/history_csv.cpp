@@ -13,19 +13,21 @@ std::string history_csv(const models::Model& model, const driver::ShearZone& zon
   if (!rows.empty())
     for (const auto& d : model.diagnostics(rows.front().state)) out += "," + d.name;
   out += ",newton_iterations,rate_evaluations,rejected_substeps\n";
+  // Every number in its shortest form that reads back to the same double: a caller of the C
+  // interface (src/c_api) is held against this file to round-off.
   for (const auto& r : rows) {
     const auto s = model.stress(r.state);
     // sigma_p is empty for models without an in-plane stress (hp1d), never NaN.
-    const std::string sigma_p = s.sigma_p ? fmt::format("{:.10g}", *s.sigma_p) : "";
+    const std::string sigma_p = s.sigma_p ? fmt::format("{}", *s.sigma_p) : "";
     // e is empty for models without a void ratio (mc: NaN from void_ratio), like sigma_p
     const double e = model.void_ratio(r.state);
-    const std::string e_field = std::isnan(e) ? "" : fmt::format("{:.10g}", e);
-    out += fmt::format("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.10g},"
-                       "{:.10g},{:.10g},{}",
+    const std::string e_field = std::isnan(e) ? "" : fmt::format("{}", e);
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},"
+                       "{},{},{}",
                        r.increment, r.segment, zone.u_of(r.gamma_x), zone.u_of(r.gamma_y),
                        zone.u_n_of(r.eps_n), r.gamma_x, r.gamma_y, r.eps_n, s.sigma_n, sigma_p,
                        s.tau_x, s.tau_y, s.tau_x / s.sigma_n, e_field);
-    for (const auto& d : model.diagnostics(r.state)) out += fmt::format(",{:.10g}", d.value);
+    for (const auto& d : model.diagnostics(r.state)) out += fmt::format(",{}", d.value);
     out += fmt::format(",{},{},{}\n", r.newton_iterations, r.rate_evaluations, r.rejected_substeps);
   }
   return out;
