@@ -38,6 +38,7 @@ void add_all_commands(CLI::App& app, CommandList& commands) {
   add_calibrate_command(app, commands);
   add_tradeoff_command(app, commands);
   add_plan_command(app, commands);
+  add_pile_command(app, commands);
 }
 
 }  // namespace iwb::app

@@ -1,0 +1,215 @@
+#include "pile/pile_run.hpp"
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/errors.hpp"
+#include "comparison/figure.hpp"
+#include "io/directory_lock.hpp"
+#include "io/output_path.hpp"
+#include "io/run_directory.hpp"
+#include "pile/load_transfer.hpp"
+
+namespace iwb::pile {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// The head's targets: settlements (mm) or loads (kN), in order.
+std::vector<double> head_path(const Loading& l) {
+  std::vector<double> t;
+  if (l.kind == LoadingKind::kSettlement) {
+    for (int k = 1; k <= l.increments; ++k) t.push_back(l.settlement_mm * k / l.increments);
+    return t;
+  }
+  const int q = l.increments_per_quarter;
+  const auto ramp = [&](double from, double to) {
+    for (int k = 1; k <= q; ++k) t.push_back(from + (to - from) * k / q);
+  };
+  if (l.mean_kN > 0.0) ramp(0.0, l.mean_kN);
+  for (int c = 0; c < l.cycles; ++c) {
+    ramp(l.mean_kN, l.mean_kN + l.amplitude_kN);
+    ramp(l.mean_kN + l.amplitude_kN, l.mean_kN);
+    ramp(l.mean_kN, l.mean_kN - l.amplitude_kN);
+    ramp(l.mean_kN - l.amplitude_kN, l.mean_kN);
+  }
+  return t;
+}
+
+// The head from `from` to `to` (settlement or load): in one step, or, where equilibrium or a stress
+// point fails, in two halves, down to 1/2^kSubdivisions of the step.
+constexpr int kSubdivisions = 8;
+
+PileSnapshot advance(LoadTransfer& pile, LoadingKind kind, double from, double to, int depth) {
+  try {
+    return kind == LoadingKind::kSettlement ? pile.settle_to(to) : pile.load_to(to);
+  } catch (const ConvergenceError&) {
+    if (depth >= kSubdivisions) throw;
+    advance(pile, kind, from, 0.5 * (from + to), depth + 1);
+    return advance(pile, kind, 0.5 * (from + to), to, depth + 1);
+  }
+}
+
+struct Analysis {
+  std::vector<PileSnapshot> curve;
+  std::vector<std::pair<double, std::vector<ProfileRow>>> profiles;  // (head load, rows)
+  std::string status = "complete";
+};
+
+Analysis analyse(const PileSpec& spec, const ShaftMaterial& material, int elements, const PileRunOptions& opt,
+                 long& done, long total) {
+  Analysis a;
+  LoadTransfer pile(spec, material, elements);
+  a.curve.push_back(pile.snapshot());
+  double previous = 0.0;  // the head's last target reached
+  std::vector<double> pending = spec.loading.profile_loads_kN;
+  std::sort(pending.begin(), pending.end());
+  for (double target : head_path(spec.loading)) {
+    try {
+      a.curve.push_back(advance(pile, spec.loading.kind, previous, target, 0));
+      previous = target;
+    } catch (const std::exception& e) {
+      a.status = fmt::format("failed: {}", e.what());
+      return a;
+    }
+    while (!pending.empty() && a.curve.back().head_load_kN >= pending.front() * (1.0 - 1e-12)) {
+      a.profiles.push_back({pending.front(), pile.profile()});
+      pending.erase(pending.begin());
+    }
+    if (opt.on_step) opt.on_step(++done, total);
+    if (opt.interrupt && opt.interrupt->load()) {
+      a.status = "interrupted";
+      return a;
+    }
+  }
+  if (a.profiles.empty()) a.profiles.push_back({a.curve.back().head_load_kN, pile.profile()});
+  return a;
+}
+
+std::string curve_csv(const std::vector<PileSnapshot>& c) {
+  std::string out = "step,head_settlement_mm,head_load_kN,shaft_load_kN,base_load_kN,tip_settlement_mm,newton_iterations\n";
+  for (std::size_t k = 0; k < c.size(); ++k)
+    out += fmt::format("{},{},{},{},{},{},{}\n", k, c[k].head_settlement_mm, c[k].head_load_kN, c[k].shaft_load_kN,
+                       c[k].base_load_kN, c[k].tip_settlement_mm, c[k].newton_iterations);
+  return out;
+}
+
+std::string profiles_csv(const Analysis& a) {
+  std::string out = "head_load_kN,z_m,w_mm,axial_kN,tau_kPa,sigma_n_kPa\n";
+  for (const auto& [load, rows] : a.profiles)
+    for (const auto& r : rows) out += fmt::format("{},{},{},{},{},{}\n", load, r.z_m, r.w_mm, r.axial_kN, r.tau_kPa, r.sigma_n_kPa);
+  return out;
+}
+
+// The quantity mesh convergence is judged on: the head load at the last settlement, or the head
+// settlement at the last load.
+double end_value(const PileSpec& spec, const Analysis& a) {
+  return spec.loading.kind == LoadingKind::kSettlement ? a.curve.back().head_load_kN : a.curve.back().head_settlement_mm;
+}
+
+json mesh_convergence(const PileSpec& spec, const std::vector<std::pair<int, const Analysis*>>& runs) {
+  json j;
+  j["quantity"] = spec.loading.kind == LoadingKind::kSettlement ? "head load at the last settlement, kN"
+                                                                 : "head settlement at the end of the last cycle, mm";
+  std::vector<double> v;
+  for (const auto& [n, a] : runs) {
+    j["elements"].push_back(n);
+    j["values"].push_back(a->status == "complete" ? json(end_value(spec, *a)) : json(nullptr));
+    v.push_back(a->status == "complete" ? end_value(spec, *a) : NAN);
+  }
+  if (v.size() == 3 && std::isfinite(v[0] + v[1] + v[2])) {
+    const double d1 = v[0] - v[1], d2 = v[1] - v[2];
+    j["change_to_finest"] = (v[2] - v[1]) / v[1];
+    if (d1 != 0.0 && d2 != 0.0 && d1 / d2 > 0.0) {
+      const double p = std::log2(d1 / d2);
+      j["observed_order"] = p;
+      j["extrapolated"] = v[2] - d2 / (std::pow(2.0, p) - 1.0);
+    }
+  }
+  return j;
+}
+
+std::vector<fs::path> draw_figures(const PileSpec& spec, const Analysis& a, const fs::path& out) {
+  io::StagedDirectory staged(out / "figures");
+  comparison::PlotCurve head{"head", {}, {}}, shaft{"shaft", {}, {}}, base{"base", {}, {}};
+  for (const auto& s : a.curve) {
+    head.x.push_back(s.head_settlement_mm), head.y.push_back(s.head_load_kN);
+    shaft.x.push_back(s.head_settlement_mm), shaft.y.push_back(s.shaft_load_kN);
+    base.x.push_back(s.head_settlement_mm), base.y.push_back(s.base_load_kN);
+  }
+  std::vector<fs::path> svgs;
+  const std::string model = spec.interface.model;
+  svgs.push_back(comparison::draw(comparison::curves_figure("load_settlement", "Load-settlement (" + model + ")",
+                                                            "head settlement (mm)", "load (kN)", {head, shaft, base}),
+                                  staged.path()));
+  for (const auto& [name, label, column] :
+       std::vector<std::tuple<std::string, std::string, double ProfileRow::*>>{
+           {"profile_tau", "shaft friction tau (kPa)", &ProfileRow::tau_kPa},
+           {"profile_sigma_n", "normal stress sigma_n (kPa)", &ProfileRow::sigma_n_kPa},
+           {"profile_axial", "axial force (kN)", &ProfileRow::axial_kN}}) {
+    std::vector<comparison::PlotCurve> curves;
+    for (const auto& [load, rows] : a.profiles) {
+      comparison::PlotCurve c{fmt::format("{:g} kN", load), {}, {}};
+      for (const auto& r : rows) c.x.push_back(r.*column), c.y.push_back(-r.z_m);
+      curves.push_back(c);
+    }
+    svgs.push_back(comparison::draw(comparison::curves_figure(name, label + " along the shaft (" + model + ")", label,
+                                                              "depth below the head (m, negative)", curves),
+                                    staged.path()));
+  }
+  staged.commit();
+  return svgs;
+}
+
+json summary_of(const PileSpec& spec, const Analysis& a, const json& convergence) {
+  double capacity = 0.0;
+  for (const auto& s : a.curve) capacity = std::max(capacity, s.head_load_kN);
+  const auto& end = a.curve.back();
+  return {{"status", a.status},
+          {"model", spec.interface.model},
+          {"elements", spec.pile.elements},
+          {"largest_head_load_kN", capacity},
+          {"end", {{"head_settlement_mm", end.head_settlement_mm}, {"head_load_kN", end.head_load_kN},
+                   {"shaft_load_kN", end.shaft_load_kN}, {"base_load_kN", end.base_load_kN}}},
+          {"mesh_convergence", convergence}};
+}
+
+}  // namespace
+
+int run_pile(const PileSpec& spec, const PileRunOptions& opt) {
+  json m{{"kind", "pile"}, {"status", "running"}, {"source", spec.source}, {"description", spec.description},
+         {"command_line", opt.command_line}, {"started", io::utc_timestamp()}, {"interface_library", iwb_version()}};
+  const auto lock = io::DirectoryLock::take(opt.out, opt.command_line);
+  io::prepare_run_directory(opt.out, opt.force);
+  io::write_manifest(opt.out, m);
+  io::write_atomically(opt.out / "pile.toml", opt.spec_text);
+  const ShaftMaterial material(spec.interface, spec.source + " [interface]");
+  const int n = spec.pile.elements;
+  const long steps = long(head_path(spec.loading).size());
+  const std::vector<int> meshes{std::max(1, n / 2), n, 2 * n};
+  long done = 0;
+  std::vector<Analysis> runs;
+  for (int elements : meshes) runs.push_back(analyse(spec, material, elements, opt, done, steps * 3));
+  const Analysis& main = runs[1];
+  const json convergence = mesh_convergence(spec, {{meshes[0], &runs[0]}, {meshes[1], &runs[1]}, {meshes[2], &runs[2]}});
+  io::write_atomically(opt.out / "load_settlement.csv", curve_csv(main.curve));
+  io::write_atomically(opt.out / "profiles.csv", profiles_csv(main));
+  std::string mc = "elements,status,value\n";
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    mc += fmt::format("{},{},{}\n", meshes[i], runs[i].status == "complete" ? "complete" : "failed",
+                      runs[i].status == "complete" ? end_value(spec, runs[i]) : NAN);
+  io::write_atomically(opt.out / "mesh_convergence.csv", mc);
+  if (main.curve.size() > 1) draw_figures(spec, main, opt.out);
+  io::write_atomically(opt.out / "summary.json", summary_of(spec, main, convergence).dump(2) + "\n");
+  m["status"] = main.status;
+  m["finished"] = io::utc_timestamp();
+  io::write_manifest(opt.out, m);
+  return main.status == "complete" ? 0 : 1;
+}
+
+}  // namespace iwb::pile
