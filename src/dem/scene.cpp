@@ -90,6 +90,9 @@ Particles read_particles(io::TableReader t) {
   p.poisson = t.number_in("poisson", {0.0, 0.5, false, true});
   p.friction = t.number_in("friction", non_negative(kMaxFriction));
   p.rolling_friction = t.optional_number_in("rolling_friction", non_negative(kMaxFriction)).value_or(0.0);
+  p.rolling_model = t.optional_text("rolling_model").value_or("cdt");
+  require(p.rolling_model == "cdt" || p.rolling_model == "epsd2",
+          fmt::format("{} = \"{}\"; allowed \"cdt\" or \"epsd2\"", t.where("rolling_model"), p.rolling_model));
   p.restitution = t.optional_number_in("restitution", closed(0.0, 1.0)).value_or(0.5);
   t.finish();
   return p;
@@ -438,7 +441,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
       {"particles", {{"d50_mm", d50 / kMm}, {"d_max_mm", s.particles.d_max() / kMm},
                      {"density_kg_m3", rho}, {"youngs_modulus_Pa", s.particles.youngs_modulus_Pa},
                      {"poisson", s.particles.poisson}, {"friction", s.particles.friction},
-                     {"rolling_friction", s.particles.rolling_friction},
+                     {"rolling_friction", s.particles.rolling_friction}, {"rolling_model", s.particles.rolling_model},
                      {"restitution", s.particles.restitution}, {"count_requested", s.particle_count}}},
       {"specimen", {{"length_mm", s.length_m / kMm}, {"width_mm", s.width_m / kMm},
                     {"height_mm", s.height_m / kMm}, {"consolidation_friction", consolidation_friction}}},

@@ -25,7 +25,11 @@ struct Particles {
   double youngs_modulus_Pa;
   double poisson;
   double friction;          // sliding friction during the test
-  double rolling_friction;  // rolling resistance coefficient (LIGGGHTS cdt model)
+  double rolling_friction;  // rolling resistance coefficient mu_r
+  // LIGGGHTS's rolling resistance: "cdt" (a constant torque mu_r R* F_n against any relative
+  // rolling, rigid-plastic) or "epsd2" (Iwashita & Oda's elastic-plastic spring, k_r = k_t R*^2,
+  // capped at the same torque). YADE's law is elastic-plastic either way (dem-scripts/README.md).
+  std::string rolling_model = "cdt";
   double restitution;
 
   double d_max() const;

@@ -157,7 +157,7 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
       {"glued_fx", glued(s) ? "+c_fglued[1]" : ""},
       {"glued_fz", glued(s) ? "+c_fglued[2]" : ""},
       {"Lx", g(s.length_m)}, {"Ly", g(s.width_m)}, {"zlo", g(n.zlo)}, {"zhi", g(n.zhi)},
-      {"skin", g(n.skin)}, {"dt", g(n.dt)},
+      {"skin", g(n.skin)}, {"dt", g(n.dt)}, {"rolling_model", p.rolling_model},
       {"plate_com", fmt::format("{} {} {}", g(0.5 * s.length_m), g(0.5 * s.width_m), g(n.plate_z))},
       {"F0", g(F0)}, {"servo_vmax", g(s.servo.vel_max_m_s)}, {"servo_kp", g(s.servo.kp)},
       {"particle_templates", templates + distribution},
@@ -235,7 +235,8 @@ nlohmann::json LiggghtsEngine::numerics(const Scene& s) const {
           {"shear_steps", n.shear_steps},
           {"wall_velocity_mm_s", s.shear.velocity_m_s * 1e3},
           {"wall_ramp", ramp_numerics(s, n.dt)},
-          {"contact_law", "pair gran hertz, tangential history, rolling_friction cdt; walls: wall/gran hertz on STL meshes"},
+          {"contact_law", fmt::format("pair gran hertz, tangential history, rolling_friction {}; walls: wall/gran hertz on STL "
+                                      "meshes", s.particles.rolling_model)},
           {"servo", {{"vel_max_m_s", s.servo.vel_max_m_s}, {"kp", s.servo.kp}, {"kp_shear", s.servo.kp_shear}}}};
 }
 
