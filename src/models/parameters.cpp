@@ -47,4 +47,11 @@ void validate(const ParameterTable& table, const ParameterValues& values,
   }
 }
 
+void require_below(const ParameterValues& values, const std::string& lower, const std::string& upper,
+                   const std::string& source, const std::string& why) {
+  if (!(values.at(lower) < values.at(upper)))
+    throw InputError(fmt::format("{}: {} = {:g} must be below {} = {:g} ({})", source, lower, values.at(lower), upper,
+                                 values.at(upper), why));
+}
+
 }  // namespace iwb::models

@@ -61,4 +61,9 @@ inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 void validate(const ParameterTable& table, const ParameterValues& values,
               const std::string& source);
 
+// Throws InputError naming `source` unless values[lower] < values[upper]; `why` says what the order
+// means ("unloading is stiffer than normal compression").
+void require_below(const ParameterValues& values, const std::string& lower, const std::string& upper,
+                   const std::string& source, const std::string& why);
+
 }  // namespace iwb::models

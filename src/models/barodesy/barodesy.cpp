@@ -38,9 +38,7 @@ BarodesyParameters read(const ModelInputs& in) {
   const std::string source = in.source + " [barodesy_clay]";
   const auto& v = require_table(in, "barodesy_clay");
   validate(barodesy_table(), v, source);
-  if (!(v.at("kappa_star") < v.at("lambda_star")))
-    throw InputError(fmt::format("{}: kappa_star = {:g} must be below lambda_star = {:g} (unloading is stiffer than "
-                                 "normal compression)", source, v.at("kappa_star"), v.at("lambda_star")));
+  require_below(v, "kappa_star", "lambda_star", source, "unloading is stiffer than normal compression");
   return {v.at("lambda_star"), v.at("kappa_star"), v.at("phi_c_deg") * M_PI / 180.0, v.at("N"), v.at("G0_over_p")};
 }
 

@@ -35,11 +35,8 @@ const ParameterTable& ClayParameters::table() {
 
 ClayParameters ClayParameters::from(const ParameterValues& v, const std::string& source) {
   validate(table(), v, source);
-  const double lambda = v.at("lambda_star"), kappa = v.at("kappa_star");
-  if (!(kappa < lambda))
-    throw InputError(fmt::format("{}: kappa_star = {:g} must be below lambda_star = {:g} (unloading is "
-                                 "stiffer than normal compression)", source, kappa, lambda));
-  return {lambda, kappa, v.at("nu"), v.at("phi_c_deg") * M_PI / 180.0, v.at("N")};
+  require_below(v, "kappa_star", "lambda_star", source, "unloading is stiffer than normal compression");
+  return {v.at("lambda_star"), v.at("kappa_star"), v.at("nu"), v.at("phi_c_deg") * M_PI / 180.0, v.at("N")};
 }
 
 double poisson_ratio_on_wall(const ClayParameters& p, const Roughness& r) {

@@ -38,9 +38,7 @@ CamClayParameters read(const ModelInputs& in) {
   const std::string source = in.source + " [modified_cam_clay]";
   const auto& v = require_table(in, "modified_cam_clay");
   validate(cam_clay_table(), v, source);
-  if (!(v.at("kappa") < v.at("lambda")))
-    throw InputError(fmt::format("{}: kappa = {:g} must be below lambda = {:g} (unloading is stiffer than normal "
-                                 "compression)", source, v.at("kappa"), v.at("lambda")));
+  require_below(v, "kappa", "lambda", source, "unloading is stiffer than normal compression");
   return {v.at("lambda"), v.at("kappa"), v.at("M"), v.at("nu")};
 }
 

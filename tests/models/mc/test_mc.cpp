@@ -9,6 +9,7 @@
 
 #include "models/registry.hpp"
 #include "support/fixtures.hpp"
+#include "support/increment_derivative.hpp"
 
 using namespace iwb;
 using driver::BoundaryKind;
@@ -85,16 +86,7 @@ TEST_CASE("mc: the closed-form increment's Dual derivative is its central differ
   const auto m = models::find_model("mc").make(inputs());
   models::StateVector s(5);
   s << -100.0, 60.0, 20.0, 0.0, 0.0;  // inside; the increment below crosses the surface
-  for (const auto& d0 : {models::InterfaceStrain{1e-4, 2e-3, 5e-4}, models::InterfaceStrain{-2e-4, 1e-3, 0.0},
-                         models::InterfaceStrain{3e-5, 1e-5, 0.0}}) {
-    models::StateVectorT<Dual> sd = s.cast<Dual>(), out;
-    m->update(sd, {make_variable(d0.eps_n), Dual(d0.gamma_x), Dual(d0.gamma_y)}, out);
-    const double h = 1e-8;
-    models::StateVector up, down;
-    m->update(s, {d0.eps_n + h, d0.gamma_x, d0.gamma_y}, up);
-    m->update(s, {d0.eps_n - h, d0.gamma_x, d0.gamma_y}, down);
-    for (int i = 0; i < 5; ++i) CHECK(derivative_of(out(i)) == Approx((up(i) - down(i)) / (2 * h)).epsilon(1e-6).margin(1e-6));
-  }
+  test::check_increment_derivative(*m, s, {{1e-4, 2e-3, 5e-4}, {-2e-4, 1e-3, 0.0}, {3e-5, 1e-5, 0.0}}, 1e-8, 1e-6, 1e-6);
 }
 
 TEST_CASE("mc: an opening past the cut-off leaves sigma_n there and the shear on the surface", "[models]") {

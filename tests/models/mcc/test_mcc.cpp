@@ -11,6 +11,7 @@
 #include "models/mcc/modified_cam_clay.hpp"
 #include "models/registry.hpp"
 #include "support/fixtures.hpp"
+#include "support/increment_derivative.hpp"
 #include "support/reduced_vs_3d.hpp"
 
 using namespace iwb;
@@ -104,17 +105,7 @@ TEST_CASE("mcc = mcc3d in simple shear (the return acts on p and the deviator on
 TEST_CASE("mcc: the increment's Dual derivative is its central difference", "[models][mcc]") {
   const auto m = models::find_model("mcc3d").make(london());
   const auto s = m->initial_state({100.0, 0.7, 1.0});  // on the ellipse: the increments load it
-  for (const auto& d0 : {models::InterfaceStrain{-1e-3, 2e-3, 5e-4}, models::InterfaceStrain{2e-4, 1e-2, 0.0},
-                         models::InterfaceStrain{1e-3, 1e-4, 0.0}}) {
-    models::StateVectorT<Dual> sd = s.cast<Dual>(), out;
-    m->update(sd, {make_variable(d0.eps_n), Dual(d0.gamma_x), Dual(d0.gamma_y)}, out);
-    const double h = 1e-7;
-    models::StateVector up, down;
-    m->update(s, {d0.eps_n + h, d0.gamma_x, d0.gamma_y}, up);
-    m->update(s, {d0.eps_n - h, d0.gamma_x, d0.gamma_y}, down);
-    for (int i = 0; i < s.size(); ++i)
-      CHECK(derivative_of(out(i)) == Approx((up(i) - down(i)) / (2 * h)).epsilon(1e-5).margin(1e-4));
-  }
+  test::check_increment_derivative(*m, s, {{-1e-3, 2e-3, 5e-4}, {2e-4, 1e-2, 0.0}, {1e-3, 1e-4, 0.0}}, 1e-7, 1e-5, 1e-4);
 }
 
 namespace {
