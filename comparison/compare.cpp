@@ -19,8 +19,18 @@ namespace {
 // kappa_r from the wall's R_n by eq. 5.35; a flat wall (R_n = 0) gets the floor.
 // kappa_r of the variants that need no fit: the model's declared prediction from the wall (sand:
 // eq. 5.35 from R_n), else the parameter file's value (1, fully rough, when it gives none).
+// kappa_r in [floor, 1] for a model that reads wall roughness; fixed at 1 for one that does not (a
+// 3D continuum model, the reference models of seed 3.3, a user's model): d_s is then fitted alone,
+// and the model's own parameters stay as given (fitting them is `iwb assess`'s, issue 17).
+FitBounds fit_bounds(const std::string& model) {
+  FitBounds b;
+  if (!models::find_model(model).uses_roughness) b.kappa_min = b.kappa_max = 1.0;
+  return b;
+}
+
 std::pair<double, std::string> predicted_kappa(const models::ModelSpec& spec, const DemRun& dem,
                                                const models::ModelInputs& parameters) {
+  if (!spec.uses_roughness) return {1.0, fmt::format("no kappa_r ({} reads no wall roughness)", spec.name)};
   for (const auto& f : spec.declaration.fit)
     if (f.target == models::FitParameter::Target::kRoughness && f.predict) return f.predict({dem.R_n, dem.d50_mm});
   const double k = parameters.roughness.kappa_r;
@@ -52,8 +62,10 @@ Variant fitted_variant(const Variant& start, const FitResult& fit, const std::st
   Variant v = start;
   v.inputs.roughness.kappa_r = fit.kappa_r;
   v.d_s_mm = fit.d_s_mm;
-  v.label = fmt::format("fitted to {}: kappa_r = {:.3f} +- {:.3f}, d_s = {:.2f} +- {:.2f} mm ({:.1f} d50)", what,
-                        fit.kappa_r, fit.sigma_kappa_r, fit.d_s_mm, fit.sigma_d_s_mm, fit.d_s_mm / d50);
+  const std::string kappa = fit.kappa_fitted ? fmt::format("kappa_r = {:.3f} +- {:.3f}", fit.kappa_r, fit.sigma_kappa_r)
+                                             : fmt::format("kappa_r fixed at {:g} (no roughness)", fit.kappa_r);
+  v.label = fmt::format("fitted to {}: {}, d_s = {:.2f} +- {:.2f} mm ({:.1f} d50)", what, kappa, fit.d_s_mm,
+                        fit.sigma_d_s_mm, fit.d_s_mm / d50);
   return v;
 }
 
@@ -144,18 +156,6 @@ void chosen_roughness(const CompareOptions& opt, models::Roughness& r) {
     r.f_c = models::parse_arnold_herle_factor(opt.f_c, "--f-c");
   }
 }
-// The comparison fits kappa_r and d_s; a model that reads no roughness would be fitted a kappa_r
-// it ignores (its uncertainty infinite), which reads as a verdict and is none.
-void refuse_without_roughness(const std::string& model) {
-  if (models::find_model(model).uses_roughness) return;
-  std::string with;
-  for (const auto& s : models::model_registry())
-    if (s.uses_roughness) with += (with.empty() ? "" : ", ") + s.name;
-  throw InputError(fmt::format("--model {}: it reads no wall roughness, and `iwb compare` fits kappa_r and d_s (a 3D "
-                               "continuum model, or a reference model whose own parameters `iwb assess` is to fit, "
-                               "issue 17); models it can judge: {}",
-                               model, with));
-}
 }  // namespace
 
 models::ModelInputs validated_parameters(const std::string& model, const std::string& params) {
@@ -172,7 +172,6 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
   const SeedScatter scatter = seed_scatter(dem, seeds);  // InputError for a seed of another scene
   const Tolerances tolerances = tolerances_for(dem);
   const models::ModelInputs params = validated_parameters(opt.model, opt.params);
-  refuse_without_roughness(opt.model);
   auto candidates = standard_variants(dem, opt.model, params, opt.predicted_ds_d50);
   if (!opt.roughness_scheme.empty() || !opt.f_c.empty())  // refused before anything is written
     for (auto& v : candidates) chosen_roughness(opt, v.inputs.roughness);
@@ -183,9 +182,10 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
   io::write_manifest(opt.out, manifest);
 
   const Variant predicted = candidates.front();
-  const FitResult tau_fit = fit_kappa_and_ds(dem, predicted, tau_only_targets());
+  const FitBounds bounds = fit_bounds(opt.model);
+  const FitResult tau_fit = fit_kappa_and_ds(dem, predicted, tau_only_targets(), bounds);
   const FitTargets joint = joint_targets(dem, scatter);
-  const FitResult fit = fit_kappa_and_ds(dem, predicted, joint);
+  const FitResult fit = fit_kappa_and_ds(dem, predicted, joint, bounds);
   candidates.push_back(fitted_variant(predicted, tau_fit, "tau alone", dem.d50_mm));
   candidates.push_back(fitted_variant(predicted, fit, dem.boundary == driver::BoundaryKind::kCNL ? "tau and u_n" : "tau and sigma_n", dem.d50_mm));
   const std::size_t fitted_index = candidates.size() - 1;
@@ -202,7 +202,7 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
                         {"metrics", to_json(compare(dem, replays.back()))},
                         {"verdicts", to_json(judge(dem, scatter, replays.back(), tolerances))}});
   }
-  const Feasibility scan = scan_feasibility(dem, scatter, predicted, tolerances, kScanPoints);
+  const Feasibility scan = scan_feasibility(dem, scatter, predicted, tolerances, kScanPoints, bounds);
   json tol = json::object();
   for (const auto& [k, t] : tolerances) tol[k] = t;
   const json result = {

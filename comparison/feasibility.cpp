@@ -38,10 +38,11 @@ Feasibility scan_feasibility(const DemRun& dem, const SeedScatter& scatter, cons
   Feasibility f;
   f.best_worst_ratio = std::numeric_limits<double>::infinity();
   const double lo = std::log(b.d_s_min_d50 * dem.d50_mm), hi = std::log(b.d_s_max_d50 * dem.d50_mm);
-  for (int i = 0; i < n; ++i)
+  const int n_kappa = b.kappa_max > b.kappa_min ? n : 1;  // a degenerate box: kappa_r fixed (no roughness)
+  for (int i = 0; i < n_kappa; ++i)
     for (int j = 0; j < n; ++j) {
       Variant v = base;
-      v.inputs.roughness.kappa_r = b.kappa_min + (b.kappa_max - b.kappa_min) * i / double(n - 1);
+      v.inputs.roughness.kappa_r = n_kappa == 1 ? b.kappa_min : b.kappa_min + (b.kappa_max - b.kappa_min) * i / double(n - 1);
       v.d_s_mm = std::exp(lo + (hi - lo) * j / double(n - 1));
       const auto verdicts = judge(dem, scatter, replay(dem, v), tolerances);
       ++f.points;

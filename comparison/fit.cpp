@@ -59,30 +59,40 @@ Eigen::VectorXd fit_residuals(const DemRun& dem, const Replay& r, const FitTarge
 
 FitResult fit_kappa_and_ds(const DemRun& dem, const Variant& start, const FitTargets& targets,
                            const FitBounds& b) {
+  // A degenerate kappa_r box (a model that reads no wall roughness) fixes kappa_r at its bound and
+  // fits d_s alone: its uncertainty is not invented.
+  const bool kappa_fitted = b.kappa_max > b.kappa_min;
+  const int n = kappa_fitted ? 2 : 1, ds = n - 1;  // the unknowns: (kappa_r,) ln d_s
   fitting::LeastSquaresProblem p;
   p.residuals = [&](const Eigen::VectorXd& x) {
     Variant v = start;
-    v.inputs.roughness.kappa_r = x(0);
-    v.d_s_mm = std::exp(x(1));
+    v.inputs.roughness.kappa_r = kappa_fitted ? x(0) : b.kappa_min;
+    v.d_s_mm = std::exp(x(ds));
     return fit_residuals(dem, replay(dem, v), targets);
   };
-  p.lower = Eigen::Vector2d(b.kappa_min, std::log(b.d_s_min_d50 * dem.d50_mm));
-  p.upper = Eigen::Vector2d(b.kappa_max, std::log(b.d_s_max_d50 * dem.d50_mm));
-  p.start = Eigen::Vector2d(start.inputs.roughness.kappa_r, std::log(start.d_s_mm));
-  p.difference_step = Eigen::Vector2d(1e-4 * std::max(start.inputs.roughness.kappa_r, 0.1), 1e-4);
+  p.lower.resize(n), p.upper.resize(n), p.start.resize(n), p.difference_step.resize(n);
+  if (kappa_fitted) {
+    p.lower(0) = b.kappa_min, p.upper(0) = b.kappa_max, p.start(0) = start.inputs.roughness.kappa_r;
+    p.difference_step(0) = 1e-4 * std::max(start.inputs.roughness.kappa_r, 0.1);
+  }
+  p.lower(ds) = std::log(b.d_s_min_d50 * dem.d50_mm), p.upper(ds) = std::log(b.d_s_max_d50 * dem.d50_mm);
+  p.start(ds) = std::log(start.d_s_mm), p.difference_step(ds) = 1e-4;
   const auto r = fitting::fit_least_squares(p);
   FitResult out;
-  out.kappa_r = r.x(0);
-  out.d_s_mm = std::exp(r.x(1));
-  out.sigma_kappa_r = r.sigma(0);
-  out.sigma_d_s_mm = out.d_s_mm * r.sigma(1);
+  out.kappa_r = kappa_fitted ? r.x(0) : b.kappa_min;
+  out.kappa_fitted = kappa_fitted;
+  out.sigma_kappa_r = kappa_fitted ? r.sigma(0) : 0.0;
+  out.d_s_mm = std::exp(r.x(ds));
+  out.sigma_d_s_mm = out.d_s_mm * r.sigma(ds);
   out.rms_scaled = r.rmse;
   out.evaluations = r.evaluations;
-  for (int k = 0; k < 2; ++k)
+  for (int k = 0; k < n; ++k)
     if (std::abs(r.x(k) - p.lower(k)) < kAtBound * (p.upper(k) - p.lower(k)) ||
         std::abs(r.x(k) - p.upper(k)) < kAtBound * (p.upper(k) - p.lower(k)))
-      out.at_bound.push_back(k == 0 ? "kappa_r" : "d_s");
-  out.algorithm = "NLopt LN_BOBYQA on (kappa_r, ln d_s); residuals: " + targets.weighting;
+      out.at_bound.push_back(k == ds ? "d_s" : "kappa_r");
+  out.algorithm = fmt::format("NLopt LN_BOBYQA on {}; residuals: {}",
+                              kappa_fitted ? "(kappa_r, ln d_s)" : fmt::format("ln d_s (kappa_r fixed at {:g})", b.kappa_min),
+                              targets.weighting);
   out.stop_reason = r.stop_reason;
   return out;
 }

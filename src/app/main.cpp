@@ -8,6 +8,7 @@
 
 #include "app/command_list.hpp"
 #include "app/exit_codes.hpp"
+#include "models/external/external_model.hpp"
 
 namespace {
 
@@ -37,6 +38,16 @@ int main(int argc, char** argv) {
       "  iwb bench element                           cost of the continuum core\n"
       "  iwb stability hvwe data/params/table_5_1_evaluation.toml   where a model runs and where it stops\n"};
   app.require_subcommand(1);
+  // A user's own model (src/models/external/README.md): before the command, anywhere on the line.
+  std::string model_lib, model_entry;
+  auto* lib = app.add_option("--model-lib", model_lib,
+                             "a user's interface model: a shared library with a UMAT-style entry point "
+                             "(src/models/external/README.md), usable as --model NAME or [model] name = NAME by every "
+                             "command")
+                  ->check(CLI::ExistingFile);
+  app.add_option("--entry", model_entry, "the entry point in --model-lib, which is also the model's name")->needs(lib);
+  lib->needs(app.get_option("--entry"));
+  app.fallthrough();  // the two may follow the command's own arguments
   iwb::app::CommandList commands;
   iwb::app::add_all_commands(app, commands);
   try {
@@ -47,6 +58,7 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   try {
+    if (!model_lib.empty()) iwb::models::add_runtime_model(iwb::models::external_model_spec(model_lib, model_entry));
     return commands.run_parsed({joined(argc, argv), &g_interrupt}).value_or(0);
   } catch (...) {
     return iwb::app::exit_for(std::current_exception());

@@ -66,13 +66,36 @@ std::string declaration_problem(const ModelSpec& spec) {
   return {};
 }
 
-const std::vector<ModelSpec>& model_registry() {
-  static const std::vector<ModelSpec> specs = [] {
+namespace {
+
+// Room for the models added at run time (a user's library): find_model's references must stay
+// valid, so the vector never reallocates after it is built.
+constexpr std::size_t kRuntimeModels = 16;
+
+std::vector<ModelSpec>& registry_storage() {
+  static std::vector<ModelSpec> specs = [] {
     ModelRegistry registry;
     register_all_models(registry);
-    return checked_and_ordered(registry.take());
+    auto ordered = checked_and_ordered(registry.take());
+    ordered.reserve(ordered.size() + kRuntimeModels);
+    return ordered;
   }();
   return specs;
+}
+
+}  // namespace
+
+const std::vector<ModelSpec>& model_registry() { return registry_storage(); }
+
+void add_runtime_model(ModelSpec spec) {
+  auto& specs = registry_storage();
+  if (const auto why = declaration_problem(spec); !why.empty())
+    throw InputError(fmt::format("model '{}' is declared inconsistently: {}", spec.name, why));
+  for (const auto& s : specs)
+    if (s.name == spec.name) throw InputError(fmt::format("model '{}' exists already: choose another name", spec.name));
+  if (specs.size() == specs.capacity())
+    throw InputError(fmt::format("at most {} models may be added at run time", kRuntimeModels));
+  specs.push_back(std::move(spec));
 }
 
 const ModelSpec& find_model(const std::string& name) {

@@ -69,6 +69,9 @@ void register_all_models(ModelRegistry& registry);
 const std::vector<ModelSpec>& model_registry();
 // Throws InputError listing the known names.
 const ModelSpec& find_model(const std::string& name);
+// Adds a model at run time (a user's library, models/external): checked like the registered ones;
+// InputError for an inconsistent declaration or a name already taken. Before any thread starts.
+void add_runtime_model(ModelSpec spec);
 
 // phi_c (rad) of the parameter the model declares in the role kCriticalFrictionAngle, from its
 // own tables (never another model's table in the same file); NaN if it declares none.
