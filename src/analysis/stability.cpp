@@ -41,6 +41,7 @@ StabilitySweep StabilitySweep::reduced() {
   s.sigma_n_kPa = {1.0, 100.0, 1e4};
   s.density_index = {0.02, 0.3, 0.98};
   s.ocr = {1.0, 2.0, 8.0};
+  s.psi = {-0.2, 0.0, 0.1};
   s.kappa_r = {0.05, 1.0};
   s.d_gamma = {1e-6, 1e-2};
   s.gamma_total = 0.1;
@@ -56,6 +57,7 @@ StabilitySweep StabilitySweep::full() {
   s.sigma_n_kPa = {1.0, 10.0, 100.0, 1e3, 1e4};
   s.density_index = {0.01, 0.25, 0.5, 0.75, 0.99};
   s.ocr = {1.0, 1.5, 2.0, 4.0, 10.0};
+  s.psi = {-0.3, -0.15, 0.0, 0.05, 0.15};
   s.kappa_r = {0.05, 0.25, 0.5, 1.0};
   s.d_gamma = {1e-6, 1e-5, 1e-4, 1e-3, 1e-2};
   s.gamma_total = 0.2;
@@ -65,28 +67,46 @@ StabilitySweep StabilitySweep::full() {
   return s;
 }
 
+namespace {
+// The declared diagnostic that is the critical void ratio, or -1.
+int critical_void_ratio_index(const models::ModelSpec& spec) {
+  const auto& d = spec.declaration.diagnostics;
+  for (std::size_t i = 0; i < d.size(); ++i)
+    if (d[i].role == models::DiagnosticRole::kCriticalVoidRatio) return int(i);
+  return -1;
+}
+}  // namespace
+
 DensityAxis density_axis_of(const models::ModelSpec& spec) {
   const bool has_limits = std::any_of(spec.declaration.diagnostics.begin(), spec.declaration.diagnostics.end(),
                                       [](const auto& d) { return d.name == "e_d"; });
   if (!has_limits && models::find_initial_input(spec.declaration.initial, "OCR"))
     return DensityAxis::kOverconsolidationRatio;
+  if (!has_limits && critical_void_ratio_index(spec) >= 0) return DensityAxis::kStateParameter;
   if (!has_limits && spec.declaration.layout.void_ratio < 0) return DensityAxis::kNone;
   return DensityAxis::kDensityIndex;
 }
 
 const char* column_of(DensityAxis axis) {
-  return axis == DensityAxis::kOverconsolidationRatio ? "OCR" : axis == DensityAxis::kNone ? "density_none" : "density_index";
+  return axis == DensityAxis::kOverconsolidationRatio ? "OCR"
+         : axis == DensityAxis::kStateParameter       ? "psi"
+         : axis == DensityAxis::kNone                 ? "density_none"
+                                                      : "density_index";
 }
 
 const char* label_of(DensityAxis axis) {
   return axis == DensityAxis::kOverconsolidationRatio ? "overconsolidation ratio OCR"
+         : axis == DensityAxis::kStateParameter       ? "state parameter psi = e0 - e_c"
          : axis == DensityAxis::kNone                 ? "no density (the model has no void ratio)"
                                                       : "density index I = (e0 - e_d)/(e_i - e_d)";
 }
 
 const std::vector<double>& StabilitySweep::densities(DensityAxis axis) const {
   static const std::vector<double> one_level{0.0};
-  return axis == DensityAxis::kOverconsolidationRatio ? ocr : axis == DensityAxis::kNone ? one_level : density_index;
+  return axis == DensityAxis::kOverconsolidationRatio ? ocr
+         : axis == DensityAxis::kStateParameter       ? psi
+         : axis == DensityAxis::kNone                 ? one_level
+                                                      : density_index;
 }
 
 std::vector<StabilityPoint> StabilitySweep::points(const models::ModelSpec& spec) const {
@@ -200,6 +220,14 @@ models::StateVector prepare(const models::ModelSpec& spec, const models::Model& 
     const auto s0 = m.initial_state(models::offer(spec, in, {{"sigma_n_kPa", p.sigma_n_kPa}, {"K0", K0}, {"OCR", p.density}}));
     out.e0 = m.void_ratio(s0);
     return s0;
+  }
+  if (density_axis_of(spec) == DensityAxis::kStateParameter) {
+    // e_c at sigma_n0 from the model's own diagnostic (of any admissible start), then e0 = e_c + psi
+    out.e_d = out.e_i = NAN;
+    const auto probe = m.initial_state({p.sigma_n_kPa, K0, 1.0});
+    out.e_c = m.diagnostics(probe)[critical_void_ratio_index(spec)].value;
+    out.e0 = out.e_c + p.density;
+    return m.initial_state({p.sigma_n_kPa, K0, out.e0});
   }
   const auto lim = limiting_void_ratios_at(m, p.sigma_n_kPa, K0);
   out.e_d = lim[0];

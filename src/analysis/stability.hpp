@@ -41,7 +41,8 @@ struct StabilityPoint {
   double sigma_n_kPa = 100.0;
   // Where e0 lies, on the sweep's density axis (DensityAxis): for sand the density index
   // e0 = e_d + I (e_i - e_d), so 0 is e_d and 1 is e_i (values outside [0, 1] ask for an
-  // inadmissible start on purpose); for clay the overconsolidation ratio (1: normally consolidated).
+  // inadmissible start on purpose); for clay the overconsolidation ratio (1: normally consolidated);
+  // for a state-parameter model psi = e0 - e_c.
   double density = 0.5;
   double kappa_r = 1.0;
   double d_gamma = 1e-4;  // shear strain per increment
@@ -51,15 +52,17 @@ struct StabilityPoint {
 // How the map places e0 at each sigma_n0, chosen by what a model declares: between its limiting
 // void ratios when it reports e_d and e_i (sand, Bauer eq. 5.13), else by its overconsolidation
 // ratio when it declares an OCR input (clay, seed 6.2: 1 on the asymptotic state boundary surface).
-// kNone: a model without a void ratio or an OCR input (mc): one level, the map's density axis unused.
-enum class DensityAxis { kDensityIndex, kOverconsolidationRatio, kNone };
+// kStateParameter: by psi = e0 - e_c when it reports only a critical void ratio (Lashkari's model,
+// seed 3.3.5: dense below 0, loose above). kNone: a model without a void ratio or an OCR input (mc):
+// one level, the map's density axis unused.
+enum class DensityAxis { kDensityIndex, kOverconsolidationRatio, kStateParameter, kNone };
 DensityAxis density_axis_of(const models::ModelSpec& spec);
 const char* column_of(DensityAxis axis);  // "density_index", "OCR"
 const char* label_of(DensityAxis axis);   // the axis title of the maps
 
 struct StabilitySweep {
   std::vector<driver::BoundaryKind> boundaries;
-  std::vector<double> sigma_n_kPa, density_index, ocr, kappa_r, d_gamma;
+  std::vector<double> sigma_n_kPa, density_index, ocr, psi, kappa_r, d_gamma;
   double gamma_total = 0.2;   // monotonic shear ends here ...
   int max_increments = 1000;  // ... or after this many increments, whichever comes first
   int cycles = 3;             // cyclic runs: cycles 0 -> +A -> -A -> 0 at kappa_r = 1

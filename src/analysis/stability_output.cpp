@@ -93,7 +93,8 @@ std::string reason_table(const std::vector<StabilityResult>& results, DensityAxi
     md += fmt::format(
         "| {} | {} | {} {} sigma_n0 = {:g} kPa, {} = {:g}, kappa_r = {:g}, d gamma = {:g}: {} |\n",
         why, v.first, driver::to_string(p.boundary), path_name(p.path), p.sigma_n_kPa,
-        axis == DensityAxis::kOverconsolidationRatio ? "OCR" : "I", p.density, p.kappa_r, p.d_gamma, msg);
+        axis == DensityAxis::kOverconsolidationRatio ? "OCR" : axis == DensityAxis::kStateParameter ? "psi" : "I", p.density,
+        p.kappa_r, p.d_gamma, msg);
   }
   return md;
 }
