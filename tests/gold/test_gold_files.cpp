@@ -133,10 +133,10 @@ TEST_CASE("gold: oedometric loading of every model that has one matches its gold
   check_path("oedometric");
 }
 
-TEST_CASE("gold: the reference interface models (mc, hyperbolic, lashkari) on CNL, CNS and CV match their gold files",
+TEST_CASE("gold: the reference interface models (mc, hyperbolic, lashkari, mortara) on CNL, CNS and CV match their gold files",
           "[gold][gold-files]") {
   for (const std::string path : {"mc_CNL", "mc_CNS", "mc_CV", "hyperbolic_CNL", "hyperbolic_CNS", "hyperbolic_CV",
-                                 "lashkari_CNL", "lashkari_CNS", "lashkari_CV"}) {
+                                 "lashkari_CNL", "lashkari_CNS", "lashkari_CV", "mortara_CNL", "mortara_CNS", "mortara_CV"}) {
     INFO(path);
     check_path(path);
   }
