@@ -9,7 +9,7 @@ set -euo pipefail
 IWB=${IWB:-build/iwb}
 WORK=${WORK:-runs/convergence-v2}  # the full runs (VTK, engine inputs, restarts): not committed; -v2: with the loop-number servo gain
 DEST=data/convergence
-AXES=(stiffness box inertial timestep damping slow rolling)
+AXES=(stiffness box inertial timestep damping slow rolling epsd2)
 STALE_AXES=(box)  # committed runs that must be re-run, not restored (drop an axis once its re-run is committed)
 # The one-knob axes start from this level of the stiffness axis (converged within the seed
 # scatter there): their tables compare each of their levels with its runs.
@@ -57,6 +57,7 @@ for stage in "${stages[@]}"; do
            [ "$a" = slow ] && base=("$DEST/inertial" "${BASE_LEVEL}_I0.0001")
            # the rolling axis (rolling resistance off) against I = 3e-4 with it
            [ "$a" = rolling ] && base=("$DEST/inertial" "${BASE_LEVEL}_I0.0003")
+           [ "$a" = epsd2 ] && base=("$DEST/inertial" "${BASE_LEVEL}_I0.0003")
            /usr/bin/python3 "$DEST/table.py" "$DEST/$a" "${base[@]}" > "$DEST/$a/table.md"
          done ;;
   *) echo "make.sh: unknown stage '$stage' (restore, sweeps, copy, table)" >&2; exit 2 ;;
