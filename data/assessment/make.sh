@@ -14,7 +14,10 @@ for cov in 0.05 0.1; do
     "$IWB" assess hyperbolic data/params/table_4_4_hyperbolic.toml --cov "$cov" --bc "$bc" --gamma 2 --samples $N \
       -o "$DEST/sobol/hyperbolic_${bc}_cov$cov" > /dev/null
     # EP1 and EP2 (Tables 4.5, 4.7): 3 mm at d_s 1 mm; Lashkari's dense sample (psi0 -0.15), to gamma 0.5
+    # the seed's starred parameters of Table 4.5 (alpha_p, alpha_c and, read past the shifted labels,
+    # omega and psi: Table A.3) at COV 0.01: at the common COV eq. 3.66's L has no value
     "$IWB" assess mortara data/params/table_4_5_mortara.toml --cov "$cov" --bc "$bc" --gamma 3 --samples $N_EP \
+      --cov-of alpha_p=0.01 --cov-of alpha_c=0.01 --cov-of omega=0.01 --cov-of psi=0.01 \
       -o "$DEST/sobol/mortara_${bc}_cov$cov" > /dev/null
     "$IWB" assess lashkari data/params/table_4_7_lashkari.toml --cov "$cov" --bc "$bc" --e0 0.7 --gamma 0.5 \
       --samples $N_EP -o "$DEST/sobol/lashkari_${bc}_cov$cov" > /dev/null

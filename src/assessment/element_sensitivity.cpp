@@ -54,10 +54,18 @@ std::vector<double> run_once(const models::ModelSpec& spec, const ElementSensiti
 
 }  // namespace
 
-std::vector<Distribution> varied_parameters(const models::ModelSpec& spec, const models::ModelInputs& in, double cov) {
+std::vector<Distribution> varied_parameters(const models::ModelSpec& spec, const models::ModelInputs& in, double cov,
+                                            const std::map<std::string, double>& cov_of) {
   std::vector<Distribution> out;
-  for (const auto& [table, key] : locations(spec, in))
-    out.push_back({key, Distribution::Kind::kNormal, in.tables.at(table).at(key), cov});
+  std::string keys;
+  for (const auto& [table, key] : locations(spec, in)) {
+    const auto own = cov_of.find(key);
+    out.push_back({key, Distribution::Kind::kNormal, in.tables.at(table).at(key), own == cov_of.end() ? cov : own->second});
+    keys += (keys.empty() ? "" : ", ") + key;
+  }
+  for (const auto& [key, value] : cov_of)
+    if (std::none_of(out.begin(), out.end(), [&](const Distribution& d) { return d.name == key; }))
+      throw InputError(fmt::format("--cov-of {}={}: {} varies no parameter '{}'; it varies {}", key, value, spec.name, key, keys));
   return out;
 }
 
@@ -66,7 +74,7 @@ const std::vector<std::string> kQuantityNames{"peak_friction", "mean_friction", 
 
 SobolResult element_sensitivity(const models::ModelSpec& spec, const ElementSensitivityOptions& o) {
   const auto where = locations(spec, o.inputs);
-  const auto params = varied_parameters(spec, o.inputs, o.cov);
+  const auto params = varied_parameters(spec, o.inputs, o.cov, o.cov_of);
   const long total = long(o.samples) * long(params.size() + 2);
   long done = 0;
   const Quantities f = [&](const std::vector<double>& x) {

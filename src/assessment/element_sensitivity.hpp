@@ -8,6 +8,8 @@
 #include <functional>
 #include <string>
 
+#include <map>
+
 #include "assessment/sobol.hpp"
 #include "assessment/uncertainty.hpp"
 #include "driver/control.hpp"
@@ -18,6 +20,7 @@ namespace iwb::assessment {
 struct ElementSensitivityOptions {
   models::ModelInputs inputs;  // the parameter file: the distributions' means
   double cov = 0.1;
+  std::map<std::string, double> cov_of;  // per parameter key, instead of cov (the seed's starred ones)
   driver::BoundaryKind boundary = driver::BoundaryKind::kCNL;
   double sigma_n_kPa = 100.0;
   double e0 = 0.0;  // for a model with a void ratio; ignored by one without
@@ -30,8 +33,10 @@ struct ElementSensitivityOptions {
 };
 
 // The parameters varied: the tables' kMaterial entries with a non-zero value (a zero, such as no
-// cohesion, has no spread to give).
-std::vector<Distribution> varied_parameters(const models::ModelSpec& spec, const models::ModelInputs& inputs, double cov);
+// cohesion, has no spread to give), each with `cov` or its own in `cov_of`. InputError for a key of
+// `cov_of` that is not varied.
+std::vector<Distribution> varied_parameters(const models::ModelSpec& spec, const models::ModelInputs& inputs, double cov,
+                                            const std::map<std::string, double>& cov_of = {});
 
 SobolResult element_sensitivity(const models::ModelSpec& spec, const ElementSensitivityOptions& options);
 

@@ -33,7 +33,7 @@ const ParameterTable& mortara_table() {
        {"C_k", "-", {0.0, true}, {kUnbounded, true}, "shear over normal stiffness, K_s = C_k K_n", "eq. 3.60"},
        {"alpha_p", "Pa^(1-beta)", {0.0, true}, {kUnbounded, true}, "peak envelope tau_p = alpha_p sigma_n^beta", "eq. 3.62"},
        {"alpha_c", "Pa^(1-beta)", {0.0, true}, {kUnbounded, true}, "critical envelope tau_c = alpha_c sigma_n^beta", "eq. 3.63"},
-       {"beta", "-", {0.0, true}, {1.0, false}, "curvature of the envelopes", "eq. 3.58"},
+       {"beta", "-", {0.0, true}, {2.0, false}, "curvature of the envelopes (below 1: concave; the sensitivity samples reach above)", "eq. 3.58"},
        {"omega", "-", {0.0, true}, {kUnbounded, true}, "hardening law shape", "eq. 3.61"},
        {"psi", "-", {0.0, true}, {kUnbounded, true}, "hardening law exponent ((omega + 1)^psi > 2)", "eq. 3.61"},
        {"xi_m_per_Pa", "m/Pa", {0.0, false}, {kUnbounded, true}, "w_p = xi sigma_n + zeta: slope", "Table 3.3 (linear: README.md)"},
