@@ -112,4 +112,21 @@ inline Run shear(const ShearSpec& s) {
   return r;
 }
 
+// Monotonic shear of `model` on a shipped set from 100 kPa, integrated at rtol 1e-10 (far below the
+// 1e-6 the tests compare an independent implementation's numbers at), required to complete.
+inline Run tight_shear(const std::string& model, const std::string& set, driver::BoundaryCondition bc, double gamma,
+                       int increments, double e0 = 0.8) {
+  ShearSpec s;
+  s.model = model;
+  s.inputs = shipped(set);
+  s.bc = bc;
+  s.e0 = e0;
+  s.gamma = gamma;
+  s.increments = increments;
+  s.settings.integrator.rtol = 1e-10;
+  auto r = shear(s);
+  REQUIRE(r.result.complete());
+  return r;
+}
+
 }  // namespace iwb::test

@@ -15,17 +15,7 @@ using driver::BoundaryKind;
 namespace {
 
 test::Run shear(driver::BoundaryCondition bc, double e0, double gamma, int increments) {
-  test::ShearSpec s;
-  s.model = "lashkari";
-  s.inputs = test::shipped("table_4_7_lashkari.toml");
-  s.bc = bc;
-  s.e0 = e0;
-  s.gamma = gamma;
-  s.increments = increments;
-  s.settings.integrator.rtol = 1e-10;
-  auto r = test::shear(s);
-  REQUIRE(r.result.complete());
-  return r;
+  return test::tight_shear("lashkari", "table_4_7_lashkari.toml", bc, gamma, increments, e0);
 }
 
 // The row at gamma = g (the path's increments land on it).

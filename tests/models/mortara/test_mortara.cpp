@@ -16,16 +16,7 @@ using driver::BoundaryKind;
 namespace {
 
 test::Run shear(driver::BoundaryCondition bc, double gamma, int increments) {
-  test::ShearSpec s;
-  s.model = "mortara";
-  s.inputs = test::shipped("table_4_5_mortara.toml");
-  s.bc = bc;
-  s.gamma = gamma;
-  s.increments = increments;
-  s.settings.integrator.rtol = 1e-10;
-  auto r = test::shear(s);
-  REQUIRE(r.result.complete());
-  return r;
+  return test::tight_shear("mortara", "table_4_5_mortara.toml", bc, gamma, increments);
 }
 
 }  // namespace
