@@ -54,12 +54,7 @@ struct StepPlan {
   bool needs_refresh = false;  // out: a replayed step exceeded the tolerance
 };
 
-template <class S>
-models::StateVector values_of(const models::StateVectorT<S>& s) {
-  models::StateVector v(s.size());
-  for (int i = 0; i < s.size(); ++i) v(i) = value_of(s(i));
-  return v;
-}
+using models::values_of;
 
 namespace detail {
 

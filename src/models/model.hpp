@@ -34,6 +34,14 @@ void flush_negligible(V&& v) {
     if (std::abs(v(i)) <= kNegligibleComponent * largest) v(i) = 0.0;
 }
 
+// The values of a state on dual numbers (the state itself on doubles).
+template <class S>
+StateVector values_of(const StateVectorT<S>& s) {
+  StateVector v(s.size());
+  for (int i = 0; i < s.size(); ++i) v(i) = value_of(s(i));
+  return v;
+}
+
 // Every model stores the normal stress (tension positive) as state component 0, so the driver can
 // read sigma_n, and its derivative, from any state or rate without knowing the model.
 template <class S>

@@ -68,8 +68,8 @@ class ExternalModel final : public Model {
   }
   // The stress carries DDSDDE's derivative; the user's variables none (the UMAT does not give it).
   void update(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d, StateVectorT<Dual>& out) const override {
-    StateVector values(s.size()), end;
-    for (int i = 0; i < s.size(); ++i) values(i) = value_of(s(i));
+    const StateVector values = values_of<Dual>(s);
+    StateVector end;
     const Dual du[3] = {d.eps_n, d.gamma_x, d.gamma_y};
     double ddsdde[9];
     call(values, {value_of(du[0]), value_of(du[1]), value_of(du[2])}, end, ddsdde);

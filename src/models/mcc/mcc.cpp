@@ -145,7 +145,7 @@ class ModifiedCamClay final : public Model {
   template <class S>
   void rate_of(const StateVectorT<S>& s, const InterfaceStrainT<S>& d, StateVectorT<S>& ds) const {
     const auto D = kin_.template stretching<S>(d);
-    const CamClayInvariants<Ops, double> inv(Ops::template unpack<double>(values_of_state(s), 0));
+    const CamClayInvariants<Ops, double> inv(Ops::template unpack<double>(values_of<S>(s), 0));
     const double pc = value_of(s(kPc));
     const bool on_surface = std::abs(cam_clay_yield(inv.p, inv.q, pc, c_.M)) <= kOnSurface * pc * pc;
     const auto r = cam_clay_rate<Ops, S>(point(s), D, c_, on_surface);
@@ -153,13 +153,6 @@ class ModifiedCamClay final : public Model {
     Ops::template pack<S>(r.T, ds, 0);
     ds(kE) = (1.0 + s(kE)) * Ops::trace(D);
     ds(kPc) = r.p_c;
-  }
-
-  template <class S>
-  static StateVector values_of_state(const StateVectorT<S>& s) {
-    StateVector v(s.size());
-    for (int i = 0; i < s.size(); ++i) v(i) = value_of(s(i));
-    return v;
   }
 
   std::string name_;
