@@ -429,6 +429,20 @@ def export_snapshot(vtk):
             pairs.write(fmt % (x1[0], x1[1], x1[2], x2[0], x2[1], x2[2], i.id1, i.id2, 0, f[0], f[1], f[2], c[0], c[1], c[2]))
 
 
+def clamp_under_plate(z):
+    """The grains whose centres lie above z (the clamp's depth below the plate's teeth) held in x
+    and y and in rotation, free in z: the upper frame of a direct interface shear test."""
+    clamped = 0
+    for i in IDS["grains"]:
+        b = O.bodies[i]
+        if b.state.pos[2] > z:
+            b.state.blockedDOFs = "xyXYZ"
+            b.state.vel = Vector3(0, 0, b.state.vel[2])
+            b.state.angVel = Vector3(0, 0, 0)
+            clamped += 1
+    say("IWB_FACT clamped_grains %d" % clamped)
+
+
 def shear():
     load_consolidated()
     run(P["relax_steps"])
@@ -439,6 +453,8 @@ def shear():
     say("IWB_STAGE_DONE relax zplate_m %.10g" % z0)
     if P["bc"] == "CV":
         SERVO["on"] = False  # CV: the plate is held during shear
+    if P["clamp"]:
+        clamp_under_plate(z0 + ZS - P["plate_clamp"])  # grains sit in YADE's lifted frame
     sh = P["shear"]
     step0 = O.iter
     say("IWB_SHEAR_START step %d zplate_m %.10g" % (step0, z0))

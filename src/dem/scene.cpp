@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fmt/core.h>
+#include <functional>
 #include <numeric>
 
 #include "common/errors.hpp"
@@ -19,6 +20,7 @@ constexpr double kMm = 1e-3;
 constexpr double kMinBoxLengthInDmax = 10.0;    // DEM.md: box length at least 10 d_max
 constexpr double kMinWidthInDmax = 3.0;         // periodic images must not touch
 constexpr double kRecommendedHeightInD50 = 20.0;  // DEM.md: ~7 d50 gives no band
+constexpr double kMinFreeHeightInD50 = 5.0;       // below the plate's clamp: a band is 5-10 d50
 constexpr double kDefaultDtFraction = 0.15;  // of the Rayleigh time: the usual DEM choice
 constexpr double kMaxDtFraction = 0.5;       // beyond this Hertz contacts lose energy balance
 
@@ -98,7 +100,8 @@ Particles read_particles(io::TableReader t) {
   return p;
 }
 
-RoughnessProfile read_profile(io::TableReader t, double d50) {
+// `extra` reads keys a table holds besides the profile (the plate's clamp) before it is finished.
+RoughnessProfile read_profile(io::TableReader t, double d50, const std::function<void(io::TableReader&)>& extra = {}) {
   RoughnessProfile r;
   const std::string kind = t.text("profile");
   if (kind == "flat") {
@@ -115,6 +118,7 @@ RoughnessProfile read_profile(io::TableReader t, double d50) {
     throw InputError(fmt::format("{} = \"{}\"; allowed \"flat\", \"sawtooth\", \"sinusoid\", \"glued\"",
                                  t.where("profile"), kind));
   }
+  if (extra) extra(t);
   t.finish();
   return r;
 }
@@ -350,7 +354,14 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   spec.finish();
 
   s.wall = read_profile(top.required_table("wall"), d50);
-  s.plate = read_profile(top.required_table("plate"), d50);
+  s.plate = read_profile(top.required_table("plate"), d50, [&](io::TableReader& t) {
+    s.plate_clamp_m = t.optional_number_in("clamp_d50", non_negative(kMaxLengthD50)).value_or(0.0) * d50;
+    // the band needs room below the clamped grains (DEM.md: at ~7 d50 no band forms)
+    require(s.plate_clamp_m <= s.height_m - kMinFreeHeightInD50 * d50,
+            fmt::format("{} = {:g} leaves {:g} d50 of the {:g} d50 specimen free to shear; allowed: at least {:g} d50",
+                        t.where("clamp_d50"), s.plate_clamp_m / d50, (s.height_m - s.plate_clamp_m) / d50,
+                        s.height_m / d50, kMinFreeHeightInD50));
+  });
   check_geometry(s, source);
 
   auto bc = top.required_table("boundary");
@@ -446,7 +457,8 @@ Scene parse_scene(const std::string& text, const std::string& source) {
       {"specimen", {{"length_mm", s.length_m / kMm}, {"width_mm", s.width_m / kMm},
                     {"height_mm", s.height_m / kMm}, {"consolidation_friction", consolidation_friction}}},
       {"wall", {{"profile", s.wall.describe()}, {"R_n", s.wall.normalized_roughness(d50)}}},
-      {"plate", {{"profile", s.plate.describe()}, {"R_n", s.plate.normalized_roughness(d50)}}},
+      {"plate", {{"profile", s.plate.describe()}, {"R_n", s.plate.normalized_roughness(d50)},
+                 {"clamp_mm", s.plate_clamp_m / kMm}}},
       {"boundary", {{"type", driver::to_string(s.boundary.kind)}, {"sigma_n_kPa", s.boundary.sigma_n_Pa / 1e3},
                     {"K_kPa_per_mm", s.boundary.K_Pa_per_m * kMm / 1e3}}},
       {"shear", {{"velocity_mm_s", s.shear.velocity_m_s / kMm}, {"displacement_mm", s.shear.displacement_m / kMm},

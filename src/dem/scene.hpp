@@ -150,6 +150,11 @@ struct Scene {
   int particle_count = 0;              // requested
   double solid_fraction_estimate;      // used to derive particle_count when not given
   RoughnessProfile wall, plate;
+  // [plate] clamp_d50: while shearing, the grains whose centres lie within this depth below the
+  // plate's teeth are held in x and y and do not rotate; they follow the plate normal to it, as the
+  // upper frame of a direct interface shear test holds its soil. 0: none. With epsd2 rolling
+  // resistance a band could form at the plate as well as at the wall (data/convergence/README.md).
+  double plate_clamp_m = 0.0;
   Boundary boundary;
   Shear shear;
   Consolidation consolidation;

@@ -127,6 +127,28 @@ std::string glued_motion(const Shear& sh) {
   return "fix mvg glued move variable v_ux NULL NULL v_vw NULL NULL";
 }
 
+// The plate's clamp (scene.hpp, plate_clamp_m): the grains whose centres lie within the clamp's
+// depth below the plate's teeth when shear starts keep x and y velocity 0 (setforce) and their
+// spin (plain nve does not integrate omega; this build's `set` cannot zero it, so the relaxation's
+// spin stays: the test reads it from the snapshots); z is integrated, so they follow the plate.
+std::string plate_clamp(const Scene& s) {
+  if (!(s.plate_clamp_m > 0.0)) return "# no clamp under the plate";
+  return fmt::format(
+      "variable zclamp equal ${{z0}}-{}\n"
+      "region clampzone block INF INF INF INF ${{zclamp}} INF units box\n"
+      "group inclamp region clampzone\n"
+      "group clamped intersect inclamp grains\n"
+      "group sheared subtract grains clamped\n"
+      "unfix integr\n"
+      "fix integr sheared nve/sphere\n"
+      "fix integrclamp clamped nve\n"
+      "fix clampxy clamped setforce 0.0 0.0 NULL\n"
+      "velocity clamped set 0.0 0.0 NULL units box\n"
+      "variable nclamped equal count(clamped)\n"
+      "print \"IWB_FACT clamped_grains ${{nclamped}}\"",
+      g(s.plate.height_m + s.plate_clamp_m));
+}
+
 // A row of timeseries.raw (fix print, and the row printed when shear starts) and its title.
 constexpr const char* kTimeseriesRow =
     "${t} ${ux} ${zplate} ${sigma_wall} ${tau_wall} ${sigma_plate} ${vs} ${vb} ${coord} ${na} ${kin}";
@@ -153,6 +175,7 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
       {"materials_test", materials(p, p.friction, types)},
       {"glued_layer", glued_layer(s)},
       {"glued_motion", glued(s) ? glued_motion(s.shear) : "# no glued layer"},
+      {"plate_clamp", plate_clamp(s)},
       {"glued_force", glued(s) ? "compute fglued glued reduce sum fx fz" : "# no glued layer"},
       {"glued_fx", glued(s) ? "+c_fglued[1]" : ""},
       {"glued_fz", glued(s) ? "+c_fglued[2]" : ""},

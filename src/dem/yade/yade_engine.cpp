@@ -100,7 +100,8 @@ nlohmann::json yade_parameters(const Scene& s, const Numerics& n) {
       {"servo", {{"vel_max", s.servo.vel_max_m_s}, {"gain", kServoGain}, {"integral_gain", kServoIntegralGain}, {"every", kServoEvery}}},
       {"bc", driver::to_string(s.boundary.kind)},
       {"K_Pa_per_m", s.boundary.kind == driver::BoundaryKind::kCNS ? s.boundary.K_Pa_per_m : 0.0},
-      {"relax_steps", n.relax_steps}, {"band_zlo", n.band_zlo}, {"band_zhi", n.band_zhi},
+      {"relax_steps", n.relax_steps}, {"plate_clamp", s.plate.height_m + s.plate_clamp_m},
+      {"clamp", s.plate_clamp_m > 0.0}, {"band_zlo", n.band_zlo}, {"band_zhi", n.band_zhi},
       {"bin_dz", s.outputs.profile_bin_d50 * n.d50}, {"shear", shear_parameters(s, n)},
   };
 }
@@ -153,7 +154,7 @@ std::string YadeEngine::consolidation_inputs(const Scene& s) const {
   const Numerics n = derive(s);
   nlohmann::json params = yade_parameters(s, n);
   params.update(extra_);
-  for (const char* later : {"shear", "bc", "K_Pa_per_m", "relax_steps", "band_zlo", "band_zhi", "bin_dz", "mu_test",
+  for (const char* later : {"shear", "bc", "K_Pa_per_m", "relax_steps", "plate_clamp", "clamp", "band_zlo", "band_zhi", "bin_dz", "mu_test",
                             "oedometer"})
     params.erase(later);
   const SceneMeshes meshes = scene_meshes(s, n.plate_z);
