@@ -81,6 +81,7 @@ struct Walker {
       NormalControlRow row = seg.row;
       row.c = row_start + (k + 1) * seg.row.c - row_value(seg.row, current);
       IncrementRequest rq{gx, gy, row, guess(row, gx, gy, k, last)};
+      for (std::size_t i = 0; i < rq.external.size(); ++i) rq.external[i] = seg.external[i] / seg.increments;
       IncrementSolution sol;
       try {
         sol = solve_increment(model, current.state, rq, set.integrator, set.mixed, first_step);
@@ -142,9 +143,15 @@ struct Walker {
 }  // namespace
 
 void check_path(const models::Model& model, const Path& path) {
-  for (const auto& seg : path)
+  static const char* const kExternalNames[models::kExternalSlots] = {"temperature", "suction", "time"};
+  for (const auto& seg : path) {
     if ((seg.gamma_y != 0.0) && !model.has_second_shear_direction())
       throw InputError(fmt::format("model {} has one shear direction; use direction = \"x\"", model.name()));
+    for (int i = 0; i < models::kExternalSlots; ++i)
+      if (seg.external[std::size_t(i)] != 0.0 && !model.reads_external(models::External(i)))
+        throw InputError(fmt::format("stage '{}' changes the {}, which model {} does not read (`iwb models {}` "
+                                     "lists what it reads)", seg.label, kExternalNames[i], model.name(), model.name()));
+  }
 }
 
 ElementTestResult run_element_test(const models::Model& model, const models::StateVector& initial,

@@ -66,7 +66,7 @@ IncrementSolution newton(const models::Model& m, const StateVector& committed,
   Bracket bracket;
   for (out.iterations = 0; out.iterations < ms.max_iterations; ++out.iterations) {
     const Dual X = make_variable(x);
-    const models::InterfaceStrainT<Dual> d{X, Dual(rq.gamma_x), Dual(rq.gamma_y)};
+    const models::InterfaceStrainT<Dual> d = rq.strain(X);
     StateVectorT<Dual> trial;
     // A new step sequence makes the residual a slightly different function of x.
     const bool new_plan = !plan.replay;
@@ -211,13 +211,17 @@ IncrementSolution solve_increment(const models::Model& m, const StateVector& com
   if (ms.method == MixedControlMethod::kClosedForm) {
     if (is.scheme != integration::Scheme::kExplicitEuler)
       throw InputError("mixed_control = \"closed-form\" (appendix C) needs scheme = \"euler\"");
+    // appendix C reads L and N off rate evaluations in D alone: a temperature or suction rate
+    // adds terms it does not know
+    if (rq.has_external())
+      throw InputError("mixed_control = \"closed-form\" (appendix C) covers strain paths only; this path changes "
+                       "temperature or suction: use mixed_control = \"newton\"");
     return closed_form(m, committed, rq, is.substeps);
   }
   if (rq.row.a == 0.0) {  // normal strain prescribed: no unknown, plain integration
     IncrementSolution out;
     out.eps_n = rq.row.c / rq.row.b;
-    out.state = integration::integrate_increment<double>(
-        m, committed, {out.eps_n, rq.gamma_x, rq.gamma_y}, is, out.counters, first_step);
+    out.state = integration::integrate_increment<double>(m, committed, rq.strain(out.eps_n), is, out.counters, first_step);
     return out;
   }
   return newton(m, committed, rq, is, ms, first_step);

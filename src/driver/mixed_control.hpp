@@ -8,6 +8,7 @@
 // quadratic in x after squaring; solved per substep, the root checked by substitution. It needs
 // a rate of the form L:D + N||D||, whose L and N rows it reads off four rate evaluations, so it
 // knows no model internals either.
+#include <array>
 #include <vector>
 
 #include "driver/control.hpp"
@@ -29,6 +30,15 @@ struct IncrementRequest {
   double gamma_y = 0.0;
   NormalControlRow row;
   double eps_n_guess = 0.0;
+  std::array<double, models::kExternalSlots> external{};  // dT, ds, dt over the increment
+
+  bool has_external() const { return external != std::array<double, models::kExternalSlots>{}; }
+  template <class S>
+  models::InterfaceStrainT<S> strain(const S& eps_n) const {
+    models::InterfaceStrainT<S> d{eps_n, S(gamma_x), S(gamma_y)};
+    for (int i = 0; i < models::kExternalSlots; ++i) d.external[std::size_t(i)] = S(external[std::size_t(i)]);
+    return d;
+  }
 };
 
 struct IncrementSolution {

@@ -2,10 +2,12 @@
 // Element-test paths as data: a list of segments, each a number of equal increments of shear
 // strain with one normal-control row per increment. Monotonic, staged, cyclic and oedometric
 // paths are built from it; the driver only walks segments.
+#include <array>
 #include <string>
 #include <vector>
 
 #include "driver/control.hpp"
+#include "models/model.hpp"
 
 namespace iwb::driver {
 
@@ -15,6 +17,9 @@ struct PathSegment {
   double gamma_y = 0.0;
   NormalControlRow row;  // per increment
   int increments = 1;
+  // Changes of the external variables over the whole segment (dT in K, ds in kPa, dt in s), in
+  // equal parts per increment; only models that read a variable may be given a change of it.
+  std::array<double, models::kExternalSlots> external{};
   int cycle = 0;                  // 1-based cycle it belongs to; 0 outside cyclic paths
   bool ends_at_reversal = false;  // its end is a shear reversal (+A or -A) of a cycle
 };

@@ -32,11 +32,6 @@ struct StateComponent {
   ComponentKind kind;
 };
 
-// External variables a model may read (issue 19): their current values are state components of
-// the model, their increments travel with the stretching.
-inline constexpr int kExternalSlots = 3;
-enum class External : int { kTemperature = 0, kSuction = 1, kTime = 2 };
-
 struct StateLayout {
   std::vector<StateComponent> components;
   int void_ratio = -1;  // index of e; -1: the model has none (Mohr-Coulomb, Clough & Duncan)

@@ -49,13 +49,26 @@ S normal_stress(const StateVectorT<S>& s) {
   return -s(0);
 }
 
+// External variables a model may read (issue 19): their current values are state components of
+// the model (declaration.hpp, StateLayout::external), their increments travel with the stretching.
+inline constexpr int kExternalSlots = 3;
+enum class External : int { kTemperature = 0, kSuction = 1, kTime = 2 };
+
 // Stretching (or its increment) of an interface element, internal sign convention: eps_n > 0 is
-// opening (dilation), engineering shear strains gamma_x, gamma_y (CONVENTIONS.md).
+// opening (dilation), engineering shear strains gamma_x, gamma_y (CONVENTIONS.md), and the
+// increments of the external variables over the same pseudo-time: dT (K), ds (kPa), dt (s). Every
+// rate is homogeneous of degree one in the whole of it (Masin & Khalili's H_T and H_s are of
+// degree one in dT and ds), so the integrators need not know which part is which.
 template <class S>
 struct InterfaceStrainT {
   S eps_n{0.0};
   S gamma_x{0.0};
   S gamma_y{0.0};
+  // Initialised explicitly: Eigen's AutoDiffScalar default constructor leaves its value
+  // uninitialised, so `external{}` would be garbage for Dual.
+  std::array<S, kExternalSlots> external{S(0.0), S(0.0), S(0.0)};
+
+  S external_of(External slot) const { return external[std::size_t(slot)]; }
 };
 using InterfaceStrain = InterfaceStrainT<double>;
 
@@ -116,6 +129,9 @@ class Model {
   virtual StateVector error_scale(const StateVector& s) const = 0;
   // Model-specific quantities worth recording (limiting void ratios, mean stress, ...).
   virtual std::vector<NamedValue> diagnostics(const StateVector& s) const = 0;
+  // Whether the model reads this external variable: the driver refuses a path that changes one it
+  // does not (a heated Mohr-Coulomb element would silently ignore the heat).
+  virtual bool reads_external(External) const { return false; }
   // False for models with a single shear component (hp1d): the driver refuses y shear for them.
   virtual bool has_second_shear_direction() const = 0;
   // Called by the driver on each committed state: sets to exactly zero the components that are

@@ -6,6 +6,7 @@
 // (intergranular_strain.hpp) over the law's L and N.
 #include <fmt/core.h>
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -18,12 +19,31 @@
 
 namespace iwb::models {
 
+// The external variables a law reads (Masin & Khalili's temperature and suction): its
+// `kExternals`, none for the others.
+template <class Law>
+constexpr auto law_externals() {
+  if constexpr (requires { Law::kExternals; }) return Law::kExternals;
+  else return std::array<External, 0>{};
+}
+
+// The state component naming an external variable, as test files name its value and path.
+inline const char* external_key(External slot) {
+  static const char* const keys[kExternalSlots] = {"T_K", "s_kPa", "t_s"};
+  return keys[int(slot)];
+}
+
 template <class Kinematics, class Law = VonWolffersdorffLaw>
 class HypoplasticModel final : public Model {
   using Ops = typename Kinematics::Ops;
   using Constants = typename Law::Constants;
   static constexpr int kVoidRatio = Ops::kPackedSize;
-  static constexpr int kDelta = kVoidRatio + 1;  // first intergranular strain component
+  // A law that reads external variables keeps their values after e, the net stress first (the
+  // stress a test applies; the law derives its effective stress) and gives e's rate itself.
+  static constexpr auto kExternals = law_externals<Law>();
+  static constexpr int kExternalCount = int(kExternals.size());
+  static constexpr int kFirstExternal = kVoidRatio + 1;
+  static constexpr int kDelta = kFirstExternal + kExternalCount;  // first intergranular strain component
 
  public:
   // tr 1 of the element's algebra: 3 for tensors and reduced vectors, 1 for Gutjahr's 1D vectors.
@@ -31,29 +51,46 @@ class HypoplasticModel final : public Model {
 
   HypoplasticModel(std::string name, Kinematics kin, const Constants& constants,
                    std::optional<IntergranularStrainParameters> igs = std::nullopt)
-      : name_(std::move(name)), kin_(kin), c_(constants), igs_(igs) {}
+      : name_(std::move(name)), kin_(kin), c_(constants), igs_(igs) {
+    if (kExternalCount > 0 && igs_)
+      throw InputError(fmt::format("{}: the intergranular strain is not defined for a law that reads temperature "
+                                   "or suction", name_));
+  }
 
   std::string_view name() const override { return name_; }
-  int state_size() const override { return Ops::kPackedSize * (igs_ ? 2 : 1) + 1; }
+  int state_size() const override { return Ops::kPackedSize * (igs_ ? 2 : 1) + 1 + kExternalCount; }
   std::vector<std::string> state_names() const override {
     auto names = Kinematics::component_names();
     names.push_back("e");
+    for (External x : kExternals) names.push_back(external_key(x));
     if (igs_)
       for (const auto& t : Kinematics::component_names()) names.push_back("delta" + t.substr(1));
     return names;
   }
   bool has_second_shear_direction() const override { return Kinematics::kSecondShearDirection; }
+  bool reads_external(External slot) const override {
+    for (External x : kExternals)
+      if (x == slot) return true;
+    return false;
+  }
   const Constants& constants() const { return c_; }
 
   StateVector initial_state(const InitialState& init) const override {
     StateVector s(state_size());
     Ops::template pack<double>(kin_.initial_stress(init), s, 0);
     s(kVoidRatio) = init.e0;
+    if constexpr (kExternalCount > 0)
+      for (int i = 0; i < kExternalCount; ++i) {
+        const auto given = init.named.find(external_key(kExternals[std::size_t(i)]));
+        s(kFirstExternal + i) = given != init.named.end() ? given->second : Law::initial_external(kExternals[std::size_t(i)], c_);
+      }
     // a law that knows its asymptotic state boundary surface may be given the density as an OCR
     // (from the invariants, or from the stress tensor where the surface needs the principal ratio)
     if (const auto ocr = init.named.find("OCR"); ocr != init.named.end()) {
       const auto T = Ops::template unpack<double>(s, 0);
-      if constexpr (requires { Law::void_ratio_at(StressInvariants{}, 1.0, c_); })
+      if constexpr (kExternalCount > 0)
+        s(kVoidRatio) = Law::template void_ratio_at_state<Ops>(T, externals_of<double>(s), ocr->second, c_);
+      else if constexpr (requires { Law::void_ratio_at(StressInvariants{}, 1.0, c_); })
         s(kVoidRatio) = Law::void_ratio_at(stress_invariants<Ops>(T), ocr->second, c_);
       else if constexpr (requires { Law::template void_ratio_at_stress<Ops>(T, 1.0, c_); })
         s(kVoidRatio) = Law::template void_ratio_at_stress<Ops>(T, ocr->second, c_);
@@ -87,10 +124,11 @@ class HypoplasticModel final : public Model {
 
   std::string domain_violation(const StateVector& s) const override {
     if (!s.allFinite()) return "state is not finite (NaN or inf)";
-    const double tr = Ops::trace(Ops::template unpack<double>(s, 0));
+    const auto T = law_stress(s);
+    const double tr = Ops::trace(T);
     if (!(tr < -kMinimumPressure_kPa))
       return fmt::format("no compression: tr T = {:.6g} kPa (contact lost)", tr);
-    return Law::domain_violation(stress_invariants<Ops>(Ops::template unpack<double>(s, 0)), s(kVoidRatio), c_);
+    return Law::domain_violation(stress_invariants<Ops>(T), s(kVoidRatio), c_);
   }
 
   // Stress and intergranular strain each against their own largest component; e is a scalar.
@@ -103,18 +141,25 @@ class HypoplasticModel final : public Model {
     const auto t = Ops::template unpack<double>(s, 0);
     StateVector scale = StateVector::Constant(state_size(), std::sqrt(Ops::contract(t, t)));
     scale(kVoidRatio) = std::abs(s(kVoidRatio));
+    // T_K and s follow their path exactly (their rate is the given increment); 1 K or 1 kPa keeps
+    // a zero suction from dividing by zero
+    for (int i = 0; i < kExternalCount; ++i) scale(kFirstExternal + i) = std::max(std::abs(s(kFirstExternal + i)), 1.0);
     if (igs_) scale.tail(Ops::kPackedSize).setConstant(igs_->R);  // delta is measured against R
     return scale;
   }
 
   std::vector<NamedValue> diagnostics(const StateVector& s) const override {
     const auto t = Ops::template unpack<double>(s, 0);
-    auto out = Law::diagnostics(stress_invariants<Ops>(t), s(kVoidRatio), c_);
-    if (igs_) {
-      const auto delta = Ops::template unpack<double>(s, kDelta);
-      out.push_back({"rho", std::sqrt(Ops::contract(delta, delta)) / igs_->R});
+    if constexpr (kExternalCount > 0) {
+      return Law::template diagnostics_at<Ops>(t, s(kVoidRatio), externals_of<double>(s), c_);
+    } else {
+      auto out = Law::diagnostics(stress_invariants<Ops>(t), s(kVoidRatio), c_);
+      if (igs_) {
+        const auto delta = Ops::template unpack<double>(s, kDelta);
+        out.push_back({"rho", std::sqrt(Ops::contract(delta, delta)) / igs_->R});
+      }
+      return out;
     }
-    return out;
   }
 
  private:
@@ -124,6 +169,21 @@ class HypoplasticModel final : public Model {
     const auto D = kin_.template stretching<S>(d);
     const S e = s(kVoidRatio);
     ds.resize(state_size());
+    if constexpr (kExternalCount > 0) {
+      // the externals' rates are their given increments; the law gives the stress's and e's
+      std::array<S, kExternalCount> dx;
+      for (int i = 0; i < kExternalCount; ++i) ds(kFirstExternal + i) = dx[std::size_t(i)] = d.external_of(kExternals[std::size_t(i)]);
+      const auto r = Law::template rate<Ops, S>(T, e, D, externals_of<S>(s), dx, c_);
+      Ops::template pack<S>(r.net_stress, ds, 0);
+      ds(kVoidRatio) = r.void_ratio;
+    } else {
+      mechanical_rate<S>(s, T, D, e, ds);
+    }
+  }
+
+  template <class S>
+  void mechanical_rate(const StateVectorT<S>& s, const typename Ops::template Tensor<S>& T,
+                       const typename Ops::template Tensor<S>& D, const S& e, StateVectorT<S>& ds) const {
     ds(kVoidRatio) = (1.0 + e) * Ops::trace(D);  // ERRATA item 6
     if (!igs_) {
       Ops::template pack<S>(Law::template rate<Ops, S>(T, e, D, c_), ds, 0);
@@ -137,6 +197,20 @@ class HypoplasticModel final : public Model {
       Ops::template pack<S>(r.stress, ds, 0);
       Ops::template pack<S>(kin_.template intergranular<S>(r.delta), ds, kDelta);
     }
+  }
+
+  template <class S>
+  std::array<S, kExternalCount> externals_of(const StateVectorT<S>& s) const {
+    std::array<S, kExternalCount> x;
+    for (int i = 0; i < kExternalCount; ++i) x[std::size_t(i)] = s(kFirstExternal + i);
+    return x;
+  }
+
+  // The stress the law's domain is about: the effective stress of a law with suction, else the state's.
+  typename Ops::template Tensor<double> law_stress(const StateVector& s) const {
+    const auto T = Ops::template unpack<double>(s, 0);
+    if constexpr (kExternalCount > 0) return Law::template effective_stress<Ops, double>(T, externals_of<double>(s), c_);
+    else return T;
   }
 
   // Given [delta_n, delta_x, delta_y] or the seed's default, as the stretching-shaped tensor of

@@ -130,7 +130,7 @@ struct HypoplasticTangent {
   using Tensor = typename Ops::template Tensor<S>;
   S scale;       // f_c f_b f_e / (T^:T^)
   S F2;          // F^2
-  double a2;     // a^2
+  S a2;          // a^2 (Masin's clay: c_2 a^2, which depends on temperature and suction)
   Tensor t_hat;  // T^
   Tensor N;      // scale f_d a F (T^ + T^*)
 
