@@ -106,4 +106,38 @@ Path oedometric_path(double sigma_from, double sigma_to, int increments) {
            BoundaryCondition{BoundaryKind::kCNL, 0.0}.row((sigma_to - sigma_from) / increments), increments}};
 }
 
+Path stage_path(const std::vector<Stage>& stages, ShearDirection dir) {
+  Path path;
+  for (const auto& st : stages) {
+    require_positive(st.increments, "path.stage.increments");
+    int cycles = 0, cycling = -1;
+    for (int i = 0; i < models::kExternalSlots; ++i)
+      if (st.external[std::size_t(i)].kind == ExternalPath::Kind::kCycle) {
+        if (cycling >= 0)
+          throw InputError(fmt::format("stage '{}' cycles two external variables; cycle one per stage", st.label));
+        cycling = i, cycles = st.external[std::size_t(i)].cycles;
+      }
+    const int parts = cycling < 0 ? 1 : 4 * cycles;
+    if (st.increments % parts != 0)
+      throw InputError(fmt::format("stage '{}': {} increments do not split into the {} quarters of {} cycles; give a "
+                                   "multiple of {}", st.label, st.increments, parts, cycles, parts));
+    const int n = st.increments / parts;
+    static constexpr double kQuarter[4] = {1.0, -1.0, -1.0, 1.0};  // 0 -> +A -> 0 -> -A -> 0
+    for (int q = 0; q < parts; ++q) {
+      PathSegment seg;
+      seg.label = cycling < 0 ? st.label : fmt::format("{}, cycle {} quarter {}", st.label, q / 4 + 1, q % 4 + 1);
+      (dir == ShearDirection::kX ? seg.gamma_x : seg.gamma_y) = st.gamma / parts;
+      seg.row = st.bc.row(st.d_sigma_n / st.increments);
+      seg.increments = n;
+      seg.cycle = cycling < 0 ? 0 : q / 4 + 1;
+      for (int i = 0; i < models::kExternalSlots; ++i) {
+        const auto& x = st.external[std::size_t(i)];
+        seg.external[std::size_t(i)] = i == cycling ? kQuarter[q % 4] * x.amplitude : x.change / parts;
+      }
+      path.push_back(seg);
+    }
+  }
+  return path;
+}
+
 }  // namespace iwb::driver

@@ -55,4 +55,30 @@ Path staged_path(double sigma_n0, double gamma, const std::vector<StagedStep>& s
 // Normal loading without shear from sigma_from to sigma_to (oedometric for the interface).
 Path oedometric_path(double sigma_from, double sigma_to, int increments);
 
+// How an external variable (temperature, suction, time) moves over a stage: held, ramped by a
+// change, or cycled about its value at the stage's start, 0 -> +A -> 0 -> -A -> 0 per cycle.
+struct ExternalPath {
+  enum class Kind { kHold, kRamp, kCycle };
+  Kind kind = Kind::kHold;
+  double change = 0.0;     // kRamp: over the whole stage
+  double amplitude = 0.0;  // kCycle
+  int cycles = 0;
+};
+
+// One stage of a test given as data (a test file's [[path.stage]]): a shear strain in the
+// path's direction, the normal control (with a change of sigma_n for CNL), the paths of the
+// external variables, all spread evenly over `increments`.
+struct Stage {
+  std::string label;
+  int increments = 1;
+  double gamma = 0.0;
+  BoundaryCondition bc;
+  double d_sigma_n = 0.0;  // CNL only
+  std::array<ExternalPath, models::kExternalSlots> external{};
+};
+
+// The segments of `stages`. A stage that cycles an external variable becomes 4 x cycles segments
+// of increments / (4 x cycles) each (InputError unless that divides); one that does not becomes one.
+Path stage_path(const std::vector<Stage>& stages, ShearDirection dir);
+
 }  // namespace iwb::driver

@@ -1,5 +1,6 @@
 #include "io/element_test_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/core.h>
 #include <map>
@@ -256,6 +257,121 @@ void check_length(const TableReader& t, double increments) {
                                  "increments)", t.where(), increments, kMaxIncrements));
 }
 
+// Limits of the external variables' paths: beyond them a value is a units mistake.
+constexpr double kKelvinOffset = 273.15;
+const Range kTemperatureK = closed(200.0, 500.0);  // -73 to 227 deg C
+const Range kSuctionKPa = closed(0.0, 1e6);
+const Range kTimeS = closed(0.0, 1e10);
+constexpr int kMaxStageCycles = 10000;
+
+// The key an external variable's path is given by, its unit's offset from the state's unit and
+// its range: T_K or T_C (deg C, stated in the key), s_kPa, t_s.
+struct ExternalKey {
+  models::External slot;
+  const char* key;
+  double offset;
+  const Range* range;
+};
+const ExternalKey kExternalKeys[] = {{models::External::kTemperature, "T_K", 0.0, &kTemperatureK},
+                                     {models::External::kTemperature, "T_C", kKelvinOffset, &kTemperatureK},
+                                     {models::External::kSuction, "s_kPa", 0.0, &kSuctionKPa},
+                                     {models::External::kTime, "t_s", 0.0, &kTimeS}};
+
+// `{ to = V }` (ramp to a value), `{ by = dV }` (ramp by a change) or `{ amplitude = A, cycles = n }`
+// (cycle about the value at the stage's start); `current` (state units) follows the path.
+driver::ExternalPath read_external_path(TableReader t, const ExternalKey& k, double& current, json& out) {
+  driver::ExternalPath x;
+  const std::string how = t.one_of({"to", "by", "amplitude"});
+  if (how == "to") {
+    const double to = t.number_in("to", Range{k.range->lower - k.offset, k.range->upper - k.offset, false, false}) + k.offset;
+    x = {driver::ExternalPath::Kind::kRamp, to - current};
+    current = to;
+    out[k.key] = {{"to", to - k.offset}};
+  } else if (how == "by") {
+    const double by = t.number_in("by", closed(-k.range->upper, k.range->upper));
+    if (!k.range->admits(current + by))
+      throw InputError(fmt::format("{} = {:g} takes {} to {:g}, outside {}", t.where("by"), by, k.key,
+                                   current + by - k.offset, k.range->text()));
+    x = {driver::ExternalPath::Kind::kRamp, by};
+    current += by;
+    out[k.key] = {{"by", by}};
+  } else {
+    const double a = t.positive("amplitude", k.range->upper);
+    const int cycles = t.count("cycles");
+    if (cycles > kMaxStageCycles || !k.range->admits(current + a) || !k.range->admits(current - a))
+      throw InputError(fmt::format("{}: {} cycles of +-{:g} about {:g}; allowed up to {} cycles within {}", t.where(),
+                                   cycles, a, current - k.offset, kMaxStageCycles, k.range->text()));
+    x = {driver::ExternalPath::Kind::kCycle, 0.0, a, cycles};
+    out[k.key] = {{"amplitude", a}, {"cycles", cycles}};
+  }
+  t.finish();
+  return x;
+}
+
+// One [[path.stage]]: label, increments, an optional shear (gamma or u_mm, either sign), the
+// normal control ([boundary] unless `normal` names another; CNL may ramp sigma_n_kPa = { to }),
+// the paths of the external variables the model declares.
+driver::Stage read_stage(TableReader t, int index, ElementTestSpec& spec, double& sigma_n,
+                         std::array<double, models::kExternalSlots>& current, json& out) {
+  driver::Stage st;
+  st.label = t.optional_text("label").value_or(fmt::format("stage {}", index + 1));
+  st.increments = t.count("increments");
+  out = {{"label", st.label}, {"increments", st.increments}};
+  if (t.has("gamma")) st.gamma = t.number_in("gamma", closed(-kMaxShearStrain, kMaxShearStrain));
+  else if (t.has("u_mm")) st.gamma = spec.zone.gamma_of(t.number_in("u_mm", closed(-kMaxLengthMm, kMaxLengthMm)));
+  out["gamma"] = st.gamma;
+  st.bc = spec.boundary;
+  if (const auto normal = t.optional_text("normal")) {
+    st.bc.kind = driver::parse_boundary_kind(*normal, t.where("normal"));
+    if (st.bc.kind == driver::BoundaryKind::kCNS && spec.boundary.kind != driver::BoundaryKind::kCNS)
+      throw InputError(fmt::format("{} = \"CNS\" needs the stiffness of a [boundary] of type CNS", t.where("normal")));
+  }
+  out["normal"] = driver::to_string(st.bc.kind);
+  if (auto ramp = t.table("sigma_n_kPa")) {
+    if (st.bc.kind != driver::BoundaryKind::kCNL)
+      throw InputError(fmt::format("{}: a ramp of sigma_n needs normal = \"CNL\"", t.where("sigma_n_kPa")));
+    const double to = ramp->positive("to", kMaxStressKPa);
+    ramp->finish();
+    st.d_sigma_n = to - sigma_n;
+    sigma_n = to;
+    out["sigma_n_kPa"] = {{"to", to}};
+  }
+  const auto& declared = models::find_model(spec.model).declaration.externals;
+  for (const auto& k : kExternalKeys) {
+    auto path = t.table(k.key);
+    if (!path) continue;
+    const bool read = std::any_of(declared.begin(), declared.end(), [&](const auto& x) { return x.which == k.slot; });
+    if (!read)
+      throw InputError(fmt::format("{}: model {} does not read {} (`iwb models` lists what each model reads)",
+                                   t.where(k.key), spec.model, k.key));
+    const auto slot = std::size_t(k.slot);
+    if (st.external[slot].kind != driver::ExternalPath::Kind::kHold)
+      throw InputError(fmt::format("{}: the stage gives this variable twice", t.where(k.key)));
+    st.external[slot] = read_external_path(*path, k, current[slot], out);
+  }
+  t.finish();
+  return st;
+}
+
+// kind = "stages": the path as a list of [[path.stage]] tables (README.md of data/tests).
+void read_stages(TableReader& t, driver::ShearDirection dir, ElementTestSpec& spec, json& out) {
+  double sigma_n = spec.initial.sigma_n;
+  std::array<double, models::kExternalSlots> current{};
+  for (const auto& k : kExternalKeys)
+    if (const auto v = spec.initial.named.find(models::external_key(k.slot)); v != spec.initial.named.end())
+      current[std::size_t(k.slot)] = v->second;
+  std::vector<driver::Stage> stages;
+  auto tables = t.array_of_tables("stage");
+  if (tables.empty()) throw InputError(fmt::format("{}: kind = \"stages\" needs at least one [[path.stage]]", t.where()));
+  out["stages"] = json::array();
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    json o;
+    stages.push_back(read_stage(tables[i], int(i), spec, sigma_n, current, o));
+    out["stages"].push_back(o);
+  }
+  spec.path = driver::stage_path(stages, dir);
+}
+
 void read_path(TableReader t, ElementTestSpec& spec) {
   const std::string kind = t.text("kind");
   const std::string dir = t.optional_text("direction").value_or("x");
@@ -305,13 +421,15 @@ void read_path(TableReader t, ElementTestSpec& spec) {
     spec.path = driver::staged_path(spec.initial.sigma_n, g, steps, d, t.count("increments"),
                                     t.optional_count("step_increments").value_or(50));
     out["gamma"] = g;
+  } else if (kind == "stages") {
+    read_stages(t, d, spec, out);
   } else if (kind == "oedometric") {
     const double to = t.positive("sigma_n_end_kPa", kMaxStressKPa);
     spec.path = driver::oedometric_path(spec.initial.sigma_n, to, t.count("increments"));
     out["sigma_n_end_kPa"] = to;
   } else {
     throw InputError(fmt::format("{} = \"{}\"; allowed \"monotonic\", \"cyclic\", \"staged\", "
-                                 "\"oedometric\"", t.where("kind"), kind));
+                                 "\"oedometric\", \"stages\"", t.where("kind"), kind));
   }
   t.finish();
   long n = 0;

@@ -5,11 +5,27 @@
 
 namespace iwb::io {
 
+namespace {
+
+// The state components holding external variables (T_K, s_kPa, t_s), by the names the model gives them.
+std::vector<std::pair<std::string, int>> external_columns(const models::Model& model) {
+  const auto names = model.state_names();
+  std::vector<std::pair<std::string, int>> columns;
+  for (int slot = 0; slot < models::kExternalSlots; ++slot)
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (names[i] == models::external_key(models::External(slot))) columns.push_back({names[i], int(i)});
+  return columns;
+}
+
+}  // namespace
+
 std::string history_csv(const models::Model& model, const driver::ShearZone& zone,
                         const std::vector<driver::HistoryRow>& rows) {
   std::string out =
       "increment,segment,u_x_mm,u_y_mm,u_n_mm,gamma_x,gamma_y,eps_n,sigma_n_kPa,sigma_p_kPa,"
       "tau_x_kPa,tau_y_kPa,tau_over_sigma_n,e";
+  const auto externals = external_columns(model);
+  for (const auto& [name, index] : externals) out += "," + name;
   if (!rows.empty())
     for (const auto& d : model.diagnostics(rows.front().state)) out += "," + d.name;
   out += ",newton_iterations,rate_evaluations,rejected_substeps\n";
@@ -27,6 +43,7 @@ std::string history_csv(const models::Model& model, const driver::ShearZone& zon
                        r.increment, r.segment, zone.u_of(r.gamma_x), zone.u_of(r.gamma_y),
                        zone.u_n_of(r.eps_n), r.gamma_x, r.gamma_y, r.eps_n, s.sigma_n, sigma_p,
                        s.tau_x, s.tau_y, s.tau_x / s.sigma_n, e_field);
+    for (const auto& [name, index] : externals) out += fmt::format(",{}", r.state(index));
     for (const auto& d : model.diagnostics(r.state)) out += fmt::format(",{}", d.value);
     out += fmt::format(",{},{},{}\n", r.newton_iterations, r.rate_evaluations, r.rejected_substeps);
   }

@@ -54,6 +54,12 @@ S normal_stress(const StateVectorT<S>& s) {
 inline constexpr int kExternalSlots = 3;
 enum class External : int { kTemperature = 0, kSuction = 1, kTime = 2 };
 
+// The state component holding an external variable's value, as a test file's [initial] names it.
+inline const char* external_key(External slot) {
+  static const char* const keys[kExternalSlots] = {"T_K", "s_kPa", "t_s"};
+  return keys[int(slot)];
+}
+
 // Stretching (or its increment) of an interface element, internal sign convention: eps_n > 0 is
 // opening (dilation), engineering shear strains gamma_x, gamma_y (CONVENTIONS.md), and the
 // increments of the external variables over the same pseudo-time: dT (K), ds (kPa), dt (s). Every

@@ -27,12 +27,6 @@ constexpr auto law_externals() {
   else return std::array<External, 0>{};
 }
 
-// The state component naming an external variable, as test files name its value and path.
-inline const char* external_key(External slot) {
-  static const char* const keys[kExternalSlots] = {"T_K", "s_kPa", "t_s"};
-  return keys[int(slot)];
-}
-
 template <class Kinematics, class Law = VonWolffersdorffLaw>
 class HypoplasticModel final : public Model {
   using Ops = typename Kinematics::Ops;
