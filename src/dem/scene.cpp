@@ -357,7 +357,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   s.plate = read_profile(top.required_table("plate"), d50, [&](io::TableReader& t) {
     s.plate_clamp_m = t.optional_number_in("clamp_d50", non_negative(kMaxLengthD50)).value_or(0.0) * d50;
     // the band needs room below the clamped grains (DEM.md: at ~7 d50 no band forms)
-    require(s.plate_clamp_m <= s.height_m - kMinFreeHeightInD50 * d50,
+    require(s.plate_clamp_m == 0.0 || s.plate_clamp_m <= s.height_m - kMinFreeHeightInD50 * d50,
             fmt::format("{} = {:g} leaves {:g} d50 of the {:g} d50 specimen free to shear; allowed: at least {:g} d50",
                         t.where("clamp_d50"), s.plate_clamp_m / d50, (s.height_m - s.plate_clamp_m) / d50,
                         s.height_m / d50, kMinFreeHeightInD50));

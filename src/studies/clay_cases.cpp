@@ -60,6 +60,7 @@ std::string element_test_text(const ClayCase& c, const std::string& parameters) 
   }
   t += fmt::format("[initial]\nsigma_n_kPa = {}\n", c.sigma_n_kPa);
   t += std::isnan(c.e0) ? fmt::format("OCR = {}\n", c.OCR) : fmt::format("e0 = {}\n", c.e0);
+  for (const auto& [key, value] : c.initial_inputs) t += fmt::format("{} = {}\n", key, value);
   if (!std::isnan(c.K0)) t += fmt::format("K0 = {}\n", c.K0);
   if (c.model.ends_with("-igs")) t += "delta = \"seed\"\n";
   t += fmt::format("\n[shear_zone]\nd_s_mm = 1.0\n\n[boundary]\ntype = \"{}\"\n", c.boundary);
@@ -71,6 +72,12 @@ std::string element_test_text(const ClayCase& c, const std::string& parameters) 
     t += fmt::format("\n[path]\nkind = \"monotonic\"\ngamma = {}\nincrements = {}\n\n[output]\nevery = 10\n",
                      c.gamma, int(std::lround(c.gamma * kIncrementsPerUnitGamma)));
   return t;
+}
+
+std::string parameter_file_name(const ClayCase& c) {
+  std::string name = c.parameters.substr(0, c.parameters.rfind(".toml"));
+  for (const auto& [key, value] : c.parameter_changes) name += fmt::format("__{}={:g}", key.substr(key.rfind('.') + 1), value);
+  return name + ".toml";
 }
 
 double ClayCurve::max_tau() const { return *std::max_element(tau.begin(), tau.end()); }

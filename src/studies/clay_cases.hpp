@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,14 @@ struct ClayCase {
   double e0 = NAN;          // given instead of OCR where the study needs one void ratio for every model
   double K0 = NAN;          // NaN: the model's default
   double gamma = 0.2;       // monotonic paths: the shear strain reached, in kIncrementsPerUnitGamma steps per unit
+  // Further [initial] inputs the model declares (hcthm's T_K, s_kPa), and keys of the parameter set
+  // changed for this case ("thermo_hydro.n_t"): the run reads a copy of the set with them.
+  std::map<std::string, double> initial_inputs = {};
+  std::map<std::string, double> parameter_changes = {};
 };
+
+// The name of the parameter file a case runs with: its set, or the set with its changes.
+std::string parameter_file_name(const ClayCase& c);
 
 // Monotonic shear to gamma (0.2 by default) in increments of 1e-4 (data/tests/hce_cv_table_6_1.toml); cyclic paths
 // of 10 cycles of +-0.001 in 50 increments a quarter: Table 6.4 gives no amplitude; 10 R keeps the

@@ -11,6 +11,7 @@
 #include "io/element_run.hpp"
 #include "io/parameter_sets.hpp"
 #include "io/run_directory.hpp"
+#include "io/toml_override.hpp"
 #include "io/toml_reader.hpp"
 
 namespace iwb::studies {
@@ -19,7 +20,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The shipped sets the cases name, written into OUT/parameters/ for the run directories to name.
+// The shipped sets the cases name, written into OUT/parameters/ for the run directories to name,
+// and a copy with its changes for every case that changes keys of its set (keyed by
+// parameter_file_name).
 std::map<std::string, fs::path> study_parameters(const std::vector<ClayCase>& cases, const fs::path& out) {
   std::map<std::string, fs::path> files;
   for (const auto& c : cases) files[c.parameters];
@@ -27,6 +30,18 @@ std::map<std::string, fs::path> study_parameters(const std::vector<ClayCase>& ca
     if (files.count(set.name)) files[set.name] = io::parameter_set_file(set, out / "parameters");
   for (const auto& [name, path] : files)
     if (path.empty()) throw std::logic_error(fmt::format("{} is not among the parameter sets built into iwb", name));
+  for (const auto& c : cases) {
+    if (c.parameter_changes.empty()) continue;
+    auto root = io::parse_toml_text(io::read_file(files.at(c.parameters)), c.parameters);
+    std::string header = "# " + c.parameters + " with";
+    for (const auto& [key, value] : c.parameter_changes) {
+      io::set_dotted(root, key, value, c.parameters);
+      header += fmt::format(" {} = {:g}", key, value);
+    }
+    const auto file = out / "parameters" / parameter_file_name(c);
+    io::write_atomically(file, header + " (iwb run --study)\n" + io::serialise(root));
+    files[parameter_file_name(c)] = file;
+  }
   return files;
 }
 
@@ -95,7 +110,7 @@ int run_study(const StudyDefinition& study, const StudyOptions& opt) {
   bool complete = true;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const auto& c = cases[i];
-    curves[c.name] = run_case(study.name, c, parameters.at(c.parameters), opt);
+    curves[c.name] = run_case(study.name, c, parameters.at(c.parameter_changes.empty() ? c.parameters : parameter_file_name(c)), opt);
     complete = complete && curves[c.name].status == "complete";
     fmt::print(stderr, "  case {}/{}: {} ({}) {}\n", i + 1, cases.size(), c.name, c.model, curves[c.name].status);
     if (opt.interrupt && opt.interrupt->load()) return 1;

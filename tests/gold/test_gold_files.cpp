@@ -150,6 +150,14 @@ TEST_CASE("gold: the models of seed chapter 8 (modified Cam clay, Barodesy) on C
   }
 }
 
+TEST_CASE("gold: Masin's clay and the thermo-hydro model (Table 6.5) on CNL, CV and a heat-dry-wet path match their gold files",
+          "[gold][gold-files]") {
+  for (const std::string path : {"table_6_5_CNL", "table_6_5_CV", "table_6_5_thermo_hydro"}) {
+    INFO(path);
+    check_path(path);
+  }
+}
+
 // A model added to the registry without gold files, or a gold file no case produces, fails here.
 TEST_CASE("gold: the clay models on their paths (Table 6.4) match their gold files", "[gold][gold-files]") {
   for (const std::string path : {"clay_CNL", "clay_CNS", "clay_CV", "clay_oedometric", "clay_cyclic_CNL"}) {

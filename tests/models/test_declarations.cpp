@@ -59,7 +59,7 @@ TEST_CASE("the registry lists models in their declared order: sand, clay, the re
   std::vector<std::string> names;
   for (const auto& spec : models::model_registry()) names.push_back(spec.name);
   CHECK(names == std::vector<std::string>{"vw3d", "ah", "ahe", "hvwe", "hvwe-exact", "hp1d", "hcc", "hcc3d", "hce",
-                                          "hce3d", "mc", "hyperbolic", "lashkari", "mortara", "barodesy-clay", "barodesy-clay3d", "mcc",
+                                          "hce3d", "hc", "hc3d", "hcthm", "hcthm3d", "mc", "hyperbolic", "lashkari", "mortara", "barodesy-clay", "barodesy-clay3d", "mcc",
                                           "mcc3d", "vw3d-igs", "ahe-igs", "hvwe-igs", "hvwe-exact-igs", "hcc-igs",
                                           "hcc3d-igs", "hce-igs", "hce3d-igs"});
 }

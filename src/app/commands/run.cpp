@@ -1,4 +1,4 @@
-// `iwb run [--study sand|clay|chapter8]`: the continuum studies. sand: hvwe against vw3d on seed Table 5.1
+// `iwb run [--study sand|clay|chapter8|thermo]`: the continuum studies. sand: hvwe against vw3d on seed Table 5.1
 // (app/default_job.hpp); clay: the seed's 6.4 comparisons of the clay models (studies/).
 #include <memory>
 #include <string>
@@ -9,6 +9,7 @@
 #include "app/option_checks.hpp"
 #include "studies/chapter8_study.hpp"
 #include "studies/clay_study.hpp"
+#include "studies/thermo_study.hpp"
 
 namespace iwb::app {
 
@@ -24,6 +25,8 @@ int run_study(const RunOptions& o, const CommandContext& c) {
   if (o.study == "chapter8")
     return studies::run_study(studies::chapter8_study(),
                               {o.out.empty() ? "runs/chapter8" : o.out, o.force, c.command_line, c.interrupt});
+  if (o.study == "thermo")
+    return studies::run_study(studies::thermo_study(), {o.out.empty() ? "runs/thermo" : o.out, o.force, c.command_line, c.interrupt});
   return run_default_job(o.out.empty() ? "runs/default" : o.out, o.force, c.command_line);
 }
 }  // namespace
@@ -36,10 +39,12 @@ void add_run_command(CLI::App& app, CommandList& commands) {
              "comparisons of the clay interface models (HCC against HCE under CV, CNL and CNS; roughness kappa_r and "
              "the two roughness schemes; intergranular strain under cyclic CNL and CV). chapter8: the seed's section 8.4, "
              "constant-volume shear of HCE, Barodesy for clay and modified Cam clay on the reduced vectors with Table "
-             "8.1's London and Kaolin sets, and reduced against 3D. Each case is an element run directory, the seed's "
+             "8.1's London and Kaolin sets, and reduced against 3D. thermo: the seed's section 6.5, the thermo-hydro-mechanical "
+             "interface model hcthm under CNL and CV at several temperatures, with n_t and l_t varied, and at several "
+             "suctions (Table 6.5). Each case is an element run directory, the seed's "
              "claims are checked in study.md and study.json, and NAME.html holds the figures (src/studies/README.md).");
-  run->add_option("--study", o->study, "sand, clay or chapter8")
-      ->check(CLI::IsMember({"sand", "clay", "chapter8"}))
+  run->add_option("--study", o->study, "sand, clay, chapter8 or thermo")
+      ->check(CLI::IsMember({"sand", "clay", "chapter8", "thermo"}))
       ->capture_default_str();
   run->add_option("--out,-o", o->out, "output directory (default runs/default for sand, runs/<study> otherwise)")
       ->check(output_directory());

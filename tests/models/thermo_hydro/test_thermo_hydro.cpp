@@ -87,7 +87,7 @@ TEST_CASE("hcthm: at T = T0, s = 0 and no T or s rate it is Masin's (2005) law t
   }
 }
 
-TEST_CASE("hcthm: isotropic compression on the NCL follows lambda*(s, T), and f_d^SBS there is 2^alpha",
+TEST_CASE("hcthm: on the NCL compression follows lambda*(s, T), unloading kappa*, and f_d^SBS there is 2^alpha",
           "[models][thermo_hydro]") {
   // on the isotropic NCL p_e = p, f_d = 2^alpha = f_d^SBS (6.49 with A = f_s L + T x 1 / lambda*,
   // ERRATA 13's sign; the seed's minus gives 2.95 at Soil 1's state): d ln(1+e) = -lambda*(s,T) d ln p
@@ -101,6 +101,10 @@ TEST_CASE("hcthm: isotropic compression on the NCL follows lambda*(s, T), and f_
                                                                  {T_K, s}, {0.0, 0.0}, c);
     const double dlnp = -r.net_stress.trace() / 3.0 / p;
     CHECK(D.trace() / dlnp == Approx(-line.lambda).epsilon(1e-12));
+    // unloading from the NCL: kappa* at every (T, s), because alpha (6.36) takes lambda*(s, T)
+    const auto u = models::ThermoHydroClayLaw::rate<Ops, double>((-p + chi * s) * Tensor::Identity(), e, -D,
+                                                                 {T_K, s}, {0.0, 0.0}, c);
+    CHECK(-D.trace() / (-u.net_stress.trace() / 3.0 / p) == Approx(-c.base.p.kappa_star).epsilon(1e-12));
     const auto parts = models::masin_clay_parts<Ops, double>(-p * Tensor::Identity(), e, line.lambda, line.N, c.base);
     CHECK(models::state_boundary_pyknotropy<Ops, double>(-p * Tensor::Identity(), parts, line.lambda) ==
           Approx(std::pow(2.0, parts.alpha)).epsilon(1e-12));
