@@ -110,21 +110,51 @@ def build_scene():
              "insertion region; lower specimen.solid_fraction_estimate or particles)" % (len(grains), P["n_particles"]))
 
 
+WET = P.get("capillary") is not None
+
+
 def engines():
     # Hertz-Mindlin with restitution damping and a rolling-resistance moment capped at
-    # eta * R_mean * F_n (dem-scripts/yade/README.md: the mapping from LIGGGHTS's cdt model).
-    return [
+    # eta * R_mean * F_n (dem-scripts/yade/README.md: the mapping from LIGGGHTS's cdt model). Wet
+    # scenes add pendular liquid bridges at the scene's suction between grains (not facets):
+    # Law2_ScGeom_CapillaryPhys_Capillarity over the same contacts, which then outlive contact
+    # (neverErase) until their bridge breaks; it reads the tables M(r=...) the runner writes.
+    ip2 = Ip2_FrictMat_FrictMat_MindlinCapillaryPhys if WET else Ip2_FrictMat_FrictMat_MindlinPhys
+    out = [
         ForceResetter(),
         InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()], allowBiggerThanPeriod=True,
                               verletDist=P["skin"], label="collider"),
         InteractionLoop(
             [Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()],
-            [Ip2_FrictMat_FrictMat_MindlinPhys(en=P["restitution"], es=P["restitution"],
-                                               krot=P["rolling"]["krot"], eta=P["rolling"]["eta"])],
-            [Law2_ScGeom_MindlinPhys_Mindlin(includeMoment=P["rolling"]["eta"] > 0)]),
+            [ip2(en=P["restitution"], es=P["restitution"], krot=P["rolling"]["krot"], eta=P["rolling"]["eta"])],
+            [Law2_ScGeom_MindlinPhys_Mindlin(includeMoment=P["rolling"]["eta"] > 0, neverErase=WET)]),
+    ]
+    if WET:
+        out.append(Law2_ScGeom_CapillaryPhys_Capillarity(capillaryPressure=P["capillary"]["suction_Pa"],
+                                                         surfaceTension=P["capillary"]["surface_tension_N_m"]))
+    return out + [
         PyRunner(iterPeriod=P["servo"]["every"], command="control()", label="controller"),
         NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.0),
     ]
+
+
+def report_liquid_bridges():
+    """How many liquid bridges the specimen holds, and how many across a gap (wet scenes)."""
+    if WET:
+        bridges = [i for i in O.interactions if i.isReal and i.phys.meniscus]
+        say("IWB_FACT liquid_bridges %d" % len(bridges))
+        say("IWB_FACT liquid_bridges_across_gaps %d" % sum(1 for i in bridges if i.geom.penetrationDepth < 0))
+
+
+def touching(c):
+    """A contact, not a liquid bridge across a gap (wet scenes keep those as interactions)."""
+    return c.isReal and (not WET or c.geom.penetrationDepth > 0)
+
+
+def capillary_force_on_2(c):
+    """The bridge's force on id2: fCap (and -fCap on id1; checked on two touching spheres, where the
+    pull on each is fCap's size less the Hertz push); 0 when dry."""
+    return c.phys.fCap if WET and c.isReal and c.phys.meniscus else Vector3(0, 0, 0)
 
 
 # --- measurements -----------------------------------------------------------------------------
@@ -161,7 +191,7 @@ def stiffness_on(ids):
     s = 0.0
     for i in ids:
         for c in O.interactions.withBody(i):
-            if c.isReal:
+            if touching(c):
                 s += c.phys.kn
     return s
 
@@ -296,6 +326,7 @@ def consolidate():
         if good >= P["windows_required"]:
             O.save("consolidated.yade.gz")
             report_cost()
+            report_liquid_bridges()
             say("IWB_STAGE_DONE consolidate zplate_m %.10g sigma_Pa %.8g" % (zp, s))
             return
         zprev = zp
@@ -316,7 +347,7 @@ def set_friction(mu):
 
 def coordination(grain_set):
     # Grain-grain contacts per grain (LIGGGHTS's contact/atom averaged).
-    n = sum(1 for c in O.interactions if c.isReal and c.id1 in grain_set and c.id2 in grain_set)
+    n = sum(1 for c in O.interactions if touching(c) and c.id1 in grain_set and c.id2 in grain_set)
     return 2.0 * n / max(1, len(grain_set))
 
 
@@ -416,7 +447,8 @@ def export_snapshot(vtk):
         for i in O.interactions:
             if not i.isReal:
                 continue
-            f2 = i.phys.normalForce + i.phys.shearForce  # YADE's law adds it to id2 and its negative to id1
+            # YADE's law adds it to id2 and its negative to id1; a liquid bridge pulls as well
+            f2 = i.phys.normalForce + i.phys.shearForce + capillary_force_on_2(i)
             c = i.geom.contactPoint
             if i.id1 in boundary or i.id2 in boundary:
                 grain, f = (i.id2, f2) if i.id1 in boundary else (i.id1, -f2)
@@ -487,6 +519,7 @@ def shear():
             say("IWB_PROGRESS %.9g %.9g" % (sh["velocity"] * t if sh["cyclic"] else wall_displacement(t), sh["u_total"]))
     ux = O.bodies[IDS["wall"][0]].state.pos[0] - REF["wall_x"]
     report_cost()
+    report_liquid_bridges()
     say("IWB_STAGE_DONE shear ux_m %.9g" % ux)
 
 

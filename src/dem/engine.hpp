@@ -57,6 +57,8 @@ class Engine {
   // consolidated specimen that runs differing only in the shear stage share
   // (dem/consolidation_cache.hpp).
   virtual std::string consolidation_inputs(const Scene& scene) const = 0;
+  // What of `scene` this engine cannot model (LIGGGHTS: liquid bridges); empty when it can all.
+  virtual std::string unsupported(const Scene& /*scene*/) const { return {}; }
 };
 
 // The stage that prepares the specimen (generate, settle, consolidate) in both engines.

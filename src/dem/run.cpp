@@ -172,6 +172,8 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
 
 RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine,
                      const RunOptions& opt) {
+  if (const auto why = engine.unsupported(scene); !why.empty())
+    throw InputError(fmt::format("{}: {} (engine {})", scene.source, why, engine.name()));
   RunOutcome out;
   const auto run = run_stages(scene, text, engine, opt, fresh_manifest(scene, text, engine, opt), out);
   if (!run) return out;

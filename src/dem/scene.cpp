@@ -21,6 +21,8 @@ constexpr double kMinBoxLengthInDmax = 10.0;    // DEM.md: box length at least 1
 constexpr double kMinWidthInDmax = 3.0;         // periodic images must not touch
 constexpr double kRecommendedHeightInD50 = 20.0;  // DEM.md: ~7 d50 gives no band
 constexpr double kMinFreeHeightInD50 = 5.0;       // below the plate's clamp: a band is 5-10 d50
+constexpr double kMaxSuctionKPa = 1e4;
+constexpr double kMaxCapillaryNumber = 600.0;     // u* of the capillary tables (dem-scripts/yade/capillary)
 constexpr double kDefaultDtFraction = 0.15;  // of the Rayleigh time: the usual DEM choice
 constexpr double kMaxDtFraction = 0.5;       // beyond this Hertz contacts lose energy balance
 
@@ -96,6 +98,15 @@ Particles read_particles(io::TableReader t) {
   require(p.rolling_model == "cdt" || p.rolling_model == "epsd2",
           fmt::format("{} = \"{}\"; allowed \"cdt\" or \"epsd2\"", t.where("rolling_model"), p.rolling_model));
   p.restitution = t.optional_number_in("restitution", closed(0.0, 1.0)).value_or(0.5);
+  p.suction_Pa = t.optional_number_in("suction_kPa", non_negative(kMaxSuctionKPa)).value_or(0.0) * 1e3;
+  p.surface_tension_N_m = t.optional_number_in("surface_tension_N_m", {0.0, 1.0, true, false}).value_or(0.0728);
+  // the capillary files (dem-scripts/yade/capillary) tabulate u* = s R / gamma up to 600 for the
+  // largest grain radius of a pair
+  const double u_max = p.suction_Pa * 0.5 * p.d_max() / p.surface_tension_N_m;
+  require(u_max <= kMaxCapillaryNumber,
+          fmt::format("{} = {:g} gives s R_max / gamma = {:.4g} for the largest grains; the capillary tables reach {:g} "
+                      "(at most {:.3g} kPa here)", t.where("suction_kPa"), p.suction_Pa / 1e3, u_max, kMaxCapillaryNumber,
+                      kMaxCapillaryNumber * p.surface_tension_N_m / (0.5 * p.d_max()) / 1e3));
   t.finish();
   return p;
 }
@@ -453,6 +464,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
                      {"density_kg_m3", rho}, {"youngs_modulus_Pa", s.particles.youngs_modulus_Pa},
                      {"poisson", s.particles.poisson}, {"friction", s.particles.friction},
                      {"rolling_friction", s.particles.rolling_friction}, {"rolling_model", s.particles.rolling_model},
+                     {"suction_kPa", s.particles.suction_Pa / 1e3}, {"surface_tension_N_m", s.particles.surface_tension_N_m},
                      {"restitution", s.particles.restitution}, {"count_requested", s.particle_count}}},
       {"specimen", {{"length_mm", s.length_m / kMm}, {"width_mm", s.width_m / kMm},
                     {"height_mm", s.height_m / kMm}, {"consolidation_friction", consolidation_friction}}},

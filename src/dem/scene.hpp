@@ -31,6 +31,12 @@ struct Particles {
   // capped at the same torque). YADE's law is elastic-plastic either way (dem-scripts/README.md).
   std::string rolling_model = "cdt";
   double restitution;
+  // Liquid bridges (issue 19; YADE only, Law2_ScGeom_CapillaryPhys_Capillarity): the matric
+  // suction every pendular bridge holds (Pa; 0: dry) and the liquid's surface tension (N/m).
+  double suction_Pa = 0.0;
+  double surface_tension_N_m = 0.0728;  // water at 20 deg C
+
+  bool wet() const { return suction_Pa > 0.0; }
 
   double d_max() const;
   double d_min() const;

@@ -217,3 +217,39 @@ TEST_CASE("LIGGGHTS: a clamp under the plate holds its grains while the wall she
 TEST_CASE("YADE: a clamp under the plate holds its grains while the wall shears the rest", "[dem][yade][heavy]") {
   clamp_holds("yade");
 }
+
+// Liquid bridges (issue 19): a wet scene runs in YADE with pendular bridges at its suction
+// (Law2_ScGeom_CapillaryPhys_Capillarity reads the capillary tables the runner writes; without
+// them it runs dry with a warning only, so a bridge count of 0 is the failure this catches), and
+// LIGGGHTS, which has no such law, refuses it before anything is written.
+TEST_CASE("YADE: a wet scene holds liquid bridges between most touching grains", "[dem][yade]") {
+  const std::string text = replaced(io::read_file("data/scenes/smoke.toml"), "restitution = 0.5",
+                                    "restitution = 0.5\nsuction_kPa = 10");
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "yade" / "wet";
+  const auto engine = dem::make_engine("yade");
+  REQUIRE(dem::run_scene(dem::parse_scene(text, "wet.toml"), text, *engine, options(dir, false)).complete());
+  const auto manifest = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
+  const auto& consolidated = manifest["stages"]["consolidate"]["facts"];
+  // a 400-grain specimen at 50 kPa has ~1300 contacts (coordination ~6): bridges on most of them
+  CHECK(consolidated["liquid_bridges"].get<double>() > 0.5 * 400 * 6 / 2);
+  CHECK(manifest["stages"]["shear"]["facts"]["liquid_bridges"].get<double>() > 0.0);
+}
+
+TEST_CASE("LIGGGHTS: a wet scene is refused, naming the key and the engine that can run it", "[dem][liggghts]") {
+  const std::string text = replaced(io::read_file("data/scenes/smoke.toml"), "restitution = 0.5",
+                                    "restitution = 0.5\nsuction_kPa = 10");
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "liggghts" / "wet";
+  fs::remove_all(dir);
+  const auto engine = dem::make_engine("liggghts");
+  CHECK_THROWS_WITH(dem::run_scene(dem::parse_scene(text, "wet.toml"), text, *engine, options(dir, false)),
+                    Catch::Contains("suction_kPa") && Catch::Contains("--engine yade"));
+  CHECK_FALSE(fs::exists(dir));
+}
+
+TEST_CASE("a suction beyond the capillary tables is refused, naming the largest it allows", "[dem]") {
+  const std::string text = replaced(io::read_file("data/scenes/smoke.toml"), "restitution = 0.5",
+                                    "restitution = 0.5\nsuction_kPa = 100");
+  // u* = s R_max / gamma = 1e5 x 1.2e-3 / 0.0728 = 1648 > 600: at most 600 x 0.0728 / 1.2e-3 = 36.4 kPa
+  CHECK_THROWS_WITH(dem::parse_scene(text, "wet.toml"), Catch::Contains("key 'particles.suction_kPa' = 100") &&
+                                                            Catch::Contains("at most 36.4 kPa"));
+}

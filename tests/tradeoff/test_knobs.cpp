@@ -65,6 +65,18 @@ TEST_CASE(
   CHECK(small.particle_count == base.particle_count / 2);
 }
 
+TEST_CASE("tradeoff knobs: the plate's clamp scales with the height, so a halved truth keeps its free share",
+          "[tradeoff]") {
+  const std::string text = io::read_file("data/scenes/truth.toml");
+  const auto base = dem::parse_scene(text, "truth.toml");
+  REQUIRE(base.plate_clamp_m > 0.0);
+  for (double f : {0.5, 2.0}) {
+    const auto v = variant(text, "box", f);
+    CHECK(v.plate_clamp_m == Approx(f * base.plate_clamp_m));
+    CHECK(v.height_m == Approx(f * base.height_m));
+  }
+}
+
 TEST_CASE(
     "tradeoff variants: base seeds, each knob both ways, refined and coarsened, requirements left "
     "out",

@@ -8,11 +8,15 @@
 #   JOBS=2 data/calibration/truth_grains/make.sh run # two tests at once, one rank each
 #   data/calibration/truth_grains/make.sh calibrate  # fit vw3d to every committed test but the
 #                                                     # held-out design, predict that one
-#                                                     # -> data/params/truth_grains.toml
+#                                                     # -> data/params/$NAME.toml
+# NAME names the data set: truth_grains (default) are the grains with LIGGGHTS's cdt rolling
+# resistance, as truth.toml had them until epsd2 (their committed scenes/ pin that); with
+# NAME=truth_grains_epsd2 the same tests of truth.toml's grains as they are now (epsd2).
 set -euo pipefail
 IWB=${IWB:-build/iwb}
-WORK=${WORK:-runs/calibration/truth_grains}  # the full runs: not committed
-DEST=data/calibration/truth_grains
+NAME=${NAME:-truth_grains}
+WORK=${WORK:-runs/calibration/$NAME}  # the full runs: not committed
+DEST=data/calibration/$NAME
 SCENE=data/scenes/truth.toml
 JOBS=${JOBS:-2}
 SEEDS=(1 2 3)
@@ -45,15 +49,16 @@ calibrate_all() {
   done
   "$IWB" calibrate "${fit[@]}" --held-out "${held[@]}" --model vw3d -o "$DEST/truth_grains.toml" |
     tee "$DEST/calibrate.txt"
-  cp "$DEST/truth_grains.toml" data/params/truth_grains.toml
+  cp "$DEST/truth_grains.toml" "data/params/$NAME.toml"
 }
 
 seed_scene() { echo "$DEST/scenes/truth-seed$1.toml"; }  # the truth scene with another seed
 
-write_seed_scenes() {  # before the jobs start: parallel jobs only read them
-  mkdir -p "$DEST/scenes"
+write_seed_scenes() {  # before the jobs start: parallel jobs only read them; kept once written,
+  mkdir -p "$DEST/scenes"  # so that a data set's scenes stay what its tests ran
   for seed in "${SEEDS[@]}"; do
     local out; out=$(seed_scene "$seed")
+    [ -f "$out" ] && continue
     sed "s/^seed = .*/seed = $seed/" "$SCENE" > "$out.tmp" && mv "$out.tmp" "$out"
   done
 }

@@ -279,6 +279,13 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
   return r;
 }
 
+std::string LiggghtsEngine::unsupported(const Scene& s) const {
+  if (s.particles.wet())
+    return "[particles] suction_kPa: liquid bridges are modelled in YADE only (Law2_ScGeom_CapillaryPhys_Capillarity; "
+           "run with --engine yade)";
+  return {};
+}
+
 // consolidate.in as rendered and the meshes: the stage reads nothing else.
 std::string LiggghtsEngine::consolidation_inputs(const Scene& s) const {
   const Numerics n = derive(s);

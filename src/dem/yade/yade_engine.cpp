@@ -78,6 +78,15 @@ ProfileBlocks profile_blocks(const fs::path& raw, const Scene& s, const Numerics
   return blocks;
 }
 
+// The law reads "M(r=<ratio>)" from the working directory and runs dry, with a warning only, when
+// they are missing: they are written for every stage of a wet scene.
+void write_capillary_tables(const fs::path& dir) {
+  for (const auto& [name, text] : yade_capillary_tables()) {
+    const std::string ratio = name.substr(3, name.size() - 3 - 4);  // M_r<ratio>.txt
+    io::write_atomically(dir / ("M(r=" + ratio + ")"), text);
+  }
+}
+
 }  // namespace
 
 nlohmann::json yade_parameters(const Scene& s, const Numerics& n) {
@@ -89,7 +98,9 @@ nlohmann::json yade_parameters(const Scene& s, const Numerics& n) {
       {"dt", n.dt}, {"skin", n.skin}, {"plate_z", n.plate_z}, {"ins_zlo", n.ins_zlo}, {"ins_zhi", n.ins_zhi},
       {"sizes", sizes}, {"density", p.density_kg_m3}, {"E", p.youngs_modulus_Pa}, {"nu", p.poisson},
       {"restitution", p.restitution}, {"mu_consolidation", s.consolidation.friction}, {"mu_test", p.friction},
-      {"rolling", rolling(s)}, {"glued", glued_spheres(s)}, {"wall_stl", "wall.stl"}, {"plate_stl", "top.stl"},
+      {"rolling", rolling(s)}, {"glued", glued_spheres(s)},
+      {"capillary", p.wet() ? nlohmann::json{{"suction_Pa", p.suction_Pa}, {"surface_tension_N_m", p.surface_tension_N_m}}
+                            : nlohmann::json(nullptr)}, {"wall_stl", "wall.stl"}, {"plate_stl", "top.stl"},
       {"n_particles", s.particle_count}, {"seed", s.seed},
       {"settle_steps", n.settle_steps}, {"window_steps", s.consolidation.window_steps},
       {"approach_windows", n.approach_windows}, {"approach_sigma", kApproachSigmaShare * s.boundary.sigma_n_Pa},
@@ -141,6 +152,7 @@ StageResult YadeEngine::run_stage(const std::string& stage, const StageContext& 
   params.update(extra_);
   io::write_atomically(ctx.work_dir / "yade_params.json", params.dump(2) + "\n");
   io::write_atomically(ctx.work_dir / kScript, yade_scripts().at(kScript));
+  if (s.particles.wet()) write_capillary_tables(ctx.work_dir);
   const double generation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   StageResult r = run_followed_stage(command(stage, ctx.processes), stage, ctx);
   r.facts["generation_seconds"] = generation;

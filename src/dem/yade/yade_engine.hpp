@@ -41,5 +41,8 @@ nlohmann::json yade_parameters(const Scene& scene, const Numerics& numerics);
 
 // The runner script as shipped in dem-scripts/yade/ (embedded at build time).
 const std::map<std::string, std::string>& yade_scripts();
+// The capillary tables of Law2_ScGeom_CapillaryPhys_Capillarity, M_r<ratio>.txt of
+// dem-scripts/yade/capillary (Debian ships none; README.md there says how they were made).
+const std::map<std::string, std::string>& yade_capillary_tables();
 
 }  // namespace iwb::dem
