@@ -5,7 +5,9 @@
 #   file = R ratio, n_D, then per distance D* (=D/R2, increasing, first 0) a block "n 0 0 0 0 0 0 0"
 #   followed by n rows [D*, u*, V*, F*, delta1, delta2, nn11, nn33], u* (= suction R2/gamma) increasing;
 #   only the u* for which a stable bridge exists at that D* are listed (absent -> V = 0 -> rupture).
-# Usage: /usr/bin/python3 21_make_capillary_files.py OUTDIR [r ...]
+# Usage: /usr/bin/python3 make_capillary_tables.py OUTDIR FINE_UP_TO [r ...]
+#   ratios up to FINE_UP_TO get the fine resolution (37 u* up to 600, dz 1e-5: ~8 min a table), the
+#   others a coarse one (15 u* up to 400, dz 4e-5: ~30 s). The shipped tables: FINE_UP_TO 1.25.
 import sys, time, math, numpy
 from math import sin, cos, tan, pi, radians, sqrt
 src = open('/usr/share/doc/yade/examples/capillaryLaplaceYoung/solveLiqBridge.py').read()
@@ -14,7 +16,8 @@ exec(compile(src, 'solveLiqBridge.py', 'exec'), G)
 solve = G['solveLiqBridge']
 THETA = 0.0
 outdir = sys.argv[1]
-rlist = [float(x) for x in sys.argv[2:]] or [1, 1.1, 1.25, 1.5, 1.75, 2, 3, 4, 5, 10]
+fine_up_to = float(sys.argv[2])
+rlist = [float(x) for x in sys.argv[3:]] or [1, 1.1, 1.25, 1.5, 1.75, 2, 3, 4, 5, 10]
 
 def bridges(r, u, d1s, dz):
     """Stable physical bridges at (r, u*): rows [D, u, V, F, d1, d2, nn11, nn33] (solveLaplace_uc.py)."""
@@ -50,7 +53,7 @@ def interp_at(dist, data_uc):
 
 for r in rlist:
     t0 = time.time()
-    fine = r <= 1.5
+    fine = r <= fine_up_to
     dz = 1e-5 if fine else 4e-5
     dd1 = 0.3 if fine else 1.0
     n_uc = 36 if fine else 14
