@@ -22,7 +22,7 @@ constexpr double kMinWidthInDmax = 3.0;         // periodic images must not touc
 constexpr double kRecommendedHeightInD50 = 20.0;  // DEM.md: ~7 d50 gives no band
 constexpr double kMinFreeHeightInD50 = 5.0;       // below the plate's clamp: a band is 5-10 d50
 constexpr double kMaxSuctionKPa = 1e4;
-constexpr double kMaxCapillaryNumber = 600.0;     // u* of the capillary tables (dem-scripts/yade/capillary)
+constexpr double kMaxCapillaryNumber = 400.0;     // u* of every capillary table (dem-scripts/yade/capillary)
 constexpr double kDefaultDtFraction = 0.15;  // of the Rayleigh time: the usual DEM choice
 constexpr double kMaxDtFraction = 0.5;       // beyond this Hertz contacts lose energy balance
 
@@ -100,8 +100,8 @@ Particles read_particles(io::TableReader t) {
   p.restitution = t.optional_number_in("restitution", closed(0.0, 1.0)).value_or(0.5);
   p.suction_Pa = t.optional_number_in("suction_kPa", non_negative(kMaxSuctionKPa)).value_or(0.0) * 1e3;
   p.surface_tension_N_m = t.optional_number_in("surface_tension_N_m", {0.0, 1.0, true, false}).value_or(0.0728);
-  // the capillary files (dem-scripts/yade/capillary) tabulate u* = s R / gamma up to 600 for the
-  // largest grain radius of a pair
+  // the capillary tables (dem-scripts/yade/capillary) reach u* = s R / gamma = 400 (600 for the
+  // radius ratios up to 1.25), for the largest grain radius of a pair
   const double u_max = p.suction_Pa * 0.5 * p.d_max() / p.surface_tension_N_m;
   require(u_max <= kMaxCapillaryNumber,
           fmt::format("{} = {:g} gives s R_max / gamma = {:.4g} for the largest grains; the capillary tables reach {:g} "
