@@ -31,7 +31,9 @@ ModelDeclaration masin_clay_declaration(const std::vector<std::string>& stress_c
   d.initial[2].doc = "overconsolidation ratio at the start: p_e over its value on the state boundary surface "
                      "at the initial stress (6.49; 1: normally consolidated), which sets e0";
   d.example_parameters = "table_6_5_soil_1.toml";
-  d.example_start = {{"sigma_n_kPa", 300.0}, {"e0", 0.5}};  // Table 6.5, Soil 1
+  // Table 6.5, Soil 1, at a start inside its state boundary surface (the table's e0 0.5 at 300 kPa lies
+  // outside: src/models/thermo_hydro/README.md)
+  d.example_start = {{"sigma_n_kPa", 300.0}, {"e0", 0.44}};
   return d;
 }
 

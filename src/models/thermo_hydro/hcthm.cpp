@@ -50,7 +50,7 @@ ModelDeclaration thermo_hydro_declaration(const std::vector<std::string>& stress
                    {"chi", "-", "Khalili's effective stress factor (6.31)"},
                    {"f_d_over_f_dSBS", "-", "f_d / f_d^SBS: 1 on the state boundary surface (6.49)",
                     DiagnosticRole::kOverconsolidation}};
-  d.example_start = {{"sigma_n_kPa", 300.0}, {"e0", 0.5}, {"T_K", 298.15}};
+  d.example_start = {{"sigma_n_kPa", 300.0}, {"e0", 0.44}, {"T_K", 298.15}};  // as hc's
   return d;
 }
 
