@@ -281,9 +281,11 @@ const ExternalKey kExternalKeys[] = {{models::External::kTemperature, "T_K", 0.0
 // (cycle about the value at the stage's start); `current` (state units) follows the path.
 driver::ExternalPath read_external_path(TableReader t, const ExternalKey& k, double& current, json& out) {
   driver::ExternalPath x;
+  // the range in the key's own unit (deg C for T_C), for the values and the messages alike
+  const Range in_unit{k.range->lower - k.offset, k.range->upper - k.offset, false, false};
   const std::string how = t.one_of({"to", "by", "amplitude"});
   if (how == "to") {
-    const double to = t.number_in("to", Range{k.range->lower - k.offset, k.range->upper - k.offset, false, false}) + k.offset;
+    const double to = t.number_in("to", in_unit) + k.offset;
     x = {driver::ExternalPath::Kind::kRamp, to - current};
     current = to;
     out[k.key] = {{"to", to - k.offset}};
@@ -291,7 +293,7 @@ driver::ExternalPath read_external_path(TableReader t, const ExternalKey& k, dou
     const double by = t.number_in("by", closed(-k.range->upper, k.range->upper));
     if (!k.range->admits(current + by))
       throw InputError(fmt::format("{} = {:g} takes {} to {:g}, outside {}", t.where("by"), by, k.key,
-                                   current + by - k.offset, k.range->text()));
+                                   current + by - k.offset, in_unit.text()));
     x = {driver::ExternalPath::Kind::kRamp, by};
     current += by;
     out[k.key] = {{"by", by}};
@@ -300,7 +302,7 @@ driver::ExternalPath read_external_path(TableReader t, const ExternalKey& k, dou
     const int cycles = t.count("cycles");
     if (cycles > kMaxStageCycles || !k.range->admits(current + a) || !k.range->admits(current - a))
       throw InputError(fmt::format("{}: {} cycles of +-{:g} about {:g}; allowed up to {} cycles within {}", t.where(),
-                                   cycles, a, current - k.offset, kMaxStageCycles, k.range->text()));
+                                   cycles, a, current - k.offset, kMaxStageCycles, in_unit.text()));
     x = {driver::ExternalPath::Kind::kCycle, 0.0, a, cycles};
     out[k.key] = {{"amplitude", a}, {"cycles", cycles}};
   }
