@@ -10,6 +10,7 @@ PACKAGES=(
   libeigen3-dev catch2 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev libssl-dev
   liggghts libliggghts-dev yade gnuplot-nox libnlopt-cxx-dev
   libboost-dev  # Boost.Math's quantile functions (Latin hypercube samples, src/assessment)
+  libtbb-dev    # the assessment's thousands of model runs on every core (src/assessment/evaluate.*)
   chromium  # the report test opens the HTML in headless Chromium
   libvtk9-dev  # VTK's legacy readers and XML writers (issue 21); beside YADE's python3-vtk9
   paraview     # the tests open the .pvd outputs in ParaView itself (pvpython, below)

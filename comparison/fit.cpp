@@ -57,39 +57,77 @@ Eigen::VectorXd fit_residuals(const DemRun& dem, const Replay& r, const FitTarge
   return Eigen::Map<Eigen::VectorXd>(res.data(), Eigen::Index(res.size()));
 }
 
+double value_of(const Variant& v, const models::FitParameter& what) {
+  switch (what.target) {
+    case models::FitParameter::Target::kRoughness: return v.inputs.roughness.kappa_r;
+    case models::FitParameter::Target::kShearZone: return v.d_s_mm;
+    case models::FitParameter::Target::kParameter: return v.inputs.tables.at(what.table).at(what.key);
+  }
+  return NAN;
+}
+
+void set_value(Variant& v, const models::FitParameter& what, double x) {
+  switch (what.target) {
+    case models::FitParameter::Target::kRoughness: v.inputs.roughness.kappa_r = x; return;
+    case models::FitParameter::Target::kShearZone: v.d_s_mm = x; return;
+    case models::FitParameter::Target::kParameter: v.inputs.tables[what.table][what.key] = x; return;
+  }
+}
+
+VariantFit fit_variant(const DemRun& dem, const Variant& start, const FitTargets& targets,
+                       const std::vector<Unknown>& unknowns) {
+  const int n = int(unknowns.size());
+  // the optimiser's coordinate of unknown k and back: ln x for a logarithmic one
+  const auto to_x = [&](int k, double v) { return unknowns[std::size_t(k)].what.logarithmic ? std::log(v) : v; };
+  const auto from_x = [&](int k, double x) { return unknowns[std::size_t(k)].what.logarithmic ? std::exp(x) : x; };
+  const auto variant_at = [&](const Eigen::VectorXd& x) {
+    Variant v = start;
+    for (int k = 0; k < n; ++k) set_value(v, unknowns[std::size_t(k)].what, from_x(k, x(k)));
+    return v;
+  };
+  fitting::LeastSquaresProblem p;
+  p.residuals = [&](const Eigen::VectorXd& x) { return fit_residuals(dem, replay(dem, variant_at(x)), targets); };
+  p.lower.resize(n), p.upper.resize(n), p.start.resize(n), p.difference_step.resize(n);
+  for (int k = 0; k < n; ++k) {
+    const auto& u = unknowns[std::size_t(k)];
+    p.lower(k) = to_x(k, u.lower), p.upper(k) = to_x(k, u.upper);
+    p.start(k) = std::clamp(to_x(k, value_of(start, u.what)), p.lower(k), p.upper(k));
+    p.difference_step(k) = u.what.logarithmic ? 1e-4 : 1e-4 * std::max(std::abs(p.start(k)), 0.1);
+  }
+  const auto r = fitting::fit_least_squares(p);
+  VariantFit out{variant_at(r.x), {}, r.rmse, r.evaluations, r.stop_reason};
+  for (int k = 0; k < n; ++k) {
+    const double v = from_x(k, r.x(k)), width = p.upper(k) - p.lower(k);
+    const double sigma = unknowns[std::size_t(k)].what.logarithmic ? v * r.sigma(k) : r.sigma(k);
+    const bool at_bound = std::abs(r.x(k) - p.lower(k)) < kAtBound * width || std::abs(r.x(k) - p.upper(k)) < kAtBound * width;
+    out.values.push_back({unknowns[std::size_t(k)].what.name, v, sigma, at_bound});
+  }
+  return out;
+}
+
 FitResult fit_kappa_and_ds(const DemRun& dem, const Variant& start, const FitTargets& targets,
                            const FitBounds& b) {
   // A degenerate kappa_r box (a model that reads no wall roughness) fixes kappa_r at its bound and
   // fits d_s alone: its uncertainty is not invented.
   const bool kappa_fitted = b.kappa_max > b.kappa_min;
-  const int n = kappa_fitted ? 2 : 1, ds = n - 1;  // the unknowns: (kappa_r,) ln d_s
-  fitting::LeastSquaresProblem p;
-  p.residuals = [&](const Eigen::VectorXd& x) {
-    Variant v = start;
-    v.inputs.roughness.kappa_r = kappa_fitted ? x(0) : b.kappa_min;
-    v.d_s_mm = std::exp(x(ds));
-    return fit_residuals(dem, replay(dem, v), targets);
-  };
-  p.lower.resize(n), p.upper.resize(n), p.start.resize(n), p.difference_step.resize(n);
-  if (kappa_fitted) {
-    p.lower(0) = b.kappa_min, p.upper(0) = b.kappa_max, p.start(0) = start.inputs.roughness.kappa_r;
-    p.difference_step(0) = 1e-4 * std::max(start.inputs.roughness.kappa_r, 0.1);
-  }
-  p.lower(ds) = std::log(b.d_s_min_d50 * dem.d50_mm), p.upper(ds) = std::log(b.d_s_max_d50 * dem.d50_mm);
-  p.start(ds) = std::log(start.d_s_mm), p.difference_step(ds) = 1e-4;
-  const auto r = fitting::fit_least_squares(p);
+  using Target = models::FitParameter::Target;
+  std::vector<Unknown> unknowns;
+  if (kappa_fitted) unknowns.push_back({{"kappa_r", Target::kRoughness}, b.kappa_min, b.kappa_max});
+  unknowns.push_back({{"d_s", Target::kShearZone, {}, {}, 0.0, 0.0, false, true}, b.d_s_min_d50 * dem.d50_mm,
+                      b.d_s_max_d50 * dem.d50_mm});
+  Variant from = start;
+  if (!kappa_fitted) from.inputs.roughness.kappa_r = b.kappa_min;
+  const auto r = fit_variant(dem, from, targets, unknowns);
   FitResult out;
-  out.kappa_r = kappa_fitted ? r.x(0) : b.kappa_min;
   out.kappa_fitted = kappa_fitted;
-  out.sigma_kappa_r = kappa_fitted ? r.sigma(0) : 0.0;
-  out.d_s_mm = std::exp(r.x(ds));
-  out.sigma_d_s_mm = out.d_s_mm * r.sigma(ds);
-  out.rms_scaled = r.rmse;
+  out.kappa_r = r.best.inputs.roughness.kappa_r;
+  out.sigma_kappa_r = kappa_fitted ? r.values.front().sigma : 0.0;
+  out.d_s_mm = r.values.back().value;
+  out.sigma_d_s_mm = r.values.back().sigma;
+  out.rms_scaled = r.rms_scaled;
   out.evaluations = r.evaluations;
-  for (int k = 0; k < n; ++k)
-    if (std::abs(r.x(k) - p.lower(k)) < kAtBound * (p.upper(k) - p.lower(k)) ||
-        std::abs(r.x(k) - p.upper(k)) < kAtBound * (p.upper(k) - p.lower(k)))
-      out.at_bound.push_back(k == ds ? "d_s" : "kappa_r");
+  for (const auto& v : r.values)
+    if (v.at_bound) out.at_bound.push_back(v.name);
   out.algorithm = fmt::format("NLopt LN_BOBYQA on {}; residuals: {}",
                               kappa_fitted ? "(kappa_r, ln d_s)" : fmt::format("ln d_s (kappa_r fixed at {:g})", b.kappa_min),
                               targets.weighting);

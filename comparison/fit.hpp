@@ -47,6 +47,37 @@ struct FitResult {
   std::string stop_reason;
 };
 
+// One unknown of a general fit: kappa_r, d_s or a material parameter (where in a Variant:
+// models::FitParameter's target, table and key), with its box in the parameter's own units (d_s
+// in mm) and its start taken from the variant.
+struct Unknown {
+  models::FitParameter what;
+  double lower = 0.0, upper = 0.0;
+};
+
+struct FittedValue {
+  std::string name;
+  double value = 0.0, sigma = 0.0;  // one standard deviation (Gauss-Newton)
+  bool at_bound = false;
+};
+
+struct VariantFit {
+  Variant best;                      // the start with every fitted value set
+  std::vector<FittedValue> values;   // in the order of the unknowns
+  double rms_scaled = 0.0;
+  int evaluations = 0;
+  std::string stop_reason;
+};
+
+// The value an unknown takes in `v`, and `v` with it set to `x`.
+double value_of(const Variant& v, const models::FitParameter& what);
+void set_value(Variant& v, const models::FitParameter& what, double x);
+
+// Least squares of `targets` over every unknown (NLopt's BOBYQA within the boxes, logarithmic
+// ones as ln x), from the values in `start`; the Gauss-Newton sigmas at the optimum.
+VariantFit fit_variant(const DemRun& dem, const Variant& start, const FitTargets& targets,
+                       const std::vector<Unknown>& unknowns);
+
 // `start` gives the model, its parameters and the starting kappa_r and d_s.
 FitResult fit_kappa_and_ds(const DemRun& dem, const Variant& start, const FitTargets& targets,
                            const FitBounds& bounds = {});

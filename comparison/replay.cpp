@@ -29,11 +29,14 @@ Replay replay(const DemRun& dem, const Variant& v, const driver::RunSettings& se
   const auto& spec = models::find_model(v.model);
   models::ModelInputs in = v.inputs;
   in.shear_zone_mm = v.d_s_mm;  // a model with stiffness per displacement scales by it (hyperbolic)
-  const auto model = spec.make(in);
-  // from the DEM's first state: its sigma_n, the void ratio of its wall band
-  const auto init = models::offer(spec, v.inputs, {{"sigma_n_kPa", dem.sigma_n_kPa.front()}, {"e0", out.e0}});
+  std::unique_ptr<models::Model> model;
   models::StateVector s0;
   try {
+    // a fit of material parameters may try a set the model refuses (Mohr-Coulomb's psi above phi):
+    // a miss like an inadmissible start
+    model = spec.make(in);
+    // from the DEM's first state: its sigma_n, the void ratio of its wall band
+    const auto init = models::offer(spec, v.inputs, {{"sigma_n_kPa", dem.sigma_n_kPa.front()}, {"e0", out.e0}});
     s0 = model->initial_state(init);
   } catch (const InputError& e) {
     // the DEM's start lies outside this variant's domain (a clay model's critical state cone

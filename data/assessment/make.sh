@@ -24,7 +24,7 @@ for cov in 0.05 0.1; do
   done
 done
 # Parameter uncertainty (Table 4.8, Tables A.1-A.2): CV_Y from 10 000 Latin hypercube samples, CNL
-"$IWB" assess mc data/params/table_4_3_mohr_coulomb.toml --uncertainty "$DEST/distributions/mc.toml" --gamma 0.1 \
+"$IWB" assess mc data/params/table_4_3_mohr_coulomb.toml --uncertainty "$DEST/distributions/mohr_coulomb.toml" --gamma 0.1 \
   --samples 10000 -o "$DEST/uncertainty/mc_CNL" > /dev/null
 "$IWB" assess hyperbolic data/params/table_4_4_hyperbolic.toml --uncertainty "$DEST/distributions/hyperbolic.toml" \
   --gamma 2 --samples 10000 -o "$DEST/uncertainty/hyperbolic_CNL" > /dev/null

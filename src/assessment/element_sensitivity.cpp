@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "assessment/evaluate.hpp"
 #include "driver/element_test.hpp"
 #include "common/errors.hpp"
 #include "driver/path.hpp"
@@ -76,12 +77,8 @@ SobolResult element_sensitivity(const models::ModelSpec& spec, const ElementSens
   const auto where = locations(spec, o.inputs);
   const auto params = varied_parameters(spec, o.inputs, o.cov, o.cov_of);
   const long total = long(o.samples) * long(params.size() + 2);
-  long done = 0;
-  const Quantities f = [&](const std::vector<double>& x) {
-    auto q = run_once(spec, o, where, x);
-    if (o.progress) o.progress(++done, total);
-    return q;
-  };
+  const Quantities f = with_progress([&](const std::vector<double>& x) { return run_once(spec, o, where, x); }, total,
+                                     o.progress);
   return total_sobol_indices(params, kQuantityNames, f, o.samples, o.seed);
 }
 
@@ -95,12 +92,8 @@ UncertaintyResult element_uncertainty(const models::ModelSpec& spec, const Eleme
     if (!found) throw InputError(fmt::format("{} has no parameter '{}' to distribute", spec.name, d.name));
     where.emplace_back(found->name, d.name);
   }
-  long done = 0;
-  const Quantities f = [&](const std::vector<double>& x) {
-    auto q = run_once(spec, o, where, x);
-    if (o.progress) o.progress(++done, o.samples);
-    return q;
-  };
+  const Quantities f = with_progress([&](const std::vector<double>& x) { return run_once(spec, o, where, x); },
+                                     o.samples, o.progress);
   return parameter_uncertainty(distributions, kQuantityNames, f, o.samples, o.seed);
 }
 

@@ -1,5 +1,7 @@
 #include "assessment/sobol.hpp"
 
+#include "assessment/evaluate.hpp"
+
 #include <algorithm>
 #include <boost/math/distributions/lognormal.hpp>
 #include <boost/math/distributions/normal.hpp>
@@ -68,7 +70,7 @@ double jansen(const std::vector<double>& ya, const std::vector<double>& yb, cons
 }  // namespace
 
 SobolResult total_sobol_indices(const std::vector<Distribution>& p, const std::vector<std::string>& quantities,
-                                const Quantities& f, int n, unsigned seed, int bootstrap) {
+                                const Quantities& f, int n, unsigned seed, int bootstrap, int threads) {
   if (n < 2 || p.empty()) throw std::invalid_argument("Sobol indices need at least 2 samples and 1 parameter");
   std::mt19937_64 rng(seed);
   const Matrix A = sample_matrix(p, n, rng), B = sample_matrix(p, n, rng);
@@ -77,18 +79,22 @@ SobolResult total_sobol_indices(const std::vector<Distribution>& p, const std::v
   std::vector<Matrix> y(k + 2, Matrix(m, std::vector<double>(std::size_t(n))));
   SobolResult out{{}, quantities, {}, n, 0, 0};
   for (const auto& d : p) out.parameters.push_back(d.name);
-  std::vector<bool> ok(std::size_t(n), true);
+  std::vector<std::vector<double>> x;  // every run's parameters: A, B, then each A_B^i, row by row
   for (std::size_t which = 0; which < k + 2; ++which)
     for (int r = 0; r < n; ++r) {
-      std::vector<double> x = which == 1 ? B[std::size_t(r)] : A[std::size_t(r)];
-      if (which >= 2) x[which - 2] = B[std::size_t(r)][which - 2];
-      const auto q = f(x);
-      ++out.evaluations;
-      for (std::size_t j = 0; j < m; ++j) {
-        y[which][j][std::size_t(r)] = q.at(j);
-        if (!std::isfinite(q.at(j))) ok[std::size_t(r)] = false;
-      }
+      x.push_back(which == 1 ? B[std::size_t(r)] : A[std::size_t(r)]);
+      if (which >= 2) x.back()[which - 2] = B[std::size_t(r)][which - 2];
     }
+  const auto q = evaluate_rows(x, f, threads);
+  out.evaluations = long(q.size());
+  std::vector<bool> ok(std::size_t(n), true);
+  for (std::size_t which = 0; which < k + 2; ++which)
+    for (int r = 0; r < n; ++r)
+      for (std::size_t j = 0; j < m; ++j) {
+        const double v = q[which * std::size_t(n) + std::size_t(r)].at(j);
+        y[which][j][std::size_t(r)] = v;
+        if (!std::isfinite(v)) ok[std::size_t(r)] = false;
+      }
   std::vector<std::size_t> rows;
   for (int r = 0; r < n; ++r)
     if (ok[std::size_t(r)]) rows.push_back(std::size_t(r));

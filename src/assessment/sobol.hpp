@@ -34,10 +34,12 @@ struct SobolResult {
   long failed = 0;  // runs whose quantities were not finite: dropped row-wise
 };
 
-// f maps a parameter vector to the quantities of interest (NaN where a run fails).
+// f maps a parameter vector to the quantities of interest (NaN where a run fails). It is called
+// from several threads at once (evaluate.hpp); threads 0: every core.
 using Quantities = std::function<std::vector<double>(const std::vector<double>&)>;
 
 SobolResult total_sobol_indices(const std::vector<Distribution>& parameters, const std::vector<std::string>& quantities,
-                                const Quantities& f, int base_samples, unsigned seed, int bootstrap = 200);
+                                const Quantities& f, int base_samples, unsigned seed, int bootstrap = 200,
+                                int threads = 0);
 
 }  // namespace iwb::assessment

@@ -1,5 +1,7 @@
 #include "assessment/uncertainty.hpp"
 
+#include "assessment/evaluate.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -22,13 +24,11 @@ std::vector<std::vector<double>> latin_hypercube(const std::vector<Distribution>
   return x;
 }
 
-UncertaintyResult parameter_uncertainty(const std::vector<Distribution>& p, const std::vector<std::string>& names,
-                                        const Quantities& f, int n, unsigned seed) {
+UncertaintyResult summarize(const std::vector<std::string>& names, const std::vector<std::vector<double>>& outputs) {
   UncertaintyResult out;
-  out.samples = n;
+  out.samples = int(outputs.size());
   std::vector<std::vector<double>> values(names.size());
-  for (const auto& x : latin_hypercube(p, n, seed)) {
-    const auto q = f(x);
+  for (const auto& q : outputs) {
     if (!std::all_of(q.begin(), q.end(), [](double v) { return std::isfinite(v); })) {
       ++out.failed;
       continue;
@@ -45,6 +45,11 @@ UncertaintyResult parameter_uncertainty(const std::vector<Distribution>& p, cons
     out.quantities.push_back({names[j], mean, sd, std::abs(mean) > 0.0 ? sd / std::abs(mean) : NAN});
   }
   return out;
+}
+
+UncertaintyResult parameter_uncertainty(const std::vector<Distribution>& p, const std::vector<std::string>& names,
+                                        const Quantities& f, int n, unsigned seed, int threads) {
+  return summarize(names, evaluate_rows(latin_hypercube(p, n, seed), f, threads));
 }
 
 }  // namespace iwb::assessment

@@ -24,7 +24,11 @@ struct UncertaintyResult {
   long failed = 0;  // samples whose run failed (a quantity not finite): left out
 };
 
+// Mean, SD and CV of each quantity over the rows of `outputs` ([sample][quantity]) whose quantities
+// are all finite; the others are counted as failed.
+UncertaintyResult summarize(const std::vector<std::string>& quantities, const std::vector<std::vector<double>>& outputs);
+
 UncertaintyResult parameter_uncertainty(const std::vector<Distribution>& parameters, const std::vector<std::string>& quantities,
-                                        const Quantities& f, int samples, unsigned seed);
+                                        const Quantities& f, int samples, unsigned seed, int threads = 0);
 
 }  // namespace iwb::assessment

@@ -155,10 +155,15 @@ struct ModelDeclaration {
   StressPointUpdate update = StressPointUpdate::kRate;
   bool second_shear_direction = true;  // false: one shear direction (hp1d)
   std::string calibration_recipe;      // "herle-gudehus" (sand); empty: a joint fit over the boxes
+  // Its stiffnesses are per displacement and it reads d_s (ModelInputs::shear_zone_mm) to turn
+  // the element's strains back into displacements: its (u, tau, u_n) response does not depend on
+  // d_s, which a fit to interface runs therefore leaves alone (Clough & Duncan, Mortara).
+  bool displacement_based = false;
   std::string example_parameters;      // a file of data/params/: bench, stability, gold, tests
   std::map<std::string, double> example_start;  // {sigma_n_kPa: 100, e0: 0.8} for the bench
-  // `iwb plan` tries its candidates simplest first: 1, 2, ...; 0: not a candidate. Not the listing
-  // order, which keeps today's `iwb models` (vw3d first).
+  // The interface models for granular scenes that `iwb plan` and the league of `iwb assess
+  // --reference` consider, simplest first: 1, 2, ...; 0: not a candidate. Not the listing order,
+  // which keeps today's `iwb models` (vw3d first).
   int plan_rank = 0;
 };
 

@@ -17,7 +17,7 @@ ModelSpec ah_spec() {
           },
           with_plan_rank(hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(),
                                                  true, InPlaneStart::kIsotropic, 1),
-                         2)};
+                         4)};
 }
 
 }  // namespace iwb::models

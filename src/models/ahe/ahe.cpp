@@ -18,10 +18,15 @@ ModelSpec ahe_spec() {
           true,
           {&HypoplasticParameters::table()},
           [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); },
-          hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(), true,
-                                  InPlaneStart::kIsotropic, 2)};
+          with_plan_rank(hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(), true,
+                                                 InPlaneStart::kIsotropic, 2),
+                         5)};
 }
 
-ModelSpec ahe_igs_spec() { return with_intergranular_strain(ahe_spec(), build); }
+ModelSpec ahe_igs_spec() {
+  auto spec = with_intergranular_strain(ahe_spec(), build);
+  spec.declaration.plan_rank = 9;
+  return spec;
+}
 
 }  // namespace iwb::models

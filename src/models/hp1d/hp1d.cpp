@@ -16,7 +16,7 @@ ModelSpec hp1d_spec() {
                                     in);
           },
           with_plan_rank(hypoplastic_declaration(ShearPlaneKinematics::component_names(), true, InPlaneStart::kNone, 5),
-                         1)};
+                         3)};
 }
 
 }  // namespace iwb::models

@@ -20,13 +20,13 @@ ModelSpec hvwe_spec() {
           [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); },
           with_plan_rank(hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(),
                                                  true, InPlaneStart::kFreeK0, 3),
-                         3)};
+                         8)};
 }
 
-// On cyclic paths `iwb plan` tries it after hvwe (the ladder's last rung).
+// On cyclic paths `iwb plan` tries it last (intergranular strain matters where the path reverses).
 ModelSpec hvwe_igs_spec() {
   auto spec = with_intergranular_strain(hvwe_spec(), build);
-  spec.declaration.plan_rank = 4;
+  spec.declaration.plan_rank = 10;
   return spec;
 }
 

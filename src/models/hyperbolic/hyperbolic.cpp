@@ -23,11 +23,14 @@ namespace {
 const ParameterTable& hyperbolic_table() {
   static const ParameterTable t{
       "hyperbolic",
-      {{"K_I", "-", {0.0, true}, {kUnbounded, true}, "dimensionless stiffness number of the initial shear stiffness", "eq. 3.49"},
+      {{"K_I", "-", {0.0, true}, {kUnbounded, true}, "dimensionless stiffness number of the initial shear stiffness", "eq. 3.49",
+        ParameterRole::kMaterial, CalibrationBox{1e2, 1e6, true}},
        {"K_I_ur", "-", {0.0, true}, {kUnbounded, true}, "stiffness number of unloading and reloading (Duncan & Chang 1970)", "README"},
        {"n_HY", "-", {0.0, false}, {2.0, false}, "stiffness exponent", "eq. 3.49"},
-       {"R_f", "-", {0.0, true}, {1.0, false}, "failure ratio tau_f / tau_ult", "eq. 3.48"},
-       {"delta_deg", "deg", {0.0, true}, {90.0, true}, "interface friction angle", "eq. 3.50"},
+       {"R_f", "-", {0.0, true}, {1.0, false}, "failure ratio tau_f / tau_ult", "eq. 3.48", ParameterRole::kMaterial,
+        CalibrationBox{0.5, 1.0, false}},
+       {"delta_deg", "deg", {0.0, true}, {90.0, true}, "interface friction angle", "eq. 3.50", ParameterRole::kMaterial,
+        CalibrationBox{15.0, 50.0, false}},
        {"k_n_kPa_per_mm", "kPa/mm", {0.0, true}, {kUnbounded, true}, "normal stiffness (uncoupled, typically high)", "eq. 3.53"},
        {"p_a_kPa", "kPa", {0.0, true}, {kUnbounded, true}, "atmospheric pressure of eq. 3.49 (101.325)", "eq. 3.49"},
        {"gamma_w_kN_per_m3", "kN/m3", {0.0, true}, {kUnbounded, true}, "unit weight of water of eq. 3.49 (9.81)", "eq. 3.49"}}};
@@ -123,6 +126,8 @@ ModelSpec hyperbolic_spec() {
   d.diagnostics = {{"stress_level", "-", "||tau|| / (sigma_n tan delta): 1 at failure"},
                    {"K_s_kPa_per_mm", "kPa/mm", "loading tangent stiffness (eq. 3.52)"}};
   d.example_parameters = "table_4_4_hyperbolic.toml";
+  d.displacement_based = true;
+  d.plan_rank = 2;
   d.example_start = {{"sigma_n_kPa", 100.0}};
   return {"hyperbolic",
           "Clough & Duncan (1971) hyperbolic non-linear elastic interface, elastic unloading, no dilatancy",

@@ -28,15 +28,21 @@ namespace {
 const ParameterTable& lashkari_table() {
   static const ParameterTable t{
       "lashkari",
-      {{"K_s0_kPa", "kPa", {0.0, true}, {kUnbounded, true}, "shear stiffness per unit shear strain at p_ref", "eq. 3.86, Table 3.5 (kPa, not the printed MPa: README.md)"},
+      {{"K_s0_kPa", "kPa", {0.0, true}, {kUnbounded, true}, "shear stiffness per unit shear strain at p_ref", "eq. 3.86, Table 3.5 (kPa, not the printed MPa: README.md)",
+        ParameterRole::kMaterial, CalibrationBox{1e2, 1e6, true}},
        {"K_n0_kPa", "kPa", {0.0, true}, {kUnbounded, true}, "normal stiffness per unit normal strain at p_ref", "eq. 3.86, Table 3.5"},
-       {"A0", "-", {0.0, true}, {kUnbounded, true}, "dilatancy factor at the start (times sqrt(p_ref / sigma_n))", "eq. 3.95"},
+       {"A0", "-", {0.0, true}, {kUnbounded, true}, "dilatancy factor at the start (times sqrt(p_ref / sigma_n))", "eq. 3.95",
+        ParameterRole::kMaterial, CalibrationBox{0.3, 30.0, true}},
        {"A1", "-", {0.0, true}, {kUnbounded, true}, "dilatancy factor at the peak", "eq. 3.95"},
-       {"h0", "-", {0.0, true}, {kUnbounded, true}, "plastic hardening factor", "eq. 3.89"},
-       {"M", "-", {0.0, true}, {5.0, true}, "critical interface stress ratio tau / sigma_n", "eq. 3.89"},
-       {"e_c0", "-", {0.0, true}, {5.0, true}, "critical void ratio at p_ref (Table 3.5's 'initial void ratio': README.md)", "eq. 3.83"},
+       {"h0", "-", {0.0, true}, {kUnbounded, true}, "plastic hardening factor", "eq. 3.89", ParameterRole::kMaterial,
+        CalibrationBox{0.05, 5.0, true}},
+       {"M", "-", {0.0, true}, {5.0, true}, "critical interface stress ratio tau / sigma_n", "eq. 3.89", ParameterRole::kMaterial,
+        CalibrationBox{0.3, 1.2, false}},
+       {"e_c0", "-", {0.0, true}, {5.0, true}, "critical void ratio at p_ref (Table 3.5's 'initial void ratio': README.md)", "eq. 3.83",
+        ParameterRole::kMaterial, CalibrationBox{0.3, 1.5, false}},
        {"lambda", "-", {0.0, true}, {2.0, true}, "slope of the critical state line, e against ln sigma_n", "eq. 3.83"},
-       {"n_b", "-", {0.0, false}, {kUnbounded, true}, "state dependence of the bounding ratio M^b", "eq. 3.89"},
+       {"n_b", "-", {0.0, false}, {kUnbounded, true}, "state dependence of the bounding ratio M^b", "eq. 3.89", ParameterRole::kMaterial,
+        CalibrationBox{0.0, 4.0, false}},
        {"n_d", "-", {0.0, false}, {kUnbounded, true}, "state dependence of the dilatancy ratio M^d", "eq. 3.94"},
        {"p_ref_kPa", "kPa", {0.0, true}, {kUnbounded, true}, "reference stress (not printed by the seed: 100 kPa)", "eq. 3.83"}}};
   return t;
@@ -155,6 +161,7 @@ ModelSpec lashkari_spec() {
                    {"M_d", "-", "dilatancy stress ratio M exp(n_d psi) (eq. 3.94): no volume change"},
                    {"f_yield", "kPa", "||tau|| - eta sigma_n: 0 while loading", DiagnosticRole::kYieldFunction}};
   d.example_parameters = "table_4_7_lashkari.toml";
+  d.plan_rank = 6;
   d.example_start = {{"sigma_n_kPa", 100.0}, {"e0", 0.7}};
   return {"lashkari",
           "Lashkari (2013) state-parameter elasto-plastic sand-structure interface model (bounding and dilatancy ratios in psi)",

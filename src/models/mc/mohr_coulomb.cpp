@@ -22,10 +22,13 @@ constexpr double kDegree = M_PI / 180.0;
 const ParameterTable& mohr_coulomb_table() {
   static const ParameterTable t{
       "mohr_coulomb",
-      {{"E_kPa", "kPa", {0.0, true}, {kUnbounded, true}, "Young's modulus of the interface zone", "Table 3.1, eq. 3.37"},
+      {{"E_kPa", "kPa", {0.0, true}, {kUnbounded, true}, "Young's modulus of the interface zone", "Table 3.1, eq. 3.37",
+        ParameterRole::kMaterial, CalibrationBox{1e3, 1e6, true}},
        {"nu", "-", {0.0, false}, {0.5, true}, "Poisson's ratio", "Table 3.1, eq. 3.37"},
-       {"phi_i_deg", "deg", {0.0, true}, {90.0, true}, "interface friction angle", "eq. 3.38"},
-       {"psi_deg", "deg", {0.0, false}, {90.0, true}, "dilatancy angle, at most phi_i (non-associated flow)", "eq. 3.40"},
+       {"phi_i_deg", "deg", {0.0, true}, {90.0, true}, "interface friction angle", "eq. 3.38", ParameterRole::kMaterial,
+        CalibrationBox{15.0, 50.0, false}},
+       {"psi_deg", "deg", {0.0, false}, {90.0, true}, "dilatancy angle, at most phi_i (non-associated flow)", "eq. 3.40",
+        ParameterRole::kMaterial, CalibrationBox{0.0, 25.0, false}},
        {"c_kPa", "kPa", {0.0, false}, {kUnbounded, true}, "adhesion (cohesion) of the interface", "eq. 3.38"},
        {"tension_cutoff_kPa", "kPa", {0.0, false}, {kUnbounded, true},
         "largest tension sigma_n may carry (0: none); at most c / tan(phi_i), the apex", "issue 17"}}};
@@ -168,6 +171,7 @@ ModelSpec mc_spec() {
                    {"mobilised_friction", "-", "||tau|| / sigma_n"}};
   d.update = StressPointUpdate::kIncrement;
   d.example_parameters = "table_4_3_mohr_coulomb.toml";
+  d.plan_rank = 1;
   d.example_start = {{"sigma_n_kPa", 100.0}};
   return {"mc",
           "Mohr-Coulomb interface (Van Langen 1991): linear elastic, perfectly plastic, non-associated (psi), tension cut-off",

@@ -31,15 +31,19 @@ const ParameterTable& mortara_table() {
       "mortara",
       {{"K_n_Pa_per_m", "Pa/m", {0.0, true}, {kUnbounded, true}, "elastic normal stiffness", "eq. 3.59, Table 3.3"},
        {"C_k", "-", {0.0, true}, {kUnbounded, true}, "shear over normal stiffness, K_s = C_k K_n", "eq. 3.60"},
-       {"alpha_p", "Pa^(1-beta)", {0.0, true}, {kUnbounded, true}, "peak envelope tau_p = alpha_p sigma_n^beta", "eq. 3.62"},
-       {"alpha_c", "Pa^(1-beta)", {0.0, true}, {kUnbounded, true}, "critical envelope tau_c = alpha_c sigma_n^beta", "eq. 3.63"},
+       {"alpha_p", "Pa^(1-beta)", {0.0, true}, {kUnbounded, true}, "peak envelope tau_p = alpha_p sigma_n^beta", "eq. 3.62",
+        ParameterRole::kMaterial, CalibrationBox{0.3, 10.0, true}},
+       {"alpha_c", "Pa^(1-beta)", {0.0, true}, {kUnbounded, true}, "critical envelope tau_c = alpha_c sigma_n^beta", "eq. 3.63",
+        ParameterRole::kMaterial, CalibrationBox{0.3, 10.0, true}},
        {"beta", "-", {0.0, true}, {2.0, false}, "curvature of the envelopes (below 1: concave; the sensitivity samples reach above)", "eq. 3.58"},
        {"omega", "-", {0.0, true}, {kUnbounded, true}, "hardening law shape", "eq. 3.61"},
        {"psi", "-", {0.0, true}, {kUnbounded, true}, "hardening law exponent ((omega + 1)^psi > 2)", "eq. 3.61"},
        {"xi_m_per_Pa", "m/Pa", {0.0, false}, {kUnbounded, true}, "w_p = xi sigma_n + zeta: slope", "Table 3.3 (linear: README.md)"},
-       {"zeta_m", "m", {0.0, true}, {kUnbounded, true}, "w_p = xi sigma_n + zeta: plastic slip to the peak at sigma_n 0", "Table 3.3"},
+       {"zeta_m", "m", {0.0, true}, {kUnbounded, true}, "w_p = xi sigma_n + zeta: plastic slip to the peak at sigma_n 0", "Table 3.3",
+        ParameterRole::kMaterial, CalibrationBox{1e-5, 1e-2, true}},
        {"mu_per_Pa", "1/Pa", {-kUnbounded, true}, {kUnbounded, true}, "d_max = nu_d + mu sigma_n: slope", "Table 3.3 (linear)"},
-       {"nu_d", "-", {-kUnbounded, true}, {kUnbounded, true}, "d_max = nu_d + mu sigma_n: dilatancy at the peak at sigma_n 0 (< 0 dilates)", "Table 3.3"},
+       {"nu_d", "-", {-kUnbounded, true}, {kUnbounded, true}, "d_max = nu_d + mu sigma_n: dilatancy at the peak at sigma_n 0 (< 0 dilates)", "Table 3.3",
+        ParameterRole::kMaterial, CalibrationBox{-2.0, 0.5, false}},
        {"rho", "-", {0.0, true}, {1.0, false}, "stress ratio of zero dilatancy while hardening, over eta_c", "eq. 3.57, Table 3.3"}}};
   return t;
 }
@@ -168,6 +172,8 @@ ModelSpec mortara_spec() {
                    {"eta_c", "-", "critical stress ratio alpha_c sigma_n^(beta - 1)"},
                    {"f_yield", "kPa", "||tau|| - alpha sigma_n^beta: 0 while loading", DiagnosticRole::kYieldFunction}};
   d.example_parameters = "table_4_5_mortara.toml";
+  d.displacement_based = true;
+  d.plan_rank = 7;
   d.example_start = {{"sigma_n_kPa", 100.0}};
   return {"mortara",
           "Mortara (2003) two-surface elasto-plastic interface model, monotonic (outer) surface: peak and critical envelopes, "
