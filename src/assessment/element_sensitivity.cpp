@@ -79,7 +79,7 @@ SobolResult element_sensitivity(const models::ModelSpec& spec, const ElementSens
   const long total = long(o.samples) * long(params.size() + 2);
   const Quantities f = with_progress([&](const std::vector<double>& x) { return run_once(spec, o, where, x); }, total,
                                      o.progress);
-  return total_sobol_indices(params, kQuantityNames, f, o.samples, o.seed);
+  return total_sobol_indices(params, kQuantityNames, f, o.samples, o.seed, 200, o.threads);
 }
 
 UncertaintyResult element_uncertainty(const models::ModelSpec& spec, const ElementSensitivityOptions& o,
@@ -94,7 +94,7 @@ UncertaintyResult element_uncertainty(const models::ModelSpec& spec, const Eleme
   }
   const Quantities f = with_progress([&](const std::vector<double>& x) { return run_once(spec, o, where, x); },
                                      o.samples, o.progress);
-  return parameter_uncertainty(distributions, kQuantityNames, f, o.samples, o.seed);
+  return parameter_uncertainty(distributions, kQuantityNames, f, o.samples, o.seed, o.threads);
 }
 
 }  // namespace iwb::assessment

@@ -29,6 +29,7 @@ struct ElementSensitivityOptions {
   int increments = 200;
   int samples = 1000;  // N: the runs are N (k + 2)
   unsigned seed = 1;
+  int threads = 0;  // runs at once; 0: every core
   std::function<void(long done, long total)> progress;
 };
 

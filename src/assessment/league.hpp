@@ -24,6 +24,7 @@
 #include "assessment/uncertainty.hpp"
 #include "comparison/fit.hpp"
 #include "comparison/seed_scatter.hpp"
+#include "comparison/verdicts.hpp"
 
 namespace iwb::assessment {
 
@@ -38,7 +39,14 @@ SceneReference scene_reference(const std::vector<comparison::DemRun>& runs);
 // What a fit to the runs adjusts for `model` (see above), boxes in absolute units.
 std::vector<comparison::Unknown> calibration_unknowns(const models::ModelSpec& spec, const comparison::DemRun& dem);
 
+// Where the parameter samples spread: the seed's Table 4.8 / Appendix A COVs about the calibrated
+// values (its framework: parameters as a lab would know them), or each fitted quantity's own
+// Gauss-Newton sigma from the calibration to these runs (the parameters as this scene pins them
+// down; a parameter the runs do not identify, or one calibrated from soil tests, is held).
+enum class ParameterSpread { kSeedCovs, kFitSigmas };
+
 struct LeagueOptions {
+  ParameterSpread spread = ParameterSpread::kSeedCovs;
   // distribution files by name, <table>.toml per parameter table (Table 4.8's COVs):
   // distribution_texts() of a directory or the embedded ones
   std::map<std::string, std::string> distributions;
@@ -49,8 +57,9 @@ struct LeagueOptions {
   std::function<void(long done, long total)> progress;
 };
 
-// The parameter uncertainty's quantities, and the Sobol indices'.
-const std::vector<std::string>& league_quantities();  // peak_tau, residual_tau, normal_end
+// The parameter uncertainty's quantities, and the Sobol indices': peak and residual tau (kPa), the
+// free normal quantity's change at the end and its rate over the last fifth.
+const std::vector<std::string>& league_quantities();
 
 struct LeagueEntry {
   std::string model;
@@ -60,7 +69,9 @@ struct LeagueEntry {
   ResponseCurve reference, fitted;  // the seed mean and the calibrated model's replay
   std::vector<double> band_low, band_high;  // 5 % and 95 % of tau over the samples, per row
   TestUncertainty model_uncertainty;
+  std::vector<comparison::Verdict> verdicts;  // the calibrated model's quantities of interest against the seed mean
   std::vector<Distribution> distributions;  // about the calibrated values
+  std::vector<models::FitParameter> sampled;  // where each distribution's value goes
   std::vector<std::string> held;            // parameters without a distribution: held at their value
   UncertaintyResult parameter_uncertainty;
   std::optional<SobolResult> sobol;

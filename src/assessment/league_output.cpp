@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "comparison/figure.hpp"
+#include "comparison/verdicts.hpp"
 
 namespace iwb::assessment {
 
@@ -81,7 +82,9 @@ std::string model_section(const json& e) {
     md += fmt::format("\nTotal Sobol indices (N = {}, {} runs, 95 % bootstrap intervals):\n\n| parameter |",
                       e["sobol"]["base_samples"].get<int>(), e["sobol"]["evaluations"].get<long>());
     for (const auto& q : league_quantities()) md += " " + q + " |";
-    md += "\n|---|---|---|---|\n";
+    md += "\n|---|";
+    for (std::size_t q = 0; q < league_quantities().size(); ++q) md += "---|";
+    md += "\n";
     for (const auto& d : e["distributions"]) {
       md += "| " + d["name"].get<std::string>() + " |";
       for (const auto& q : league_quantities())
@@ -117,6 +120,7 @@ json entry_json(const LeagueEntry& e) {
               {"model_uncertainty",
                {{"shear", points_json(mu.shear)}, {"normal", points_json(mu.normal)}, {"shear_norm", mu.shear_norm},
                 {"normal_norm", mu.normal_norm}, {"peaked", mu.peaked}}},
+              {"verdicts", comparison::to_json(e.verdicts)},
               {"distributions", dist},
               {"held", e.held},
               {"parameter_uncertainty", pu},

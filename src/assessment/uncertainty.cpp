@@ -42,7 +42,9 @@ UncertaintyResult summarize(const std::vector<std::string>& names, const std::ve
     double ss = 0.0;
     for (double y : v) ss += (y - mean) * (y - mean);
     const double sd = count > 1 ? std::sqrt(ss / (count - 1.0)) : NAN;
-    out.quantities.push_back({names[j], mean, sd, std::abs(mean) > 0.0 ? sd / std::abs(mean) : NAN});
+    // a quantity the samples leave at 0 (the dilation of a model without dilatancy) has no spread
+    const double cv = std::abs(mean) > 0.0 ? sd / std::abs(mean) : sd == 0.0 ? 0.0 : NAN;
+    out.quantities.push_back({names[j], mean, sd, cv});
   }
   return out;
 }

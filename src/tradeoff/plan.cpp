@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "assessment/distribution_file.hpp"
 #include "comparison/compare.hpp"
 #include "comparison/fit.hpp"
 #include "comparison/metrics.hpp"
@@ -23,9 +24,19 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 std::vector<std::string> model_ladder(bool cyclic) {
-  std::vector<std::string> m = {"hp1d", "ah", "hvwe"};
-  if (cyclic) m.push_back("hvwe-igs");  // intergranular strain matters only where the path reverses
-  return m;
+  std::vector<std::pair<int, std::string>> ranked;
+  for (const auto& spec : models::model_registry()) {
+    const auto& c = spec.declaration.layout.components;
+    const bool intergranular = std::any_of(c.begin(), c.end(), [](const models::StateComponent& x) {
+      return x.kind == models::ComponentKind::kIntergranularStrain;
+    });
+    // intergranular strain matters only where the path reverses
+    if (spec.declaration.plan_rank > 0 && (cyclic || !intergranular)) ranked.emplace_back(spec.declaration.plan_rank, spec.name);
+  }
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<std::string> out;
+  for (const auto& r : ranked) out.push_back(r.second);
+  return out;
 }
 
 namespace {
@@ -112,52 +123,44 @@ json choose_model(const std::vector<ModelErrors>& models, const dem::Requirement
 
 namespace {
 
-// d u_n / d u_x over the last fifth of the displacement (least-squares slope), as the DEM summary
-// defines its dilation rate.
-double slope_last_fifth(const std::vector<double>& x, const std::vector<double>& y) {
-  const double from = x.front() + 0.8 * (x.back() - x.front());
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (x[i] >= from) n += 1, sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
-  const double d = n * sxx - sx * sx;
-  return d > 0 ? (n * sxy - sx * sy) / d : NAN;
-}
-
-std::optional<double> relative(double model, double dem) {
-  if (!std::isfinite(model) || dem == 0.0) return std::nullopt;
-  return std::abs(model - dem) / std::abs(dem);
+// The parameter samples' CV that goes with a quantity of interest (league_quantities(): peak and
+// residual tau, the normal quantity's end and rate); 0 for one the samples do not measure.
+double parameter_cv(const assessment::LeagueEntry& e, const std::string& qoi) {
+  static const std::map<std::string, std::string> sampled = {{"peak_friction", "peak_tau_kPa"},
+                                                             {"residual_friction", "residual_tau_kPa"},
+                                                             {"total_dilation", "normal_end"},
+                                                             {"sigma_n_change", "normal_end"},
+                                                             {"dilation_rate", "normal_rate"}};
+  const auto s = sampled.find(qoi);
+  if (s == sampled.end()) return 0.0;
+  for (const auto& q : e.parameter_uncertainty.quantities)
+    if (q.name == s->second) return std::isfinite(q.cv) ? q.cv : NAN;
+  return 0.0;
 }
 
 }  // namespace
 
-ModelErrors evaluate_model(const fs::path& reference_run, const std::string& model,
-                           const io::ParameterSet& params) {
+ModelErrors evaluate_model(const assessment::SceneReference& reference, const std::string& model,
+                           const models::ModelInputs& inputs, const assessment::LeagueOptions& options) {
   ModelErrors r{model, {}, ""};
   try {
-    const auto dem = comparison::load_dem_run(reference_run);
-    models::ModelInputs inputs;
-    inputs.tables = params.tables;
-    inputs.source = params.origin;
-    auto start = comparison::standard_variants(dem, model, inputs).front();
-    const auto fit =
-        comparison::fit_kappa_and_ds(dem, start, comparison::joint_targets(dem, comparison::seed_scatter(dem, {})));  // the model at its best kappa_r and d_s, on tau and dilation
-    start.inputs.roughness.kappa_r = fit.kappa_r;
-    start.d_s_mm = fit.d_s_mm;
-    const auto replay = comparison::replay(dem, start);
-    const auto m = comparison::compare(dem, replay);
-    r.error["peak_friction"] = relative(m.peak_friction_model, m.peak_friction_dem);
-    r.error["residual_friction"] = relative(m.residual_friction_model, m.residual_friction_dem);
-    const std::size_t n = replay.u_x_mm.size();  // the DEM rows the replay reached
-    const std::vector<double> dem_ux(dem.u_x_mm.begin(), dem.u_x_mm.begin() + long(n)),
-        dem_un(dem.u_n_mm.begin(), dem.u_n_mm.begin() + long(n));
-    r.error["dilation_rate"] =
-        relative(slope_last_fifth(replay.u_x_mm, replay.u_n_mm), slope_last_fifth(dem_ux, dem_un));
-    r.error["band_thickness"] = std::nullopt;
-    r.note = fmt::format(
-        "fitted kappa_r = {:.3f}, d_s = {:.2f} mm; replay {}",
-        fit.kappa_r, fit.d_s_mm, replay.status);
-  } catch (const std::exception& e) {
-    r.note = fmt::format("could not be evaluated: {}", e.what());
+    const auto e = assessment::assess_model(reference, model, inputs, options);
+    std::string parts;
+    for (const auto& v : e.verdicts) {
+      if (!v.error) continue;
+      // the global uncertainty of this quantity: the calibrated model's miss and the spread its
+      // parameters' uncertainty gives it, in quadrature (seed eq. 4.4 with ERRATA 16)
+      const double cv = parameter_cv(e, v.key);
+      r.error[v.key] = std::sqrt(*v.error * *v.error + cv * cv);
+      parts += fmt::format("{}{} {:.1f} % (model {:.1f} %, parameters {:.1f} %)", parts.empty() ? "" : ", ", v.key,
+                           100 * *r.error[v.key], 100 * std::abs(*v.error), 100 * cv);
+    }
+    std::string fitted;
+    for (const auto& v : e.fit.values) fitted += fmt::format("{}{} = {:.4g}", fitted.empty() ? "" : ", ", v.name, v.value);
+    r.note = fmt::format("calibrated to the base seeds ({}); global uncertainty per quantity: {}; {}", fitted, parts,
+                         e.status);
+  } catch (const std::exception& ex) {
+    r.note = fmt::format("could not be evaluated: {}", ex.what());
   }
   return r;
 }
@@ -236,27 +239,15 @@ std::vector<fs::path> base_runs(const PlanOptions& opt, const json& t) {
   return out;
 }
 
-// evaluate_model on every run, each QoI's error averaged over the runs (unknown if one lacks it).
-ModelErrors evaluate_model_on(const std::vector<fs::path>& runs, const std::string& model,
-                              const io::ParameterSet& params) {
-  std::vector<ModelErrors> each;
-  ModelErrors mean{model, {}, ""};
-  for (const auto& run : runs) {
-    each.push_back(evaluate_model(run, model, params));
-    mean.note += fmt::format("{}{}: {}", mean.note.empty() ? "" : "; ", run.filename().string(),
-                             each.back().note);
-  }
-  for (const auto& q : dem::quantities_of_interest()) {
-    double sum = 0.0;
-    bool known = !each.empty();
-    for (const auto& e : each) {
-      const auto it = e.error.find(q.key);
-      known = known && it != e.error.end() && it->second;
-      if (known) sum += *it->second;
-    }
-    mean.error[q.key] = known ? std::optional<double>(sum / double(each.size())) : std::nullopt;
-  }
-  return mean;
+// A candidate's parameter set: the scene's (opt.params) for a model calibrated from soil tests,
+// else the model's own example, where its calibration to the runs starts.
+models::ModelInputs candidate_inputs(const PlanOptions& opt, const std::string& model) {
+  const auto& spec = models::find_model(model);
+  if (spec.declaration.calibration_recipe.empty()) return io::shipped_inputs(spec.declaration.example_parameters);
+  models::ModelInputs in;
+  in.tables = opt.params.tables;
+  in.source = opt.params.origin;
+  return in;
 }
 
 fs::path reference_run(const PlanOptions& opt) {
@@ -276,9 +267,16 @@ json run_plan(const PlanOptions& opt) {
   if (judged_on.empty())
     throw InputError(fmt::format("{}: no complete base seed in the tradeoff; run `iwb tradeoff` "
                                  "again to continue it", ref.parent_path().parent_path().string()));
+  std::vector<comparison::DemRun> runs;
+  for (const auto& r : judged_on) runs.push_back(comparison::load_dem_run(r));
+  const auto reference = assessment::scene_reference(runs);  // the base seeds' mean and scatter
+  assessment::LeagueOptions league;
+  league.spread = opt.spread;
+  league.distributions = assessment::embedded_distributions();
+  league.uncertainty_samples = opt.samples;
   std::vector<ModelErrors> models;
   for (const auto& m : model_ladder(scene.shear.cyclic()))
-    models.push_back(evaluate_model_on(judged_on, m, opt.params));
+    models.push_back(evaluate_model(reference, m, candidate_inputs(opt, m), league));
   json judged = json::array();
   for (const auto& r : judged_on) judged.push_back(r.filename().string());
   json req = json::object();
@@ -293,6 +291,8 @@ json run_plan(const PlanOptions& opt) {
                {"continuum", choose_model(models, scene.requirements, t["noise_floor"])},
                {"continuum_judged_on", judged},
                {"params", opt.params.origin},
+               {"parameter_uncertainty", opt.spread == assessment::ParameterSpread::kFitSigmas ? "fit" : "seed"},
+               {"parameter_samples", opt.samples},
                {"params_why", opt.params_why},
                {"command_line", opt.command_line}};
   const fs::path out = opt.out.empty() ? ref.parent_path().parent_path() : opt.out;

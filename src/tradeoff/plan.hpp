@@ -1,9 +1,12 @@
 #pragma once
-// `iwb plan` (issue 7, item 5): from a scene's [requirements] and its tradeoff (tradeoff.hpp),
-// the cheapest DEM setting whose errors plus the seed noise floor meet every stated tolerance,
-// and the simplest continuum model (hp1d, ah, hvwe; hvwe-igs as well for cyclic paths) whose
-// errors against the tradeoff's reference run, replayed along its own path (comparison/), meet
-// them. Writes plan.json; plan_text() is the decision and why, as printed.
+// `iwb plan` (issue 7, item 5; issue 17, item 4): from a scene's [requirements] and its tradeoff
+// (tradeoff.hpp), the cheapest DEM setting whose errors plus the seed noise floor meet every
+// stated tolerance, and the simplest interface model (the declared candidates, simplest first:
+// mc, hyperbolic, hp1d, ah, ahe, lashkari, mortara, hvwe; the -igs ones as well for cyclic paths)
+// whose global uncertainty per quantity meets them: calibrated to the scene's base seeds and
+// replayed along their path (assessment/league.hpp), its miss of the seed mean and the spread its
+// parameters' uncertainty gives, in quadrature. Writes plan.json; plan_text() is the decision and
+// why, as printed.
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -11,12 +14,14 @@
 #include <string>
 #include <vector>
 
+#include "assessment/league.hpp"
 #include "dem/requirements.hpp"
 #include "io/parameter_sets.hpp"
 
 namespace iwb::tradeoff {
 
-// The continuum models in the order plan tries them: simplest first.
+// The interface models in the order plan tries them: simplest first (ModelDeclaration::plan_rank);
+// those with intergranular strain only for cyclic paths.
 std::vector<std::string> model_ladder(bool cyclic);
 
 // Pure decision over tradeoff.json: every complete setting from the cheapest up, each with the
@@ -45,11 +50,14 @@ struct PlanOptions {
   std::string params_why;              // how it was chosen, for the record
   std::filesystem::path out;           // plan.json goes here; empty: the tradeoff directory
   std::string command_line;
+  assessment::ParameterSpread spread = assessment::ParameterSpread::kFitSigmas;
+  int samples = 200;                   // parameter samples per candidate
 };
 
-// The replay of `model` on the reference run and its errors in each QoI.
-ModelErrors evaluate_model(const std::filesystem::path& reference_run, const std::string& model,
-                           const io::ParameterSet& params);
+// `model` calibrated to the reference (the base seeds' mean) and judged: its global uncertainty
+// in each quantity it replays; a model that cannot be evaluated says why in its note.
+ModelErrors evaluate_model(const assessment::SceneReference& reference, const std::string& model,
+                           const models::ModelInputs& inputs, const assessment::LeagueOptions& options);
 
 // InputError when the scene states no requirements, or the tradeoff is missing, unfinished, of
 // another scene (compared by content, dem/scene_content.hpp: the keys that differ are named) or

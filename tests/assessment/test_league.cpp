@@ -9,6 +9,7 @@
 #include "assessment/league.hpp"
 #include "comparison/replay.hpp"
 #include "support/fixtures.hpp"
+#include "support/mohr_coulomb_reference.hpp"
 
 using namespace iwb;
 
@@ -20,31 +21,11 @@ std::vector<std::string> names(const std::vector<comparison::Unknown>& u) {
   return out;
 }
 
-// Mohr-Coulomb at phi_i 30 deg, psi 8 deg, E 20 MPa, d_s 10 mm, under CNL at 50 kPa to 10 mm: the
-// DEM's place taken by a model whose answers are known.
-comparison::DemRun mohr_coulomb_reference() {
-  comparison::DemRun dem;
-  dem.dir = "mohr-coulomb-reference";
-  dem.boundary = driver::BoundaryKind::kCNL;
-  dem.sigma_n0_kPa = 50.0, dem.d50_mm = 2.0, dem.R_n = 0.5, dem.K_kPa_per_mm = 0.0;
-  for (int i = 0; i <= 500; ++i) {
-    dem.t_s.push_back(0.01 * i), dem.u_x_mm.push_back(0.02 * i), dem.sigma_n_kPa.push_back(50.0);
-    dem.tau_kPa.push_back(0.0), dem.u_n_mm.push_back(0.0), dem.e_band.push_back(0.6);
-  }
-  auto in = test::shipped("table_4_3_mohr_coulomb.toml");
-  in.tables["mohr_coulomb"]["phi_i_deg"] = 30.0, in.tables["mohr_coulomb"]["psi_deg"] = 8.0;
-  in.tables["mohr_coulomb"]["E_kPa"] = 2e4;
-  const auto r = comparison::replay(dem, {"truth", "mc", in, 10.0});
-  REQUIRE(r.status == "complete");
-  dem.tau_kPa = r.tau_kPa, dem.u_n_mm = r.u_n_mm;
-  return dem;
-}
-
 }  // namespace
 
 TEST_CASE("a fit to interface runs adjusts what the interface adds, and the material of models without soil tests",
           "[assessment][league]") {
-  const auto dem = mohr_coulomb_reference();
+  const auto dem = test::mohr_coulomb_reference();
   // hypoplastic: calibrated from soil tests; the fit adds roughness and the shear zone only
   CHECK(names(assessment::calibration_unknowns(models::find_model("hvwe"), dem)) ==
         std::vector<std::string>{"kappa_r", "d_s_mm"});
@@ -58,7 +39,7 @@ TEST_CASE("a fit to interface runs adjusts what the interface adds, and the mate
 
 TEST_CASE("Mohr-Coulomb calibrated to its own curves recovers phi_i and psi and has no model uncertainty",
           "[assessment][league]") {
-  const auto dem = mohr_coulomb_reference();
+  const auto dem = test::mohr_coulomb_reference();
   const assessment::SceneReference ref{dem, comparison::seed_scatter(dem, {})};
   assessment::LeagueOptions o;
   o.distributions = assessment::embedded_distributions();
@@ -82,7 +63,7 @@ TEST_CASE("Mohr-Coulomb calibrated to its own curves recovers phi_i and psi and 
 
 TEST_CASE("Clough & Duncan cannot dilate: it misses both dilation points by 1 / 1.645 whatever its fit",
           "[assessment][league]") {
-  const auto dem = mohr_coulomb_reference();
+  const auto dem = test::mohr_coulomb_reference();
   const assessment::SceneReference ref{dem, comparison::seed_scatter(dem, {})};
   assessment::LeagueOptions o;
   o.distributions = assessment::embedded_distributions();

@@ -6,6 +6,7 @@
 
 #include "io/run_directory.hpp"
 #include "tradeoff/plan.hpp"
+#include "support/mohr_coulomb_reference.hpp"
 #include "tradeoff/tradeoff.hpp"
 
 using namespace iwb;
@@ -131,8 +132,30 @@ TEST_CASE("plan: the simplest model that meets the tolerances, and why the simpl
       tradeoff::choose_model(models, {{"residual_friction", 0.05}, {"peak_friction", 0.05}}, noise);
   CHECK(both["chosen"]["name"] == "hvwe");  // ah: 4 % + 2 % noise > 5 % in the peak
   CHECK(both["candidates"][1]["fails"][0]["qoi"] == "peak_friction");
-  CHECK(tradeoff::model_ladder(false) == std::vector<std::string>{"hp1d", "ah", "hvwe"});
-  CHECK(tradeoff::model_ladder(true).back() == "hvwe-igs");
+  CHECK(tradeoff::model_ladder(false) ==
+        std::vector<std::string>{"mc", "hyperbolic", "hp1d", "ah", "ahe", "lashkari", "mortara", "hvwe"});
+  CHECK(tradeoff::model_ladder(true).back() == "hvwe-igs");  // intergranular strain for reversing paths only
+}
+
+TEST_CASE("plan: a candidate's global uncertainty; the model that cannot dilate fails the dilation rate", "[tradeoff]") {
+  // a reference made by Mohr-Coulomb (phi_i 30, psi 8): Mohr-Coulomb calibrated to it misses
+  // nothing and its parameters, pinned down by the fit, spread it little; Clough & Duncan has no
+  // dilatancy and misses the rate by 100 %
+  const auto dem = test::mohr_coulomb_reference();
+  const assessment::SceneReference ref{dem, comparison::seed_scatter(dem, {})};
+  assessment::LeagueOptions o;
+  o.spread = assessment::ParameterSpread::kFitSigmas;
+  o.uncertainty_samples = 50;
+  const auto mc = tradeoff::evaluate_model(ref, "mc", test::shipped("table_4_3_mohr_coulomb.toml"), o);
+  const auto hy = tradeoff::evaluate_model(ref, "hyperbolic", test::shipped("table_4_4_hyperbolic.toml"), o);
+  INFO(mc.note << "\n" << hy.note);
+  REQUIRE(mc.error.at("residual_friction"));
+  CHECK(*mc.error.at("residual_friction") < 0.01);
+  CHECK(*mc.error.at("dilation_rate") < 0.01);
+  CHECK(*hy.error.at("dilation_rate") == Approx(1.0).margin(1e-6));
+  const json noise = {{"dilation_rate", {{"relative", 0.0}}}, {"residual_friction", {{"relative", 0.0}}}};
+  const auto choice = tradeoff::choose_model({hy, mc}, {{"dilation_rate", 0.2}, {"residual_friction", 0.05}}, noise);
+  CHECK(choice["chosen"]["name"] == "mc");
 }
 
 // `iwb plan` against the committed tradeoff of data/scenes/default.toml (tables only, no run

@@ -214,7 +214,7 @@ int run_assess(const AssessOptions& o) {
   spec.make(opt.inputs);  // the means must be a valid set, before anything runs
   opt.boundary = driver::parse_boundary_kind(o.boundary, "--bc");
   opt.cov = o.cov, opt.cov_of = own_covs(o.cov_of), opt.sigma_n_kPa = o.sigma_n, opt.e0 = o.e0, opt.K_kPa_per_unit_strain = o.K;
-  opt.gamma = o.gamma, opt.increments = o.increments, opt.samples = o.samples, opt.seed = o.seed;
+  opt.gamma = o.gamma, opt.increments = o.increments, opt.samples = o.samples, opt.seed = o.seed, opt.threads = o.threads;
   if (opt.boundary == driver::BoundaryKind::kCNS && !(o.K > 0.0))
     throw InputError("--bc CNS needs --K, the spring stiffness in kPa per unit normal strain");
   const auto dir = o.out.empty() ? std::filesystem::path("runs") / ("assess-" + o.model) : std::filesystem::path(o.out);

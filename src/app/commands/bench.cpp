@@ -4,6 +4,7 @@
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
+#include "bench/assess_bench.hpp"
 #include "bench/dem_bench.hpp"
 #include "bench/element_bench.hpp"
 #include "bench/integrator_bench.hpp"
@@ -24,6 +25,20 @@ void add_bench_element_command(CLI::App& bench, CommandList& commands) {
       ->capture_default_str();
   commands.add(element, [o](const CommandContext&) {
     bench::run_element_bench(*o);
+    return 0;
+  });
+}
+
+void add_bench_assess_command(CLI::App& bench, CommandList& commands) {
+  auto o = std::make_shared<bench::AssessBenchOptions>();
+  auto* assess = bench.add_subcommand(
+      "assess", "Throughput of the model assessment: element tests per second on one core and the speed-up on every "
+                "core, for each interface model of the league (a Latin hypercube of CNL simple shears about its "
+                "example set).");
+  assess->add_option("--tests", o->tests, "element tests per model and thread count")
+      ->check(whole_in(10, 100000))->capture_default_str();
+  commands.add(assess, [o](const CommandContext&) {
+    bench::run_assess_bench(*o);
     return 0;
   });
 }

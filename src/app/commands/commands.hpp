@@ -25,6 +25,7 @@ void add_stability_command(CLI::App& app, CommandList& commands);
 void add_assess_command(CLI::App& app, CommandList& commands);
 void add_bench_element_command(CLI::App& bench, CommandList& commands);
 void add_bench_integrators_command(CLI::App& bench, CommandList& commands);
+void add_bench_assess_command(CLI::App& bench, CommandList& commands);
 void add_bench_dem_command(CLI::App& bench, CommandList& commands);
 void add_soiltest_synthetic_command(CLI::App& soiltest, CommandList& commands);
 void add_calibrate_command(CLI::App& app, CommandList& commands);
