@@ -7,16 +7,16 @@
 
 namespace iwb::app {
 
-std::function<void(long, long)> increment_progress() {
+std::function<void(long, long)> increment_progress(const std::string& what) {
   auto start = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
   auto last = std::make_shared<double>(1.0);
-  return [start, last](long done, long total) {
+  return [start, last, what](long done, long total) {
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - *start).count();
     if (t < *last && done < total) return;
     *last = t + 1.0;
     if (t < 1.0) return;
     const double eta = done > 0 ? t * double(total - done) / double(done) : 0.0;
-    fmt::print(stderr, "  increment {}/{} ({:.0f} %), {:.0f} s elapsed, ETA {:.0f} s\n", done, total,
+    fmt::print(stderr, "  {} {}/{} ({:.0f} %), {:.0f} s elapsed, ETA {:.0f} s\n", what, done, total,
                100.0 * double(done) / double(total), t, eta);
   };
 }

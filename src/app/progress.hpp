@@ -6,8 +6,9 @@
 namespace iwb::app {
 
 // Element-test increments: "increment k/n (p %), t s elapsed, ETA s", at most once a second and
-// only once the run has taken a second.
-std::function<void(long, long)> increment_progress();
+// only once the run has taken a second; `what` names the counted thing ("run" for the samples of
+// an assessment).
+std::function<void(long, long)> increment_progress(const std::string& what = "increment");
 
 // Engine lines: at most one every two seconds, and every change of stage (the word before ':').
 std::function<void(const std::string&)> engine_progress();

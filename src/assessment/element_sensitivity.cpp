@@ -13,14 +13,34 @@ namespace iwb::assessment {
 
 namespace {
 
+using Ties = std::map<std::string, std::pair<double, std::string>>;
+
+bool material(const models::ParameterSpec& e) {
+  return e.role == models::ParameterRole::kMaterial || e.role == models::ParameterRole::kCriticalFrictionAngle;
+}
+
 // Where each varied parameter lives: table and key, in the order of varied_parameters.
-std::vector<std::pair<std::string, std::string>> locations(const models::ModelSpec& spec, const models::ModelInputs& in) {
+std::vector<std::pair<std::string, std::string>> locations(const models::ModelSpec& spec, const models::ModelInputs& in,
+                                                           const Ties& ties = {}) {
   std::vector<std::pair<std::string, std::string>> out;
   for (const auto* table : spec.tables)
     for (const auto& e : table->entries)
-      if (e.role == models::ParameterRole::kMaterial && in.tables.at(table->name).at(e.key) != 0.0)
+      if (material(e) && in.tables.at(table->name).at(e.key) != 0.0 && !ties.count(e.key))
         out.emplace_back(table->name, e.key);
   return out;
+}
+
+// The table holding `key` in the model's tables; InputError naming what the model has.
+std::string table_holding(const models::ModelSpec& spec, const std::string& key, const std::string& option) {
+  for (const auto* table : spec.tables)
+    if (table->find(key)) return table->name;
+  throw InputError(fmt::format("{}: {} has no parameter '{}'", option, spec.name, key));
+}
+
+// The tied parameters set from the ones they follow.
+void apply_ties(const models::ModelSpec& spec, const Ties& ties, models::ModelInputs& in) {
+  for (const auto& [key, tie] : ties)
+    in.tables[table_holding(spec, key, "--tie")][key] = tie.first * in.tables.at(table_holding(spec, tie.second, "--tie")).at(tie.second);
 }
 
 constexpr std::size_t kQuantities = 5;  // kQuantityNames below
@@ -32,6 +52,7 @@ std::vector<double> run_once(const models::ModelSpec& spec, const ElementSensiti
   try {
     models::ModelInputs in = o.inputs;
     for (std::size_t i = 0; i < x.size(); ++i) in.tables[where[i].first][where[i].second] = x[i];
+    apply_ties(spec, o.ties, in);
     const auto model = spec.make(in);
     const auto s0 = model->initial_state(models::offer(spec, in, {{"sigma_n_kPa", o.sigma_n_kPa}, {"e0", o.e0}}));
     driver::RunSettings rs;
@@ -56,10 +77,11 @@ std::vector<double> run_once(const models::ModelSpec& spec, const ElementSensiti
 }  // namespace
 
 std::vector<Distribution> varied_parameters(const models::ModelSpec& spec, const models::ModelInputs& in, double cov,
-                                            const std::map<std::string, double>& cov_of) {
+                                            const std::map<std::string, double>& cov_of, const Ties& ties) {
+  for (const auto& [key, tie] : ties) table_holding(spec, key, "--tie"), table_holding(spec, tie.second, "--tie");
   std::vector<Distribution> out;
   std::string keys;
-  for (const auto& [table, key] : locations(spec, in)) {
+  for (const auto& [table, key] : locations(spec, in, ties)) {
     const auto own = cov_of.find(key);
     out.push_back({key, Distribution::Kind::kNormal, in.tables.at(table).at(key), own == cov_of.end() ? cov : own->second});
     keys += (keys.empty() ? "" : ", ") + key;
@@ -74,8 +96,8 @@ const std::vector<std::string> kQuantityNames{"peak_friction", "mean_friction", 
                                               "end_sigma_n_kPa"};
 
 SobolResult element_sensitivity(const models::ModelSpec& spec, const ElementSensitivityOptions& o) {
-  const auto where = locations(spec, o.inputs);
-  const auto params = varied_parameters(spec, o.inputs, o.cov, o.cov_of);
+  const auto where = locations(spec, o.inputs, o.ties);
+  const auto params = varied_parameters(spec, o.inputs, o.cov, o.cov_of, o.ties);
   const long total = long(o.samples) * long(params.size() + 2);
   const Quantities f = with_progress([&](const std::vector<double>& x) { return run_once(spec, o, where, x); }, total,
                                      o.progress);

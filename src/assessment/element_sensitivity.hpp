@@ -21,6 +21,9 @@ struct ElementSensitivityOptions {
   models::ModelInputs inputs;  // the parameter file: the distributions' means
   double cov = 0.1;
   std::map<std::string, double> cov_of;  // per parameter key, instead of cov (the seed's starred ones)
+  // key -> (factor, other): the parameter follows another, key = factor x other, and is not varied
+  // itself (the seed's Table 4.6 samples e_c0 only, e_i0 = 1.2 e_c0 and e_d0 = 0.379 e_c0)
+  std::map<std::string, std::pair<double, std::string>> ties;
   driver::BoundaryKind boundary = driver::BoundaryKind::kCNL;
   double sigma_n_kPa = 100.0;
   double e0 = 0.0;  // for a model with a void ratio; ignored by one without
@@ -33,11 +36,13 @@ struct ElementSensitivityOptions {
   std::function<void(long done, long total)> progress;
 };
 
-// The parameters varied: the tables' kMaterial entries with a non-zero value (a zero, such as no
-// cohesion, has no spread to give), each with `cov` or its own in `cov_of`. InputError for a key of
-// `cov_of` that is not varied.
+// The parameters varied: the tables' material entries (phi_c included) with a non-zero value (a
+// zero, such as no cohesion, has no spread to give) that are not tied to another, each with `cov`
+// or its own in `cov_of`. InputError for a key of `cov_of` that is not varied, or a tie naming a
+// parameter the model lacks.
 std::vector<Distribution> varied_parameters(const models::ModelSpec& spec, const models::ModelInputs& inputs, double cov,
-                                            const std::map<std::string, double>& cov_of = {});
+                                            const std::map<std::string, double>& cov_of = {},
+                                            const std::map<std::string, std::pair<double, std::string>>& ties = {});
 
 SobolResult element_sensitivity(const models::ModelSpec& spec, const ElementSensitivityOptions& options);
 

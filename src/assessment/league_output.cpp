@@ -21,7 +21,16 @@ json points_json(const std::vector<ObjectivePoint>& points) {
   return out;
 }
 
-json curve_json(const ResponseCurve& c) { return {{"u_x_mm", c.u_x}, {"tau_kPa", c.tau}, {"normal", c.normal}}; }
+// Curves to 6 significant digits: the DEM's own are no more precise, and the records stay small.
+std::vector<double> rounded(const std::vector<double>& v) {
+  std::vector<double> out;
+  for (double x : v) out.push_back(std::isfinite(x) ? std::stod(fmt::format("{:.6g}", x)) : x);
+  return out;
+}
+
+json curve_json(const ResponseCurve& c) {
+  return {{"u_x_mm", rounded(c.u_x)}, {"tau_kPa", rounded(c.tau)}, {"normal", rounded(c.normal)}};
+}
 
 json sobol_json(const SobolResult& s) {
   json out = {{"base_samples", s.base_samples}, {"evaluations", s.evaluations}, {"failed", s.failed}, {"indices", json::array()}};
@@ -129,7 +138,7 @@ json entry_json(const LeagueEntry& e) {
               {"global", e.global},
               {"reference", curve_json(e.reference)},
               {"fitted", curve_json(e.fitted)},
-              {"band", {{"tau_low_kPa", e.band_low}, {"tau_high_kPa", e.band_high}}}};
+              {"band", {{"tau_low_kPa", rounded(e.band_low)}, {"tau_high_kPa", rounded(e.band_high)}}}};
   if (e.sobol) out["sobol"] = sobol_json(*e.sobol);
   return out;
 }

@@ -40,6 +40,7 @@ struct AssessOptions {
   int samples = 1000, increments = 200;
   unsigned seed = 1;
   std::vector<std::string> cov_of;  // KEY=COV
+  std::vector<std::string> ties;    // KEY=FACTOR*OTHER
 };
 
 // --cov-of KEY=COV, repeated: InputError naming the bad one.
@@ -60,13 +61,34 @@ std::map<std::string, double> own_covs(const std::vector<std::string>& given) {
   return out;
 }
 
+// --tie KEY=FACTOR*OTHER, repeated: InputError naming the bad one.
+std::map<std::string, std::pair<double, std::string>> tied(const std::vector<std::string>& given) {
+  std::map<std::string, std::pair<double, std::string>> out;
+  for (const auto& g : given) {
+    const auto eq = g.find('='), star = g.find('*');
+    double factor = 0.0;
+    try {
+      if (eq == std::string::npos || eq == 0 || star == std::string::npos || star < eq || star + 1 == g.size())
+        throw std::invalid_argument(g);
+      factor = std::stod(g.substr(eq + 1, star - eq - 1));
+    } catch (const std::exception&) {
+      throw InputError(fmt::format("--tie {}: give KEY=FACTOR*OTHER, e.g. ei0=1.2*ec0", g));
+    }
+    if (!(factor > 0.0)) throw InputError(fmt::format("--tie {}: the factor must be positive", g));
+    out[g.substr(0, eq)] = {factor, g.substr(star + 1)};
+  }
+  return out;
+}
+
 std::string markdown(const assessment::SobolResult& r, const AssessOptions& o) {
   std::string md = fmt::format(
       "# Total Sobol indices: {} ({})\n\nEvery material parameter normal about the file's value with COV {}{}; "
       "monotonic simple shear under {} from sigma_n0 = {} kPa to gamma = {} in {} increments. Saltelli's sampling, "
       "Jansen's estimator, N = {} ({} element tests, {} rows dropped for a failed run), 95 % bootstrap intervals.\n\n"
       "| quantity |",
-      o.model, o.params, o.cov, o.cov_of.empty() ? "" : fmt::format(" ({} their own)", fmt::join(o.cov_of, ", ")),
+      o.model, o.params, o.cov,
+      (o.cov_of.empty() ? "" : fmt::format(" ({} their own)", fmt::join(o.cov_of, ", "))) +
+          (o.ties.empty() ? "" : fmt::format("; tied, not varied: {}", fmt::join(o.ties, ", "))),
       o.boundary, o.sigma_n, o.gamma, o.increments, r.base_samples, r.evaluations, r.failed);
   for (const auto& p : r.parameters) md += " " + p + " |";
   md += "\n|---|";
@@ -125,6 +147,17 @@ models::ModelInputs league_parameters(const AssessOptions& o, const std::string&
   return as_inputs(parameters_for(io::parameter_sets({}), scene, dem.summary.at("residual_friction").get<double>(), why));
 }
 
+// The tables a set lacks for `spec` (the sand set has no [intergranular_strain] for the -igs models)
+// from the model's own example set, and the source says so.
+models::ModelInputs with_missing_tables(const models::ModelSpec& spec, models::ModelInputs in) {
+  for (const auto* t : spec.tables)
+    if (!in.tables.count(t->name)) {
+      in.tables[t->name] = io::shipped_inputs(spec.declaration.example_parameters).tables.at(t->name);
+      in.source += fmt::format(" + [{}] of {}", t->name, spec.declaration.example_parameters);
+    }
+  return in;
+}
+
 std::vector<std::string> league_models(const AssessOptions& o) {
   if (!o.model.empty()) return {o.model};
   if (!o.models.empty()) {
@@ -155,7 +188,7 @@ int run_league(const AssessOptions& o) {
   const auto texts = assessment::distribution_texts(o.distributions);  // each file's text: a changed COV is a changed input
   std::vector<models::ModelInputs> inputs;
   for (const auto& m : names) {
-    inputs.push_back(league_parameters(o, m, runs.front()));
+    inputs.push_back(with_missing_tables(models::find_model(m), league_parameters(o, m, runs.front())));
     inputs.back().source = inputs.back().source.empty() ? "?" : inputs.back().source;
     models::find_model(m).make(inputs.back());  // a set the model refuses is bad input, before anything runs
   }
@@ -185,7 +218,7 @@ int run_league(const AssessOptions& o) {
                o.sobol_samples > 0 ? fmt::format(", Sobol N = {}", o.sobol_samples) : "");
     assessment::LeagueOptions lo;
     lo.distributions = texts, lo.uncertainty_samples = o.samples, lo.sobol_samples = o.sobol_samples;
-    lo.seed = o.seed, lo.threads = o.threads, lo.progress = increment_progress();
+    lo.seed = o.seed, lo.threads = o.threads, lo.progress = increment_progress("run");
     auto e = assessment::entry_json(assessment::assess_model(ref, names[i], inputs[i], lo));
     e["inputs"] = in;
     std::filesystem::create_directories(record.parent_path());
@@ -213,12 +246,12 @@ int run_assess(const AssessOptions& o) {
   opt.inputs.source = o.params;
   spec.make(opt.inputs);  // the means must be a valid set, before anything runs
   opt.boundary = driver::parse_boundary_kind(o.boundary, "--bc");
-  opt.cov = o.cov, opt.cov_of = own_covs(o.cov_of), opt.sigma_n_kPa = o.sigma_n, opt.e0 = o.e0, opt.K_kPa_per_unit_strain = o.K;
+  opt.cov = o.cov, opt.cov_of = own_covs(o.cov_of), opt.ties = tied(o.ties), opt.sigma_n_kPa = o.sigma_n, opt.e0 = o.e0, opt.K_kPa_per_unit_strain = o.K;
   opt.gamma = o.gamma, opt.increments = o.increments, opt.samples = o.samples, opt.seed = o.seed, opt.threads = o.threads;
   if (opt.boundary == driver::BoundaryKind::kCNS && !(o.K > 0.0))
     throw InputError("--bc CNS needs --K, the spring stiffness in kPa per unit normal strain");
   const auto dir = o.out.empty() ? std::filesystem::path("runs") / ("assess-" + o.model) : std::filesystem::path(o.out);
-  const auto tick = increment_progress();
+  const auto tick = increment_progress("run");
   opt.progress = [&](long done, long total) { tick(done, total); };
   if (!o.uncertainty.empty()) {
     const auto r = assessment::element_uncertainty(spec, opt, assessment::read_distributions(o.uncertainty));
@@ -262,6 +295,9 @@ void add_assess_command(CLI::App& app, CommandList& commands) {
   cmd->add_option("--cov-of", o->cov_of,
                   "KEY=COV: this parameter's own coefficient of variation instead of --cov (repeat; the seed takes 0.01 "
                   "for the sensitive parameters it stars, e.g. Mortara's alpha_p, alpha_c, omega)");
+  cmd->add_option("--tie", o->ties,
+                  "KEY=FACTOR*OTHER: this parameter follows another and is not varied itself (repeat; the seed's "
+                  "Table 4.6 samples e_c0 only: --tie ei0=1.2*ec0 --tie ed0=0.379*ec0)");
   cmd->add_option("--bc", o->boundary, "CNL, CNS or CV")->check(CLI::IsMember({"CNL", "CNS", "CV"}));
   cmd->add_option("--sigma-n", o->sigma_n, "initial normal stress, kPa")->check(number_in(positive(1e5), "kPa"));
   cmd->add_option("--e0", o->e0, "initial void ratio, for a model that has one")->check(number_in(positive(10.0)));

@@ -1,0 +1,15 @@
+set datafile separator ','
+set key below
+set grid
+set title 'ahe-igs: shear stress'
+set xlabel 'u_x (mm)'
+set ylabel 'tau (kPa)'
+set datafile missing 'nan'
+
+set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'
+set output 'ahe-igs_tau.svg'
+plot 'ahe-igs_tau.csv' using 1:2 skip 1 with lines lw 2 title 'DEM, seed mean', 'ahe-igs_tau.csv' using 3:4 skip 1 with lines lw 2 title 'ahe-igs, calibrated', 'ahe-igs_tau.csv' using 5:6 skip 1 with lines lw 2 title 'ahe-igs, 5 % of the parameter samples', 'ahe-igs_tau.csv' using 7:8 skip 1 with lines lw 2 title 'ahe-igs, 95 % of the parameter samples'
+set terminal pngcairo size 900,560 font 'sans,10' noenhanced
+set output 'ahe-igs_tau.png'
+replot
+unset output
