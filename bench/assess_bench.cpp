@@ -16,9 +16,7 @@ namespace {
 
 std::vector<const models::ModelSpec*> league_models() {
   std::vector<const models::ModelSpec*> out;
-  for (const auto& spec : models::model_registry())
-    if (spec.declaration.plan_rank > 0) out.push_back(&spec);
-  std::sort(out.begin(), out.end(), [](auto* a, auto* b) { return a->declaration.plan_rank < b->declaration.plan_rank; });
+  for (const auto& name : models::ranked_interface_models(true)) out.push_back(&models::find_model(name));
   return out;
 }
 

@@ -98,6 +98,22 @@ void add_runtime_model(ModelSpec spec) {
   specs.push_back(std::move(spec));
 }
 
+std::vector<std::string> ranked_interface_models(bool with_intergranular_strain) {
+  std::vector<std::pair<int, std::string>> ranked;
+  for (const auto& spec : model_registry()) {
+    const auto& c = spec.declaration.layout.components;
+    const bool intergranular = std::any_of(c.begin(), c.end(), [](const StateComponent& x) {
+      return x.kind == ComponentKind::kIntergranularStrain;
+    });
+    if (spec.declaration.plan_rank > 0 && (with_intergranular_strain || !intergranular))
+      ranked.emplace_back(spec.declaration.plan_rank, spec.name);
+  }
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<std::string> out;
+  for (const auto& r : ranked) out.push_back(r.second);
+  return out;
+}
+
 const ModelSpec& find_model(const std::string& name) {
   std::string known;
   for (const auto& s : model_registry()) {

@@ -23,21 +23,8 @@ namespace iwb::tradeoff {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::vector<std::string> model_ladder(bool cyclic) {
-  std::vector<std::pair<int, std::string>> ranked;
-  for (const auto& spec : models::model_registry()) {
-    const auto& c = spec.declaration.layout.components;
-    const bool intergranular = std::any_of(c.begin(), c.end(), [](const models::StateComponent& x) {
-      return x.kind == models::ComponentKind::kIntergranularStrain;
-    });
-    // intergranular strain matters only where the path reverses
-    if (spec.declaration.plan_rank > 0 && (cyclic || !intergranular)) ranked.emplace_back(spec.declaration.plan_rank, spec.name);
-  }
-  std::sort(ranked.begin(), ranked.end());
-  std::vector<std::string> out;
-  for (const auto& r : ranked) out.push_back(r.second);
-  return out;
-}
+// intergranular strain matters only where the path reverses
+std::vector<std::string> model_ladder(bool cyclic) { return models::ranked_interface_models(cyclic); }
 
 namespace {
 

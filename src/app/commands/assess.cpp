@@ -164,13 +164,7 @@ std::vector<std::string> league_models(const AssessOptions& o) {
     for (const auto& m : o.models) models::find_model(m);  // an unknown name is refused before anything runs
     return o.models;
   }
-  std::vector<std::pair<int, std::string>> ranked;
-  for (const auto& spec : models::model_registry())
-    if (spec.declaration.plan_rank > 0) ranked.emplace_back(spec.declaration.plan_rank, spec.name);
-  std::sort(ranked.begin(), ranked.end());
-  std::vector<std::string> out;
-  for (const auto& r : ranked) out.push_back(r.second);
-  return out;
+  return models::ranked_interface_models(true);
 }
 
 // What a model's record was made from: a record of other inputs is not reused.
