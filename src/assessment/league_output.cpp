@@ -158,12 +158,15 @@ std::string league_markdown(const json& h, const std::vector<json>& entries) {
       "(tau and the free normal quantity, each in units of its seed scatter), replayed along their path, and judged "
       "at the seed's objective points (eq. 4.3: UA_k = |model - DEM| / (1.645 |DEM|); eq. 4.15's norm over the "
       "points). UA_par is the CV of the peak shear stress over {} Latin hypercube samples of the calibrated set "
-      "(COVs of the seed's Table 4.8 and Appendix A). Global: sqrt(UA_model^2 + UA_par^2) (eq. 4.4, ERRATA 16), "
+      "({}). Global: sqrt(UA_model^2 + UA_par^2) (eq. 4.4, ERRATA 16), "
       "the seed's on the shear points, and the workbench's on shear and {} together, by which the table is ranked.\n\n"
       "| rank | model | UA_model shear | UA_model {} | UA_par | global (seed: shear) | global (shear and {}) | status |\n"
       "|---|---|---|---|---|---|---|---|\n",
       h["scene"].get<std::string>(), h["runs"].size(), h["boundary"].get<std::string>(), h["wall"].get<std::string>(),
-      h["uncertainty_samples"].get<int>(), h["normal"].get<std::string>(), h["normal"].get<std::string>(),
+      h["uncertainty_samples"].get<int>(),
+      h.value("parameter_uncertainty", "seed") == "fit" ? "each calibrated quantity spread by its own sigma from the fit to the runs"
+                                                         : "COVs of the seed's Table 4.8 and Appendix A",
+      h["normal"].get<std::string>(), h["normal"].get<std::string>(),
       h["normal"].get<std::string>());
   int rank = 0;
   for (const auto& e : entries)

@@ -34,6 +34,7 @@ struct AssessOptions {
   std::string model, params, out, boundary = "CNL", uncertainty;
   std::vector<std::string> reference, models, params_for;  // the league
   std::string distributions;  // empty: the files built into iwb
+  std::string parameter_uncertainty = "seed";
   int sobol_samples = 0, threads = 0;
   bool force = false;
   double cov = 0.1, sigma_n = 100.0, e0 = 0.0, K = 0.0, gamma = 0.1;
@@ -171,7 +172,7 @@ std::vector<std::string> league_models(const AssessOptions& o) {
 nlohmann::json record_inputs(const AssessOptions& o, const models::ModelInputs& in,
                              const std::map<std::string, std::string>& distributions) {
   return {{"reference", o.reference}, {"parameters", in.tables}, {"samples", o.samples}, {"sobol_samples", o.sobol_samples},
-          {"seed", o.seed}, {"distributions", distributions}};
+          {"seed", o.seed}, {"distributions", distributions}, {"parameter_uncertainty", o.parameter_uncertainty}};
 }
 
 int run_league(const AssessOptions& o) {
@@ -191,9 +192,12 @@ int run_league(const AssessOptions& o) {
                                  {"boundary", driver::to_string(ref.mean.boundary)},
                                  {"wall", fmt::format("R_n {:g}, d50 {:g} mm", ref.mean.R_n, ref.mean.d50_mm)},
                                  {"normal", ref.mean.boundary == driver::BoundaryKind::kCV ? "sigma_n" : "dilation"},
-                                 {"uncertainty_samples", o.samples}, {"sobol_samples", o.sobol_samples}, {"models", names}};
+                                 {"uncertainty_samples", o.samples}, {"sobol_samples", o.sobol_samples}, {"models", names},
+                                 {"parameter_uncertainty", o.parameter_uncertainty}};
+  // an earlier league continues here: its model records say what they were made from, and only
+  // those made from these inputs are reused
   const bool resume = std::filesystem::exists(dir / "manifest.json") &&
-                      io::read_json_file(dir / "manifest.json").value("league", nlohmann::json()) == header;
+                      io::read_json_file(dir / "manifest.json").contains("league");
   if (!resume) io::prepare_run_directory(dir, o.force);
   io::write_manifest(dir, {{"command", "assess"}, {"league", header}, {"status", "running"}});
   std::vector<nlohmann::json> entries;
@@ -211,6 +215,7 @@ int run_league(const AssessOptions& o) {
     fmt::print(stderr, "model {}/{}: {} (calibration, {} parameter samples{})\n", i + 1, names.size(), names[i], o.samples,
                o.sobol_samples > 0 ? fmt::format(", Sobol N = {}", o.sobol_samples) : "");
     assessment::LeagueOptions lo;
+    lo.spread = o.parameter_uncertainty == "fit" ? assessment::ParameterSpread::kFitSigmas : assessment::ParameterSpread::kSeedCovs;
     lo.distributions = texts, lo.uncertainty_samples = o.samples, lo.sobol_samples = o.sobol_samples;
     lo.seed = o.seed, lo.threads = o.threads, lo.progress = increment_progress("run");
     auto e = assessment::entry_json(assessment::assess_model(ref, names[i], inputs[i], lo));
@@ -326,6 +331,10 @@ void add_assess_command(CLI::App& app, CommandList& commands) {
                   "with --reference: directory of distribution files, one per parameter table (<table>.toml: the kind "
                   "and COV of each parameter; default: data/assessment/distributions/ as built into iwb, the seed's "
                   "Table 4.8 and Appendix A)");
+  cmd->add_option("--parameter-uncertainty", o->parameter_uncertainty,
+                  "with --reference: seed (default): the COVs of the seed's Table 4.8 and Appendix A about the "
+                  "calibrated values; fit: each calibrated quantity spread by its own sigma from the fit to the runs")
+      ->check(CLI::IsMember({"seed", "fit"}));
   cmd->add_option("--threads", o->threads, "runs at once (default 0: every core)")->check(whole_in(0, 1024));
   cmd->add_flag("--force", o->force, "with --reference: replace an earlier league of other options in --out");
   cmd->add_option("--out,-o", o->out, "output directory (default runs/assess-<model>, with --reference runs/assess-league)")
