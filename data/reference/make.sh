@@ -8,13 +8,16 @@
 # with another parameter set:  PARAMS=data/params/other.toml data/reference/make.sh compare report
 set -euo pipefail
 IWB=${IWB:-build/iwb}
-PARAMS=${PARAMS:-data/params/truth_grains.toml}  # the hvwe set every run is compared with: calibrated on these grains (data/calibration/truth_grains)
+PARAMS=${PARAMS:-data/params/truth_grains_epsd2.toml}  # the hvwe set every run is compared with: calibrated on these grains (data/calibration/truth_grains_epsd2)
 MODEL=${MODEL:-hvwe}
 JOBS=${JOBS:-1}  # runs at once, NP ranks each
 NP=${NP:-2}
 WORK=${WORK:-runs/reference}  # the full campaigns (VTK, engine inputs and logs): not committed
 DEST=data/reference
-SWEEPS=(truth_rn truth_d50 truth_stress)
+# The campaign on the converged truth (clamped plate, epsd2, 10 mm; issue 20 item 4). Its CNL runs
+# at R_n 0.5 and 0.25 are the convergence study's (EXTRA_CNL), the sweeps hold the rest.
+SWEEPS=(truth2_rn truth2_cns truth2_d50 truth2_stress)
+EXTRA_CNL=(data/convergence/truth_clamped data/convergence/truth_clamped_rn025)
 stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(restore sweeps copy compare report)
 
@@ -40,6 +43,9 @@ copy_campaign() {
 # The committed runs of every sweep, or of one set: cnl (CNL at 50 kPa: names end _cnl), cns
 # (names end _cns-<K>), cnl200 (CNL at 200 kPa: _cnl-200).
 runs_of() {
+  if [[ $1 == all || $1 == cnl ]]; then
+    for d in "${EXTRA_CNL[@]}"; do for r in "$d"/runs/*; do [ -d "$r" ] && echo "$r"; done; done
+  fi
   for s in "${SWEEPS[@]}"; do
     for r in "$DEST/$s"/runs/*; do
       [ -d "$r" ] || continue
