@@ -21,11 +21,11 @@ TEST_CASE("parameter choice: each scene's grains get the set calibrated on them,
     CHECK(chosen_for(io::read_file(f), f) == "dem_default_grains.toml");  // E 1e8 Pa
   const std::string truth = io::read_file("data/scenes/truth.toml");
   // the truth grains with cdt rolling resistance, as truth_grains.toml was calibrated; with the
-  // scene's epsd2 they are other grains (data/calibration/truth_grains_epsd2/), not that set's
+  // scene's epsd2 they are other grains, calibrated in data/calibration/truth_grains_epsd2/
   std::string cdt = truth;
   cdt.replace(cdt.find("rolling_model = \"epsd2\""), 23, "rolling_model = \"cdt\"");
   CHECK(chosen_for(cdt, "truth-cdt.toml") == "truth_grains.toml");
-  CHECK(chosen_for(truth, "truth.toml") != "truth_grains.toml");
+  CHECK(chosen_for(truth, "truth.toml") == "truth_grains_epsd2.toml");
   std::string stiffer = truth;
   stiffer.replace(stiffer.find("youngs_modulus_Pa = 6.9e8"), 25, "youngs_modulus_Pa = 4.2e9");
   CHECK(chosen_for(stiffer, "stiffer.toml").empty());
