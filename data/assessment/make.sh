@@ -19,15 +19,16 @@ for cov in 0.05 0.1; do
     "$IWB" assess mortara data/params/table_4_5_mortara.toml --cov "$cov" --bc "$bc" --gamma 3 --samples $N_EP \
       --cov-of alpha_p=0.01 --cov-of alpha_c=0.01 --cov-of omega=0.01 --cov-of psi=0.01 \
       -o "$DEST/sobol/mortara_${bc}_cov$cov" > /dev/null
+    # with the indices' convergence against N (N/16 ... N: sobol_convergence.*)
     "$IWB" assess lashkari data/params/table_4_7_lashkari.toml --cov "$cov" --bc "$bc" --e0 0.7 --gamma 0.5 \
-      --samples $N_EP -o "$DEST/sobol/lashkari_${bc}_cov$cov" > /dev/null
+      --samples $N_EP --convergence -o "$DEST/sobol/lashkari_${bc}_cov$cov" > /dev/null
   done
 done
 # The hypoplastic model (Gutjahr 2003, Table 4.6): e_c0 sampled, e_i0 and e_d0 tied to it as the seed's 4.3.1
 # says; a medium dense start (e0 0.55 at 100 kPa: e_d 0.27, e_c 0.70), to gamma 0.5
 for cov in 0.05 0.1; do
   "$IWB" assess hp1d data/params/table_4_6_gutjahr.toml --cov "$cov" --bc CNL --e0 0.55 --gamma 0.5 --samples $N_EP \
-    --tie ei0=1.2*ec0 --tie ed0=0.379*ec0 -o "$DEST/sobol/hp1d_CNL_cov$cov" > /dev/null
+    --tie ei0=1.2*ec0 --tie ed0=0.379*ec0 --convergence -o "$DEST/sobol/hp1d_CNL_cov$cov" > /dev/null
 done
 # Parameter uncertainty (Table 4.8, Tables A.1-A.2): CV_Y from 10 000 Latin hypercube samples, CNL
 "$IWB" assess mc data/params/table_4_3_mohr_coulomb.toml --uncertainty "$DEST/distributions/mohr_coulomb.toml" --gamma 0.1 \

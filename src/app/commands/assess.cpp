@@ -10,17 +10,13 @@
 #include <memory>
 
 #include "app/command_list.hpp"
+#include "app/commands/assess_options.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "app/progress.hpp"
 #include "assessment/distribution_file.hpp"
 #include "assessment/element_sensitivity.hpp"
-#include "assessment/league_output.hpp"
-#include "app/parameter_choice.hpp"
-#include "comparison/dem_run.hpp"
-#include "dem/scene.hpp"
-#include "io/json_file.hpp"
-#include "io/parameter_sets.hpp"
+#include "comparison/figure.hpp"
 #include "common/errors.hpp"
 #include "io/parameter_file.hpp"
 #include "io/run_directory.hpp"
@@ -30,19 +26,7 @@ namespace iwb::app {
 
 namespace {
 
-struct AssessOptions {
-  std::string model, params, out, boundary = "CNL", uncertainty;
-  std::vector<std::string> reference, models, params_for;  // the league
-  std::string distributions;  // empty: the files built into iwb
-  std::string parameter_uncertainty = "seed";
-  int sobol_samples = 0, threads = 0;
-  bool force = false;
-  double cov = 0.1, sigma_n = 100.0, e0 = 0.0, K = 0.0, gamma = 0.1;
-  int samples = 1000, increments = 200;
-  unsigned seed = 1;
-  std::vector<std::string> cov_of;  // KEY=COV
-  std::vector<std::string> ties;    // KEY=FACTOR*OTHER
-};
+
 
 // --cov-of KEY=COV, repeated: InputError naming the bad one.
 std::map<std::string, double> own_covs(const std::vector<std::string>& given) {
@@ -122,117 +106,46 @@ std::string uncertainty_markdown(const assessment::UncertaintyResult& r, const A
   return md;
 }
 
-models::ModelInputs as_inputs(const io::ParameterSet& set) {
-  models::ModelInputs in;
-  in.tables = set.tables;
-  in.source = set.origin;
-  return in;
-}
-
-// The league's parameter set of `model`: --params-for MODEL=FILE, else the positional set when
-// one model is named, else for a model calibrated from soil tests the set of the scene's grains as
-// `iwb validate` chooses it, else the model's own example (the seed's table), where its fit starts.
-models::ModelInputs league_parameters(const AssessOptions& o, const std::string& model, const comparison::DemRun& dem) {
-  for (const auto& g : o.params_for) {
-    const auto eq = g.find('=');
-    if (eq == std::string::npos || eq == 0 || eq + 1 == g.size())
-      throw InputError(fmt::format("--params-for {}: give MODEL=FILE, e.g. hvwe=data/params/truth_grains.toml", g));
-    if (g.substr(0, eq) != model) continue;
-    return as_inputs(io::read_parameter_set(g.substr(eq + 1)));
-  }
-  if (!o.params.empty()) return as_inputs(io::read_parameter_set(o.params));
-  const auto& spec = models::find_model(model);
-  if (spec.declaration.calibration_recipe.empty()) return io::shipped_inputs(spec.declaration.example_parameters);
-  std::string why;
-  const auto scene = dem::parse_scene(dem.scene_text, (dem.dir / "manifest.json").string() + " /scene/text");
-  return as_inputs(parameters_for(io::parameter_sets({}), scene, dem.summary.at("residual_friction").get<double>(), why));
-}
-
-// The tables a set lacks for `spec` (the sand set has no [intergranular_strain] for the -igs models)
-// from the model's own example set, and the source says so.
-models::ModelInputs with_missing_tables(const models::ModelSpec& spec, models::ModelInputs in) {
-  for (const auto* t : spec.tables)
-    if (!in.tables.count(t->name)) {
-      in.tables[t->name] = io::shipped_inputs(spec.declaration.example_parameters).tables.at(t->name);
-      in.source += fmt::format(" + [{}] of {}", t->name, spec.declaration.example_parameters);
+// The indices at N/16, N/8, N/4, N/2 and N (each its own samples): sobol_convergence.csv and .md,
+// and a figure of the first quantity's indices with their intervals against N. Returns N's.
+assessment::SobolResult sobol_convergence(const models::ModelSpec& spec, assessment::ElementSensitivityOptions opt,
+                                          const AssessOptions& o, const std::filesystem::path& dir) {
+  std::string csv_text = "N,quantity,parameter,S_T,S_T_low,S_T_high\n";
+  std::string md = fmt::format("# Convergence of the total Sobol indices: {} ({}), COV {}\n\nThe first quantity's indices "
+                               "and their 95 % bootstrap intervals against the base sample size N (each N its own "
+                               "samples; every quantity in sobol_convergence.csv):\n\n| N |",
+                               o.model, o.params, o.cov);
+  std::vector<comparison::PlotCurve> curves;
+  assessment::SobolResult r;
+  for (int k = 4; k >= 0; --k) {
+    opt.samples = std::max(10, o.samples >> k);
+    r = assessment::element_sensitivity(spec, opt);
+    if (k == 4) {
+      for (const auto& p : r.parameters) md += " " + p + " |", curves.push_back({p, {}, {}});
+      md += "\n|---|";
+      for (std::size_t i = 0; i < r.parameters.size(); ++i) md += "---|";
+      md += "\n";
     }
-  return in;
-}
-
-std::vector<std::string> league_models(const AssessOptions& o) {
-  if (!o.model.empty()) return {o.model};
-  if (!o.models.empty()) {
-    for (const auto& m : o.models) models::find_model(m);  // an unknown name is refused before anything runs
-    return o.models;
-  }
-  return models::ranked_interface_models(true);
-}
-
-// What a model's record was made from: a record of other inputs is not reused.
-nlohmann::json record_inputs(const AssessOptions& o, const models::ModelInputs& in,
-                             const std::map<std::string, std::string>& distributions) {
-  return {{"reference", o.reference}, {"parameters", in.tables}, {"samples", o.samples}, {"sobol_samples", o.sobol_samples},
-          {"seed", o.seed}, {"distributions", distributions}, {"parameter_uncertainty", o.parameter_uncertainty}};
-}
-
-int run_league(const AssessOptions& o) {
-  std::vector<comparison::DemRun> runs;
-  for (const auto& r : o.reference) runs.push_back(comparison::load_dem_run(r));
-  const auto ref = assessment::scene_reference(runs);  // refuses runs of different scenes
-  const auto names = league_models(o);
-  const auto texts = assessment::distribution_texts(o.distributions);  // each file's text: a changed COV is a changed input
-  std::vector<models::ModelInputs> inputs;
-  for (const auto& m : names) {
-    inputs.push_back(with_missing_tables(models::find_model(m), league_parameters(o, m, runs.front())));
-    inputs.back().source = inputs.back().source.empty() ? "?" : inputs.back().source;
-    models::find_model(m).make(inputs.back());  // a set the model refuses is bad input, before anything runs
-  }
-  const auto dir = o.out.empty() ? std::filesystem::path("runs") / "assess-league" : std::filesystem::path(o.out);
-  const nlohmann::json header = {{"scene", runs.front().dir.parent_path().string()}, {"runs", o.reference},
-                                 {"boundary", driver::to_string(ref.mean.boundary)},
-                                 {"wall", fmt::format("R_n {:g}, d50 {:g} mm", ref.mean.R_n, ref.mean.d50_mm)},
-                                 {"normal", ref.mean.boundary == driver::BoundaryKind::kCV ? "sigma_n" : "dilation"},
-                                 {"uncertainty_samples", o.samples}, {"sobol_samples", o.sobol_samples}, {"models", names},
-                                 {"parameter_uncertainty", o.parameter_uncertainty}};
-  // an earlier league continues here: its model records say what they were made from, and only
-  // those made from these inputs are reused
-  const bool resume = std::filesystem::exists(dir / "manifest.json") &&
-                      io::read_json_file(dir / "manifest.json").contains("league");
-  if (!resume) io::prepare_run_directory(dir, o.force);
-  io::write_manifest(dir, {{"command", "assess"}, {"league", header}, {"status", "running"}});
-  std::vector<nlohmann::json> entries;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    const auto record = dir / "models" / (names[i] + ".json");
-    const auto in = record_inputs(o, inputs[i], texts);
-    if (std::filesystem::exists(record)) {
-      auto old = io::read_json_file(record);
-      if (old.value("inputs", nlohmann::json()) == in) {
-        fmt::print(stderr, "model {}/{}: {} (reused {})\n", i + 1, names.size(), names[i], record.string());
-        entries.push_back(old);
-        continue;
-      }
+    md += fmt::format("| {} |", opt.samples);
+    for (std::size_t i = 0; i < r.parameters.size(); ++i) {
+      const auto& t = r.total[0][i];
+      md += fmt::format(" {:.3f} [{:.3f}, {:.3f}] |", t.value, t.low, t.high);
+      curves[i].x.push_back(opt.samples), curves[i].y.push_back(t.value);
+      for (std::size_t q = 0; q < r.quantities.size(); ++q)
+        csv_text += fmt::format("{},{},{},{:.6g},{:.6g},{:.6g}\n", opt.samples, r.quantities[q], r.parameters[i],
+                                r.total[q][i].value, r.total[q][i].low, r.total[q][i].high);
     }
-    fmt::print(stderr, "model {}/{}: {} (calibration, {} parameter samples{})\n", i + 1, names.size(), names[i], o.samples,
-               o.sobol_samples > 0 ? fmt::format(", Sobol N = {}", o.sobol_samples) : "");
-    assessment::LeagueOptions lo;
-    lo.spread = o.parameter_uncertainty == "fit" ? assessment::ParameterSpread::kFitSigmas : assessment::ParameterSpread::kSeedCovs;
-    lo.distributions = texts, lo.uncertainty_samples = o.samples, lo.sobol_samples = o.sobol_samples;
-    lo.seed = o.seed, lo.threads = o.threads, lo.progress = increment_progress("run");
-    auto e = assessment::entry_json(assessment::assess_model(ref, names[i], inputs[i], lo));
-    e["inputs"] = in;
-    std::filesystem::create_directories(record.parent_path());
-    io::write_atomically(record, e.dump(1));
-    entries.push_back(e);
+    md += "\n";
   }
-  const auto table = assessment::ranked(entries);
-  assessment::draw_league_figures(table, dir / "figures");
-  io::write_atomically(dir / "league.csv", assessment::league_csv(table));
-  io::write_atomically(dir / "league.md", assessment::league_markdown(header, table));
-  io::write_manifest(dir, {{"command", "assess"}, {"league", header}, {"status", "complete"}});
-  const auto md = assessment::league_markdown(header, table);
-  fmt::print("{}", md.substr(0, md.find("\n![")));
-  fmt::print(stderr, "-> {}\n", (dir / "league.md").string());
-  return 0;
+  io::prepare_run_directory(dir, true);
+  io::write_atomically(dir / "sobol_convergence.csv", csv_text);
+  io::write_atomically(dir / "sobol_convergence.md", md);
+  auto fig = comparison::curves_figure("sobol_convergence", fmt::format("{}: total Sobol indices of {} against N", o.model,
+                                                                       r.quantities.front()),
+                                       "N, the base sample size", "S_T", curves);
+  fig.extra += "set logscale x\n";
+  comparison::draw(fig, dir);
+  return r;
 }
 
 int run_assess(const AssessOptions& o) {
@@ -260,8 +173,8 @@ int run_assess(const AssessOptions& o) {
     fmt::print("{}", md);
     return 0;
   }
-  const auto r = assessment::element_sensitivity(spec, opt);
-  io::prepare_run_directory(dir, true);
+  const auto r = o.convergence ? sobol_convergence(spec, opt, o, dir) : assessment::element_sensitivity(spec, opt);
+  if (!o.convergence) io::prepare_run_directory(dir, true);
   io::write_atomically(dir / "sobol.csv", csv(r));
   io::write_atomically(dir / "sobol.md", markdown(r, o));
   fmt::print("{}", markdown(r, o));
@@ -294,6 +207,9 @@ void add_assess_command(CLI::App& app, CommandList& commands) {
   cmd->add_option("--cov-of", o->cov_of,
                   "KEY=COV: this parameter's own coefficient of variation instead of --cov (repeat; the seed takes 0.01 "
                   "for the sensitive parameters it stars, e.g. Mortara's alpha_p, alpha_c, omega)");
+  cmd->add_flag("--convergence", o->convergence,
+               "also the indices at N/16, N/8, N/4 and N/2 (each with its own samples): sobol_convergence.md, .csv "
+               "and .svg show how they settle with the sample size");
   cmd->add_option("--tie", o->ties,
                   "KEY=FACTOR*OTHER: this parameter follows another and is not varied itself (repeat; the seed's "
                   "Table 4.6 samples e_c0 only: --tie ei0=1.2*ec0 --tie ed0=0.379*ec0)");

@@ -1,0 +1,140 @@
+// `iwb assess --reference RUN...`: the league of the interface models on a DEM scene (issue 17,
+// seed 4.3): parameters per model, the runs, resumable records, the tables and figures.
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <map>
+
+#include "app/commands/assess_options.hpp"
+#include "app/parameter_choice.hpp"
+#include "app/progress.hpp"
+#include "assessment/distribution_file.hpp"
+#include "assessment/league_output.hpp"
+#include "common/errors.hpp"
+#include "comparison/dem_run.hpp"
+#include "dem/scene.hpp"
+#include "io/json_file.hpp"
+#include "io/parameter_sets.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::app {
+
+namespace {
+
+models::ModelInputs as_inputs(const io::ParameterSet& set) {
+  models::ModelInputs in;
+  in.tables = set.tables;
+  in.source = set.origin;
+  return in;
+}
+
+// The league's parameter set of `model`: --params-for MODEL=FILE, else the positional set when
+// one model is named, else for a model calibrated from soil tests the set of the scene's grains as
+// `iwb validate` chooses it, else the model's own example (the seed's table), where its fit starts.
+models::ModelInputs league_parameters(const AssessOptions& o, const std::string& model, const comparison::DemRun& dem) {
+  for (const auto& g : o.params_for) {
+    const auto eq = g.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == g.size())
+      throw InputError(fmt::format("--params-for {}: give MODEL=FILE, e.g. hvwe=data/params/truth_grains.toml", g));
+    if (g.substr(0, eq) != model) continue;
+    return as_inputs(io::read_parameter_set(g.substr(eq + 1)));
+  }
+  if (!o.params.empty()) return as_inputs(io::read_parameter_set(o.params));
+  const auto& spec = models::find_model(model);
+  if (spec.declaration.calibration_recipe.empty()) return io::shipped_inputs(spec.declaration.example_parameters);
+  std::string why;
+  const auto scene = dem::parse_scene(dem.scene_text, (dem.dir / "manifest.json").string() + " /scene/text");
+  return as_inputs(parameters_for(io::parameter_sets({}), scene, dem.summary.at("residual_friction").get<double>(), why));
+}
+
+// The tables a set lacks for `spec` (the sand set has no [intergranular_strain] for the -igs models)
+// from the model's own example set, and the source says so.
+models::ModelInputs with_missing_tables(const models::ModelSpec& spec, models::ModelInputs in) {
+  for (const auto* t : spec.tables)
+    if (!in.tables.count(t->name)) {
+      in.tables[t->name] = io::shipped_inputs(spec.declaration.example_parameters).tables.at(t->name);
+      in.source += fmt::format(" + [{}] of {}", t->name, spec.declaration.example_parameters);
+    }
+  return in;
+}
+
+std::vector<std::string> league_models(const AssessOptions& o) {
+  if (!o.model.empty()) return {o.model};
+  if (!o.models.empty()) {
+    for (const auto& m : o.models) models::find_model(m);  // an unknown name is refused before anything runs
+    return o.models;
+  }
+  return models::ranked_interface_models(true);
+}
+
+// What a model's record was made from: a record of other inputs is not reused.
+nlohmann::json record_inputs(const AssessOptions& o, const models::ModelInputs& in,
+                             const std::map<std::string, std::string>& distributions) {
+  return {{"reference", o.reference}, {"parameters", in.tables}, {"samples", o.samples}, {"sobol_samples", o.sobol_samples},
+          {"seed", o.seed}, {"distributions", distributions}, {"parameter_uncertainty", o.parameter_uncertainty}};
+}
+
+}  // namespace
+
+int run_league(const AssessOptions& o) {
+  std::vector<comparison::DemRun> runs;
+  for (const auto& r : o.reference) runs.push_back(comparison::load_dem_run(r));
+  const auto ref = assessment::scene_reference(runs);  // refuses runs of different scenes
+  const auto names = league_models(o);
+  const auto texts = assessment::distribution_texts(o.distributions);  // each file's text: a changed COV is a changed input
+  std::vector<models::ModelInputs> inputs;
+  for (const auto& m : names) {
+    inputs.push_back(with_missing_tables(models::find_model(m), league_parameters(o, m, runs.front())));
+    inputs.back().source = inputs.back().source.empty() ? "?" : inputs.back().source;
+    models::find_model(m).make(inputs.back());  // a set the model refuses is bad input, before anything runs
+  }
+  const auto dir = o.out.empty() ? std::filesystem::path("runs") / "assess-league" : std::filesystem::path(o.out);
+  const nlohmann::json header = {{"scene", runs.front().dir.parent_path().string()}, {"runs", o.reference},
+                                 {"boundary", driver::to_string(ref.mean.boundary)},
+                                 {"wall", fmt::format("R_n {:g}, d50 {:g} mm", ref.mean.R_n, ref.mean.d50_mm)},
+                                 {"normal", ref.mean.boundary == driver::BoundaryKind::kCV ? "sigma_n" : "dilation"},
+                                 {"uncertainty_samples", o.samples}, {"sobol_samples", o.sobol_samples}, {"models", names},
+                                 {"parameter_uncertainty", o.parameter_uncertainty}};
+  // an earlier league continues here: its model records say what they were made from, and only
+  // those made from these inputs are reused
+  const bool resume = std::filesystem::exists(dir / "manifest.json") &&
+                      io::read_json_file(dir / "manifest.json").contains("league");
+  if (!resume) io::prepare_run_directory(dir, o.force);
+  io::write_manifest(dir, {{"command", "assess"}, {"league", header}, {"status", "running"}});
+  std::vector<nlohmann::json> entries;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const auto record = dir / "models" / (names[i] + ".json");
+    const auto in = record_inputs(o, inputs[i], texts);
+    if (std::filesystem::exists(record)) {
+      auto old = io::read_json_file(record);
+      if (old.value("inputs", nlohmann::json()) == in) {
+        fmt::print(stderr, "model {}/{}: {} (reused {})\n", i + 1, names.size(), names[i], record.string());
+        entries.push_back(old);
+        continue;
+      }
+    }
+    fmt::print(stderr, "model {}/{}: {} (calibration, {} parameter samples{})\n", i + 1, names.size(), names[i], o.samples,
+               o.sobol_samples > 0 ? fmt::format(", Sobol N = {}", o.sobol_samples) : "");
+    assessment::LeagueOptions lo;
+    lo.spread = o.parameter_uncertainty == "fit" ? assessment::ParameterSpread::kFitSigmas : assessment::ParameterSpread::kSeedCovs;
+    lo.distributions = texts, lo.uncertainty_samples = o.samples, lo.sobol_samples = o.sobol_samples;
+    lo.seed = o.seed, lo.threads = o.threads, lo.progress = increment_progress("run");
+    auto e = assessment::entry_json(assessment::assess_model(ref, names[i], inputs[i], lo));
+    e["inputs"] = in;
+    std::filesystem::create_directories(record.parent_path());
+    io::write_atomically(record, e.dump(1));
+    entries.push_back(e);
+  }
+  const auto table = assessment::ranked(entries);
+  assessment::draw_league_figures(table, dir / "figures");
+  io::write_atomically(dir / "league.csv", assessment::league_csv(table));
+  io::write_atomically(dir / "league.md", assessment::league_markdown(header, table));
+  io::write_manifest(dir, {{"command", "assess"}, {"league", header}, {"status", "complete"}});
+  const auto md = assessment::league_markdown(header, table);
+  fmt::print("{}", md.substr(0, md.find("\n![")));
+  fmt::print(stderr, "-> {}\n", (dir / "league.md").string());
+  return 0;
+}
+
+
+}  // namespace iwb::app
