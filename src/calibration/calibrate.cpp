@@ -212,6 +212,17 @@ void stage_compression(Calibrator& c, const CalibrationOptions& o) {
                   c.current["hs_kPa"], c.current["n"], oedo.size(), r.rmse, r.stop_reason));
 }
 
+// The smallest e_c0 whose e_i (e_i0 = kEi0OverEc0 e_c0, Bauer's factor at p = 3 sigma0, an upper
+// bound of the start's mean stress) lies 1 % above every test's initial void ratio.
+double smallest_admissible_ec0(const Calibrator& c) {
+  double out = 0.0;
+  for (const auto& t : c.tests) {
+    const double factor = std::exp(-std::pow(3.0 * t.sigma0_kPa / c.current.at("hs_kPa"), c.current.at("n")));
+    out = std::max(out, 1.01 * t.e0 / (kEi0OverEc0 * factor));
+  }
+  return out;
+}
+
 void stage_void_ratios(Calibrator& c, const Indices& critical) {
   if (critical.empty()) {
     c.notes.push_back(
@@ -228,11 +239,22 @@ void stage_void_ratios(Calibrator& c, const Indices& critical) {
            std::exp(-std::pow(3.0 * t.sigma_n_kPa.back() / c.current["hs_kPa"], c.current["n"]));
   }
   c.current["ec0"] = ec0 / double(critical.size());
+  // A DEM cell that localises ends with a stationary bulk e below the critical state line (only
+  // its band dilated to it): e_c0 from such a test can leave the loosest tests' starts above
+  // e_i, where no fit can reach them. The start is raised until every test starts admissibly.
+  const double admissible = smallest_admissible_ec0(c);
+  const bool raised = admissible > c.current["ec0"];
+  c.current["ec0"] = std::max(c.current["ec0"], admissible);
   set_limits_from_ec0(c.current);
   c.notes.push_back(
-      fmt::format("C: e_c0 = {:.4f} from the critical void ratios of {} test(s); e_i0 = "
+      fmt::format("C: e_c0 = {:.4f} from the critical void ratios of {} test(s){}; e_i0 = "
                   "{} e_c0, e_d0 = {} e_c0 as starting values",
-                  c.current["ec0"], critical.size(), kEi0OverEc0, kEd0OverEc0));
+                  c.current["ec0"], critical.size(),
+                  raised ? fmt::format(", raised from {:.4f} so that every test starts below e_i (a localised "
+                                       "cell's bulk e lies below the critical state line)",
+                                       ec0 / double(critical.size()))
+                         : "",
+                  kEi0OverEc0, kEd0OverEc0));
 }
 
 void stage_density(Calibrator& c, const CalibrationOptions& o) {
