@@ -34,7 +34,10 @@ double top_of_roughness(const dem::RoughnessProfile& p, double length) {
 }
 
 // The interior: a margin above the wall's peaks and below the plate's valleys (the top grains'
-// height where the solid fraction falls to half its largest value, less the plate's roughness).
+// height where the solid fraction falls to half its largest value, less the plate's roughness),
+// and below the plate's clamp (scene.hpp, plate_clamp_m): the clamp holds its grains by an
+// external force, which carries part of the shear there, so the momentum balance that makes
+// sigma_xz uniform and equal to the wall's tau holds only in the free soil beneath it.
 Span interior_d50(const io::CsvTable& p, const dem::Scene& s, double d50) {
   const auto z = p.values("z_over_d50"), nu = p.values("solid_fraction");
   const double peak = *std::max_element(nu.begin(), nu.end());
@@ -43,7 +46,8 @@ Span interior_d50(const io::CsvTable& p, const dem::Scene& s, double d50) {
     if (nu[i] >= 0.5 * peak) top = z[i];
   const double wall_top = (top_of_roughness(s.wall, s.length_m) - s.wall.mean_height_m()) / d50;
   const double plate_rough = top_of_roughness(s.plate, s.length_m) / d50;
-  return {wall_top + kInteriorMarginD50, top - plate_rough - kInteriorMarginD50};
+  const double clamp = s.plate_clamp_m / d50;
+  return {wall_top + kInteriorMarginD50, top - plate_rough - clamp - kInteriorMarginD50};
 }
 
 // The profiles of the second half of the travel, averaged on the first one's heights.
@@ -131,7 +135,7 @@ BandChecks band_checks(const dem::Scene& s, const dem::Numerics& n, const io::Cs
                               "largest |integral of the solid fraction x area / grains' volume - 1| over the snapshots"));
   if (!spread.empty()) {
     j["checks"].push_back(check("shear_stress_uniform", mean(spread), "<=", kShearSpreadTolerance,
-                                "(max - min) / mean of sigma_xz over the interior (2 d50 from the wall's peaks and the plate's valleys), mean over the snapshots after the start"));
+                                "(max - min) / mean of sigma_xz over the interior (2 d50 from the wall's peaks and from the plate's valleys or its clamp's lower edge), mean over the snapshots after the start"));
     j["checks"].push_back(check("shear_stress_equals_wall", mean(tau_err), "<=", kShearWallTolerance,
                                 "|interior mean of sigma_xz / the wall's tau - 1|, mean over the snapshots after the start"));
     j["checks"].push_back(check("normal_stress_equals_wall", mean(sigma_err), "<=", kNormalWallTolerance,
