@@ -29,10 +29,10 @@ struct SmokeRun {
 
 // Runs the scene `text` (read from `file`, perhaps changed) in test-runs/dem/ENGINE/RUN_NAME.
 SmokeRun run_text(const std::string& file, const std::string& text, const std::string& run_name,
-                  const std::string& engine_name) {
+                  const std::string& engine_name, int processes = 1) {
   SmokeRun r{dem::parse_scene(text, file), fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / run_name, {}, {}};
   const auto engine = dem::make_engine(engine_name);
-  dem::RunOptions opt{r.dir, 1, false, true, "tests", nullptr, nullptr};
+  dem::RunOptions opt{r.dir, processes, false, true, "tests", nullptr, nullptr, {}};
   r.outcome = dem::run_scene(r.scene, text, *engine, opt);
   INFO(r.outcome.status);
   REQUIRE(r.outcome.complete());
@@ -333,6 +333,32 @@ void check_instant_start(const std::string& engine) {
 }
 
 }  // namespace
+
+// The grains of every scene fill the box's lower part (the plate's servo holds them there), so a
+// split of the ranks along z leaves one rank idle; a split along x gives each its half of a
+// specimen that is uniform in x. LIGGGHTS prints each stage's share as "Nlocal: ave max min".
+TEST_CASE("LIGGGHTS on two ranks: each rank holds a quarter to three quarters of the grains in every stage",
+          "[dem][liggghts]") {
+  const std::string file = "data/scenes/smoke.toml";
+  const auto r = run_text(file, io::read_file(file), "smoke-two-ranks", "liggghts", 2);
+  const std::regex nlocal(R"(Nlocal:\s+(\S+) ave (\S+) max (\S+) min)");
+  for (const char* log : {"log.consolidate.liggghts", "log.shear.liggghts"}) {
+    std::ifstream in(r.dir / "liggghts" / log);
+    REQUIRE(in);
+    std::string line;
+    std::smatch m;
+    int stages = 0;
+    while (std::getline(in, line))
+      if (std::regex_search(line, m, nlocal)) {
+        const double total = 2.0 * std::stod(m[1]), max = std::stod(m[2]), min = std::stod(m[3]);
+        INFO(log << ": " << line);
+        CHECK(min >= 0.25 * total);
+        CHECK(max <= 0.75 * total);
+        ++stages;
+      }
+    CHECK(stages > 0);
+  }
+}
 
 TEST_CASE("LIGGGHTS smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][liggghts]") { check_cnl("liggghts"); }
 TEST_CASE("LIGGGHTS smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][liggghts]") { check_cns("liggghts"); }
