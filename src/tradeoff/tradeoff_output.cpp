@@ -62,9 +62,10 @@ std::string settings_table(const json& t) {
 std::string noise_table(const json& t) {
   std::string md = "| QoI | base mean | seed sd | relative (noise floor) |\n|---|---|---|---|\n";
   for (const auto& q : dem::quantities_of_interest()) {
-    const auto& n = t["noise_floor"][q.key];
-    md += fmt::format("| {} | {} | {} (n={}) | {} |\n", q.label, number(n["mean"]), number(n["sd"]),
-                      n.value("n", 0), percent(n["relative"]));
+    // a tradeoff stopped before any base seed completed has no floor yet: blank cells, n=0
+    const json n = t.value("noise_floor", json::object()).value(q.key, json::object());
+    md += fmt::format("| {} | {} | {} (n={}) | {} |\n", q.label, number(n.value("mean", json())),
+                      number(n.value("sd", json())), n.value("n", 0), percent(n.value("relative", json())));
   }
   return md;
 }

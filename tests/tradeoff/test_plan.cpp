@@ -8,6 +8,7 @@
 #include "tradeoff/plan.hpp"
 #include "support/mohr_coulomb_reference.hpp"
 #include "tradeoff/tradeoff.hpp"
+#include "tradeoff/tradeoff_output.hpp"
 
 using namespace iwb;
 using nlohmann::json;
@@ -212,4 +213,23 @@ TEST_CASE("plan: a tradeoff.json recording only the scene's sha256 still accepts
                       Catch::Contains("run directories"));
   REQUIRE_THROWS_WITH(tradeoff::run_plan(plan_on_copy("renamed.toml", "seed = 1", "seed = 2", old)),
                       Catch::Contains("its DEM settings differ"));
+}
+
+TEST_CASE("tradeoff stopped before any run completed: its tables say so and are written", "[tradeoff]") {
+  json r = json::array();
+  for (auto x : rows()) {
+    x = {{"name", x["name"]}, {"kind", x["kind"]}, {"knob", x["knob"]}, {"factor", x["factor"]},
+         {"seed", 1}, {"settings", ""}, {"status", "not run"}};
+    r.push_back(x);
+  }
+  for (const auto mode : {tradeoff::Reference::kBase, tradeoff::Reference::kRefined}) {
+    json t = tradeoff::analyse(r, mode);
+    CHECK(t["reference"].is_null());
+    t["status"] = "interrupted";
+    const auto dir = std::filesystem::path(IWB_TEST_RUNS_DIR) / "tradeoff-none-complete";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    REQUIRE_NOTHROW(tradeoff::write_tradeoff(t, dir));
+    CHECK(io::read_file(dir / "tradeoff.md").find("no complete") != std::string::npos);
+  }
 }
