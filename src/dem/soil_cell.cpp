@@ -33,8 +33,13 @@ bool oedometer(const SoilCellSpec& c) {
   return c.test == SoilTestKind::kOedometer;
 }
 
-double preparation_friction(SoilDensity d) {
-  return d == SoilDensity::kDense ? kDenseConsolidationFriction : kLooseConsolidationFriction;
+double preparation_friction(SoilDensity d, const Scene& scene) {
+  switch (d) {
+    case SoilDensity::kDense: return kDenseConsolidationFriction;
+    case SoilDensity::kLoose: return kLooseConsolidationFriction;
+    case SoilDensity::kAsScene: return scene.consolidation.friction;
+  }
+  return scene.consolidation.friction;
 }
 
 // Height between the mean surfaces of wall and plate, with the plate's reference at z (m): the
@@ -244,11 +249,17 @@ nlohmann::json fresh_manifest(const std::string& text, const std::string& source
 SoilDensity parse_soil_density(const std::string& text, const std::string& where) {
   if (text == "dense") return SoilDensity::kDense;
   if (text == "loose") return SoilDensity::kLoose;
-  throw InputError(fmt::format("{} = '{}': allowed dense or loose", where, text));
+  if (text == "as-scene") return SoilDensity::kAsScene;
+  throw InputError(fmt::format("{} = '{}': allowed dense, loose or as-scene", where, text));
 }
 
 const char* to_string(SoilDensity d) {
-  return d == SoilDensity::kDense ? "dense" : "loose";
+  switch (d) {
+    case SoilDensity::kDense: return "dense";
+    case SoilDensity::kLoose: return "loose";
+    case SoilDensity::kAsScene: return "as-scene";
+  }
+  return "?";
 }
 
 double SoilCellSpec::initial_stress_kPa() const {
@@ -288,7 +299,7 @@ std::string cell_scene_text(const std::string& text, const std::string& source,
   set("specimen.length_d50", c.length_d50);
   set("specimen.width_d50", c.width_d50);
   set("specimen.height_d50", c.height_d50);
-  set("specimen.consolidation_friction", preparation_friction(c.density));
+  set("specimen.consolidation_friction", preparation_friction(c.density, base));
   for (const std::string side : {"wall", "plate"}) {
     set(side + ".profile", std::string("sawtooth"));
     set(side + ".pitch_d50", kCellPitchD50);

@@ -16,7 +16,9 @@
 
 namespace iwb::dem {
 
-enum class SoilDensity { kDense, kLoose };
+// kAsScene: prepared with the scene's own [specimen] consolidation_friction, so that the cell has
+// the density of the scene's specimen (a soil test to set beside the interface runs of that scene).
+enum class SoilDensity { kDense, kLoose, kAsScene };
 
 SoilDensity parse_soil_density(const std::string& text, const std::string& where);
 const char* to_string(SoilDensity d);

@@ -24,7 +24,7 @@ const std::string kScene = "data/scenes/smoke.toml";
 calibration::SoilTest run_cell(const dem::SoilCellSpec& spec, const std::string& name,
                                const std::string& scene = kScene) {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "soil" / spec.engine / name;
-  const dem::RunOptions opt{dir, 1, false, true, "tests", nullptr, nullptr};
+  const dem::RunOptions opt{dir, 1, false, true, "tests", nullptr, nullptr, {}};
   const auto outcome = dem::run_soil_test(io::read_file(scene), scene, spec, opt);
   REQUIRE(outcome.status == "complete");
   const auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
@@ -176,4 +176,24 @@ TEST_CASE("DEM soil cell: stiff grains prepared dense consolidate at 10 and at 2
     INFO(sigma << " kPa");
     CHECK(t.sigma_n_kPa.front() == Approx(sigma).epsilon(0.05));
   }
+}
+
+// A soil test beside an interface run compares like with like only at the density of that run's
+// specimen: as-scene prepares the cell with the scene's own preparation friction (the truth's 0.1),
+// where dense and loose replace it by 0 and 1.
+TEST_CASE("DEM soil cell: as-scene density prepares the cell as the scene's specimen", "[dem]") {
+  const std::string scene = "data/scenes/truth.toml";
+  const auto text = io::read_file(scene);
+  REQUIRE(dem::parse_scene(text, scene).consolidation.friction == Approx(0.1));
+  dem::SoilCellSpec c;
+  c.test = SoilTestKind::kSimpleShear;
+  const auto friction = [&](const char* density) {
+    c.density = dem::parse_soil_density(density, "--density");
+    CHECK(dem::to_string(c.density) == std::string(density));
+    return dem::parse_scene(dem::cell_scene_text(text, scene, c), "cell").consolidation.friction;
+  };
+  CHECK(friction("as-scene") == Approx(0.1));
+  CHECK(friction("dense") == 0.0);
+  CHECK(friction("loose") == 1.0);
+  CHECK_THROWS_WITH(dem::parse_soil_density("medium", "--density"), Catch::Contains("as-scene"));
 }

@@ -92,8 +92,10 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
   s->add_option("--bc", c->bc, "simple shear: CNL or CV")
       ->check(CLI::IsMember({"CNL", "CV"}))
       ->capture_default_str();
-  s->add_option("--density", c->density, "dense (preparation friction 0) or loose (1)")
-      ->check(CLI::IsMember({"dense", "loose"}))
+  s->add_option("--density", c->density,
+                "dense (preparation friction 0), loose (1) or as-scene (the scene's own [specimen] "
+                "consolidation_friction: the density of its interface specimen)")
+      ->check(CLI::IsMember({"dense", "loose", "as-scene"}))
       ->capture_default_str();
   s->add_option("--sigma", c->spec.sigma0_kPa,
                 "first sigma_v (oedometer, default 10) or sigma_n (simple shear, 50), kPa")
