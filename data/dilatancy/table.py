@@ -1,0 +1,116 @@
+"""Peak friction and peak dilatancy rate d u_n / d u_x of the truth grains sheared three ways, from
+the committed runs (README.md here): the soil cell (no wall) at the density of the truth's specimen
+and at the calibration's dense and loose densities; the interface runs of the truth scene on the
+flat, R_n 0.25 and R_n 0.5 walls; and vw3d with the calibrated set, started at each soil cell's own
+void ratio. In simple shear d u_n / d u_x = d eps_n / d gamma, and at an interface whose dilation
+happens in a band of thickness d_s it is d eps_n / d gamma of the band: the rate compares the three
+whatever the band's thickness. Run from the repository root: /usr/bin/python3 data/dilatancy/table.py
+"""
+import csv
+import glob
+import math
+import os
+import subprocess
+import tempfile
+
+import numpy as np
+
+WINDOW_MM = 1.0  # travel over which the rate is a least-squares slope (both kinds of run)
+PARAMS = "data/params/truth_grains_epsd2.toml"
+
+
+def load(path):
+    rows = list(csv.DictReader(open(path)))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def peak_rate(ux, un):
+    """Largest least-squares slope of u_n over u_x in a window of WINDOW_MM, and where it is."""
+    best, at = -np.inf, np.nan
+    for x in ux:
+        m = (ux >= x - WINDOW_MM / 2) & (ux <= x + WINDOW_MM / 2)
+        if m.sum() > 3:
+            s = np.polyfit(ux[m], un[m], 1)[0]
+            if s > best:
+                best, at = s, x
+    return best, at
+
+
+def model_run(e0, sigma_kPa=50.0, gamma=0.5):
+    """vw3d with the calibrated set, CNL simple shear from e0 (iwb element; d_s 1 mm, so u = gamma mm)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        test = os.path.join(tmp, "test.toml")
+        with open(test, "w") as f:
+            f.write(f'description = "dilatancy table"\n[model]\nname = "vw3d"\nparameters = "{os.path.abspath(PARAMS)}"\n'
+                    f"[initial]\nsigma_n_kPa = {sigma_kPa}\ne0 = {e0}\n[shear_zone]\nd_s_mm = 1.0\n"
+                    f'[boundary]\ntype = "CNL"\n[path]\nkind = "monotonic"\ngamma = {gamma}\nincrements = 2500\n')
+        subprocess.run(["build/iwb", "element", test, "-o", os.path.join(tmp, "out")], check=True,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        h = load(os.path.join(tmp, "out", "history.csv"))
+    rate = np.gradient(h["u_n_mm"], h["u_x_mm"])  # u in mm of a 1 mm zone: the rate is d eps_n / d gamma
+    return h["tau_over_sigma_n"].max(), rate.max()
+
+
+def soil_rows(pattern):
+    out = []
+    for f in sorted(glob.glob(pattern)):
+        d = load(f)
+        mu = d["tau_kPa"] / d["sigma_n_kPa"]
+        height = d["u_x_mm"][-1] / d["gamma"][-1]
+        rate, at = peak_rate(d["u_x_mm"], d["u_n_mm"])
+        out.append((f.split("/")[-3], d["e"][0], mu.max(), rate, at / height, *model_run(d["e"][0])))
+    return out
+
+
+def interface_rows(pattern):
+    out = []
+    for f in sorted(glob.glob(pattern)):
+        d = load(f)
+        rate, at = peak_rate(d["u_x_mm"], d["u_n_mm"])
+        out.append((f.split("/")[-2], d["e_band"][0], d["e_specimen"][0], (d["tau_kPa"] / d["sigma_n_kPa"]).max(), rate, at))
+    return out
+
+
+def mean_sd(xs):
+    xs = np.array(xs, dtype=float)
+    return f"{xs.mean():.3f} +- {xs.std(ddof=1):.3f}" if len(xs) > 1 else f"{xs[0]:.3f}"
+
+
+def main():
+    print("## Soil cell, CNL 50 kPa (12 x 6 x 12 d50, I 3e-4), against vw3d from the cell's own e0\n")
+    print("| density | seed | e0 | DEM peak friction | DEM peak rate | at gamma | vw3d peak friction | vw3d peak rate |")
+    print("|---|---|---|---|---|---|---|---|")
+    groups = {}
+    for name, pattern in [("as-scene", "data/dilatancy/seed*/simpleshear-CNL-as-scene-50/timeseries.csv"),
+                          ("dense", "data/calibration/truth_grains_epsd2/seed*/simpleshear-CNL-dense-50/timeseries.csv"),
+                          ("loose", "data/calibration/truth_grains_epsd2/seed*/simpleshear-CNL-loose-50/timeseries.csv")]:
+        rows = soil_rows(pattern)
+        groups[name] = rows
+        for seed, e0, mu, rate, g, mmu, mrate in rows:
+            print(f"| {name} | {seed} | {e0:.3f} | {mu:.3f} | {rate:.3f} | {g:.3f} | {mmu:.3f} | {mrate:.3f} |")
+    print("\n## Interface runs of the truth scene, CNL 50 kPa\n")
+    print("| wall | run | e_band at start | e_specimen at start | peak friction | peak rate | at u_x (mm) |")
+    print("|---|---|---|---|---|---|---|")
+    iface = {}
+    for wall, pattern in [("flat", "data/reference/truth2_rn/runs/flat_s*_cnl/timeseries.csv"),
+                          ("R_n 0.25", "data/convergence/truth_clamped_rn025/runs/*/timeseries.csv"),
+                          ("R_n 0.5", "data/convergence/truth_clamped/runs/*/timeseries.csv")]:
+        rows = interface_rows(pattern)
+        iface[wall] = rows
+        for run, eb, es, mu, rate, at in rows:
+            print(f"| {wall} | {run} | {eb:.3f} | {es:.3f} | {mu:.3f} | {rate:.3f} | {at:.2f} |")
+    print("\n## Means over the seeds\n")
+    print("| what | e at start | peak friction | peak dilatancy rate | vw3d from the same e0: peak friction, rate |")
+    print("|---|---|---|---|---|")
+    for name, rows in groups.items():
+        if rows:
+            print(f"| soil cell, {name} | {mean_sd([r[1] for r in rows])} | {mean_sd([r[2] for r in rows])} | "
+                  f"{mean_sd([r[3] for r in rows])} | {mean_sd([r[5] for r in rows])}, {mean_sd([r[6] for r in rows])} |")
+    for wall, rows in iface.items():
+        if rows:
+            print(f"| interface, {wall} | {mean_sd([r[2] for r in rows])} (band {mean_sd([r[1] for r in rows])}) | "
+                  f"{mean_sd([r[3] for r in rows])} | {mean_sd([r[4] for r in rows])} | |")
+
+
+if __name__ == "__main__":
+    main()
