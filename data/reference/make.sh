@@ -22,7 +22,7 @@ stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(restore sweeps copy compare report)
 
 # The committed part of a campaign: sweep.json, the job scenes, and per run the contract files
-# without VTK and without liggghts/ (inputs, logs, restart files).
+# without VTK and without liggghts/ (inputs, logs, restart files), with fields/band*.csv.
 copy_campaign() {
   local from=$1 to=$2
   rm -rf "$to"
@@ -37,6 +37,11 @@ copy_campaign() {
     fi
     mkdir -p "$to/runs/$name"
     cp "$run"/{manifest.json,summary.json,timeseries.csv,profiles.csv} "$to/runs/$name/"
+    # the coarse-grained checks per snapshot and the band's mean profile (not the .vti images)
+    if [ -f "$run/fields/band.csv" ]; then
+      mkdir -p "$to/runs/$name/fields"
+      cp "$run"/fields/{band.csv,band_profile.csv} "$to/runs/$name/fields/"
+    fi
   done
 }
 
