@@ -74,8 +74,11 @@ struct Follower {
     result.facts["particles"] = got;
     result.facts["particles_requested"] = want;
     if (got < want && result.failure.empty())
-      result.failure = fmt::format("particle count short: {} of {} inserted (the insertion under-filled "
-                                   "the region; lower specimen.solid_fraction_estimate or particles)",
+      // The region is sized for a loose solid fraction (dem/numerics.cpp) with every grain wholly
+      // inside it, so a narrow or short box, whose margins of one grain weigh more, fills it
+      // nearly to jamming: seen with the truth halved to 12 x 4 x 10 d50 (639 of 640).
+      result.failure = fmt::format("particle count short: {} of {} inserted (random insertion jammed in "
+                                   "its region; fewer specimen.particles, or a wider or longer box)",
                                    got, want);
   }
 
