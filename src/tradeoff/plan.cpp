@@ -177,12 +177,27 @@ void require_same_scene(const json& t, const fs::path& file, const PlanOptions& 
     throw refuse("its DEM settings differ (this tradeoff.json records only their sha256, not which key)");
 }
 
+std::vector<std::string> complete_base_seeds(const json& t) {
+  std::vector<std::string> names;
+  for (const auto& r : t["runs"])
+    if (r["kind"] == "base" && r["status"] == "complete") names.push_back(r["name"].get<std::string>());
+  return names;
+}
+
+// The runs the reference stands on: the refined run, or, for a tradeoff measured against its own
+// base (`iwb tradeoff --reference base`), the complete base seeds whose mean it is (no run is
+// called "base").
+std::vector<std::string> reference_run_names(const json& t) {
+  if (t.value("reference_mode", "refined") == "base") return complete_base_seeds(t);
+  return {t["reference"]["name"].get<std::string>()};
+}
+
 // Plan reads the reference's run directory (its summary chooses the default parameters) and
 // replays the complete base seeds: each must be there, not only the tables.
 void require_run_directories(const json& t, const fs::path& file, const PlanOptions& opt) {
-  std::vector<std::string> names = {t["reference"]["name"].get<std::string>()};
-  for (const auto& r : t["runs"])
-    if (r["kind"] == "base" && r["status"] == "complete") names.push_back(r["name"].get<std::string>());
+  std::vector<std::string> names = reference_run_names(t);
+  for (const auto& n : complete_base_seeds(t))
+    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
   std::string missing;
   for (const auto& n : names)
     if (!fs::is_regular_file(file.parent_path() / "runs" / n / "manifest.json"))
@@ -237,9 +252,10 @@ models::ModelInputs candidate_inputs(const PlanOptions& opt, const std::string& 
   return in;
 }
 
+// A base reference's first seed stands for it (load_tradeoff has checked that one completed).
 fs::path reference_run(const PlanOptions& opt) {
   const json t = load_tradeoff(opt);
-  return tradeoff_dir(opt) / "runs" / t["reference"]["name"].get<std::string>();
+  return tradeoff_dir(opt) / "runs" / reference_run_names(t).front();
 }
 
 json run_plan(const PlanOptions& opt) {

@@ -233,3 +233,17 @@ TEST_CASE("tradeoff stopped before any run completed: its tables say so and are 
     CHECK(io::read_file(dir / "tradeoff.md").find("no complete") != std::string::npos);
   }
 }
+
+// A tradeoff measured against its own base (`--reference base`, data/tradeoff/truth) has no run
+// called "base": its reference is the mean of the base seeds, and those are the runs plan needs.
+TEST_CASE("plan: a base-reference tradeoff asks for its base seeds' run directories, not for a run named base",
+          "[tradeoff]") {
+  tradeoff::PlanOptions opt;
+  opt.scene_file = "data/tradeoff/truth/truth_requirements.toml";
+  opt.tradeoff_dir = "data/tradeoff/truth";  // tables only
+  opt.params = io::read_parameter_set("data/params/truth_grains_epsd2.toml");
+  opt.out = fs::path(IWB_TEST_RUNS_DIR) / "plan-truth-base-reference";
+  fs::remove_all(opt.out);
+  REQUIRE_THROWS_WITH(tradeoff::run_plan(opt), Catch::Contains("run directories runs/base_s1, runs/base_s2, runs/base_s3 are missing"));
+  CHECK_FALSE(fs::exists(opt.out));
+}
