@@ -2,7 +2,8 @@
 # Reproduces data/reference/ (README.md there): the reference campaign on the truth scene (three
 # sweeps, 51 LIGGGHTS runs), the copy of what is committed, the comparison of every run with hvwe
 # and the hypothesis checks, and the report. Run from the repository root after building:  data/reference/make.sh
-# Stages: restore | sweeps | copy | compare | report (default: all, in that order). restore puts the
+# Stages: restore | sweeps | crosscheck | copy | compare | report (default: all, in that order).
+# crosscheck runs the truth (R_n 0.5, CNL) in LIGGGHTS and YADE with seeds 1-3 (YADE: ~40 min a run). restore puts the
 # committed runs into WORK so that the sweeps reuse them on a new machine. The sweeps are
 # resumable (run again to continue); the rest takes under a minute and can be rerun alone, e.g.
 # with another parameter set:  PARAMS=data/params/other.toml data/reference/make.sh compare report
@@ -19,7 +20,7 @@ DEST=data/reference
 SWEEPS=(truth2_rn truth2_cns truth2_d50 truth2_stress)
 EXTRA_CNL=(data/convergence/truth_clamped data/convergence/truth_clamped_rn025)
 stages=("$@")
-[ ${#stages[@]} -eq 0 ] && stages=(restore sweeps copy compare report)
+[ ${#stages[@]} -eq 0 ] && stages=(restore sweeps crosscheck copy compare report)
 
 # The committed part of a campaign: sweep.json, the job scenes, and per run the contract files
 # without VTK and without liggghts/ (inputs, logs, restart files), with fields/band*.csv.
@@ -42,6 +43,19 @@ copy_campaign() {
       mkdir -p "$to/runs/$name/fields"
       cp "$run"/fields/{band.csv,band_profile.csv} "$to/runs/$name/fields/"
     fi
+  done
+}
+
+# The crosscheck's tables and the compact part of each complete seed run.
+copy_crosscheck() {
+  local from=$WORK/crosscheck to=$DEST/crosscheck
+  [ -f "$from/crosscheck.json" ] || return 0
+  rm -rf "$to"; mkdir -p "$to"
+  cp "$from"/crosscheck.{json,md} "$to/"
+  for run in "$from"/*-seed*/; do
+    grep -q '"status": "complete"' "$run/manifest.json" 2>/dev/null || continue
+    mkdir -p "$to/$(basename "$run")"
+    cp "$run"/{manifest.json,summary.json,timeseries.csv,profiles.csv} "$to/$(basename "$run")/"
   done
 }
 
@@ -72,8 +86,11 @@ for stage in "${stages[@]}"; do
     for s in "${SWEEPS[@]}"; do data/restore_campaign.sh "$DEST/$s" "$WORK/$s"; done ;;
   sweeps)
     for s in "${SWEEPS[@]}"; do "$IWB" sweep "data/sweeps/$s.toml" -j "$JOBS" --np "$NP" -o "$WORK/$s"; done ;;
+  crosscheck)  # resumable: complete seed runs are reused
+    "$IWB" dem crosscheck data/scenes/truth.toml --seeds 3 --np "$NP" -o "$WORK/crosscheck" ;;
   copy)
-    for s in "${SWEEPS[@]}"; do [ -f "$WORK/$s/sweep.json" ] && copy_campaign "$WORK/$s" "$DEST/$s"; done ;;
+    for s in "${SWEEPS[@]}"; do [ -f "$WORK/$s/sweep.json" ] && copy_campaign "$WORK/$s" "$DEST/$s"; done
+    copy_crosscheck ;;
   compare)
     # All runs together, and CNL 50, CNS and CNL 200 apart: the checks group runs by R_n and d50
     # only, and a CNS run dilates less than a CNL one, a run at 200 kPa less than one at 50, which
@@ -97,6 +114,6 @@ for stage in "${stages[@]}"; do
     # the PNGs repeat the SVGs (inline in the page, and beside their CSV and gnuplot script):
     # dropped to keep the committed campaign small; `gnuplot <figure>.gp` redraws any of them
     find "$DEST/report" -name '*.png' -delete ;;
-  *) echo "make.sh: unknown stage '$stage' (restore, sweeps, copy, compare, report)" >&2; exit 2 ;;
+  *) echo "make.sh: unknown stage '$stage' (restore, sweeps, crosscheck, copy, compare, report)" >&2; exit 2 ;;
   esac
 done
