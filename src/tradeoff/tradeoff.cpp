@@ -148,6 +148,7 @@ json row_of(const Variant& v, const fs::path& dir) {
   r["qoi"] = {{"peak_friction", s["peak_friction"]},
               {"residual_friction", s["residual_friction"]},
               {"dilation_rate", std::tan(s.value("dilatancy_angle_deg", 0.0) * M_PI / 180.0)},
+              {"total_dilation", s.value("dilation_mm", json())},
               {"band_thickness", s["wall_band_d50"]}};
   return r;
 }

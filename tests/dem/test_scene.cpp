@@ -125,7 +125,7 @@ TEST_CASE("requirements name quantities of interest with tolerances or not neede
   CHECK(dem::parse_scene(smoke(), "scene.toml").requirements.empty());
   CHECK_THAT(error_of(smoke() + "\n[requirements]\nresidual_fricton = 0.05\n"),
              Catch::Contains("scene.toml: key 'requirements.residual_fricton' is not a known key (value 0.05") &&
-                 Catch::Contains("peak_friction, residual_friction, dilation_rate, band_thickness"));
+                 Catch::Contains("peak_friction, residual_friction, dilation_rate, total_dilation, band_thickness"));
   CHECK_THAT(error_of(smoke() + "\n[requirements]\npeak_friction = 1.5\n"),
              Catch::Contains("scene.toml: key 'requirements.peak_friction' = 1.5: a tolerance is a number in (0, 1]"));
   CHECK_THAT(error_of(smoke() + "\n[requirements]\ndilation_rate = 0\n"),

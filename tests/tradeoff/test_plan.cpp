@@ -247,3 +247,19 @@ TEST_CASE("plan: a base-reference tradeoff asks for its base seeds' run director
   REQUIRE_THROWS_WITH(tradeoff::run_plan(opt), Catch::Contains("run directories runs/base_s1, runs/base_s2, runs/base_s3 are missing"));
   CHECK_FALSE(fs::exists(opt.out));
 }
+
+// The verdicts judge the total dilation; near the critical state the rate at the end is ~0 and its
+// relative error says nothing, so the tradeoff measures both.
+TEST_CASE("tradeoff analysis measures the total dilation as a quantity of interest", "[tradeoff]") {
+  json r = json::array();
+  for (auto x : rows()) {
+    if (x["kind"] == "refined") continue;
+    x["qoi"]["total_dilation"] = x["name"] == "dtx2" ? 1.2 : (x["name"] == "base_s2" ? 1.02 : 0.98);
+    r.push_back(x);
+  }
+  const json t = tradeoff::analyse(r, tradeoff::Reference::kBase);
+  CHECK(t["noise_floor"]["total_dilation"]["mean"].get<double>() == Approx(1.0));
+  CHECK(t["noise_floor"]["total_dilation"]["relative"].get<double>() == Approx(std::sqrt(0.0008)));
+  for (const auto& s : t["settings"])
+    if (s["name"] == "dtx2") CHECK(s["error"]["total_dilation"].get<double>() == Approx(0.2));
+}

@@ -17,7 +17,7 @@ set xrange [3.6007e+07:2.18247e+09]
 
 set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'
 set output 'pareto.svg'
-plot 'pareto.csv' using 1:2 skip 1 with points pt 5 ps 1.3 title 'peak_friction', 'pareto.csv' using 1:3 skip 1 with points pt 7 ps 1.3 title 'residual_friction', 'pareto.csv' using 1:4 skip 1 with points pt 9 ps 1.3 title 'dilation_rate', 'pareto.csv' using 1:5 skip 1 with points pt 11 ps 1.3 title 'band_thickness'
+plot 'pareto.csv' using 1:2 skip 1 with points pt 5 ps 1.3 title 'peak_friction', 'pareto.csv' using 1:3 skip 1 with points pt 7 ps 1.3 title 'residual_friction', 'pareto.csv' using 1:4 skip 1 with points pt 9 ps 1.3 title 'dilation_rate', 'pareto.csv' using 1:5 skip 1 with points pt 11 ps 1.3 title 'total_dilation', 'pareto.csv' using 1:6 skip 1 with points pt 13 ps 1.3 title 'band_thickness'
 set terminal pngcairo size 900,560 font 'sans,10' noenhanced
 set output 'pareto.png'
 replot
