@@ -46,17 +46,30 @@ copy_campaign() {
   done
 }
 
-# The crosscheck's tables and the compact part of each complete seed run.
+# The compact part of each complete seed run of the crosscheck, and its tables once every seed is
+# done: a YADE run takes ~40 min, so seeds are committed one by one and a stopped crosscheck
+# resumes from them on another machine (restore puts them back; the crosscheck reuses a complete
+# run from its manifest and summary).
 copy_crosscheck() {
   local from=$WORK/crosscheck to=$DEST/crosscheck
-  [ -f "$from/crosscheck.json" ] || return 0
-  rm -rf "$to"; mkdir -p "$to"
-  cp "$from"/crosscheck.{json,md} "$to/"
+  [ -d "$from" ] || return 0
+  mkdir -p "$to"
+  [ -f "$from/crosscheck.json" ] && cp "$from"/crosscheck.{json,md} "$to/"
   for run in "$from"/*-seed*/; do
     grep -q '"status": "complete"' "$run/manifest.json" 2>/dev/null || continue
-    mkdir -p "$to/$(basename "$run")"
+    rm -rf "$to/$(basename "$run")"; mkdir -p "$to/$(basename "$run")"
     cp "$run"/{manifest.json,summary.json,timeseries.csv,profiles.csv} "$to/$(basename "$run")/"
   done
+}
+
+restore_crosscheck() {
+  local from=$DEST/crosscheck to=$WORK/crosscheck
+  [ -d "$from" ] || return 0
+  mkdir -p "$to"
+  for run in "$from"/*-seed*/; do
+    [ -d "$run" ] && [ ! -e "$to/$(basename "$run")" ] && cp -r "$run" "$to/"
+  done
+  return 0
 }
 
 # The committed runs of every sweep, or of one set: cnl (CNL at 50 kPa: names end _cnl), cns
@@ -83,7 +96,8 @@ runs_of() {
 for stage in "${stages[@]}"; do
   case $stage in
   restore)
-    for s in "${SWEEPS[@]}"; do data/restore_campaign.sh "$DEST/$s" "$WORK/$s"; done ;;
+    for s in "${SWEEPS[@]}"; do data/restore_campaign.sh "$DEST/$s" "$WORK/$s"; done
+    restore_crosscheck ;;
   sweeps)
     for s in "${SWEEPS[@]}"; do "$IWB" sweep "data/sweeps/$s.toml" -j "$JOBS" --np "$NP" -o "$WORK/$s"; done ;;
   crosscheck)  # resumable: complete seed runs are reused
