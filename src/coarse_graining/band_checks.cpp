@@ -15,7 +15,7 @@ constexpr double kMassTolerance = 1e-5;           // the kernel's truncated tail
 constexpr double kShearSpreadTolerance = 0.10;    // (max - min) / mean of sigma_xz over the interior
 constexpr double kShearWallTolerance = 0.05;      // |mean sigma_xz - tau_wall| / tau_wall
 constexpr double kNormalWallTolerance = 0.05;     // |mean sigma_zz - sigma_n| / sigma_n
-constexpr double kBandToleranceD50 = 1.0;         // the profile bins are 0.25 d50, smoothed over 1 d50
+constexpr double kBandToleranceD50 = 1.0;         // two crossings in the grains' bins of 0.5 d50, and the band's shape
 constexpr double kInteriorMarginD50 = 2.0;        // 4 kernel widths from where the boundaries' branches end
 
 double interpolate(const io::CsvTable& t, const std::string& x_name, const std::string& y_name, double x) {
@@ -79,6 +79,15 @@ nlohmann::json check(const std::string& name, double value, const std::string& c
           {"measures", measures}};
 }
 
+// The 0.9 -> 0.1 velocity width of the wall's band in one snapshot, coarse-grained and from the
+// grains binned by centre; negative where the velocity never falls through both levels.
+std::pair<double, double> band_widths(const SnapshotProfile& sp, double wall_speed) {
+  auto v = sp.profile.values("velocity_x_m_s");
+  for (double& x : v) x = wall_speed > 0.0 ? x / wall_speed : 0.0;
+  return {velocity_band_width(sp.profile.values("z_over_d50"), v, 0.0),
+          velocity_band_width(sp.grain_velocity.z, sp.grain_velocity.mean, 0.0)};
+}
+
 // The band's shear rate as a magnitude: the wall drags the grains along +x, so dV_x/dz < 0 in it.
 std::vector<double> shear_rate_magnitude(const io::CsvTable& p) {
   auto r = p.values("shear_rate_dvx_dz_1_s");
@@ -94,13 +103,14 @@ double mean(const std::vector<double>& v) {
 
 }  // namespace
 
-BandChecks band_checks(const dem::Scene& s, const dem::Numerics& n, const io::CsvTable& ts, const nlohmann::json& summary,
+BandChecks band_checks(const dem::Scene& s, const dem::Numerics& n, const io::CsvTable& ts,
                        const std::vector<SnapshotProfile>& profiles, double width_m) {
   const double d50 = n.d50, area = s.area_m2();
   BandChecks out;
   out.per_snapshot.columns = {"t_s", "u_x_mm", "tau_wall_kPa", "tau_cg_kPa", "shear_stress_spread", "sigma_n_kPa",
-                              "sigma_zz_cg_kPa", "mass_error", "e_band_timeseries", "e_band_cg", "band_fwhm_d50"};
-  std::vector<double> spread, tau_err, sigma_err, mass_err, e_diff;
+                              "sigma_zz_cg_kPa", "mass_error", "e_band_timeseries", "e_band_cg", "band_fwhm_d50",
+                              "band_width_cg_d50", "band_width_grains_d50"};
+  std::vector<double> spread, tau_err, sigma_err, mass_err, e_diff, band_diff;
   std::vector<const io::CsvTable*> late;
   const double band_lo = 0.0, band_hi = (n.band_zhi - n.band_zlo) / d50;  // the time series' e_band region
   for (const auto& sp : profiles) {
@@ -118,11 +128,16 @@ BandChecks band_checks(const dem::Scene& s, const dem::Numerics& n, const io::Cs
     const double e_cg = 1.0 / mean_over(z, p.values("solid_fraction"), {band_lo, band_hi}) - 1.0;
     const double e_ts = interpolate(ts, "t_s", "e_band", sp.time_s);
     const double fwhm = peak_width_at_half_maximum(z, shear_rate_magnitude(p), {0.0, 0.5 * s.height_m / d50});
-    out.per_snapshot.rows.push_back({sp.time_s, u, tau, tau_cg, sp_xz, sigma, sigma_cg, mass, e_ts, e_cg, fwhm});
+    const auto [width_cg, width_grains] = band_widths(sp, s.shear.velocity_m_s);
+    out.per_snapshot.rows.push_back({sp.time_s, u, tau, tau_cg, sp_xz, sigma, sigma_cg, mass, e_ts, e_cg, fwhm,
+                                     width_cg, width_grains});
     if (sp.time_s <= 0.0) continue;  // at the start of shear tau ~ 0: its relative errors say nothing
     spread.push_back(sp_xz), tau_err.push_back(std::abs(tau_cg / tau - 1.0));
     sigma_err.push_back(std::abs(sigma_cg / sigma - 1.0)), e_diff.push_back(e_cg - e_ts);
-    if (u >= 0.5 * s.shear.travel_m() * 1e3) late.push_back(&p);
+    if (u < 0.5 * s.shear.travel_m() * 1e3) continue;
+    late.push_back(&p);
+    if (width_cg >= 0.0 && width_grains >= 0.0)
+      band_diff.push_back(std::abs(width_cg - coarse_grained_band_width(width_grains, width_m / d50)));
   }
   auto& j = out.json;
   j["width_d50"] = width_m / d50;
@@ -152,11 +167,14 @@ BandChecks band_checks(const dem::Scene& s, const dem::Numerics& n, const io::Cs
     j["band_fwhm_d50"] = fwhm;
     j["band_fwhm_as_velocity_width_d50"] = fwhm * kVelocityWidthPerFwhm;
     j["band_velocity_width_d50"] = width >= 0.0 ? nlohmann::json(width) : nlohmann::json(nullptr);
-    const auto& summary_band = summary.value("band_thickness_d50", nlohmann::json(nullptr));
-    if (width >= 0.0 && summary_band.is_number())
-      j["checks"].push_back(check("band_thickness_agrees", std::abs(width - summary_band.get<double>()), "<=", kBandToleranceD50,
-                                  "|0.9 -> 0.1 width of the coarse-grained velocity - the summary's (profiles.csv)|, d50, second half of the travel"));
   }
+  // Like with like: the band breathes in a stick-slip residual, so an instantaneous width differs
+  // from the summary's, which averages the last profile window (10 d50 there against 3.5 d50 in
+  // the snapshots of a truth run); the same snapshot's grains are the kernel-free reference, seen
+  // through the kernel's smear (0.6-0.8 d50 wider at w 0.5 d50 on truth runs without it).
+  if (!band_diff.empty())
+    j["checks"].push_back(check("band_thickness_agrees", mean(band_diff), "<=", kBandToleranceD50,
+                                "|0.9 -> 0.1 width of the coarse-grained velocity - sqrt(W^2 + (2.563 w)^2)|, d50, with W that of the grains' velocities binned by centre in the same snapshot (the kernel of width w smears an erfc band so), mean over the snapshots of the second half of the travel"));
   bool all = true;
   for (const auto& c : j["checks"]) all = all && c["passed"].get<bool>();
   j["verdict"] = all ? "all checks pass" : "a check fails";

@@ -65,4 +65,18 @@ double velocity_band_width(const std::vector<double>& z, const std::vector<doubl
   return z90 < 0.0 || z10 < 0.0 ? -1.0 : z10 - z90;
 }
 
+BinnedProfile bin_means(const std::vector<double>& z, const std::vector<double>& values, double from, double bin) {
+  std::vector<double> sum, count;
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    if (z[i] < from) continue;
+    const auto k = std::size_t((z[i] - from) / bin);
+    if (k >= sum.size()) sum.resize(k + 1, 0.0), count.resize(k + 1, 0.0);
+    sum[k] += values[i], count[k] += 1.0;
+  }
+  BinnedProfile out;
+  for (std::size_t k = 0; k < sum.size(); ++k)
+    if (count[k] > 0.0) out.z.push_back(from + (double(k) + 0.5) * bin), out.mean.push_back(sum[k] / count[k]);
+  return out;
+}
+
 }  // namespace iwb::coarse_graining

@@ -135,11 +135,28 @@ io::CsvTable profile_of(const RunContext& c, const fs::path& dir, const Snapshot
   return t;
 }
 
-double grains_volume(const fs::path& vtk, long step) {
-  const io::PointCloud p = io::read_points(vtk / fmt::format("particles_{}.vtp", step));
-  double v = 0.0;
-  for (double r : p.find("radius_m")->values) v += 4.0 / 3.0 * M_PI * r * r * r;
-  return v;
+// The snapshot's grains: their volume (the mass balance's reference) and their v_x / v_wall binned
+// by centre (the band check's kernel-free profile).
+struct GrainsOfSnapshot {
+  double volume_m3 = 0.0;
+  BinnedProfile velocity;
+};
+
+GrainsOfSnapshot grains_of(const RunContext& c, const fs::path& vtk, long step) {
+  const fs::path pf = vtk / fmt::format("particles_{}.vtp", step);
+  const io::PointCloud p = io::read_points(pf);
+  const auto& r = array_in(p.find("radius_m"), pf, "radius_m");
+  const auto& v = array_in(p.find("velocity_m_s"), pf, "velocity_m_s");
+  const double d50 = c.numerics.d50, base = c.scene.wall.mean_height_m(), speed = c.scene.shear.velocity_m_s;
+  GrainsOfSnapshot g;
+  std::vector<double> z, vx;
+  for (std::size_t i = 0; i < p.points.size(); ++i) {
+    g.volume_m3 += 4.0 / 3.0 * M_PI * std::pow(r.values[i], 3);
+    z.push_back((p.points[i].z() - base) / d50);
+    vx.push_back(speed > 0.0 ? v.values[3 * i] / speed : 0.0);
+  }
+  g.velocity = bin_means(z, vx, 0.0, c.scene.outputs.profile_bin_d50);
+  return g;
 }
 
 }  // namespace
@@ -153,7 +170,8 @@ nlohmann::json coarse_grain_run(const fs::path& dir, const RunFieldsOptions& opt
   const auto t0 = std::chrono::steady_clock::now();
   for (std::size_t k = 0; k < files.size(); ++k) {
     const auto& f = files[k];
-    profiles.push_back({f.time_s, profile_of(c, dir, f, opt.force), grains_volume(dir / "vtk", f.step)});
+    const GrainsOfSnapshot grains = grains_of(c, dir / "vtk", f.step);
+    profiles.push_back({f.time_s, profile_of(c, dir, f, opt.force), grains.volume_m3, grains.velocity});
     series.push_back({f.time_s, fmt::format("fields_{}.vti", f.step)});
     if (opt.progress) {
       const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -162,7 +180,7 @@ nlohmann::json coarse_grain_run(const fs::path& dir, const RunFieldsOptions& opt
     }
   }
   io::write_collection(dir / "fields" / "fields.pvd", series);
-  const BandChecks checks = band_checks(c.scene, c.numerics, c.timeseries, c.summary, profiles, c.width);
+  const BandChecks checks = band_checks(c.scene, c.numerics, c.timeseries, profiles, c.width);
   io::write_atomically(dir / "fields" / "band.csv", checks.per_snapshot.to_csv());
   io::write_atomically(dir / "fields" / "band_profile.csv", checks.mean_profile.to_csv());
   c.summary["coarse_graining"] = checks.json;

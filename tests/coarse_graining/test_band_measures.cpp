@@ -51,3 +51,27 @@ TEST_CASE("a uniform field has no spread and its mean is its value", "[coarse_gr
   CHECK(mean_over(z, v, {1, 3}) == 7.0);
   CHECK(relative_spread(z, ramp, {1, 3}) == Approx(2.0 / 3.0));
 }
+
+TEST_CASE("grains binned by centre give each bin the mean of its grains, empty bins left out", "[coarse_graining]") {
+  // bins of 0.5 from 0: [0, 0.5) holds 1 and 3, [0.5, 1) none, [1, 1.5) holds 5; below 0 is not binned
+  const auto b = bin_means({0.1, 0.3, 1.2, -0.2}, {1.0, 3.0, 5.0, 100.0}, 0.0, 0.5);
+  REQUIRE(b.z.size() == 2);
+  CHECK(b.z[0] == Approx(0.25));
+  CHECK(b.mean[0] == Approx(2.0));
+  CHECK(b.z[1] == Approx(1.25));
+  CHECK(b.mean[1] == Approx(5.0));
+}
+
+TEST_CASE("grains sampled from an erfc velocity profile and binned keep its 0.9 -> 0.1 width", "[coarse_graining]") {
+  // 20 grains per 0.5 d50 bin, spread evenly through it. The crossings are interpolated linearly
+  // between bin centres h = 0.5 apart, which moves each by up to |v''| h^2 / 8 / |v'| =
+  // u h^2 / (8 sigma) at u = 1.2816, and a bin's mean is v + v'' h^2 / 24 at its centre: together
+  // u h^2 / (6 sigma) = 0.036 d50 per crossing, so the width stays 2 x 1.2816 sigma within 0.072
+  std::vector<double> z, v;
+  for (double x = 0.0125; x < 12.0; x += 0.025) {
+    z.push_back(x);
+    v.push_back(0.5 * std::erfc((x - kCentre) / (kSigma * std::sqrt(2.0))));
+  }
+  const auto b = bin_means(z, v, 0.0, 0.5);
+  CHECK(velocity_band_width(b.z, b.mean, 0.0) == Approx(2.0 * 1.2815515655446004 * kSigma).margin(0.08));
+}
