@@ -112,6 +112,8 @@ for stage in "${stages[@]}"; do
     for set in all cnl cns cnl200; do
       mapfile -t runs < <(runs_of $set)
       if [ ${#runs[@]} -eq 0 ]; then echo "make.sh: no complete runs in set $set yet" >&2; continue; fi
+      # afresh: a comparison of a run no longer in the set (an earlier campaign's) would stay beside
+      rm -rf "$DEST/compare/$set"
       "$IWB" compare --runs "${runs[@]}" --model "$MODEL" --params "$PARAMS" -o "$DEST/compare/$set" --force
     done
     # the per-run comparisons of the CNL and CNS sets are those of the set of all runs (same DEM
