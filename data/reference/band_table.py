@@ -1,5 +1,4 @@
-"""The wall band of the re-run campaign (data/reference/truth2_* and the convergence study's CNL
-runs at R_n 0.25 and 0.5) by four measures, mean +- SD over the seeds, in d50:
+"""The wall band of the re-run campaign (campaign_runs.py) by four measures, mean +- SD over the seeds, in d50:
 - window: the summary's measures on the velocity profile averaged over the last profile window
   (2 mm of travel; the 10 % of the drop from the far field, hypothesis check 2's; the 0.9 -> 0.1
   width relative to the first layer; an erfc fitted to the lower half);
@@ -8,25 +7,19 @@ runs at R_n 0.25 and 0.5) by four measures, mean +- SD over the seeds, in d50:
   wall does not slip, slip < 0.1).
 The band breathes in a stick-slip residual: a 2 mm average is wider than an instant.
 Run from the repository root:  /usr/bin/python3 data/reference/band_table.py"""
-import csv, glob, json, os, statistics as st, tomllib
+import csv, os, statistics as st
 
-dirs = glob.glob("data/reference/truth2_*/runs/*") + glob.glob("data/convergence/truth_clamped/runs/*") + \
-    glob.glob("data/convergence/truth_clamped_rn025/runs/*")
+from campaign_runs import campaign_runs
+
 groups = {}
-for d in sorted(dirs):
-    s = json.load(open(f"{d}/summary.json"))
-    m = json.load(open(f"{d}/manifest.json"))
-    sc = tomllib.loads(m["scene"]["text"])
-    w, b = sc["wall"], sc["boundary"]
-    wall = "flat" if w["profile"] == "flat" else f"R_n {w['height_d50']:g}, d50 {sc['particles']['d50_mm']:g} mm"
-    bc, stress = b["type"], f"{b.get('sigma_n_kPa', 50):g}"
+for group, d, s in campaign_runs():
     snap = []
     if os.path.exists(f"{d}/fields/band.csv") and (s.get("wall_slip") or 0) < 0.1:
         rows = list(csv.DictReader(open(f"{d}/fields/band.csv")))
         travel = max(float(r["u_x_mm"]) for r in rows)
         snap = [float(r["band_width_grains_d50"]) for r in rows
                 if "band_width_grains_d50" in r and float(r["u_x_mm"]) >= 0.5 * travel and float(r["band_width_grains_d50"]) > 0]
-    groups.setdefault((wall, bc, stress), []).append(
+    groups.setdefault(group, []).append(
         (s.get("wall_band_d50"), s.get("band_thickness_d50"), s.get("band_thickness_erfc_fit_d50"),
          st.mean(snap) if snap else None, s.get("wall_slip")))
 
@@ -40,6 +33,6 @@ def ms(v):
 
 print("| wall | boundary | window: 10 % of the drop | window: 0.9 -> 0.1 | window: erfc fit | snapshots: 0.9 -> 0.1 | wall slip |")
 print("|---|---|---|---|---|---|---|")
-for (wall, bc, stress), rows in sorted(groups.items()):
+for (wall, bc), rows in groups.items():
     cols = list(zip(*rows))
-    print(f"| {wall} | {bc} {stress} kPa | {ms(cols[0])} | {ms(cols[1])} | {ms(cols[2])} | {ms(cols[3])} | {ms(cols[4])} |")
+    print(f"| {wall} | {bc} | {ms(cols[0])} | {ms(cols[1])} | {ms(cols[2])} | {ms(cols[3])} | {ms(cols[4])} |")
