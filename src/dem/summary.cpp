@@ -12,6 +12,12 @@ constexpr double kLastFraction = 0.2;            // "residual" window: the last 
 constexpr double kFirstLayerD50 = 1.0;           // the first grain layer above the wall surface
 constexpr double kDistributedR2 = 0.95;          // a linear velocity profile this good: no band
 constexpr double kDefaultBandD50 = 10.0;
+// Bin heights are read to 1e-6 d50 (rounded as round(z 1e6) / 1e6, which lands on the decimal
+// value itself): the profile's bins sit on a grid of bin centres, and the middle third's bounds
+// (height / 3, 2 height / 3) and the first layer's fall on such centres, so a height of 13.9999999
+// in memory and 14 in the 10-digit profiles.csv would take a bin in or out and move the far-field
+// median (by 0.02 of v_wall, the band by 0.5 d50, in a truth run at R_n 0.1).
+constexpr double kHeightStepsPerD50 = 1e6;
 constexpr double kLocalisedFarField = 0.25;      // far field below this: the wall takes >= 75 %
 
 struct Fit {
@@ -66,7 +72,7 @@ void shear_band(const io::CsvTable& profiles, Summary& s) {
   std::vector<double> z, v, porosity;
   for (const auto& row : profiles.rows)
     if (row[profiles.column("u_x_mm_window")] == last && row[profiles.column("z_over_d50")] >= 0.0) {
-      z.push_back(row[profiles.column("z_over_d50")]);
+      z.push_back(std::round(row[profiles.column("z_over_d50")] * kHeightStepsPerD50) / kHeightStepsPerD50);
       v.push_back(row[profiles.column("vx_over_vwall")]);
       porosity.push_back(row[profiles.column("porosity")]);
     }

@@ -60,7 +60,7 @@ TEST_CASE("sweep: a job's scene is the base with its values set in their own tab
 TEST_CASE("sweep: a value that sets a wall's profile replaces the base's whole [wall] table", "[campaign]") {
   // The truth scene's wall is a sawtooth (pitch and height); a flat wall refuses both keys, so a
   // key-by-key merge would make the flat job an invalid scene.
-  const auto jobs = campaign::expand_jobs(campaign::load_sweep("data/sweeps/truth_rn.toml"));
+  const auto jobs = campaign::expand_jobs(campaign::load_sweep("data/sweeps/truth2_rn.toml"));
   const auto flat = dem::parse_scene(job_named(jobs, "flat_s1_cnl").scene_text, "job.toml");
   CHECK(flat.wall.kind == dem::ProfileKind::kFlat);
   const auto rough = dem::parse_scene(job_named(jobs, "sawtooth-2-0.1_s1_cnl").scene_text, "job.toml");

@@ -136,7 +136,7 @@ TEST_CASE("identifiability: the fit recovers a known kappa_r and d_s within 2 %"
 // q/p = 3(1 - K0)/(1 + 2 K0) = 0.59 (K0 = 1 - sin 25 deg): the ASBS pressure p (M^2 + eta^2)/M^2 is
 // 180 p, so the DEM's e lies far above it.
 TEST_CASE("compare replays a clay model by its declaration, and an inadmissible start is a missed replay", "[comparison]") {
-  const auto dem = comparison::load_dem_run("data/reference/truth_rn/runs/flat_s1_cnl");
+  const auto dem = comparison::load_dem_run("data/reference/truth2_rn/runs/flat_s1_cnl");
   const auto clay = test::shipped("table_6_1_evaluation.toml");
   const auto hcc = comparison::standard_variants(dem, "hcc", clay, 5.0);
   CHECK(hcc.front().inputs.roughness.kappa_r == 1.0);

@@ -88,3 +88,27 @@ TEST_CASE("shear split between the wall and the plate: no 0.9 -> 0.1 band, a wal
   REQUIRE(split.wall_band_d50.has_value());
   CHECK(split.wall_band_d50.value() == Approx(2.0 + 0.906).margin(0.5));
 }
+
+// The summary is computed from the engine's tables in memory and recomputed from profiles.csv,
+// whose numbers carry 10 digits. A bin centre on the middle third's upper bound (14 of a 21 d50
+// profile) that reads 14.0000000001 in memory must count as the 14 the file says, else the
+// far-field median moves to the next bin (seen in a truth run: far field 0.083 against 0.062).
+TEST_CASE("bin heights within round-off of the middle third's bound give one summary", "[dem]") {
+  auto table = [](double upper_bound_bin) {
+    io::CsvTable t;
+    t.columns = {"u_x_mm_window", "z_over_d50", "vx_over_vwall", "porosity", "sigma_zz_kPa", "tau_zx_kPa"};
+    for (int k = 1; k <= 42; ++k) {
+      const double z = 0.5 * k == 14.0 ? upper_bound_bin : 0.5 * k;  // the top bin, 21 d50, sets the height
+      t.rows.push_back({4.0, z, std::exp(-z / 3.0), 0.4, 50, 30});
+    }
+    return t;
+  };
+  const auto from_file = dem::summarize(scene(), series(0.8, 0.6, 0.0), table(14.0));
+  const auto in_memory = dem::summarize(scene(), series(0.8, 0.6, 0.0), table(14.0 + 1e-10));
+  // the middle third 7..14 d50: 15 bins, the median is the bin at 10.5 d50, relative to the first
+  // layer's mean (the bins at 0.5 and 1 d50)
+  const double first = 0.5 * (std::exp(-0.5 / 3.0) + std::exp(-1.0 / 3.0));
+  CHECK(from_file.far_field_speed == Approx(std::exp(-10.5 / 3.0) / first));
+  CHECK(in_memory.far_field_speed == from_file.far_field_speed);
+  CHECK(in_memory.e_band == from_file.e_band);
+}
