@@ -4,15 +4,16 @@ the error ranges over the three seeds. Run from the repository root after `make.
     /usr/bin/python3 data/reference/table_compare.py [COMPARE_DIR]"""
 import glob, json, statistics as st, sys
 
+from campaign_runs import campaign_runs, group_of
+
 root = sys.argv[1] if len(sys.argv) > 1 else "data/reference/compare/all"
+order = {group: i for i, group in enumerate(dict.fromkeys(g for g, _, _ in campaign_runs()))}
 groups = {}
 for f in sorted(glob.glob(f"{root}/*/compare.json")):
     c = json.load(open(f))
-    d = c["dem"]
-    bc = d["boundary"] if isinstance(d["boundary"], str) else d["boundary"].get("type", "?")
-    key = (d["R_n"], d["d50_mm"], bc, round(d["sigma_n0_kPa"] / 50) * 50)
+    group = group_of(json.load(open(f"{c['dem']['dir']}/manifest.json")))
     v = c["variants"][c["verdicts"]["fitted_variant"]]
-    groups.setdefault(key, []).append((v, {x["quantity"]: x for x in v["verdicts"]}, d["d50_mm"]))
+    groups.setdefault(group, []).append((v, {x["quantity"]: x for x in v["verdicts"]}, c["dem"]["d50_mm"]))
 
 
 def rng(values, fmt="{:+.0f}"):
@@ -20,13 +21,13 @@ def rng(values, fmt="{:+.0f}"):
     return fmt.format(lo) if fmt.format(lo) == fmt.format(hi) else f"{fmt.format(lo)} to {fmt.format(hi)}"
 
 
-print("| R_n | d50 (mm) | boundary | runs | DEM total dilation (mm) | hvwe fitted (mm) | dilation error % | peak error % | residual error % | fitted kappa_r | fitted d_s (d50) | quantities holding or within scatter |")
-print("|---|---|---|---|---|---|---|---|---|---|---|---|")
-for (rn, d50, bc, sigma), rows in sorted(groups.items(), key=lambda kv: (kv[0][2], kv[0][3], -kv[0][1], kv[0][0])):
+print("| wall | boundary | runs | DEM total dilation (mm) | hvwe fitted (mm) | dilation error % | peak error % | residual error % | fitted kappa_r | fitted d_s (d50) | quantities holding or within scatter |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
+for (wall, bc), rows in sorted(groups.items(), key=lambda kv: order.get(kv[0], len(order))):
     dil = [r[1]["total_dilation"] for r in rows]
     err = lambda q: rng([r[1][q]["relative_error"] * 100 for r in rows])
     ok = [f"{sum(1 for x in r[1].values() if x['verdict'] != 'breaks')}/{len(r[1])}" for r in rows]
-    print(f"| {rn:g} | {d50:g} | {bc} {sigma:g} kPa | {len(rows)} | {st.mean(x['dem'] for x in dil):.3f} | "
+    print(f"| {wall} | {bc} | {len(rows)} | {st.mean(x['dem'] for x in dil):.3f} | "
           f"{st.mean(x['model'] for x in dil):.3f} | {err('total_dilation')} | {err('peak_friction')} | "
           f"{err('residual_friction')} | {rng([r[0]['kappa_r'] for r in rows], '{:.2f}')} | "
           f"{rng([r[0]['d_s_mm'] / r[2] for r in rows], '{:.1f}')} | {', '.join(ok)} |")
