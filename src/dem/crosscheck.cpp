@@ -39,12 +39,23 @@ Scatter scatter_of(const std::vector<double>& v) {
   return s;
 }
 
+Agreement agreement_of(const Scatter& a, const Scatter& b) {
+  Agreement g;
+  g.difference = b.mean - a.mean;
+  if (a.n < 2 || b.n < 2) return g;
+  g.judged = true;
+  g.standard_error = std::sqrt(a.sd * a.sd / a.n + b.sd * b.sd / b.n);
+  g.agree = std::abs(g.difference) <= kAgreementStandardErrors * g.standard_error;
+  return g;
+}
+
 namespace {
 
 // The quantities compared, read from each run's summary.json.
 const std::vector<std::pair<std::string, std::string>> kQuantities = {
     {"peak_friction", "peak tau/sigma_n"},
     {"residual_friction", "residual tau/sigma_n"},
+    {"dilation_mm", "total dilation u_n, mm"},
     {"dilation_rate", "dilation rate du_n/du_x (last fifth)"},
     {"wall_band_d50", "wall band thickness / d50"},
 };
@@ -108,22 +119,53 @@ nlohmann::json verdicts(const nlohmann::json& engines, const std::vector<std::st
   return v;
 }
 
+Scatter scatter_in(const nlohmann::json& q) {
+  if (q.value("n", 0) == 0) return {};
+  return {q["mean"].get<double>(), q["sd"].get<double>(), q["n"].get<int>()};
+}
+
+// |difference| in standard errors; seeds without scatter give none unless the means are equal.
+double standard_errors(const Agreement& g) {
+  if (g.standard_error > 0.0) return std::abs(g.difference) / g.standard_error;
+  return g.difference == 0.0 ? 0.0 : INFINITY;
+}
+
+// Per quantity, whether the first two engines agree within their seed scatter (issue 20).
+nlohmann::json agreement(const nlohmann::json& engines, const std::vector<std::string>& names) {
+  nlohmann::json a = nlohmann::json::object();
+  if (names.size() < 2) return a;
+  for (const auto& [key, label] : kQuantities) {
+    const Agreement g = agreement_of(scatter_in(engines[names[0]][key]), scatter_in(engines[names[1]][key]));
+    a[key] = {{"difference", g.difference}, {"standard_error", g.standard_error}, {"judged", g.judged},
+              {"agree", g.agree},
+              {"text", !g.judged ? std::string("not judged (fewer than 2 seeds measured it in an engine)")
+                                 : fmt::format("{} - {} = {:+.3f}, {:.1f} standard errors: {}", names[1], names[0],
+                                               g.difference, standard_errors(g),
+                                               g.agree ? "agree within the seed scatter" : "apart")}};
+  }
+  return a;
+}
+
 std::string markdown(const nlohmann::json& j, const std::vector<std::string>& names) {
   std::string md = fmt::format("# Cross-engine check: {} ({} seeds per engine)\n\n| quantity |", j["scene"].get<std::string>(),
                                j["seeds"].get<int>());
   for (const auto& e : names) md += " " + e + " |";
+  if (names.size() >= 2) md += " agreement (within 2 standard errors of the difference) |";
   md += "\n|---|";
-  for (std::size_t i = 0; i < names.size(); ++i) md += "---|";
+  for (std::size_t i = 0; i < names.size() + (names.size() >= 2 ? 1 : 0); ++i) md += "---|";
   md += "\n";
   for (const auto& [key, label] : kQuantities) {
     md += "| " + label + " |";
     for (const auto& e : names) md += " " + cell(j["engines"][e][key]) + " |";
+    if (names.size() >= 2) md += " " + j["agreement"][key]["text"].get<std::string>() + " |";
     md += "\n";
   }
+  const std::string blank = names.size() >= 2 ? " |" : "";
   md += "| wall-clock per run, s |";
   for (const auto& e : names) md += " " + cell(j["engines"][e]["wall_seconds"]) + " |";
-  md += "\n| shear modes |";
+  md += blank + "\n| shear modes |";
   for (const auto& e : names) md += " " + j["engines"][e]["shear_modes"].dump() + " |";
+  md += blank;
   md += "\n\n";
   for (const auto& v : j["verdicts"]) md += "- " + v["text"].get<std::string>() + "\n";
   return md;
@@ -164,6 +206,7 @@ nlohmann::json run_crosscheck(const CrosscheckOptions& opt) {
     e["shear_modes"] = modes;
     e["runs"] = runs;
   }
+  out["agreement"] = agreement(out["engines"], opt.engines);
   out["verdicts"] = verdicts(out["engines"], opt.engines);
   io::StagedDirectory staged(opt.out);  // both or neither
   io::write_atomically(staged.path() / "crosscheck.json", out.dump(2) + "\n");

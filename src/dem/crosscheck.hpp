@@ -1,7 +1,8 @@
 #pragma once
 // `iwb dem crosscheck`: one scene in several engines with K seeds each, side by side (issue 5):
-// peak and residual friction, dilation rate and band thickness with their seed scatter, and each
-// engine's wall-clock cost. Runs that are already complete in the output directory are reused,
+// peak and residual friction, total dilation, dilation rate and band thickness with their seed
+// scatter, whether the engines agree on each within it (issue 20), and each engine's wall-clock
+// cost. Runs that are already complete in the output directory are reused,
 // so an interrupted crosscheck continues where it stopped.
 #include <atomic>
 #include <filesystem>
@@ -32,6 +33,17 @@ struct Scatter {
   int n = 0;
 };
 Scatter scatter_of(const std::vector<double>& values);
+
+// Whether two engines agree on a quantity within their seed scatter: the difference of the means
+// against the standard error of that difference, sqrt(sd_a^2 / n_a + sd_b^2 / n_b) (Welch), agreeing
+// within kAgreementStandardErrors of it. With fewer than two seeds in either engine there is no
+// scatter to judge by: not judged.
+inline constexpr double kAgreementStandardErrors = 2.0;
+struct Agreement {
+  double difference = 0.0, standard_error = 0.0;
+  bool judged = false, agree = false;
+};
+Agreement agreement_of(const Scatter& a, const Scatter& b);
 
 // Runs (or reuses) every engine x seed, writes crosscheck.json and crosscheck.md into out and
 // returns the JSON.

@@ -1,5 +1,6 @@
 // The cross-engine check's pieces that need no engine: seeding a scene text and the seed scatter.
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "common/errors.hpp"
 #include "dem/crosscheck.hpp"
@@ -37,4 +38,20 @@ TEST_CASE("an unknown engine is refused with the engines available", "[dem]") {
   } catch (const InputError& e) {
     CHECK(std::string(e.what()) == "--engine pfc: available engines: liggghts, yade");
   }
+}
+
+// Welch's standard error of a difference of two means, sqrt(sd_a^2/n_a + sd_b^2/n_b): with three
+// seeds of SD 0.02 each it is 0.02 sqrt(2/3) = 0.01633, so two standard errors are 0.0327.
+TEST_CASE("two engines agree on a quantity when their means lie within two standard errors", "[dem]") {
+  const dem::Scatter a{0.50, 0.02, 3};
+  const auto close = dem::agreement_of(a, {0.53, 0.02, 3});
+  CHECK(close.judged);
+  CHECK(close.difference == Approx(0.03));
+  CHECK(close.standard_error == Approx(0.02 * std::sqrt(2.0 / 3.0)));
+  CHECK(close.agree);  // 1.84 standard errors
+  CHECK_FALSE(dem::agreement_of(a, {0.54, 0.02, 3}).agree);  // 2.45 standard errors
+  // unequal scatter and counts: sqrt(0.01^2/2 + 0.04^2/4) = 0.02121
+  CHECK(dem::agreement_of({0.5, 0.01, 2}, {0.55, 0.04, 4}).standard_error == Approx(0.021213).epsilon(1e-4));
+  // one seed has no scatter to judge by
+  CHECK_FALSE(dem::agreement_of({0.5, 0.0, 1}, {0.5, 0.02, 3}).judged);
 }

@@ -43,9 +43,11 @@ void add_dem_crosscheck_command(CLI::App& dem, CommandList& commands) {
   auto* dem_cross = dem.add_subcommand(
       "crosscheck",
       "Run one scene in both engines with K seeds each (seed = 1..K) and put peak and residual "
-      "tau/sigma_n, dilation rate and wall band thickness side by side with their seed scatter and "
-      "each engine's wall-clock cost; verdicts: residual friction within 10 %, dilation of the same "
-      "sign and order. Writes crosscheck.json and crosscheck.md; complete runs in the output "
+      "tau/sigma_n, total dilation, dilation rate and wall band thickness side by side with their "
+      "seed scatter and each engine's wall-clock cost. Per quantity: do the engines agree within "
+      "their seed scatter (the difference of the means within 2 standard errors, sqrt(sd_a^2/n_a + "
+      "sd_b^2/n_b); needs 2 seeds or more)? Verdicts: residual friction within 10 %, dilation of the "
+      "same sign and order. Writes crosscheck.json and crosscheck.md; complete runs in the output "
       "directory are reused, so a stopped crosscheck continues when run again.");
   dem_cross->add_option("scene", o->scene, "scene TOML file")->required()->check(input_file());
   dem_cross->add_option("--seeds", o->options.seeds, "seeds per engine")->check(whole_in(1, 100))->capture_default_str();
