@@ -156,3 +156,26 @@ TEST_CASE("every committed run of the truth reference campaign passes the DEM co
   CHECK(runs == complete_jobs);  // every job the sweeps record as complete is committed
   CHECK(runs >= 24);
 }
+
+TEST_CASE("every committed seed run of the truth's engine crosscheck passes the DEM contract, its "
+          "summary.json recomputes, and its manifest names the engine and seed of its directory",
+          "[comparison][reference]") {
+  const fs::path committed = kReference / "crosscheck";
+  int runs = 0;
+  for (const auto& entry : fs::directory_iterator(committed)) {
+    if (!entry.is_directory()) continue;
+    const std::string job = entry.path().filename().string();  // <engine>-seed<N>
+    INFO(entry.path().string());
+    const auto run = comparison::load_dem_run(entry.path());
+    ++runs;
+    check_summary_recomputes(run);
+    const auto manifest = nlohmann::json::parse(io::read_file(entry.path() / "manifest.json"));
+    const auto dash = job.find("-seed");
+    REQUIRE(dash != std::string::npos);
+    CHECK(manifest["engine"]["name"] == job.substr(0, dash));
+    CHECK(manifest["seed"].get<int>() == std::stoi(job.substr(dash + 5)));
+    CHECK(run.R_n == Approx(0.5).margin(1e-9));
+    CHECK(run.u_x_mm.back() == Approx(10.0).margin(0.04));  // the truth shears 5 d50 of 2 mm
+  }
+  CHECK(runs >= 4);  // three LIGGGHTS seeds and YADE's first
+}
