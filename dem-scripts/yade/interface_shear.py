@@ -115,7 +115,8 @@ WET = P.get("capillary") is not None
 
 def engines():
     # Hertz-Mindlin with restitution damping and a rolling-resistance moment capped at
-    # eta * R_mean * F_n (dem-scripts/yade/README.md: the mapping from LIGGGHTS's cdt model). Wet
+    # eta * R_mean * F_n, its stiffness krot that of the LIGGGHTS model it stands in for (cdt or
+    # epsd2; dem-scripts/README.md, "Contact-law mapping"). Wet
     # scenes add pendular liquid bridges at the scene's suction between grains (not facets):
     # Law2_ScGeom_CapillaryPhys_Capillarity over the same contacts, which then outlive contact
     # (neverErase) until their bridge breaks; it reads the tables M(r=...) the runner writes.

@@ -20,6 +20,15 @@ namespace iwb::dem {
 
 namespace fs = std::filesystem;
 
+bool reusable_seed_run(const fs::path& dir, const Scene& scene, const std::string& scene_text, const Engine& engine) {
+  const auto manifest = dir / "manifest.json";
+  if (!fs::exists(manifest)) return false;
+  const auto m = io::read_json_file(manifest);
+  return m.value("status", "") == "complete" &&
+         m.value("/scene/sha256"_json_pointer, std::string()) == io::sha256_hex(scene_text) &&
+         m.value("numerics", nlohmann::json()) == engine.numerics(scene);
+}
+
 std::string with_seed(const std::string& text, int seed) {
   const std::regex line(R"(^seed[ \t]*=.*$)", std::regex::multiline);
   if (std::regex_search(text, line)) return std::regex_replace(text, line, fmt::format("seed = {}", seed));
@@ -68,14 +77,9 @@ struct SeedRun {
 SeedRun run_or_reuse(const Scene& scene, const std::string& text, const std::string& engine_name,
                      const fs::path& dir, const CrosscheckOptions& opt) {
   const auto manifest = dir / "manifest.json";
-  bool complete = false;
-  if (fs::exists(manifest)) {
-    const auto m = io::read_json_file(manifest);
-    complete = m.value("status", "") == "complete" &&
-               m.value("/scene/sha256"_json_pointer, std::string()) == io::sha256_hex(text);
-  }
+  const auto engine = make_engine(engine_name);
+  const bool complete = reusable_seed_run(dir, scene, text, *engine);
   if (!complete) {
-    const auto engine = make_engine(engine_name);
     const auto outcome = run_scene(scene, text, *engine,
                                    {dir, opt.processes, false, true, opt.command_line, opt.interrupt, opt.progress,
                                     consolidation_cache_dir(opt.out / "consolidated")});

@@ -11,6 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "dem/engine.hpp"
+#include "dem/scene.hpp"
+
 namespace iwb::dem {
 
 struct CrosscheckOptions {
@@ -44,6 +47,12 @@ struct Agreement {
   bool judged = false, agree = false;
 };
 Agreement agreement_of(const Scatter& a, const Scatter& b);
+
+// Whether the complete run in dir can stand for scene_text (its parsed scene) in engine: the same
+// scene, and the same mapping of it onto the engine (its numerics: timestep, contact law, servo),
+// so that a corrected mapping makes older runs stale.
+bool reusable_seed_run(const std::filesystem::path& dir, const Scene& scene, const std::string& scene_text,
+                       const Engine& engine);
 
 // Runs (or reuses) every engine x seed, writes crosscheck.json and crosscheck.md into out and
 // returns the JSON.

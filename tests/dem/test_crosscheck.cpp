@@ -1,14 +1,18 @@
 // The cross-engine check's pieces that need no engine: seeding a scene text and the seed scatter.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
+#include <unistd.h>
 
 #include "common/errors.hpp"
 #include "dem/crosscheck.hpp"
 #include "dem/engines.hpp"
 #include "dem/scene.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 
 using namespace iwb;
+namespace fs = std::filesystem;
 
 TEST_CASE("with_seed replaces the top-level seed or adds one, and the scene parses with it", "[dem]") {
   const std::string smoke = io::read_file("data/scenes/smoke.toml");
@@ -54,4 +58,24 @@ TEST_CASE("two engines agree on a quantity when their means lie within two stand
   CHECK(dem::agreement_of({0.5, 0.01, 2}, {0.55, 0.04, 4}).standard_error == Approx(0.021213).epsilon(1e-4));
   // one seed has no scatter to judge by
   CHECK_FALSE(dem::agreement_of({0.5, 0.0, 1}, {0.5, 0.02, 3}).judged);
+}
+
+TEST_CASE("a committed crosscheck seed run is reused for its scene and engine mapping, not once the mapping changed",
+          "[dem]") {
+  const std::string text = dem::with_seed(io::read_file("data/scenes/truth.toml"), 1);
+  const dem::Scene scene = dem::parse_scene(text, "data/scenes/truth.toml");
+  const auto liggghts = dem::make_engine("liggghts");
+  const fs::path committed = "data/reference/crosscheck/liggghts-seed1";
+  CHECK(dem::reusable_seed_run(committed, scene, text, *liggghts));
+  CHECK_FALSE(dem::reusable_seed_run(committed, scene, dem::with_seed(text, 2), *liggghts));  // another scene
+  CHECK_FALSE(dem::reusable_seed_run(committed, scene, text, *dem::make_engine("yade")));     // another engine's mapping
+  // the same run with a different timestep in its manifest: stale
+  const fs::path copy = fs::temp_directory_path() / ("iwb_stale_seed_run_" + std::to_string(::getpid()));
+  fs::create_directories(copy);
+  auto manifest = io::read_json_file(committed / "manifest.json");
+  manifest["numerics"]["timestep_s"] = manifest["numerics"]["timestep_s"].get<double>() * 0.5;
+  io::write_atomically(copy / "manifest.json", manifest.dump(2));
+  CHECK_FALSE(dem::reusable_seed_run(copy, scene, text, *liggghts));
+  fs::remove_all(copy);
+  CHECK_FALSE(dem::reusable_seed_run(copy, scene, text, *liggghts));  // no run at all
 }
