@@ -46,9 +46,10 @@ nlohmann::json rolling(const Scene& s) {
   const double r_star = 0.25 * p.d50_m;
   const double e_star = p.youngs_modulus_Pa / (2.0 * (1.0 - p.poisson * p.poisson));
   const double g_star = p.youngs_modulus_Pa / (2.0 * (1.0 + p.poisson)) / (2.0 * (2.0 - p.poisson));
+  const double kno = 4.0 / 3.0 * e_star * std::sqrt(r_star);  // Hertz: F = kno delta^(3/2)
   const double force = s.boundary.sigma_n_Pa * p.d50_m * p.d50_m;
-  const double overlap = std::pow(force / (4.0 / 3.0 * e_star * std::sqrt(r_star)), 2.0 / 3.0);
-  const double k_n = 2.0 * e_star * std::sqrt(r_star * overlap);
+  const double overlap = std::pow(force / kno, 2.0 / 3.0);
+  const double k_n = 1.5 * kno * std::sqrt(overlap);
   const double k_t = 8.0 * g_star * std::sqrt(r_star * overlap);
   const double k_r = p.rolling_model == "epsd2" ? k_t * r_star * r_star : 2.25 * k_n * mu_r * mu_r * r_star * r_star;
   return {{"eta", 0.5 * mu_r}, {"krot", k_r}, {"mu_r", mu_r}, {"stiffness_from", p.rolling_model}};
