@@ -38,8 +38,7 @@ constexpr const char* kScript = "interface_shear.py";
 //   within ~1e-3 rad.
 // - cdt is rigid-plastic: Ai et al.'s (2011) k_r = 2.25 k_n mu_r^2 R*^2 (k_n Hertz's tangent
 //   stiffness) reaches the cap within a few hundredths of a radian. Taken for epsd2 too, it was
-//   38 times softer than LIGGGHTS's spring; the truth's one YADE seed run under it came out 5 % low
-//   in peak friction.
+//   38 times softer than LIGGGHTS's spring (data/reference/README.md, answer 7).
 nlohmann::json rolling(const Scene& s) {
   const auto& p = s.particles;
   const double mu_r = p.rolling_friction;
