@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
+#include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <unistd.h>
@@ -21,13 +22,15 @@ using namespace iwb::dem;
 namespace {
 
 // Finds by bisection the overlap at which YADE's Hertz force is F0, then prints the contact's
-// normal and tangential stiffnesses and its bending-moment cap per unit force.
+// normal and tangential stiffnesses and its bending-moment cap per unit force, eta R_mean, at
+// eta = kProbeEta.
+constexpr double kProbeEta = 0.05;
 constexpr const char* kProbe = R"(
 import sys
-E, nu, d, F0 = [float(x) for x in sys.argv[1:5]]
+E, nu, d, F0, eta = [float(x) for x in sys.argv[1:6]]
 m = O.materials.append(FrictMat(young=E, poisson=nu, frictionAngle=0.5, density=2650))
 O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
-             InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_MindlinPhys(krot=1.0, eta=0.05)],
+             InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_MindlinPhys(krot=1.0, eta=eta)],
                              [Law2_ScGeom_MindlinPhys_Mindlin(includeMoment=True)]),
              NewtonIntegrator(gravity=(0, 0, 0))]
 O.dt = 1e-12
@@ -52,8 +55,9 @@ std::map<std::string, double> yade_contact(const Scene& s) {
   std::ofstream(dir / "probe.py") << kProbe;
   const double f0 = s.boundary.sigma_n_Pa * s.particles.d50_m * s.particles.d50_m;
   std::map<std::string, double> out;
-  run_process({"yade", "-n", "-x", "probe.py", std::to_string(s.particles.youngs_modulus_Pa),
-               std::to_string(s.particles.poisson), std::to_string(s.particles.d50_m), std::to_string(f0)},
+  const auto arg = [](double v) { return fmt::format("{:.17g}", v); };  // every digit: to_string keeps 6 decimals
+  run_process({"yade", "-n", "-x", "probe.py", arg(s.particles.youngs_modulus_Pa), arg(s.particles.poisson),
+               arg(s.particles.d50_m), arg(f0), arg(kProbeEta)},
               dir, [&out](const std::string& line) {
                 std::istringstream in(line);
                 std::string tag;
@@ -81,7 +85,7 @@ TEST_CASE("YADE's rolling spring for an epsd2 scene is LIGGGHTS's k_t R*^2 of a 
   CHECK(rolling["krot"].get<double>() == Approx(contact.at("ks") * r_star * r_star).epsilon(1e-4));
   // YADE's cap per unit force is eta R_mean: equal to LIGGGHTS's mu_r R* for two d50 grains
   const double eta = rolling["eta"].get<double>();
-  CHECK(eta * contact.at("cap_per_force") / 0.05 == Approx(truth.particles.rolling_friction * r_star).epsilon(1e-9));
+  CHECK(eta * contact.at("cap_per_force") / kProbeEta == Approx(truth.particles.rolling_friction * r_star).epsilon(1e-9));
 }
 
 TEST_CASE("YADE's rolling spring for a cdt scene stays Ai et al.'s 2.25 k_n mu_r^2 R*^2", "[dem][yade]") {
