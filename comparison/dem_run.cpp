@@ -22,40 +22,22 @@ std::optional<double> DemRun::band_d50() const {
   return std::nullopt;
 }
 
-namespace {
-
-nlohmann::json read_json_file(const fs::path& path) {
-  if (!fs::exists(path)) throw InputError(fmt::format("{}: missing (not a run directory of the contract?)", path.string()));
-  return io::read_json_file(path);
-}
-
-template <class T>
-T field(const nlohmann::json& j, const std::string& pointer, const fs::path& file) {
-  try {
-    return j.at(nlohmann::json::json_pointer(pointer)).get<T>();
-  } catch (const std::exception&) {
-    throw InputError(fmt::format("{}: missing or malformed field '{}'", file.string(), pointer));
-  }
-}
-
-}  // namespace
-
 DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
   DemRun r;
   r.dir = dir;
   const fs::path manifest_path = dir / "manifest.json";
-  const auto m = read_json_file(manifest_path);
-  r.status = field<std::string>(m, "/status", manifest_path);
+  const auto m = io::read_json_file(manifest_path);
+  r.status = io::json_field<std::string>(m, "/status", manifest_path);
   if (r.status != "complete" && !allow_partial)
     throw InputError(fmt::format("{}: run status is '{}'; pass --allow-partial to compare it anyway",
                                  dir.string(), r.status));
   r.engine = m.value("/engine/name"_json_pointer, std::string("unknown"));
-  r.boundary = driver::parse_boundary_kind(field<std::string>(m, "/scene/resolved/boundary/type", manifest_path),
+  r.boundary = driver::parse_boundary_kind(io::json_field<std::string>(m, "/scene/resolved/boundary/type", manifest_path),
                                            manifest_path.string() + ": /scene/resolved/boundary/type");
-  r.sigma_n0_kPa = field<double>(m, "/scene/resolved/boundary/sigma_n_kPa", manifest_path);
+  r.sigma_n0_kPa = io::json_field<double>(m, "/scene/resolved/boundary/sigma_n_kPa", manifest_path);
   r.K_kPa_per_mm = m.value("/scene/resolved/boundary/K_kPa_per_mm"_json_pointer, 0.0);
-  r.d50_mm = field<double>(m, "/scene/resolved/particles/d50_mm", manifest_path);
-  r.R_n = field<double>(m, "/R_n", manifest_path);
+  r.d50_mm = io::json_field<double>(m, "/scene/resolved/particles/d50_mm", manifest_path);
+  r.R_n = io::json_field<double>(m, "/R_n", manifest_path);
   r.scene_but_seed = m.at("/scene/resolved"_json_pointer);
   r.scene_but_seed.erase("seed");
   r.scene_text = m.value("/scene/text"_json_pointer, std::string());
@@ -84,7 +66,7 @@ DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
     if (!(r.sigma_n_kPa[i] > 0.0))
       throw InputError(fmt::format("{}:{}: sigma_n_kPa = {:g}; the contract's normal stress is compression "
                                    "positive and must be > 0", ts_path.string(), i + 2, r.sigma_n_kPa[i]));
-  if (fs::exists(dir / "summary.json")) r.summary = read_json_file(dir / "summary.json");
+  if (fs::exists(dir / "summary.json")) r.summary = io::read_json_file(dir / "summary.json");
   return r;
 }
 

@@ -7,8 +7,6 @@ namespace iwb::comparison {
 
 namespace {
 
-constexpr double kLastFraction = 0.2;  // the residual window, as in the DEM summary
-
 double rmse(const std::vector<double>& a, const std::vector<double>& b, std::size_t n) {
   double s = 0.0;
   for (std::size_t i = 0; i < n; ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
@@ -24,7 +22,7 @@ Friction friction(const std::vector<double>& u, const std::vector<double>& tau,
   Friction f{0.0, 0.0, 0.0};
   for (std::size_t i = 0; i < n; ++i)
     if (std::abs(tau[i]) / sigma[i] > f.peak) f.peak = std::abs(tau[i]) / sigma[i], f.u_at_peak = u[i];
-  const double from = (1.0 - kLastFraction) * u[n - 1];
+  const double from = (1.0 - kResidualWindowShare) * u[n - 1];
   int count = 0;
   for (std::size_t i = 0; i < n; ++i)
     if (u[i] >= from) f.residual += std::abs(tau[i]) / sigma[i], ++count;

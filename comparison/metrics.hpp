@@ -8,6 +8,10 @@
 
 namespace iwb::comparison {
 
+// The residual window: the last fifth of the travelled displacement, as the DEM summary has it
+// (src/dem/summary.cpp), so that the DEM's numbers here equal its summary.json.
+inline constexpr double kResidualWindowShare = 0.2;
+
 struct Metrics {
   double rmse_tau_kPa;
   double peak_friction_dem, peak_friction_model;

@@ -6,14 +6,11 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "comparison/metrics.hpp"
 
 namespace iwb::comparison {
 
 namespace {
-
-// The residual window: the last fifth of the travelled displacement, as the DEM summary has it
-// (src/dem/summary.cpp), so that the DEM's numbers here equal its summary.json.
-constexpr double kLastFraction = 0.2;
 
 std::vector<double> travel(const std::vector<double>& u_x, std::size_t n) {
   std::vector<double> s(n, 0.0);
@@ -72,7 +69,7 @@ std::map<std::string, std::optional<double>> evaluate_quantities(const Curve& c,
   double sum = 0.0;
   int count = 0;
   for (std::size_t i = 0; i < n; ++i)
-    if ((last[i] = s[i] >= (1.0 - kLastFraction) * s.back())) sum += friction[i], ++count;
+    if ((last[i] = s[i] >= (1.0 - kResidualWindowShare) * s.back())) sum += friction[i], ++count;
   std::size_t peak = 0;
   for (std::size_t i = 1; i < n; ++i)
     if (friction[i] > friction[peak]) peak = i;

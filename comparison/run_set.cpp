@@ -17,27 +17,13 @@ using nlohmann::json;
 
 namespace {
 
-json read_json_file(const fs::path& file) {
-  if (!fs::exists(file)) throw InputError(fmt::format("{}: missing", file.string()));
-  return io::read_json_file(file);
-}
-
-template <class T>
-T field(const json& j, const std::string& pointer, const fs::path& file) {
-  try {
-    return j.at(json::json_pointer(pointer)).get<T>();
-  } catch (const std::exception&) {
-    throw InputError(fmt::format("{}: missing or malformed field '{}'", file.string(), pointer));
-  }
-}
-
 enum class Earlier { kNone, kSameInputs, kOtherInputs, kIncomplete };
 
 // Whether OUT/<run> holds a complete comparison of exactly these inputs (DEM manifest and
 // parameter file by hash, and the model), so that its fit can be reused.
 Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
   if (!fs::exists(dir / "manifest.json")) return Earlier::kNone;
-  const auto m = read_json_file(dir / "manifest.json");
+  const auto m = io::read_json_file(dir / "manifest.json");
   if (m.value("status", "") != "complete" || !fs::exists(dir / "compare.json"))
     return Earlier::kIncomplete;
   json seeds = json::array();
@@ -48,7 +34,7 @@ Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
                     m.value("/inputs/predicted_d_s_over_d50"_json_pointer, json()) == json(opt.predicted_ds_d50) &&
                     m.value("/inputs/parameters_sha256"_json_pointer, std::string()) ==
                         io::sha256_hex(io::read_file(opt.params)) &&
-                    read_json_file(dir / "compare.json").value("model", "") == opt.model;
+                    io::read_json_file(dir / "compare.json").value("model", "") == opt.model;
   return same ? Earlier::kSameInputs : Earlier::kOtherInputs;
 }
 
@@ -95,21 +81,21 @@ std::vector<std::string> run_names(const std::vector<fs::path>& dirs) {
 
 RunRecord load_run_record(const fs::path& compare_dir) {
   const fs::path cf = compare_dir / "compare.json";
-  const auto cmp = read_json_file(cf);
-  const fs::path dem_dir = field<std::string>(cmp, "/dem/dir", cf);
+  const auto cmp = io::read_json_file(cf);
+  const fs::path dem_dir = io::json_field<std::string>(cmp, "/dem/dir", cf);
   const fs::path sf = dem_dir / "summary.json";
-  const auto s = read_json_file(sf);
+  const auto s = io::read_json_file(sf);
   RunRecord r;
   r.name = compare_dir.filename().string();
-  r.R_n = field<double>(cmp, "/dem/R_n", cf);
-  r.d50_mm = field<double>(cmp, "/dem/d50_mm", cf);
-  r.kappa_r_fit = field<double>(cmp, "/fit/kappa_r", cf);
-  r.sigma_kappa_r_fit = field<double>(cmp, "/fit/sigma_kappa_r", cf);
-  r.d_s_fit_d50 = field<double>(cmp, "/fit/d_s_over_d50", cf);
-  r.peak_friction = field<double>(s, "/peak_friction", sf);
-  r.residual_friction = field<double>(s, "/residual_friction", sf);
-  r.dilation_mm = field<double>(s, "/dilation_mm", sf);
-  r.shear_mode = field<std::string>(s, "/shear_mode", sf);
+  r.R_n = io::json_field<double>(cmp, "/dem/R_n", cf);
+  r.d50_mm = io::json_field<double>(cmp, "/dem/d50_mm", cf);
+  r.kappa_r_fit = io::json_field<double>(cmp, "/fit/kappa_r", cf);
+  r.sigma_kappa_r_fit = io::json_field<double>(cmp, "/fit/sigma_kappa_r", cf);
+  r.d_s_fit_d50 = io::json_field<double>(cmp, "/fit/d_s_over_d50", cf);
+  r.peak_friction = io::json_field<double>(s, "/peak_friction", sf);
+  r.residual_friction = io::json_field<double>(s, "/residual_friction", sf);
+  r.dilation_mm = io::json_field<double>(s, "/dilation_mm", sf);
+  r.shear_mode = io::json_field<std::string>(s, "/shear_mode", sf);
   if (s.contains("wall_band_d50") && s["wall_band_d50"].is_number())
     r.band_d50 = s["wall_band_d50"].get<double>();
   return r;

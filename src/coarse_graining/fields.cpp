@@ -2,13 +2,12 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace iwb::coarse_graining {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The kernel sums, per grid point. Tensor components are stored as a*3+b.
 enum Sum : std::size_t {
@@ -24,7 +23,7 @@ void add_grains(const std::vector<Grain>& grains, const SamplingGrid& grid, Sums
   std::vector<CellWeight> around;
   for (const Grain& g : grains) {
     grid.around_point(g.position, around);
-    const double m = g.mass, volume = 4.0 / 3.0 * kPi * g.radius * g.radius * g.radius;
+    const double m = g.mass, volume = 4.0 / 3.0 * std::numbers::pi * g.radius * g.radius * g.radius;
     const Eigen::Vector3d& v = g.velocity;
     for (const auto& [cell, k] : around) {
       auto& c = s[cell];

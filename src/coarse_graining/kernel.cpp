@@ -1,12 +1,12 @@
 #include "coarse_graining/kernel.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace iwb::coarse_graining {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 // A branch shorter than this many widths (a contact along y only) is a point at its middle: the
 // closed forms divide by the branch's length.
 constexpr double kPointBranch = 1e-9;
@@ -17,13 +17,13 @@ GaussianKernel::GaussianKernel(double width) : w_(width) {
 }
 
 KernelValue GaussianKernel::planar(double dx, double dz) const {
-  const double phi = std::exp(-(dx * dx + dz * dz) / (2.0 * w_ * w_)) / (2.0 * kPi * w_ * w_);
+  const double phi = std::exp(-(dx * dx + dz * dz) / (2.0 * w_ * w_)) / (2.0 * std::numbers::pi * w_ * w_);
   // d/dx of phi(p - r_i) at the grid point p: -(dx / w^2) phi
   return {phi, -dx / (w_ * w_) * phi, -dz / (w_ * w_) * phi};
 }
 
 KernelValue GaussianKernel::vertical(double dz) const {
-  const double phi = std::exp(-dz * dz / (2.0 * w_ * w_)) / (std::sqrt(2.0 * kPi) * w_);
+  const double phi = std::exp(-dz * dz / (2.0 * w_ * w_)) / (std::sqrt(2.0 * std::numbers::pi) * w_);
   return {phi, 0.0, -dz / (w_ * w_) * phi};
 }
 
@@ -41,8 +41,8 @@ double GaussianKernel::planar_along(const Eigen::Vector2d& a, const Eigen::Vecto
   const double t_a = a.dot(e);
   const double d_perp2 = std::max(0.0, a.squaredNorm() - t_a * t_a);
   const double s = std::sqrt(2.0) * w_;
-  const double along = std::sqrt(kPi / 2.0) * w_ * (std::erf((t_a + length) / s) - std::erf(t_a / s));
-  return std::exp(-d_perp2 / (2.0 * w_ * w_)) / (2.0 * kPi * w_ * w_) * along / length;
+  const double along = std::sqrt(std::numbers::pi / 2.0) * w_ * (std::erf((t_a + length) / s) - std::erf(t_a / s));
+  return std::exp(-d_perp2 / (2.0 * w_ * w_)) / (2.0 * std::numbers::pi * w_ * w_) * along / length;
 }
 
 double GaussianKernel::vertical_along(double a, double b) const {

@@ -27,7 +27,7 @@ const std::vector<Clay>& clays() {
 // clay: p_c = p, its e0 a label). Sheared to gamma 0.5: MCC is within 0.3 % of its critical state
 // there (test of mcc), the seed's figures' end.
 constexpr double kSigmaN = 100.0;
-constexpr double kGamma = 0.5;
+constexpr double kChapter8GammaEnd = 0.5;
 const std::vector<std::pair<std::string, std::string>> kModels{
     {"hce", "HCE"}, {"barodesy-clay", "BC"}, {"mcc", "MCC"}};
 const std::vector<std::string> kThreeDimensional{"barodesy-clay3d", "mcc3d"};
@@ -40,12 +40,12 @@ std::vector<ClayCase> chapter8_cases() {
     const double e0 = std::exp(c.N - c.lambda_star * std::log(kSigmaN)) - 1.0;
     for (const auto& m : kModels) {
       ClayCase k{case_name(c, m.first), m.first, c.parameters, "CV", kSigmaN};
-      k.e0 = e0, k.K0 = 1.0, k.gamma = kGamma;
+      k.e0 = e0, k.K0 = 1.0, k.gamma = kChapter8GammaEnd;
       cases.push_back(k);
     }
     for (const auto& m : kThreeDimensional) {
       ClayCase k{case_name(c, m), m, c.parameters, "CV", kSigmaN};
-      k.e0 = e0, k.K0 = 1.0, k.gamma = kGamma;
+      k.e0 = e0, k.K0 = 1.0, k.gamma = kChapter8GammaEnd;
       cases.push_back(k);
     }
   }
@@ -93,7 +93,7 @@ ClayClaim same_asymptote(const std::map<std::string, ClayCurve>& curves, const C
   out.values = {{"hce", hce.end_values()}, {"bc", bc.end_values()}, {"mcc", mcc.end_values()}};
   out.measured = fmt::format("at gamma {}: tau HCE {:.1f}, BC {:.1f} ({:+.1f} %), MCC {:.1f} kPa; sigma_n HCE {:.1f}, BC {:.1f} "
                              "({:+.1f} %), MCC {:.1f} kPa",
-                             kGamma, hce.end_tau(), bc.end_tau(), 100.0 * dt, mcc.end_tau(), hce.sigma_n.back(),
+                             kChapter8GammaEnd, hce.end_tau(), bc.end_tau(), 100.0 * dt, mcc.end_tau(), hce.sigma_n.back(),
                              bc.sigma_n.back(), 100.0 * ds, mcc.sigma_n.back());
   out.holds = std::abs(dt) < kSame && std::abs(ds) < kSame;
   if (mcc_higher) out.holds = out.holds && mcc.end_tau() > std::max(hce.end_tau(), bc.end_tau());
@@ -102,21 +102,12 @@ ClayClaim same_asymptote(const std::map<std::string, ClayCurve>& curves, const C
 
 // 8.1: the reformulation carries other frameworks; the seed assumes reduced = 3D, the study measures
 // it (largest difference over the path, both clays) against the round-off the hypoplastic forms reach.
-constexpr double kSameResponse = 1e-8;
-
 ClayClaim reduced_against_3d(const std::map<std::string, ClayCurve>& curves, const std::string& model,
                              const std::string& label, const std::string& why) {
   ClayClaim out{"8.1, 8.5", fmt::format("{} on the reduced interface vectors equals its 3D form in simple shear (CV)", label),
                 "", true, {}};
-  for (const auto& c : clays()) {
-    const auto& r = curves.at(case_name(c, model));
-    const auto& d = curves.at(case_name(c, model + "3d"));
-    const double dt = largest_relative_difference(r.tau, d.tau), ds = largest_relative_difference(r.sigma_n, d.sigma_n);
-    out.values[c.key] = {{"tau", dt}, {"sigma_n", ds}};
-    out.measured += fmt::format("{}{}: largest |reduced - 3D| {:.1e} of tau, {:.1e} of sigma_n", out.measured.empty() ? "" : "; ",
-                                c.label, dt, ds);
-    out.holds = out.holds && dt < kSameResponse && ds < kSameResponse;
-  }
+  for (const auto& c : clays())
+    add_reduced_against_3d(out, c.key, c.label, curves.at(case_name(c, model)), curves.at(case_name(c, model + "3d")));
   out.measured += " (" + why + ")";
   return out;
 }

@@ -10,7 +10,7 @@ namespace iwb::studies {
 namespace {
 
 constexpr double kKelvin = 273.15;
-constexpr double kGamma = 0.5;  // the seed's figures end near their asymptotes well before
+constexpr double kThermoGammaEnd = 0.5;  // the seed's figures end near their asymptotes well before
 constexpr const char* kSoil1 = "table_6_5_soil_1.toml";
 constexpr const char* kCvSet = "table_6_5_cv.toml";
 constexpr const char* kCnlSet = "table_6_5_cnl.toml";
@@ -30,7 +30,7 @@ std::string label(double v) { return fmt::format("{:g}", v); }
 ClayCase thermo_case(const std::string& name, const std::string& model, const char* set, const std::string& bc,
                      double sigma_n, double e0, double T_C) {
   ClayCase k{name, model, set, bc, sigma_n};
-  k.e0 = e0, k.gamma = kGamma;
+  k.e0 = e0, k.gamma = kThermoGammaEnd;
   k.initial_inputs = {{"T_K", T_C + kKelvin}};
   return k;
 }

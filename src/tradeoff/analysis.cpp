@@ -15,9 +15,6 @@ namespace {
 
 const std::vector<double> kTolerances = {0.05, 0.01};
 
-bool complete(const json& r) {
-  return r.value("status", "") == "complete";
-}
 
 std::optional<double> qoi(const json& row, const std::string& key) {
   const auto it = row.find("qoi");
@@ -40,7 +37,7 @@ json base_setting(const json& rows, json& noise) {
                {"settings", "the scene as given (mean over the seeds)"}};
   std::vector<const json*> seeds;
   for (const auto& r : rows)
-    if (r["kind"] == "base" && complete(r)) seeds.push_back(&r);
+    if (r["kind"] == "base" && completed(r)) seeds.push_back(&r);
   base["seeds_complete"] = seeds.size();
   if (seeds.empty()) return base["status"] = "no complete seed", base;
   for (const char* cost : {"particle_steps", "wall_seconds", "particles", "timestep_s",
@@ -91,7 +88,7 @@ void score(json& setting, const json& reference, const json& noise) {
 json knob_effects(const json& settings, const json& base, const json& noise) {
   json out = json::array();
   for (const auto& s : settings) {
-    if (s["kind"] != "knob" || !complete(s)) continue;
+    if (s["kind"] != "knob" || !completed(s)) continue;
     json e = {
         {"knob", s["knob"]},
         {"factor", s["factor"]},
@@ -123,7 +120,7 @@ json cheapest_meeting(const json& settings) {
     auto cheapest = [&](auto&& meets) {
       const json* best = nullptr;
       for (const auto& s : settings)
-        if (complete(s) && s.contains("meets") && meets(s["meets"][t]) &&
+        if (completed(s) && s.contains("meets") && meets(s["meets"][t]) &&
             (!best || s["particle_steps"].get<double>() < (*best)["particle_steps"].get<double>()))
           best = &s;
       return best ? json{{"name", (*best)["name"]},
@@ -161,7 +158,7 @@ constexpr const char* kWhyBase =
 const json* find_reference(const json& settings, Reference mode) {
   const std::string kind = mode == Reference::kBase ? "base" : "refined";
   for (const auto& s : settings)
-    if (s["kind"] == kind && complete(s)) return &s;
+    if (s["kind"] == kind && completed(s)) return &s;
   return nullptr;
 }
 
@@ -184,7 +181,7 @@ json analyse(const json& rows, Reference mode) {
                       {"why", mode == Reference::kBase ? kWhyBase : kWhyRefined}};
   const json ref = *reference;
   for (auto& s : out["settings"])
-    if (complete(s)) score(s, ref, noise);
+    if (completed(s)) score(s, ref, noise);
   out["knob_effects"] = knob_effects(out["settings"], out["settings"][0], noise);
   out["cheapest"] = cheapest_meeting(out["settings"]);
   return out;

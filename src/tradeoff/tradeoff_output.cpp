@@ -9,6 +9,7 @@
 #include "dem/requirements.hpp"
 #include "io/output_path.hpp"
 #include "io/run_directory.hpp"
+#include "tradeoff/tradeoff.hpp"
 
 namespace iwb::tradeoff {
 
@@ -22,9 +23,6 @@ std::string number(const json& v, const char* format = "{:.4g}") {
 }
 std::string percent(const json& v) {
   return v.is_number() ? fmt::format("{:.1f} %", 100 * v.get<double>()) : "n/a";
-}
-bool complete(const json& s) {
-  return s.value("status", "") == "complete";
 }
 
 // The QoIs a setting meets at tolerance `tol` ("0.05"), joined by `sep`; `none` if it meets none.
@@ -44,7 +42,7 @@ std::string settings_table(const json& t) {
   md += "---|---|\n";
   for (const auto& s : t["settings"]) {
     md += fmt::format("| {} | {} |", s["name"].get<std::string>(), s.value("settings", ""));
-    if (!complete(s)) {
+    if (!completed(s)) {
       md += fmt::format(" {} |\n", s.value("status", "?"));
       continue;
     }
@@ -122,7 +120,7 @@ void draw_pareto(const json& t, const fs::path& dir) {
   std::string labels;
   double lowest = INFINITY, highest = 0.0;
   for (const auto& s : t["settings"]) {
-    if (!complete(s) || !s.contains("error") || s["name"] == t["reference"]["name"])
+    if (!completed(s) || !s.contains("error") || s["name"] == t["reference"]["name"])
       continue;  // the reference has no error
     std::vector<double> row = {s["particle_steps"].get<double>()};
     for (const auto& q : dem::quantities_of_interest()) {

@@ -11,6 +11,7 @@
 #include "comparison/replay.hpp"
 #include "io/run_directory.hpp"
 #include "support/fixtures.hpp"
+#include "support/replaced.hpp"
 #include "support/synthetic_dem.hpp"
 
 using namespace iwb;
@@ -37,13 +38,6 @@ std::string rejection(const fs::path& dir, bool allow_partial = false) {
     return e.what();
   }
   return "(accepted)";
-}
-
-void edit(const fs::path& file, const std::string& from, const std::string& to) {
-  std::string s = io::read_file(file);
-  const auto p = s.find(from);
-  REQUIRE(p != std::string::npos);
-  io::write_atomically(file, s.replace(p, from.size(), to));
 }
 
 }  // namespace
@@ -94,23 +88,23 @@ TEST_CASE("malformed run directories are refused with file, line and reason", "[
   fs::remove(d / "manifest.json");
   CHECK_THAT(rejection(d), Catch::Contains("manifest.json: missing"));
   d = variant("wrong_header");
-  edit(d / "timeseries.csv", "tau_kPa", "tau_Pa");
+  test::edit_file(d / "timeseries.csv", "tau_kPa", "tau_Pa");
   CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:1: missing column 'tau_kPa'") && Catch::Contains("tau_Pa"));
   d = variant("nan");
-  edit(d / "timeseries.csv", ",4\n", ",nan\n");  // the first data row's coordination
+  test::edit_file(d / "timeseries.csv", ",4\n", ",nan\n");  // the first data row's coordination
   CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:2: column 'coordination' = 'nan' is not a finite number"));
   d = variant("truncated");
   { std::string s = io::read_file(d / "timeseries.csv"); s.resize(s.size() - 12); io::write_atomically(d / "timeseries.csv", s); }
   CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:") && Catch::Contains("truncated row"));
   d = variant("time_backwards");
-  edit(d / "timeseries.csv", "\n0.02,", "\n0.001,");
+  test::edit_file(d / "timeseries.csv", "\n0.02,", "\n0.001,");
   CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:4: t_s = 0.001 after 0.01: time must increase"));
   d = variant("failed");
-  edit(d / "manifest.json", "\"complete\"", "\"failed: engine error\"");
+  test::edit_file(d / "manifest.json", "\"complete\"", "\"failed: engine error\"");
   CHECK_THAT(rejection(d), Catch::Contains("run status is 'failed: engine error'; pass --allow-partial"));
   CHECK(rejection(d, true) == "(accepted)");
   d = variant("no_boundary");
-  edit(d / "manifest.json", "\"type\"", "\"kind\"");
+  test::edit_file(d / "manifest.json", "\"type\"", "\"kind\"");
   CHECK_THAT(rejection(d), Catch::Contains("missing or malformed field '/scene/resolved/boundary/type'"));
 }
 

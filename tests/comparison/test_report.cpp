@@ -7,19 +7,20 @@
 
 #include "io/run_directory.hpp"
 #include "support/cli.hpp"
+#include "support/replaced.hpp"
 
 using namespace iwb;
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kWork = fs::path(IWB_TEST_RUNS_DIR) / "report";
+const fs::path kReportWork = fs::path(IWB_TEST_RUNS_DIR) / "report";
 const fs::path kRun = "data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s1";
 const fs::path kParams = "data/params/dem_default_grains.toml";
 
-// A fresh comparison of `run` at kWork/name (half a second).
-fs::path comparison(const std::string& name, const fs::path& run = kRun, bool allow_partial = false) {
-  const fs::path out = kWork / name;
+// A fresh comparison of `run` at kReportWork/name (half a second).
+fs::path fresh_comparison(const std::string& name, const fs::path& run = kRun, bool allow_partial = false) {
+  const fs::path out = kReportWork / name;
   std::vector<std::string> args = {"compare", run.string(), "--params", kParams.string(), "-o", out.string(), "--force"};
   if (allow_partial) args.push_back("--allow-partial");
   const auto r = test::run_iwb(args);
@@ -42,21 +43,15 @@ void refused(const std::vector<std::string>& inputs, const fs::path& out, const 
   CHECK(test::files_under(out) == before);
 }
 
-void edit(const fs::path& file, const std::string& from, const std::string& to) {
-  std::string text = io::read_file(file);
-  REQUIRE(text.find(from) != std::string::npos);
-  io::write_atomically(file, text.replace(text.find(from), from.size(), to));
-}
-
 }  // namespace
 
 TEST_CASE("report: bad inputs exit 2 and write nothing, not even the figures directory", "[comparison]") {
-  const fs::path out = kWork / "bad_out";
+  const fs::path out = kReportWork / "bad_out";
   fs::remove_all(out);
-  fs::create_directories(kWork / "empty");
-  refused({(kWork / "empty").string()}, out, "empty: neither a directory of `iwb compare`");
+  fs::create_directories(kReportWork / "empty");
+  refused({(kReportWork / "empty").string()}, out, "empty: neither a directory of `iwb compare`");
 
-  const auto truncated = comparison("truncated");
+  const auto truncated = fresh_comparison("truncated");
   const std::string csv = io::read_file(truncated / "compare.csv");
   io::write_atomically(truncated / "compare.csv", csv.substr(0, csv.find('\n', csv.size() / 3) + 1));  // whole rows
   refused({truncated.string()}, out, (truncated / "compare.csv").string() + ": changed since `iwb compare` wrote it");
@@ -64,39 +59,39 @@ TEST_CASE("report: bad inputs exit 2 and write nothing, not even the figures dir
   io::write_atomically(truncated / "manifest.json", "{\"status\": \"complete\"}");
   refused({truncated.string()}, out, (truncated / "compare.csv").string() + ": variant 1 has");
 
-  const auto unlisted = comparison("no_manifest");
+  const auto unlisted = fresh_comparison("no_manifest");
   fs::remove(unlisted / "manifest.json");
   refused({unlisted.string()}, out, (unlisted / "manifest.json").string() + ": missing");
 
-  const auto cut = comparison("cut_manifest");
+  const auto cut = fresh_comparison("cut_manifest");
   io::write_atomically(cut / "manifest.json", io::read_file(cut / "manifest.json").substr(0, 100));
   refused({cut.string()}, out, (cut / "manifest.json").string() + ": not valid JSON");
 
   // the good comparison first: its figures must not be drawn before the bad one is found
-  refused({comparison("good").string(), (kWork / "empty").string()}, out, "neither a directory");
+  refused({fresh_comparison("good").string(), (kReportWork / "empty").string()}, out, "neither a directory");
   CHECK_FALSE(fs::exists(out));
 }
 
 TEST_CASE("report: a comparison whose manifest says failed is refused, naming its status", "[comparison]") {
-  const auto failed = comparison("failed");
-  edit(failed / "manifest.json", "\"status\": \"complete\"", "\"status\": \"failed: the replay diverged\"");
-  refused({failed.string()}, kWork / "failed_out",
+  const auto failed = fresh_comparison("failed");
+  test::edit_file(failed / "manifest.json", "\"status\": \"complete\"", "\"status\": \"failed: the replay diverged\"");
+  refused({failed.string()}, kReportWork / "failed_out",
           "the comparison's status is 'failed: the replay diverged'; a report shows finished comparisons only");
 }
 
 TEST_CASE("report: -o naming a directory is refused and leaves no temporary file", "[comparison]") {
-  const fs::path dir = kWork / "o_is_dir";
+  const fs::path dir = kReportWork / "o_is_dir";
   fs::remove_all(dir);
   fs::create_directories(dir / "report.html");
-  refused({comparison("for_dir").string()}, dir, "--out: " + (dir / "report.html").string() + ": is a directory");
-  for (const auto& e : fs::recursive_directory_iterator(kWork))
+  refused({fresh_comparison("for_dir").string()}, dir, "--out: " + (dir / "report.html").string() + ": is a directory");
+  for (const auto& e : fs::recursive_directory_iterator(kReportWork))
     CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
 }
 
 TEST_CASE("report: a new report replaces the old one whole, a refused one leaves it as it was", "[comparison]") {
-  const fs::path out = kWork / "replace";
+  const fs::path out = kReportWork / "replace";
   fs::remove_all(out);
-  const auto good = comparison("replace_good");
+  const auto good = fresh_comparison("replace_good");
   auto r = test::run_iwb({"report", good.string(), "-o", (out / "report.html").string()});
   REQUIRE(r.exit_code == 0);
   io::write_atomically(out / "report_files" / "stale.svg", "<svg/>");  // as an earlier report's figure
@@ -104,17 +99,17 @@ TEST_CASE("report: a new report replaces the old one whole, a refused one leaves
   REQUIRE(r.exit_code == 0);
   CHECK_FALSE(fs::exists(out / "report_files" / "stale.svg"));
   CHECK(fs::exists(out / "report_files" / "0-replace_good" / "tau_ux.svg"));
-  refused({(kWork / "empty").string()}, out, "neither a directory");  // the good report stays
+  refused({(kReportWork / "empty").string()}, out, "neither a directory");  // the good report stays
   CHECK(fs::exists(out / "report_files" / "0-replace_good" / "tau_ux.svg"));
 }
 
 TEST_CASE("report: a DEM run that did not complete, compared with --allow-partial, is flagged", "[comparison]") {
-  const fs::path run = kWork / "implausible_run";
+  const fs::path run = kReportWork / "implausible_run";
   test::fresh_copy(kRun, run);
-  edit(run / "manifest.json", "\"status\": \"complete\"",
+  test::edit_file(run / "manifest.json", "\"status\": \"complete\"",
        "\"status\": \"failed: implausible: normal_stress_held = 0.6, must be <= 0.5\"");
-  const auto partial = comparison("partial", run, true);
-  const fs::path out = kWork / "partial_out";
+  const auto partial = fresh_comparison("partial", run, true);
+  const fs::path out = kReportWork / "partial_out";
   const auto r = test::run_iwb({"report", partial.string(), "-o", (out / "report.html").string()});
   REQUIRE(r.exit_code == 0);
   const std::string html = io::read_file(out / "report.html");
@@ -125,12 +120,12 @@ TEST_CASE("report: a DEM run that did not complete, compared with --allow-partia
 TEST_CASE("report: a DEM run with coarse-grained fields shows its band (maps, profiles, void ratio in d_s)",
           "[comparison]") {
   // the smoke scene in LIGGGHTS (~10 s), coarse-grained when it completes (issue 21)
-  const fs::path run = kWork / "smoke-with-fields";
+  const fs::path run = kReportWork / "smoke-with-fields";
   const auto dem = test::run_iwb({"dem", "run", "data/scenes/smoke.toml", "--out", run.string(), "--force"});
   INFO(dem.output);
   REQUIRE(dem.exit_code == 0);
-  const fs::path out = comparison("smoke-with-fields-compare", run);
-  const fs::path html = kWork / "band-report" / "report.html";
+  const fs::path out = fresh_comparison("smoke-with-fields-compare", run);
+  const fs::path html = kReportWork / "band-report" / "report.html";
   const auto r = test::run_iwb({"report", out.string(), "-o", html.string()});
   INFO(r.output);
   REQUIRE(r.exit_code == 0);

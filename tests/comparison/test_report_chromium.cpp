@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kWork = fs::path(IWB_TEST_RUNS_DIR) / "chromium";
+const fs::path kChromiumWork = fs::path(IWB_TEST_RUNS_DIR) / "chromium";
 constexpr const char* kChromiumFlags =
     "--headless --no-sandbox --disable-gpu --disable-background-networking "
     "--disable-component-update "
@@ -30,7 +30,7 @@ constexpr const char* kChromiumFlags =
 // Runs Chromium on `html` with `args`; its stdout goes to `stdout_file`. A fresh profile each time.
 void chromium(const fs::path& html, const std::string& args, const fs::path& stdout_file) {
   REQUIRE(std::system("command -v chromium > /dev/null") == 0);  // setup.sh installs it
-  const fs::path profile = kWork / ("profile-" + stdout_file.stem().string());
+  const fs::path profile = kChromiumWork / ("profile-" + stdout_file.stem().string());
   fs::remove_all(profile);
   const std::string cmd =
       fmt::format("timeout 120 chromium {} --user-data-dir={} {} file://{} > {} 2> {}.stderr",
@@ -81,10 +81,10 @@ fs::path synthetic_report() {
   comparison::CompareOptions opt;
   opt.dem_dir = dem;
   opt.params = "data/params/table_5_1_evaluation.toml";
-  opt.out = kWork / "compare";
+  opt.out = kChromiumWork / "compare";
   opt.force = true;
   comparison::run_comparison(opt);
-  const fs::path html = kWork / "report.html";
+  const fs::path html = kChromiumWork / "report.html";
   REQUIRE(comparison::write_report({opt.out}, html).size() == 4);
   return html;
 }
@@ -99,28 +99,28 @@ std::size_t count(const std::string& s, const std::string& what) {
 
 TEST_CASE("headless Chromium renders the report offline: figures drawn, no network request",
           "[comparison][chromium]") {
-  fs::remove_all(kWork);
-  fs::create_directories(kWork);
+  fs::remove_all(kChromiumWork);
+  fs::create_directories(kChromiumWork);
   const fs::path html = synthetic_report();
 
   // (a) screenshot, with the net log of the same load
   chromium(html,
-           fmt::format("--screenshot={} --log-net-log={}", (kWork / "shot.png").string(),
-                       (kWork / "net.json").string()),
-           kWork / "shot.out");
-  const auto px = png_stats(kWork / "shot.png");
+           fmt::format("--screenshot={} --log-net-log={}", (kChromiumWork / "shot.png").string(),
+                       (kChromiumWork / "net.json").string()),
+           kChromiumWork / "shot.out");
+  const auto px = png_stats(kChromiumWork / "shot.png");
   INFO("screenshot " << px[0] << " x " << px[1] << ": " << px[2] << " non-white, " << px[3]
                      << " coloured pixels");
   REQUIRE(px[0] * px[1] > 0);
   CHECK(px[2] > 0.02 * px[0] * px[1]);  // text, tables and figures, not a blank page
   CHECK(px[3] > 2000);                  // the coloured curves of the figures were drawn
   // (c) nothing fetched by the page
-  const auto requests = page_requests(kWork / "net.json");
+  const auto requests = page_requests(kChromiumWork / "net.json");
   CHECK(requests == std::vector<std::string>{});
 
   // (b) the DOM Chromium built: four inline SVG figures, each with plotted paths
-  chromium(html, "--dump-dom", kWork / "dom.html");
-  const std::string dom = io::read_file(kWork / "dom.html");
+  chromium(html, "--dump-dom", kChromiumWork / "dom.html");
+  const std::string dom = io::read_file(kChromiumWork / "dom.html");
   CHECK(count(dom, "<svg") == 4);
   const std::regex plotted(
       R"(<path[^>]*\sd=['"]M[^'"]{200,})");  // a curve: a long path, not a tick
@@ -133,11 +133,11 @@ TEST_CASE("headless Chromium renders the report offline: figures drawn, no netwo
   // negative control: one remote image must show up in the same check
   std::string page = io::read_file(html);
   page.insert(page.find("</body>"), "<img src=\"http://example.com/x.png\">");
-  const fs::path leaky = kWork / "leaky.html";
+  const fs::path leaky = kChromiumWork / "leaky.html";
   io::write_atomically(leaky, page);
-  chromium(leaky, "--log-net-log=" + (kWork / "leaky_net.json").string() + " --dump-dom",
-           kWork / "leaky.out");
-  const auto leaked = page_requests(kWork / "leaky_net.json");
+  chromium(leaky, "--log-net-log=" + (kChromiumWork / "leaky_net.json").string() + " --dump-dom",
+           kChromiumWork / "leaky.out");
+  const auto leaked = page_requests(kChromiumWork / "leaky_net.json");
   REQUIRE_FALSE(leaked.empty());
   for (const auto& url : leaked) CHECK(url == "http://example.com/x.png");
 }

@@ -14,6 +14,8 @@
 #include "io/csv_table.hpp"
 #include "io/run_directory.hpp"
 #include "io/vtk_files.hpp"
+#include "support/replaced.hpp"
+#include "support/smoke_specimens.hpp"
 
 using namespace iwb;
 namespace fs = std::filesystem;
@@ -32,7 +34,9 @@ SmokeRun run_text(const std::string& file, const std::string& text, const std::s
                   const std::string& engine_name, int processes = 1) {
   SmokeRun r{dem::parse_scene(text, file), fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / run_name, {}, {}};
   const auto engine = dem::make_engine(engine_name);
-  dem::RunOptions opt{r.dir, processes, false, true, "tests", nullptr, nullptr, {}};
+  // two ranks consolidate themselves: that test counts each rank's grains in every stage
+  const auto specimens = processes == 1 ? test::smoke_specimens() : fs::path();
+  dem::RunOptions opt{r.dir, processes, false, true, "tests", nullptr, nullptr, specimens};
   r.outcome = dem::run_scene(r.scene, text, *engine, opt);
   INFO(r.outcome.status);
   REQUIRE(r.outcome.complete());
@@ -219,7 +223,11 @@ void check_glued(const std::string& engine) {
 }
 
 void check_cv(const std::string& engine) {
-  const auto r = run("smoke_cv", engine);
+  // 1 mm of the scene's 2: the held plate and a dilative specimen's rise of sigma_n (19 kPa in
+  // YADE by then) show as well, at half the cost (YADE shears the smoke scene at ~38 s per mm)
+  const std::string file = "data/scenes/smoke_cv.toml";
+  const auto r = run_text(file, test::replaced(io::read_file(file), "displacement_mm = 2.0", "displacement_mm = 1.0"),
+                          "smoke_cv", engine);
   common_facts(r);
   for (double u : column(r, "u_n_mm")) CHECK(u == 0.0);
   const auto s = column(r, "sigma_n_kPa");

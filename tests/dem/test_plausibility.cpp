@@ -11,6 +11,7 @@
 #include "dem/plausibility.hpp"
 #include "dem/run.hpp"
 #include "io/run_directory.hpp"
+#include "support/smoke_specimens.hpp"
 
 using namespace iwb;
 namespace fs = std::filesystem;
@@ -177,7 +178,7 @@ void garbage_run(const std::string& engine_name) {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / "garbage";
   const auto engine = dem::make_engine(engine_name);
   const auto outcome =
-      dem::run_scene(scene, text, *engine, {dir, 1, false, true, "tests", nullptr, nullptr});
+      dem::run_scene(scene, text, *engine, {dir, 1, false, true, "tests", nullptr, nullptr, test::smoke_specimens()});
   CHECK_THAT(outcome.status, Catch::StartsWith("failed: implausible: ") &&
                                  Catch::Contains("displacement_not_overshot = ") && Catch::Contains("rows = "));
   const auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));

@@ -19,10 +19,10 @@ using calibration::SoilTestKind;
 
 namespace {
 
-const std::string kScene = "data/scenes/smoke.toml";
+const std::string kSmokeScene = "data/scenes/smoke.toml";
 
 calibration::SoilTest run_cell(const dem::SoilCellSpec& spec, const std::string& name,
-                               const std::string& scene = kScene) {
+                               const std::string& scene = kSmokeScene) {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "soil" / spec.engine / name;
   const dem::RunOptions opt{dir, 1, false, true, "tests", nullptr, nullptr, {}};
   const auto outcome = dem::run_soil_test(io::read_file(scene), scene, spec, opt);

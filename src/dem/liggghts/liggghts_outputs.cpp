@@ -15,7 +15,7 @@ namespace {
 
 // fix ave/spatial blocks: a header "step bins", then per bin: bin, z, count, vx, mean particle
 // volume, mean s_zz*V, mean s_xz*V, number density (stress/atom is compression negative).
-ProfileBlocks profile_blocks(const fs::path& raw, const Scene& s, const Numerics& n) {
+ProfileBlocks liggghts_profile_blocks(const fs::path& raw, const Scene& s, const Numerics& n) {
   ProfileBlocks blocks;
   std::ifstream in(raw);
   long step = -1;
@@ -45,7 +45,7 @@ ContractTables assemble_liggghts_outputs(const StageContext& ctx, const nlohmann
   const Scene& s = ctx.scene;
   ContractTables out;
   out.timeseries = timeseries_table(s, n, ctx.work_dir / "timeseries.raw", z0);
-  out.profiles = profile_table(s, n, profile_blocks(ctx.work_dir / "profiles.raw", s, n), step0);
+  out.profiles = profile_table(s, n, liggghts_profile_blocks(ctx.work_dir / "profiles.raw", s, n), step0);
   write_snapshot_series(s, ctx.work_dir / "dumps", {"particles_([0-9]+)\\.vtk", "walls_([0-9]+)\\.vtk"},
                         {Eigen::Vector3d::Zero(), step0, n.dt}, ctx.run_dir / "vtk");
   out.facts = plate_facts(s, out.timeseries);

@@ -79,7 +79,7 @@ std::vector<std::string> command(const std::string& stage, int threads) {
 
 // The script's profiles.raw: "step z count vx solid s_zz s_xz" per bin, stresses per bin volume
 // and compression negative, as LIGGGHTS's stress/atom.
-ProfileBlocks profile_blocks(const fs::path& raw, const Scene& s, const Numerics& n) {
+ProfileBlocks yade_profile_blocks(const fs::path& raw, const Scene& s, const Numerics& n) {
   ProfileBlocks blocks;
   for (const auto& v : numeric_lines(raw))
     if (v.size() >= 7)
@@ -193,7 +193,7 @@ ContractTables YadeEngine::assemble(const StageContext& ctx, const nlohmann::jso
   const double z0 = facts.at("shear").at("z0_m").get<double>();
   ContractTables out;
   out.timeseries = timeseries_table(ctx.scene, n, ctx.work_dir / "timeseries.raw", z0);
-  out.profiles = profile_table(ctx.scene, n, profile_blocks(ctx.work_dir / "profiles.raw", ctx.scene, n), step0);
+  out.profiles = profile_table(ctx.scene, n, yade_profile_blocks(ctx.work_dir / "profiles.raw", ctx.scene, n), step0);
   // interface_shear.py lifts the scene by d_max - zlo (YADE's cell starts at z = 0)
   const Eigen::Vector3d shift(0.0, 0.0, -(ctx.scene.particles.d_max() - n.zlo));
   write_snapshot_series(ctx.scene, ctx.work_dir / "dumps", {"yade-spheres-0*([0-9]+)\\.vtk", "yade-facets-0*([0-9]+)\\.vtk"},
