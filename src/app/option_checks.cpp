@@ -20,9 +20,14 @@ bool parse_double(const std::string& text, double& v) {
   }
 }
 
+// What is at `p`: "missing", "directory", "file", "other" (a FIFO, a device), "loop" (a symbolic
+// link that leads back to itself: not a missing file, though no file is there) or "under a file"
+// (a path through a regular file, which can be neither read nor made).
 std::string kind_of(const fs::path& p) {
   std::error_code ec;
   const auto s = fs::status(p, ec);
+  if (ec == std::errc::too_many_symbolic_link_levels) return "loop";
+  if (ec == std::errc::not_a_directory) return "under a file";
   if (!fs::exists(s)) return "missing";
   if (fs::is_directory(s)) return "directory";
   if (fs::is_regular_file(s)) return "file";
@@ -59,10 +64,17 @@ CLI::Validator whole_in(long lower, long upper) {
 }
 
 namespace {
-// A validator of a path: `refusal` gets the text and what is there ("missing", "file",
-// "directory", "other") and says what is wrong, or nothing.
+// A validator of a path: `refusal` gets the text and what is there (kind_of) and says what is
+// wrong, or nothing. A link loop and a path through a file are refused for every kind of path.
 CLI::Validator path_check(const std::string& name, std::string (*refusal)(const std::string&, const std::string&)) {
-  return CLI::Validator([refusal](std::string& text) { return refusal(text, kind_of(text)); }, name);
+  return CLI::Validator(
+      [refusal](std::string& text) {
+        const std::string kind = kind_of(text);
+        if (kind == "loop") return text + ": a symbolic link loop (the link leads back to itself)";
+        if (kind == "under a file") return text + ": a path through a file (a part of it is a file, not a directory)";
+        return refusal(text, kind);
+      },
+      name);
 }
 }  // namespace
 

@@ -126,6 +126,11 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
   if (lock.stale() && opt.progress) opt.progress(lock.stale_message());
   if (opt.resume) {
     m = earlier_manifest(opt.out, sha, nlohmann::json::json_pointer(sha_key));
+    if (m.value("status", "") == "complete") {
+      out.status = "complete";
+      return StagedRun{StageContext{scene, opt.out, opt.out / engine.name(), opt.processes, opt.interrupt, opt.progress},
+                       nlohmann::json::object(), std::move(lock), true};
+    }
     m["status"] = "running";
     m["resumed"].push_back(io::utc_timestamp());
   } else {
@@ -176,7 +181,7 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
     throw InputError(fmt::format("{}: {} (engine {})", scene.source, why, engine.name()));
   RunOutcome out;
   const auto run = run_stages(scene, text, engine, opt, fresh_manifest(scene, text, engine, opt), out);
-  if (!run) return out;
+  if (!run || run->complete_before) return out;
   auto& m = out.manifest;
   const auto& ctx = run->ctx;
   const auto& facts = run->facts;

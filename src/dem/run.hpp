@@ -41,10 +41,14 @@ struct RunOutcome {
 // `sha_key` points at the manifest's hash of scene_text (what --resume must find again).
 // The run directory is locked (io/directory_lock.hpp) from before anything is read or written in
 // it until the StagedRun is gone: another process working in it is refused (InputError naming it).
+// --resume of a run whose manifest says complete does nothing (issue 37: a recomputation
+// changed a band stress in its sixth digit): `complete_before` is set, the manifest is the earlier
+// one and no file is written; the caller returns.
 struct StagedRun {
   StageContext ctx;
   nlohmann::json facts;  // by stage name
   std::optional<io::DirectoryLock> lock;
+  bool complete_before = false;
 };
 std::optional<StagedRun> run_stages(const Scene& scene, const std::string& scene_text, Engine& engine,
                                    const RunOptions& options, const nlohmann::json& fresh, RunOutcome& out,

@@ -329,7 +329,7 @@ RunOutcome run_soil_test(const std::string& text, const std::string& source, con
   const auto run = run_stages(cell, cell_text, engine, opt,
                               fresh_manifest(text, source, cell_text, cell, c, engine, opt), out,
                               "/cell_scene/sha256");
-  if (!run) return out;
+  if (!run || run->complete_before) return out;
   auto& m = out.manifest;
   try {
     SoilTest t;

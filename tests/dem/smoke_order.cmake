@@ -1,12 +1,13 @@
-# Included by ctest after the discovered Catch tests (tests/CMakeLists.txt): the smoke runs that
+# Included by ctest after the discovered Catch tests (tests/CMakeLists.txt), whose names are
+# "unit:" and the test case's (catch_discover_tests drops TEST_PREFIX's trailing space): the smoke runs that
 # start from the engine's shared smoke specimen (tests/support/smoke_specimens.hpp) run after the
 # one that consolidates it, so that none of them holds a ctest slot while waiting on its lock.
 foreach(engine LIGGGHTS YADE)
-  set(first "unit: ${engine} smoke CNL: sigma_n stays within 5 % of the target during shear")
-  foreach(later "unit: ${engine} smoke CNS: d sigma_n / d u_n matches K within 10 %"
-                "unit: ${engine} smoke CV: the plate does not move and sigma_n is free"
-                "unit: ${engine} smoke start of shear: from the rest state, tau rises without a start-up plateau"
-                "unit: ${engine}: the smoke scene at inertial number 1e6 is failed as implausible, not complete")
+  set(first "unit:${engine} smoke CNL: sigma_n stays within 5 % of the target during shear")
+  foreach(later "unit:${engine} smoke CNS: d sigma_n / d u_n matches K within 10 %"
+                "unit:${engine} smoke CV: the plate does not move and sigma_n is free"
+                "unit:${engine} smoke start of shear: from the rest state, tau rises without a start-up plateau"
+                "unit:${engine}: the smoke scene at inertial number 1e6 is failed as implausible, not complete")
     set_tests_properties("${later}" PROPERTIES DEPENDS "${first}")
   endforeach()
 endforeach()

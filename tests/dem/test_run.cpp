@@ -37,9 +37,14 @@ void servo_failure(const std::string& engine_name) {
   CHECK(m["files"].empty());                         // and no file listed that is not there
 }
 
+// The stage mechanics need no more than half a millimetre of shear (10 rows), not the scene's 2.
+std::string short_shear(const std::string& file) {
+  return replaced(io::read_file(file), "displacement_mm = 2.0", "displacement_mm = 0.5");
+}
+
 void resume_after_interrupt(const std::string& engine_name) {
   const std::string file = "data/scenes/smoke_cv.toml";
-  const std::string text = io::read_file(file);
+  const std::string text = short_shear(file);
   const auto scene = dem::parse_scene(text, file);
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / "resume";
   const auto engine = dem::make_engine(engine_name);
@@ -57,6 +62,11 @@ void resume_after_interrupt(const std::string& engine_name) {
   CHECK(resumed.manifest["stages"]["shear"]["status"] == "done");
   CHECK(resumed.manifest["resumed"].size() == 1);
   CHECK(fs::exists(dir / "timeseries.csv"));
+  // a complete run resumed again is left as it is, every file byte for byte (issue 37: the fields,
+  // summary and manifest were rewritten, a band stress moved in its sixth digit)
+  const auto before = test::files_under(dir);
+  REQUIRE(dem::run_scene(scene, text, *engine, options(dir, true)).complete());
+  CHECK(test::files_under(dir) == before);
   // another scene may not resume this run
   const std::string other = replaced(text, "sigma_n_kPa = 50", "sigma_n_kPa = 60");
   CHECK_THROWS_WITH(dem::run_scene(dem::parse_scene(other, file), other, *engine, options(dir, true)),
@@ -69,7 +79,7 @@ void resume_after_interrupt(const std::string& engine_name) {
 // so the time series are the same bytes).
 void truncated_restart_rebuilt(const std::string& engine_name) {
   const std::string file = "data/scenes/smoke.toml";
-  const std::string text = io::read_file(file);
+  const std::string text = short_shear(file);
   const auto scene = dem::parse_scene(text, file);
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / "truncated_restart";
   const auto engine = dem::make_engine(engine_name);
@@ -181,8 +191,10 @@ TEST_CASE("dem summary recomputes the summary of a committed run unchanged in it
 // 54-70 kPa. The default gain for this stiffness (scene.hpp) must hold the plate within 10 %.
 TEST_CASE("LIGGGHTS: stiff grains under CNL: the plate's force holds its target while shearing",
           "[dem][liggghts]") {
+  // 1 mm of shear, 50 rows: the scene's second mm adds 9 s and nothing the check below needs
   const std::string text =
-      replaced(io::read_file("data/scenes/smoke.toml"), "youngs_modulus_Pa = 1.0e8", "youngs_modulus_Pa = 4.2e9");
+      replaced(replaced(io::read_file("data/scenes/smoke.toml"), "youngs_modulus_Pa = 1.0e8", "youngs_modulus_Pa = 4.2e9"),
+               "displacement_mm = 2.0", "displacement_mm = 1.0");
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "liggghts" / "stiff_cnl";
   const auto engine = dem::make_engine("liggghts");
   REQUIRE(dem::run_scene(dem::parse_scene(text, "stiff.toml"), text, *engine, options(dir, false)).complete());

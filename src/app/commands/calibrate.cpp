@@ -1,6 +1,8 @@
 // `iwb calibrate SOILTEST_DIR...`: hypoplastic parameters fitted to soil tests (calibration/).
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -9,6 +11,7 @@
 #include "app/option_checks.hpp"
 #include "calibration/calibrate.hpp"
 #include "calibration/seed_scatter.hpp"
+#include "common/errors.hpp"
 #include "io/output_path.hpp"
 
 namespace iwb::app {
@@ -58,6 +61,18 @@ CLI::App* add_calibrate_options(CLI::App& app, CalibrateCommand& c) {
   return calibrate;
 }
 
+// Tests that identify none of the parameters (a single oedometer, say) give no parameter set:
+// nothing is written and the input is refused (exit 2), rather than a file of starting values
+// flagged NOT IDENTIFIED (issue 37).
+void refuse_if_nothing_identified(const calibration::CalibrationResult& r, const std::vector<std::string>& runs) {
+  if (std::any_of(r.parameters.begin(), r.parameters.end(), [](const auto& p) { return p.identified; })) return;
+  throw InputError(fmt::format(
+      "{}: the {} soil test(s) given identify none of the {} parameters of {} (each one's sigma exceeds a quarter of "
+      "its box); give oedometer and simple-shear tests, dense and loose, that reach the critical state; "
+      "no parameter file written",
+      fmt::join(runs, ", "), runs.size(), r.parameters.size(), r.model));
+}
+
 int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
   io::require_file_destination(c.params_out, "-o");  // before minutes of fitting, not after
   std::vector<calibration::SoilTest> tests;
@@ -68,6 +83,7 @@ int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
   calibration::CalibrationOptions opt;
   opt.model = c.model;
   const auto r = calibration::calibrate(tests, opt);
+  refuse_if_nothing_identified(r, c.runs);
   for (const auto& n : r.notes) fmt::print("{}\n", n);
   fmt::print("\n{:<40} {:<12} {}\n", "test", "", "RMSE");
   for (const auto& t : r.tests) {

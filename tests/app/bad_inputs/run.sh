@@ -17,6 +17,8 @@
 #   truncate FILE BYTES            cut FILE to its first BYTES bytes
 #   sed FILE EXPR                  edit FILE in place with sed -E EXPR (JSON and CSV files)
 #   mkdir DIR                      make a directory
+#   symlink TARGET LINK            make a symbolic link LINK -> TARGET (a loop: TARGET = LINK)
+#   fifo FILE                      make a named pipe
 #   run ARGS...                    iwb's arguments (shell words)
 # $DATA in any line is REPO/data.
 #   expect REGEX                   extended regex the stderr must match
@@ -57,6 +59,8 @@ run_case() {  # name, then the case's lines in the global array LINES
       truncate) read -r a b <<<"$rest"; truncate -s "$b" "$a" ;;
       sed) read -r a b <<<"$rest"; sed -E -i "$b" "$a" ;;
       mkdir) mkdir -p "$rest" ;;
+      symlink) read -r a b <<<"$rest"; ln -s "$a" "$b" ;;
+      fifo) mkfifo "$rest" ;;
       run) eval "args=($rest)" ;;
       expect) regex=$rest ;;
       *) echo "bad directive in case $name: $line"; return 1 ;;
