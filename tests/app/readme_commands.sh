@@ -52,6 +52,13 @@ rows=$(table_commands)
 [ "$(wc -l <<<"$rows")" -ge 10 ] || fail "README.md: fewer than 10 commands in the '## What is here' table"
 while IFS= read -r row; do check_help "$row"; done <<<"$rows"
 
+# Where a command run here writes: the scratch directory, never the repository.
+out_option() {
+  case $1 in
+    element | compare) echo "--out $scratch/try-${1// /-} --force" ;;
+  esac
+}
+
 # Quick commands run for real: each must be a command of the table (so this list cannot outlive it).
 QUICK=(
   "models"
@@ -65,6 +72,23 @@ for q in "${QUICK[@]}"; do
   (cd "$repo" && "$iwb" $q >"$scratch/quick.log" 2>&1) || { fail "'iwb $q' exits $?"; cat "$scratch/quick.log"; }
   echo "ok: iwb $q"
 done
+
+# The first page's "Try first" table: every command is one (`--help`), and those that take a
+# second or less run for real from the repository and exit 0.
+try_first=$(awk '/^Try first/ {t = 1; next} t && /^\| `build\/iwb / {print} t && /^$/ && n++ > 0 {exit}' "$readme")
+[ -n "$try_first" ] || fail "README.md: no 'Try first' table of build/iwb commands"
+while IFS= read -r row; do
+  line=$(sed -E 's/^\| `build\/iwb ([^`]*)`.*/\1/' <<<"$row")
+  sub=$(subcommand_of "iwb $line")
+  # shellcheck disable=SC2086  # sub is a list of words
+  "$iwb" $sub --help >/dev/null 2>&1 || { fail "README's 'Try first' names 'iwb $sub', which is no command"; continue; }
+  if grep -Eq '\| (instant|under a second|a second) \|$' <<<"$row"; then
+    # shellcheck disable=SC2086  # line is a command line; its outputs go to the scratch directory
+    (cd "$repo" && "$iwb" $line $(out_option "$sub") >"$scratch/try.log" 2>&1) ||
+      { fail "README's 'Try first' 'iwb $line' exits $?"; cat "$scratch/try.log"; }
+    echo "ok: try first: iwb $line"
+  fi
+done <<<"$try_first"
 
 # The setup block: the first ```sh block of the README.
 setup=$(awk '/^```sh/ {b = 1; next} b && /^```/ {exit} b' "$readme")

@@ -73,7 +73,8 @@ TEST_CASE("LIGGGHTS: a CNS run after a CNL run of the same scene does not consol
   fs::remove_all(root);
   const auto engine = dem::make_engine("liggghts");
   const auto run = [&](const std::string& file, const std::string& name) {
-    const std::string text = io::read_file(file);
+    // half a millimetre of shear: what is compared is the specimen each run starts from
+    const std::string text = replaced(io::read_file(file), "displacement_mm = 2.0", "displacement_mm = 0.5");
     const auto outcome = dem::run_scene(dem::parse_scene(text, file), text, *engine, reusing(root / name));
     REQUIRE(outcome.complete());
     return outcome.manifest["stages"]["consolidate"]["consolidation"];
