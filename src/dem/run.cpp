@@ -188,7 +188,10 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
   const ContractTables tables = engine.assemble(ctx, facts);
   io::write_atomically(opt.out / "timeseries.csv", tables.timeseries.to_csv());
   io::write_atomically(opt.out / "profiles.csv", tables.profiles.to_csv());
-  const Summary summary = summarize(scene, tables.timeseries, tables.profiles);
+  // From the files as written (10 digits), as `iwb dem summary` recomputes it: the same bytes,
+  // where the tables in memory gave numbers apart in their ninth digit (issue 37)
+  const Summary summary = summarize(scene, io::read_csv_table(opt.out / "timeseries.csv"),
+                                    io::read_csv_table(opt.out / "profiles.csv"));
   io::write_atomically(opt.out / "summary.json", to_json(summary).dump(2) + "\n");
   m["files"] = {"timeseries.csv", "profiles.csv", "summary.json", "vtk/particles.pvd", "vtk/contacts.pvd", "vtk/walls.pvd"};
   m["engine_facts"] = tables.facts;
