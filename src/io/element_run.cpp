@@ -26,7 +26,13 @@ nlohmann::json counters_json(const driver::ElementTestResult& r) {
 ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
                                            const ElementRunOptions& opt) {
   const auto model = models::find_model(spec.model).make(spec.inputs);
-  const auto initial = model->initial_state(spec.initial);  // InputError if not admissible
+  const auto initial = [&] {  // not admissible: an InputError naming the file and its table (issue 37)
+    try {
+      return model->initial_state(spec.initial);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: table [initial]: {}", spec.source, e.what()));
+    }
+  }();
   try {  // bad input is refused before the run directory is touched
     driver::check_path(*model, spec.path);
   } catch (const InputError& e) {

@@ -31,7 +31,11 @@ const Range kRelativeTolerance{0.0, 0.1, true, false};  // rtol, Newton toleranc
 
 void read_model(TableReader model, ElementTestSpec& spec, const std::filesystem::path& base) {
   spec.model = model.text("name");
-  models::find_model(spec.model);  // unknown names fail here, with the list of known ones
+  try {
+    models::find_model(spec.model);  // unknown names fail here, with the list of known ones
+  } catch (const InputError& e) {
+    throw InputError(model.where("name") + ": " + e.what());  // the file and the key (issue 37)
+  }
   const toml::node* params = model.node("parameters");
   if (params == nullptr) throw InputError(model.where("parameters") + " is missing (a parameter file path or inline tables)");
   if (const auto file = params->value<std::string>()) {
