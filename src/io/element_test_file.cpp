@@ -486,6 +486,10 @@ ElementTestSpec parse_element_test(const toml::table& root, const std::string& s
   read_model(top.required_table("model"), spec, base_dir);
   read_roughness(top.table("roughness"), spec);
   models::find_model(spec.model).make(spec.inputs);  // parameters validated before anything runs
+  for (const auto* table : models::find_model(spec.model).tables)
+    if (const auto it = spec.inputs.tables.find(table->name); it != spec.inputs.tables.end())
+      for (auto& w : models::implausible_values(*table, it->second, spec.parameter_source + " [" + table->name + "]"))
+        spec.warnings.push_back(std::move(w));
   read_initial(top.required_table("initial"), spec);
   read_zone(top.table("shear_zone"), spec);
   spec.inputs.shear_zone_mm = spec.zone.d_s_mm;

@@ -26,6 +26,21 @@ const ParameterSpec* ParameterTable::find(const std::string& key) const {
   return nullptr;
 }
 
+std::vector<std::string> implausible_values(const ParameterTable& table, const ParameterValues& values,
+                                            const std::string& source) {
+  std::vector<std::string> warnings;
+  for (const auto& [key, value] : values) {
+    const ParameterSpec* spec = table.find(key);
+    if (spec == nullptr || !spec->calibration) continue;
+    const auto& box = *spec->calibration;
+    if (value < box.lower || value > box.upper)
+      warnings.push_back(fmt::format("{}: {} = {:g}{} lies outside [{:g}, {:g}], the range calibrated soils span; "
+                                     "a units slip?", source, key, value, spec->unit == "-" ? "" : " " + spec->unit,
+                                     box.lower, box.upper));
+  }
+  return warnings;
+}
+
 void validate(const ParameterTable& table, const ParameterValues& values,
               const std::string& source) {
   for (const auto& [key, value] : values) {

@@ -43,3 +43,14 @@ TEST_CASE("missing, unknown and out-of-range keys are named with value and range
   v["ec0"] = 1.2;
   CHECK_THAT(message(v), Catch::Contains("ed0 < ec0 < ei0") && Catch::Contains("ec0 = 1.2"));
 }
+
+TEST_CASE("a value inside its bounds but outside the range calibrated soils span is warned of, by key", "[parameters]") {
+  const auto& table = models::HypoplasticParameters::table();
+  CHECK(models::implausible_values(table, values(), "sand.toml [hypoplastic]").empty());  // a sand's set
+  auto v = values();
+  v["phi_c_deg"] = 0.4887;  // 28 degrees written in radians: admissible, (0, 90) deg
+  CHECK_NOTHROW(models::HypoplasticParameters::from(v, "sand.toml [hypoplastic]"));
+  const auto warnings = models::implausible_values(table, v, "sand.toml [hypoplastic]");
+  REQUIRE(warnings.size() == 1);
+  CHECK_THAT(warnings[0], Catch::Contains("sand.toml [hypoplastic]: phi_c_deg = 0.4887 deg lies outside [15, 50]"));
+}
