@@ -66,6 +66,10 @@ DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
     if (!(r.sigma_n_kPa[i] > 0.0))
       throw InputError(fmt::format("{}:{}: sigma_n_kPa = {:g}; the contract's normal stress is compression "
                                    "positive and must be > 0", ts_path.string(), i + 2, r.sigma_n_kPa[i]));
+  // the contract's profiles are the band the report draws: a run without them is refused here,
+  // not by the report after a comparison was written (issue 37)
+  if (!fs::exists(dir / "profiles.csv"))
+    throw InputError(fmt::format("{}: missing (the run-directory contract's velocity profiles)", (dir / "profiles.csv").string()));
   if (fs::exists(dir / "summary.json")) r.summary = io::read_json_file(dir / "summary.json");
   return r;
 }
