@@ -258,12 +258,16 @@ fs::path reference_run(const PlanOptions& opt) {
   return tradeoff_dir(opt) / "runs" / reference_run_names(t).front();
 }
 
-json run_plan(const PlanOptions& opt) {
-  const dem::Scene scene = dem::load_scene(opt.scene_file.string());
+dem::Scene load_scene_to_plan(const fs::path& scene_file) {
+  dem::Scene scene = dem::load_scene(scene_file.string());
   if (scene.requirements.empty())
     throw InputError(fmt::format(
-        "{}: the scene states no [requirements] (data/scenes/README.md); nothing to plan",
-        opt.scene_file.string()));
+        "{}: the scene states no [requirements] (data/scenes/README.md); nothing to plan", scene_file.string()));
+  return scene;
+}
+
+json run_plan(const PlanOptions& opt) {
+  const dem::Scene scene = load_scene_to_plan(opt.scene_file);
   const json t = load_tradeoff(opt);
   const fs::path ref = reference_run(opt);
   const auto judged_on = base_runs(opt, t);

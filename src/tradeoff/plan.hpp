@@ -16,6 +16,7 @@
 
 #include "assessment/league.hpp"
 #include "dem/requirements.hpp"
+#include "dem/scene.hpp"
 #include "io/parameter_sets.hpp"
 
 namespace iwb::tradeoff {
@@ -58,6 +59,10 @@ struct PlanOptions {
 // in each quantity it replays; a model that cannot be evaluated says why in its note.
 ModelErrors evaluate_model(const assessment::SceneReference& reference, const std::string& model,
                            const models::ModelInputs& inputs, const assessment::LeagueOptions& options);
+
+// The scene file's scene; InputError when it is not valid or states no [requirements] (nothing to
+// plan), checked before any tradeoff is read.
+dem::Scene load_scene_to_plan(const std::filesystem::path& scene_file);
 
 // InputError when the scene states no requirements, or the tradeoff is missing, unfinished, of
 // another scene (compared by content, dem/scene_content.hpp: the keys that differ are named) or

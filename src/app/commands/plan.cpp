@@ -79,7 +79,7 @@ io::ParameterSet plan_parameters(const tradeoff::PlanOptions& opt, const std::st
 }
 
 int run_plan_command(const PlanCommand& c, const std::string& cl) {
-  dem::load_scene(c.scene);  // every value checked before the tradeoff is read
+  tradeoff::load_scene_to_plan(c.scene);  // every value and [requirements] checked before the tradeoff is read
   tradeoff::PlanOptions opt{c.scene, c.tradeoff, {}, "", c.out, cl};
   opt.spread = c.parameter_uncertainty == "seed" ? assessment::ParameterSpread::kSeedCovs : assessment::ParameterSpread::kFitSigmas;
   opt.samples = c.samples;
