@@ -11,6 +11,7 @@
 #include "io/checksum_record.hpp"
 #include "io/run_directory.hpp"
 #include "support/replaced.hpp"
+#include "support/smoke_specimens.hpp"
 
 using namespace iwb;
 using iwb::test::replaced;
@@ -74,7 +75,7 @@ TEST_CASE("LIGGGHTS: a CNS run after a CNL run of the same scene does not consol
   const auto engine = dem::make_engine("liggghts");
   const auto run = [&](const std::string& file, const std::string& name) {
     // half a millimetre of shear: what is compared is the specimen each run starts from
-    const std::string text = replaced(io::read_file(file), "displacement_mm = 2.0", "displacement_mm = 0.5");
+    const std::string text = test::smoke_sheared_over(file, 0.5);
     const auto outcome = dem::run_scene(dem::parse_scene(text, file), text, *engine, reusing(root / name));
     REQUIRE(outcome.complete());
     return outcome.manifest["stages"]["consolidate"]["consolidation"];

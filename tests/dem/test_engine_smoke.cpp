@@ -162,8 +162,7 @@ void common_facts(const SmokeRun& r) {
 // holds the plate while the dense specimen dilates (u_n 0.09 mm in YADE, 0.13 in LIGGGHTS by then).
 SmokeRun run_first_mm(const std::string& name, const std::string& engine) {
   const std::string file = "data/scenes/" + name + ".toml";
-  return run_text(file, test::replaced(io::read_file(file), "displacement_mm = 2.0", "displacement_mm = 1.0"), name,
-                  engine);
+  return run_text(file, test::smoke_sheared_over(file, 1.0), name, engine);
 }
 
 void check_cnl(const std::string& engine) {
@@ -182,8 +181,7 @@ void check_cns(const std::string& engine) {
   // 1.5 of the scene's 2 mm: the dense specimen has dilated 0.15 mm in YADE by then (0.17 in
   // LIGGGHTS), beyond the 0.1 mm the slope needs
   const std::string file = "data/scenes/smoke_cns.toml";
-  const auto r = run_text(file, test::replaced(io::read_file(file), "displacement_mm = 2.0", "displacement_mm = 1.5"),
-                          "smoke_cns", engine);
+  const auto r = run_text(file, test::smoke_sheared_over(file, 1.5), "smoke_cns", engine);
   common_facts(r);
   const auto un = column(r, "u_n_mm");
   REQUIRE(un.back() - un.front() > 0.1);  // enough dilation to measure a slope

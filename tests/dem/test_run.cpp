@@ -14,6 +14,7 @@
 #include "io/run_directory.hpp"
 #include "support/cli.hpp"
 #include "support/replaced.hpp"
+#include "support/smoke_specimens.hpp"
 
 using namespace iwb;
 using iwb::test::replaced;
@@ -39,7 +40,7 @@ void servo_failure(const std::string& engine_name) {
 
 // The stage mechanics need no more than half a millimetre of shear (10 rows), not the scene's 2.
 std::string short_shear(const std::string& file) {
-  return replaced(io::read_file(file), "displacement_mm = 2.0", "displacement_mm = 0.5");
+  return test::smoke_sheared_over(file, 0.5);
 }
 
 void resume_after_interrupt(const std::string& engine_name) {
@@ -193,8 +194,7 @@ TEST_CASE("LIGGGHTS: stiff grains under CNL: the plate's force holds its target 
           "[dem][liggghts]") {
   // 1 mm of shear, 50 rows: the scene's second mm adds 9 s and nothing the check below needs
   const std::string text =
-      replaced(replaced(io::read_file("data/scenes/smoke.toml"), "youngs_modulus_Pa = 1.0e8", "youngs_modulus_Pa = 4.2e9"),
-               "displacement_mm = 2.0", "displacement_mm = 1.0");
+      replaced(test::smoke_sheared_over("data/scenes/smoke.toml", 1.0), "youngs_modulus_Pa = 1.0e8", "youngs_modulus_Pa = 4.2e9");
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "liggghts" / "stiff_cnl";
   const auto engine = dem::make_engine("liggghts");
   REQUIRE(dem::run_scene(dem::parse_scene(text, "stiff.toml"), text, *engine, options(dir, false)).complete());
@@ -260,9 +260,8 @@ TEST_CASE("YADE: a clamp under the plate holds its grains while the wall shears 
 TEST_CASE("YADE: a wet scene holds liquid bridges between most touching grains", "[dem][yade]") {
   // 0.2 mm of shear (10 rows), not the smoke scene's 2 mm: the bridges are counted at the end of
   // each stage, and the shear stage only has to keep them (76 s of YADE saved)
-  const std::string text = replaced(replaced(io::read_file("data/scenes/smoke.toml"), "restitution = 0.5",
-                                             "restitution = 0.5\nsuction_kPa = 10"),
-                                    "displacement_mm = 2.0", "displacement_mm = 0.2");
+  const std::string text = replaced(test::smoke_sheared_over("data/scenes/smoke.toml", 0.2), "restitution = 0.5",
+                                    "restitution = 0.5\nsuction_kPa = 10");
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "yade" / "wet";
   const auto engine = dem::make_engine("yade");
   REQUIRE(dem::run_scene(dem::parse_scene(text, "wet.toml"), text, *engine, options(dir, false)).complete());
