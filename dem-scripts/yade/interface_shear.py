@@ -252,11 +252,13 @@ def control():
 def wall_displacement(t):
     """The wall's displacement t after shear starts (Shear::displacement_at): monotonic, v t after
     a linear ramp of the speed over ramp_s (0: an instant start); cyclic, the triangle wave
-    0 -> +A -> -A -> 0 of the LIGGGHTS runner."""
+    0 -> +A -> -A -> 0 of the LIGGGHTS runner, then the post-cyclic shear from 0 at v."""
     sh = P["shear"]
     v, ramp = sh["velocity"], sh["ramp_s"]
     if sh["cyclic"]:
         a = sh["amplitude"]
+        if v * t >= sh["cycles_travel"]:
+            return v * t - sh["cycles_travel"]
         phase = v * t / a  # in quarter cycles
         return a * (abs(math.fmod(phase + 3.0, 4.0) - 2.0) - 1.0)
     if t < ramp:

@@ -295,7 +295,9 @@ double Shear::displacement_at(double t) const {
     if (t < ramp_s) return 0.5 * velocity_m_s * t * t / ramp_s;  // v t^2 / (2 T) while ramping
     return velocity_m_s * (t - 0.5 * ramp_s);
   }
-  const double phase = velocity_m_s * t / amplitude_m;  // in quarter cycles
+  const double travelled = velocity_m_s * t;
+  if (travelled >= cycles_travel_m()) return travelled - cycles_travel_m();  // the post-cyclic shear
+  const double phase = travelled / amplitude_m;  // in quarter cycles
   return amplitude_m * (std::abs(std::fmod(phase + 3.0, 4.0) - 2.0) - 1.0);
 }
 
@@ -384,10 +386,14 @@ Scene parse_scene(const std::string& text, const std::string& source) {
 
   auto sh = top.required_table("shear");
   if (sh.one_of({"displacement_mm", "amplitude_mm"}) == "displacement_mm") {
+    require(!sh.has("post_cyclic_mm"), fmt::format("{} follows cycles; allowed only with amplitude_mm and cycles "
+                                                   "(monotonic shear: displacement_mm alone)",
+                                                   sh.where("post_cyclic_mm")));
     s.shear.displacement_m = sh.positive("displacement_mm", kMaxTravelMm) * kMm;
   } else {
     s.shear.amplitude_m = sh.positive("amplitude_mm", kMaxTravelMm) * kMm;
     s.shear.cycles = sh.count("cycles");
+    s.shear.post_cyclic_m = sh.optional_number_in("post_cyclic_mm", non_negative(kMaxTravelMm)).value_or(0.0) * kMm;
   }
   const double rho = s.particles.density_kg_m3;
   const double sqrt_rho_over_sigma = std::sqrt(rho / s.boundary.sigma_n_Pa);
@@ -475,6 +481,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
                     {"K_kPa_per_mm", s.boundary.K_Pa_per_m * kMm / 1e3}}},
       {"shear", {{"velocity_mm_s", s.shear.velocity_m_s / kMm}, {"displacement_mm", s.shear.displacement_m / kMm},
                  {"amplitude_mm", s.shear.amplitude_m / kMm}, {"cycles", s.shear.cycles},
+                 {"post_cyclic_mm", s.shear.post_cyclic_m / kMm},
                  {"travel_mm", s.shear.travel_m() / kMm}, {"inertial_number", s.shear.inertial_number},
                  {"ramp_transits", s.shear.ramp_transits},
                  {"shear_wave_speed_estimate_m_s", s.shear.shear_wave_speed_m_s},

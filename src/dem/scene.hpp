@@ -74,6 +74,9 @@ struct Shear {
   double displacement_m = 0.0;   // monotonic: total displacement
   double amplitude_m = 0.0;      // cyclic: 0 -> +A -> -A -> 0, `cycles` times
   int cycles = 0;
+  // Cyclic: a monotonic shear in +x at the same speed after the last cycle (the post-cyclic
+  // strength and dilation of issue 34); 0: none.
+  double post_cyclic_m = 0.0;
 
   // Monotonic shear starts with a linear ramp of the wall's speed from 0 to v over ramp_s
   // (src/dem/shear_start.hpp says why); 0 is an instant start, and cycles always start instantly.
@@ -82,9 +85,11 @@ struct Shear {
   double ramp_s = 0.0;
 
   bool cyclic() const { return cycles > 0; }
-  double travel_m() const { return cyclic() ? 4.0 * amplitude_m * cycles : displacement_m; }
+  double cycles_travel_m() const { return 4.0 * amplitude_m * cycles; }  // 0 when monotonic
+  double travel_m() const { return cyclic() ? cycles_travel_m() + post_cyclic_m : displacement_m; }
   double ramp_displacement_m() const { return 0.5 * velocity_m_s * ramp_s; }
-  // The wall's displacement t seconds after shear starts (a triangle wave when cyclic).
+  // The wall's displacement t seconds after shear starts (a triangle wave when cyclic, then the
+  // post-cyclic shear from 0).
   double displacement_at(double t) const;
   // The wall's speed t seconds after shear starts (v after the ramp; cycles: |v|).
   double speed_at(double t) const;

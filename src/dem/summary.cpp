@@ -163,14 +163,13 @@ Summary summarize(const Scene& scene, const io::CsvTable& ts, const io::CsvTable
   for (std::size_t i = 0; i < ux.size(); ++i)
     if (travel[i] >= u_from) xs.push_back(travel[i]), fs.push_back(friction[i]), ns.push_back(un[i]);
   if (scene.shear.cyclic()) {
-    const double per_cycle = 4.0 * scene.shear.amplitude_m * 1e3;
-    for (int c = 1; c <= scene.shear.cycles; ++c) {
-      Summary::Cycle cyc{c, 0.0, 0.0};
-      for (std::size_t i = 0; i < ux.size(); ++i)
-        if (travel[i] > (c - 1) * per_cycle && travel[i] <= c * per_cycle + 1e-9)
-          cyc.peak_friction = std::max(cyc.peak_friction, friction[i]), cyc.u_n_end_mm = un[i];
-      s.cycles.push_back(cyc);
-    }
+    // the wall moves at v throughout (no ramp with cycles): its travel is v t
+    std::vector<double> travel;
+    for (double t : ts.values("t_s")) travel.push_back(scene.shear.velocity_m_s * t * 1e3);
+    cycles::Path path{travel, ux, un, sigma, tau,
+                      ts.column("e_band") >= 0 ? ts.values("e_band") : std::vector<double>{}};
+    s.cyclic = cycles::cyclic_quantities(
+        path, {scene.shear.amplitude_m * 1e3, scene.shear.cycles, scene.shear.post_cyclic_m * 1e3});
   }
   s.residual_friction = std::accumulate(fs.begin(), fs.end(), 0.0) / double(fs.size());
   const Fit f = linear_fit(xs, fs);
@@ -205,12 +204,7 @@ nlohmann::json to_json(const Summary& s) {
           {"band_thickness_erfc_fit_d50", opt(s.band_thickness_erf_d50)},
           {"wall_slip", s.wall_slip},
           {"e_band", opt(s.e_band)},
-          {"cycles", [&s] {
-             nlohmann::json c = nlohmann::json::array();
-             for (const auto& x : s.cycles)
-               c.push_back({{"cycle", x.number}, {"peak_friction", x.peak_friction}, {"u_n_end_mm", x.u_n_end_mm}});
-             return c;
-           }()},
+          {"cyclic", s.cyclic ? cycles::to_json(*s.cyclic) : nlohmann::json(nullptr)},
           {"definitions", {{"friction", "tau/sigma_n, both on the tested wall"},
                            {"residual", "mean of the last fifth of u_x; 'not steady' if it drifts by more than 0.02"},
                            {"far_field_speed", "median vx over the middle third of the specimen, relative to the first grain layer"},

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cycles/cycle_quantities.hpp"
 #include "dem/scene.hpp"
 #include "io/csv_table.hpp"
 
@@ -34,12 +35,7 @@ struct Summary {
   double wall_slip = 0.0;             // 1 - v(first layer)/v(wall)
   std::optional<double> e_band;       // void ratio in the band (or the lowest 10 d50)
 
-  struct Cycle {
-    int number;
-    double peak_friction;  // max |tau|/sigma_n within the cycle
-    double u_n_end_mm;     // accumulated u_n at the cycle's end
-  };
-  std::vector<Cycle> cycles;  // cyclic shear only
+  std::optional<cycles::CyclicQuantities> cyclic;  // cyclic shear only: per cycle, and after them
 };
 
 inline constexpr double kSteadyDrift = 0.02;  // friction change over the last fifth (DEM.md)

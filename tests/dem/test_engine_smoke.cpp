@@ -212,8 +212,23 @@ void check_cyclic(const std::string& engine) {
   }
   REQUIRE(moving > 10);
   CHECK(agree > 0.9 * moving);
+  // the post-cyclic shear: from 0 after the last cycle, monotonic, to +post_cyclic_mm
+  const double post = r.scene.shear.post_cyclic_m * 1e3, every = r.scene.outputs.timeseries_every_m * 1e3;
+  REQUIRE(post > 0.0);
+  CHECK(ux.back() == Approx(post).margin(every));
+  // the wall's travel is v t (summing |du_x| over rows would cut the reversals' corners)
+  const double cycles_travel = r.scene.shear.cycles_travel_m() * 1e3, v = r.scene.shear.velocity_m_s * 1e3;
+  const auto t = column(r, "t_s");
+  int after = 0;
+  for (std::size_t i = 0; i < ux.size(); ++i)
+    if (v * t[i] > cycles_travel) {
+      ++after;
+      CHECK(ux[i] == Approx(v * t[i] - cycles_travel).margin(1e-6));
+    }
+  CHECK(after >= int(post / every) - 1);
   const auto summary = nlohmann::json::parse(io::read_file(r.dir / "summary.json"));
-  CHECK(summary["cycles"].size() == std::size_t(r.scene.shear.cycles));
+  CHECK(summary["cyclic"]["cycles"].size() == std::size_t(r.scene.shear.cycles));
+  CHECK(summary["cyclic"]["post_cyclic"]["u_n_change_mm"].is_number());
 }
 
 void check_glued(const std::string& engine) {

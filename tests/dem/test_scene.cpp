@@ -45,7 +45,15 @@ TEST_CASE("cyclic shear: a triangle wave 0 -> +A -> -A -> 0 and its travel", "[d
   CHECK(sh.displacement_at(2 * T) == Approx(0.0).margin(1e-12));
   CHECK(sh.displacement_at(3 * T) == Approx(-sh.amplitude_m));
   CHECK(sh.displacement_at(4.5 * T) == Approx(0.5 * sh.amplitude_m));
-  CHECK(sh.travel_m() == Approx(4 * 0.5e-3 * 2));
+  CHECK(sh.travel_m() == Approx(4 * 0.5e-3 * 2 + sh.post_cyclic_m));
+  // after the cycles the wall shears monotonically from u_x = 0 at the same speed
+  REQUIRE(sh.post_cyclic_m > 0.0);
+  CHECK(sh.displacement_at(8 * T) == Approx(0.0).margin(1e-12));
+  CHECK(sh.displacement_at(8.5 * T) == Approx(0.5 * sh.amplitude_m));
+  CHECK(sh.displacement_at(8 * T + sh.post_cyclic_m / sh.velocity_m_s) == Approx(sh.post_cyclic_m));
+  CHECK(sh.duration_s() == Approx(8 * T + sh.post_cyclic_m / sh.velocity_m_s));
+  CHECK_THAT(error_of(replaced(smoke(), "displacement_mm = 2.0", "displacement_mm = 2.0\npost_cyclic_mm = 1")),
+             Catch::Contains("key 'shear.post_cyclic_mm' follows cycles"));
   CHECK_THAT(error_of(replaced(io::read_file("data/scenes/smoke_cyclic.toml"), "cycles = 2\n", "")),
              Catch::Contains("key 'shear.cycles' is missing"));
 }

@@ -39,7 +39,7 @@ std::string g(double x) { return fmt::format("{:.10g}", x); }
 
 // The wall's displacement ux (m) and its motion (the same functions as Shear::displacement_at and
 // speed_at): monotonic at v, after a linear ramp of the speed over T when the scene has one, or
-// cycles 0 -> +A -> -A -> 0 as a triangle wave. LIGGGHTS 3.8's equal-style variables have no
+// cycles 0 -> +A -> -A -> 0 as a triangle wave, then the post-cyclic shear. LIGGGHTS 3.8's equal-style variables have no
 // min(): the ramp is written with (a<b) factors.
 bool ramped(const Shear& sh) { return !sh.cyclic() && sh.ramp_s > 0.0; }
 
@@ -48,8 +48,11 @@ std::string wall_displacement(const Shear& sh) {
   if (ramped(sh))
     return fmt::format("variable ux equal {}*((v_t<{})*v_t*v_t/(2*{})+(v_t>={})*(v_t-{}/2))", v, T, T, T, T);
   if (!sh.cyclic()) return fmt::format("variable ux equal {}*v_t", v);
-  return fmt::format("variable phase equal v_t*{}/{}\nvariable ux equal {}*(abs(((v_phase+3)%4)-2)-1)",
-                     v, g(sh.amplitude_m), g(sh.amplitude_m));
+  // after the cycles (t >= tc) the post-cyclic shear, from 0 at v
+  const std::string tc = g(sh.cycles_travel_m() / sh.velocity_m_s);
+  return fmt::format("variable phase equal v_t*{}/{}\n"
+                     "variable ux equal (v_t<{})*{}*(abs(((v_phase+3)%4)-2)-1)+(v_t>={})*{}*(v_t-{})",
+                     v, g(sh.amplitude_m), tc, g(sh.amplitude_m), tc, v, tc);
 }
 
 // The distance the wall has travelled (progress): its displacement, or v t for cycles.
@@ -67,8 +70,10 @@ std::string wall_motion(const Shear& sh, double dt) {
                        "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero",
                        v, g(sh.ramp_s), g(0.5 * dt), g(sh.ramp_s), g(sh.ramp_s));
   if (!sh.cyclic()) return fmt::format("fix mv all move/mesh mesh W linear {} 0 0", v);
-  return fmt::format("variable vw equal {}*(1-2*(floor((v_phase+1)/2)%2))\nvariable zero equal 0\n"
-                     "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero", v);
+  const std::string tc = g(sh.cycles_travel_m() / sh.velocity_m_s);
+  return fmt::format("variable vw equal {}*((v_t<{})*(1-2*(floor((v_phase+1)/2)%2))+(v_t>={}))\n"
+                     "variable zero equal 0\n"
+                     "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero", v, tc, tc);
 }
 
 // The largest Young's modulus LIGGGHTS takes in SI units without `hard_particles yes`.

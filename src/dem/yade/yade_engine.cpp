@@ -65,6 +65,7 @@ nlohmann::json glued_spheres(const Scene& s) {
 
 nlohmann::json shear_parameters(const Scene& s, const Numerics& n) {
   return {{"velocity", s.shear.velocity_m_s}, {"amplitude", s.shear.amplitude_m}, {"cyclic", s.shear.cyclic()},
+          {"cycles_travel", s.shear.cycles_travel_m()},
           {"ramp_s", s.shear.cyclic() ? 0.0 : s.shear.ramp_s},
           {"steps", n.shear_steps}, {"ts_every", n.ts_every}, {"progress_every", n.progress_every},
           {"profile_every", n.profile_every}, {"profile_repeat", n.profile_repeat},
