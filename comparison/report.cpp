@@ -334,7 +334,7 @@ std::string verdict_section(const nlohmann::json& cmp) {
   std::string h = "<h3>Verdicts</h3>\n" + table_html(verdict_table(cmp)) + "<ul>";
   for (const auto& f : verdict_findings(cmp)) h += "<li>" + escape_html(f) + "</li>";
   return h + fmt::format("</ul><p>Fit weights: {}. Relative errors against max(|DEM|, a floor); "
-                         "<em>within DEM scatter</em>: over the tolerance by less than twice the standard error of the DEM's seed mean (SD/&radic;seeds).</p>\n",
+                         "<em>within DEM scatter</em>: over the tolerance by less than the half-width of the 95 % Student's t-interval of the DEM's seed mean (t<sub>0.975, n-1</sub> SD/&radic;n).</p>\n",
                          escape_html(cmp["fit"]["algorithm"].get<std::string>()));
 }
 

@@ -78,12 +78,35 @@ void quantity_scatter(const std::vector<const DemRun*>& all, SeedScatter& out) {
   }
 }
 
+std::string summary_text(const DemRun& r, const char* key) {
+  const auto it = r.summary.find(key);
+  return it != r.summary.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+// The runs a cell's statistics rest on: those that sheared at the wall under test, while any did
+// (summary.json shear_mode); the others are recorded in out.left_out, and the residuals that still
+// drift in out.not_steady.
+std::vector<const DemRun*> admitted(const std::vector<const DemRun*>& all, SeedScatter& out) {
+  constexpr const char* kAtThePlate = "localised at the plate";
+  std::vector<const DemRun*> kept;
+  for (const auto* r : all)
+    if (summary_text(*r, "shear_mode") != kAtThePlate) kept.push_back(r);
+  if (kept.empty()) kept = all, out.only_plate_runs = true;  // nothing else to rest on
+  for (const auto* r : all)
+    if (std::find(kept.begin(), kept.end(), r) == kept.end())
+      out.left_out.emplace_back(r->dir.string(), kAtThePlate);
+  for (const auto* r : kept)
+    if (summary_text(*r, "residual_is") == "not steady") out.not_steady.push_back(r->dir.string());
+  return kept;
+}
+
 }  // namespace
 
 SeedScatter seed_scatter(const DemRun& run, const std::vector<DemRun>& other_seeds) {
   SeedScatter out;
   std::vector<const DemRun*> all = {&run};
   for (const auto& s : other_seeds) check_same_scene(run, s), all.push_back(&s);
+  all = admitted(all, out);
   const auto where = travel(run.u_x_mm);
   double covered = where.back();
   for (const auto* r : all) out.runs.push_back(r->dir.string()), covered = std::min(covered, travel(r->u_x_mm).back());

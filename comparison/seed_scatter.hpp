@@ -4,6 +4,7 @@
 // (tau in kPa, u_n in mm: each residual in units of its own scatter) and tells a verdict whether
 // a model's miss is larger than the DEM's own uncertainty.
 #include <map>
+#include <utility>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,7 +20,15 @@ struct SeriesScatter {
 };
 
 struct SeedScatter {
-  std::vector<std::string> runs;  // the run compared first, then its other seeds
+  // the runs the statistics rest on: the run compared first (unless left out), then its other seeds
+  std::vector<std::string> runs;
+  // Runs of the cell left out, with why: a run whose shear localised at the plate measured the
+  // plate, not the wall under test (issue 36), and is not averaged with those that sheared there.
+  std::vector<std::pair<std::string, std::string>> left_out;
+  bool only_plate_runs = false;  // every run localised at the plate: kept, as nothing else is left
+  // Runs kept whose residual still drifted over the last fifth (summary.json residual_is): the
+  // verdicts on the residual and on the dilation say how many.
+  std::vector<std::string> not_steady;
   std::size_t rows = 0;           // the compared run's rows that every seed covers
   // contract units (kPa, mm, kPa). Seeds write their rows at other u_x (the output fires on
   // whole multiples of its interval counted from the engine's step 0, and consolidation takes a
@@ -32,7 +41,7 @@ struct SeedScatter {
 };
 
 // `run` and its other seeds (possibly none). InputError when a seed's scene differs from run's in
-// anything but the seed.
+// anything but the seed. Runs localised at the plate are left out while another run is left.
 SeedScatter seed_scatter(const DemRun& run, const std::vector<DemRun>& other_seeds);
 
 // The runs among `candidates` (other than `run` itself) whose scene is run's but for the seed.

@@ -20,11 +20,19 @@ std::string value(const json& v, const std::string& unit) {
   return fmt::format("{:.3f}", x);
 }
 
-std::string with_sd(const json& v, const json& sd, const std::string& unit, std::size_t seeds) {
-  if (!sd.is_number()) return value(v, unit) + " (1 run)";
-  const std::string s = value(sd, unit);
-  return fmt::format("{} ± {} (mean ± SD, {} seeds)", value(v, unit), s.substr(0, s.find(' ')), seeds);
+// The DEM's value with the 95 % t-interval of its seed mean, the seeds it rests on and those its
+// tolerance needs (comparison/verdicts.hpp).
+std::string with_interval(const json& verdict) {
+  const std::string unit = verdict["unit"];
+  if (!verdict["dem_t_interval_95"].is_number()) return value(verdict["dem"], unit) + " (1 run)";
+  const std::string ci = value(verdict["dem_t_interval_95"], unit);
+  const json& needed = verdict["seeds_needed"];
+  const std::string need = needed.is_number() ? fmt::format("; {} needed", needed.get<int>()) : "";
+  return fmt::format("{} ± {} (95 % t, {} seeds{})", value(verdict["dem"], unit), ci.substr(0, ci.find(' ')),
+                     verdict["seeds"].get<std::size_t>(), need);
 }
+
+std::string percent(const json& x) { return x.is_number() ? fmt::format("{:.0f} %", 100 * x.get<double>()) : "-"; }
 
 std::string model_cell(const json& verdict) {
   if (!verdict["model"].is_number()) return "not reached";
@@ -47,10 +55,25 @@ std::string bound_note(const json& fit) {
                      "(kappa_r <= 1 is fully rough).", which);
 }
 
+// What the verdicts rest on: the detection limit's meaning and each note once (runs left out,
+// residuals still drifting).
+std::string statistics_note(const json& verdicts) {
+  std::vector<std::string> notes;
+  for (const auto& v : verdicts)
+    for (const auto& n : v.value("notes", json::array())) {
+      const std::string text = v["name"].get<std::string>() + ": " + n.get<std::string>();
+      if (std::find(notes.begin(), notes.end(), text) == notes.end()) notes.push_back(text);
+    }
+  std::string out = "'detects': the smallest relative error the DEM can call 'breaks' (the tolerance plus the "
+                    "95 % t-interval of its seed mean).";
+  for (const auto& n : notes) out += " " + n + ".";
+  return out;
+}
+
 }  // namespace
 
 Table verdict_table(const json& cmp) {
-  Table t{{"quantity", "DEM", "predicted model", "fitted model", "tolerance", "predicted", "fitted"}, {}};
+  Table t{{"quantity", "DEM", "predicted model", "fitted model", "tolerance", "detects", "predicted", "fitted"}, {}};
   const auto& v = cmp["variants"];
   const auto& pred = v[cmp["verdicts"]["predicted_variant"].get<std::size_t>()]["verdicts"];
   const auto& fit = v[cmp["verdicts"]["fitted_variant"].get<std::size_t>()]["verdicts"];
@@ -58,9 +81,8 @@ Table verdict_table(const json& cmp) {
     const auto& p = pred[i];
     const std::string unit = p["unit"];
     t.rows.push_back({p["name"].get<std::string>() + (unit.empty() ? "" : " (" + unit + ")"),
-                      with_sd(p["dem"], p["dem_seed_sd"], unit, p["seeds"].get<std::size_t>()), model_cell(p),
-                      model_cell(fit[i]), fmt::format("{:.0f} %", 100 * p["tolerance"].get<double>()),
-                      p["verdict"].get<std::string>(), fit[i]["verdict"].get<std::string>()});
+                      with_interval(p), model_cell(p), model_cell(fit[i]), percent(p["tolerance"]),
+                      percent(p["detection_limit"]), p["verdict"].get<std::string>(), fit[i]["verdict"].get<std::string>()});
   }
   return t;
 }
@@ -76,7 +98,7 @@ std::vector<std::string> verdict_findings(const json& cmp) {
           fmt::format("Fitted ({}): holds on {}; does not hold on {}.", label("fitted_variant"),
                       holds_list(s["fitted"]["holds"]), holds_list(s["fitted"]["fails"])),
           fmt::format("Scan of the (kappa_r, d_s) box: {}.", s["scan"]["finding"].get<std::string>()),
-          bound_note(cmp["fit"])};
+          bound_note(cmp["fit"]), statistics_note(v[cmp["verdicts"]["predicted_variant"].get<std::size_t>()]["verdicts"])};
 }
 
 std::string to_text(const Table& t) {

@@ -1,17 +1,27 @@
 #include "comparison/verdicts.hpp"
 
+#include <fmt/core.h>
+
 #include <cmath>
 
 #include "comparison/quantities.hpp"
 #include "io/toml_reader.hpp"
+#include "statistics/t_interval.hpp"
 
 namespace iwb::comparison {
 
 namespace {
 
-// How many standard errors of the DEM's seed mean a miss must exceed the tolerance by to be a
-// "breaks" (about 95 % that the DEM is not the cause).
-constexpr double kConvictingSds = 2.0;
+// The seeds a verdict needs: a t-interval of the mean at most this share of the tolerance wide
+// (half-width), so that its detection limit lies within 1.5 times the tolerance.
+constexpr double kResolvedShareOfTolerance = 0.5;
+constexpr int kMostSeedsWorthSaying = 1000;
+
+// The quantities read over the last fifth of the travel or at its end: a residual that still
+// drifts there makes them depend on where the run stopped.
+bool needs_steady_end(const std::string& key) {
+  return key == "residual_friction" || key == "dilation_rate" || key == "total_dilation";
+}
 
 // The quantities that need the DEM's last rows: a model that stopped early has no value for them.
 bool needs_end(const std::string& key) { return key != "peak_friction" && key != "u_x_at_peak"; }
@@ -22,9 +32,31 @@ std::string verdict_of(const Verdict& v, double scale) {
   if (!v.model || !v.error) return "not reached";
   const double miss = std::abs(*v.error) - v.tolerance;  // relative to `scale`
   if (miss <= 0.0) return "holds";
-  const double standard_error = v.dem_sd ? *v.dem_sd / std::sqrt(double(v.seeds)) : 0.0;
-  if (miss * scale <= kConvictingSds * standard_error) return "within DEM scatter";
+  if (miss * scale <= v.dem_ci.value_or(0.0)) return "within DEM scatter";
   return "breaks";
+}
+
+// What the verdict rests on: the t-interval, the detection limit, the seeds the tolerance needs.
+void add_statistics(Verdict& v, double scale) {
+  v.detection_limit = v.tolerance;
+  if (!v.dem_sd) return;
+  v.dem_ci = statistics::t_half_width(*v.dem_sd, int(v.seeds));
+  if (v.dem_ci) v.detection_limit = v.tolerance + *v.dem_ci / scale;
+  v.seeds_needed = statistics::values_needed(*v.dem_sd, kResolvedShareOfTolerance * v.tolerance * scale,
+                                             kMostSeedsWorthSaying);
+}
+
+std::vector<std::string> notes_for(const std::string& key, const SeedScatter& scatter) {
+  std::vector<std::string> notes;
+  const std::size_t n = scatter.runs.size();
+  if (!scatter.left_out.empty())
+    notes.push_back(fmt::format("{} of {} runs left out: localised at the plate", scatter.left_out.size(),
+                                n + scatter.left_out.size()));
+  if (scatter.only_plate_runs) notes.push_back("every run localised at the plate: the DEM measured the plate");
+  if (needs_steady_end(key) && !scatter.not_steady.empty())
+    notes.push_back(fmt::format("{} of {} runs not steady at the end (residual still drifting)",
+                                scatter.not_steady.size(), n));
+  return notes;
 }
 
 }  // namespace
@@ -66,6 +98,8 @@ std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const 
     if (needs_end(q.key) && !reached_end) v.model = std::nullopt;
     const double scale = v.dem ? std::max(std::abs(*v.dem), floor_of(q, dem.d50_mm)) : 1.0;
     if (v.model && v.dem) v.error = (*v.model - *v.dem) / scale;
+    add_statistics(v, scale);
+    v.notes = notes_for(q.key, scatter);
     v.verdict = verdict_of(v, scale);
     out.push_back(v);
   }
@@ -87,7 +121,10 @@ nlohmann::json to_json(const std::vector<Verdict>& verdicts) {
   for (const auto& v : verdicts) {
     const auto& q = quantity(v.key);
     out.push_back({{"quantity", v.key}, {"name", q.name}, {"unit", q.unit}, {"dem", opt(v.dem)},
-                   {"dem_seed_sd", opt(v.dem_sd)}, {"seeds", v.seeds}, {"model", opt(v.model)},
+                   {"dem_seed_sd", opt(v.dem_sd)}, {"seeds", v.seeds}, {"dem_t_interval_95", opt(v.dem_ci)},
+                   {"detection_limit", opt(v.detection_limit)},
+                   {"seeds_needed", v.seeds_needed ? nlohmann::json(*v.seeds_needed) : nlohmann::json(nullptr)},
+                   {"notes", v.notes}, {"model", opt(v.model)},
                    {"relative_error", opt(v.error)}, {"tolerance", v.tolerance}, {"verdict", v.verdict}});
   }
   return out;

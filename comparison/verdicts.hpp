@@ -1,14 +1,19 @@
 #pragma once
-// Per quantity of interest, whether a model holds against the DEM (issue 14): the DEM value (the
-// mean over its seeds when there are seeds, else the run's own) with its seed standard deviation,
-// the model's value, the relative error and the tolerance, and a verdict:
+// Per quantity of interest, whether a model holds against the DEM (issues 14, 36): the DEM value
+// (the mean over its seeds when there are seeds, else the run's own) with its seed standard
+// deviation and the 95 % Student's t-interval of that mean, the model's value, the relative error
+// and the tolerance, and a verdict:
 //   holds                 |error| <= tolerance;
-//   breaks                the miss exceeds the tolerance by more than twice the standard error
-//                         of the DEM's seed mean, SD/sqrt(seeds) (the DEM is sure enough to
-//                         convict; with a single run, any miss beyond the tolerance);
+//   breaks                the miss exceeds the tolerance by more than the half-width of the DEM
+//                         mean's t-interval, t_{0.975, n-1} SD / sqrt(n) (the DEM is sure enough
+//                         to convict; with a single run, any miss beyond the tolerance);
 //   within DEM scatter    in between: the model misses the tolerance, but by no more than the
 //                         DEM's own uncertainty;
 //   not reached           the model stopped before the DEM's end, and the quantity needs the end.
+// Each verdict also says what it rests on: its detection limit (the smallest relative error it
+// can call "breaks": the tolerance plus the interval's half-width), the seeds the tolerance needs
+// (an interval of at most half the tolerance, for the SD measured), and its notes (runs left out
+// because they sheared at the plate, residuals that still drift).
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -36,6 +41,10 @@ struct Verdict {
   std::optional<double> error;   // (model - DEM) / max(|DEM|, floor), signed
   double tolerance = 0.0;
   std::string verdict;
+  std::optional<double> dem_ci;  // half-width of the t-interval of the seed mean (none with one run)
+  std::optional<double> detection_limit;  // relative: tolerance + dem_ci / scale (tolerance alone: one run)
+  std::optional<int> seeds_needed;  // for an interval of at most half the tolerance
+  std::vector<std::string> notes;
 };
 
 std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const Replay& replay,

@@ -97,23 +97,32 @@ TEST_CASE("verdict rule: holds within the tolerance, breaks beyond it and the DE
   CHECK(find(v, "total_dilation").verdict == "holds");  // 15 % <= 20 %
   CHECK(find(v, "dilation_rate").verdict == "breaks");  // 15 % > 10 %, no scatter to excuse it
   // a seed SD of the rate of 0.003 over 3 seeds: the miss over the tolerance (5 % of 0.05 =
-  // 0.0025) is within twice the standard error of the mean, 2 x 0.003 / sqrt(3) = 0.0035
+  // 0.0025) is within the 95 % t-interval of the mean, t_{0.975,2} 0.003 / sqrt(3) = 4.303 x
+  // 0.00173 = 0.0075
   comparison::SeedScatter seeds;
   seeds.runs = {"a", "b", "c"};
   seeds.quantity_mean = {{"dilation_rate", 0.05}, {"total_dilation", 0.25}};  // the DEM's own values
   seeds.quantity_sd = {{"dilation_rate", 0.003}, {"total_dilation", 0.01}};
   CHECK(find(comparison::judge(dem, seeds, replay_of(model), tol), "dilation_rate").verdict == "within DEM scatter");
-  seeds.quantity_sd["dilation_rate"] = 0.001;  // 2 x 0.001 / sqrt(3) = 0.0012 < 0.0025: breaks
-  CHECK(find(comparison::judge(dem, seeds, replay_of(model), tol), "dilation_rate").verdict == "breaks");
+  seeds.quantity_sd["dilation_rate"] = 0.0008;  // 4.303 x 0.0008 / sqrt(3) = 0.0020 < 0.0025: breaks
+  const auto sharp = find(comparison::judge(dem, seeds, replay_of(model), tol), "dilation_rate");
+  CHECK(sharp.verdict == "breaks");
+  // what it rests on: the interval, the detection limit (10 % + 0.0020 / 0.05 = 14 %) and the seeds
+  // for an interval of half the tolerance (0.0025): t_{n-1} 0.0008 / sqrt(n) <= 0.0025 from n = 4
+  // (3.182 x 0.0004 = 0.0013; n = 3: 0.0020 <= 0.0025 already)
+  CHECK(sharp.dem_ci.value() == Approx(4.3027 * 0.0008 / std::sqrt(3.0)).epsilon(1e-3));
+  CHECK(sharp.detection_limit.value() == Approx(0.10 + 4.3027 * 0.0008 / std::sqrt(3.0) / 0.05).epsilon(1e-3));
+  CHECK(sharp.seeds_needed.value() == 3);
+  CHECK(find(v, "dilation_rate").detection_limit.value() == 0.10);  // one run: the tolerance itself
+  CHECK_FALSE(find(v, "dilation_rate").seeds_needed.has_value());
 }
 
-TEST_CASE(
-    "the DEM's scatter excuses a miss within twice the standard error of the seed mean, not the "
-    "seed SD",
-    "[comparison][verdicts]") {
+TEST_CASE("the DEM's scatter excuses a miss within the t-interval of the seed mean, not the seed SD",
+          "[comparison][verdicts]") {
   // The model's dilation rate is 15 % above the DEM's 0.05 against a tolerance of 10 %: it misses
-  // by 0.0025. The seed mean of k seeds of SD s is uncertain by s / sqrt(k): the miss is excused
-  // only within 2 s / sqrt(k), which shrinks with more seeds while the seed SD does not.
+  // by 0.0025. The seed mean of n seeds of SD s lies within t_{0.975,n-1} s / sqrt(n) (95 %): the
+  // miss is excused only within that, which shrinks with more seeds while the seed SD does not,
+  // and which is wider than 2 s / sqrt(n) for few seeds (t = 4.303 at n = 3).
   const KnownCurve dem_curve;
   KnownCurve model = dem_curve;
   for (auto& u : model.u_n) u *= 1.15;
@@ -126,9 +135,10 @@ TEST_CASE(
     return find(comparison::judge(dem_of(dem_curve), s, replay_of(model), tol), "dilation_rate")
         .verdict;
   };
-  CHECK(verdict(0.002, 3) == "breaks");              // 2 x 0.002 / sqrt(3) = 0.0023 (2 SD: 0.004)
-  CHECK(verdict(0.004, 3) == "within DEM scatter");  // 2 x 0.004 / sqrt(3) = 0.0046
-  CHECK(verdict(0.004, 12) == "breaks");  // 2 x 0.004 / sqrt(12) = 0.0023: a sharper mean
+  CHECK(verdict(0.0008, 3) == "breaks");             // 4.303 x 0.0008 / sqrt(3) = 0.0020
+  CHECK(verdict(0.002, 3) == "within DEM scatter");  // 4.303 x 0.002 / sqrt(3) = 0.0050 (2 SE: 0.0023)
+  CHECK(verdict(0.004, 12) == "within DEM scatter");  // 2.201 x 0.004 / sqrt(12) = 0.00254
+  CHECK(verdict(0.004, 20) == "breaks");  // 2.093 x 0.004 / sqrt(20) = 0.0019: a sharper mean
   CHECK(verdict(0.004, 1) == "breaks");   // one run: no seed scatter to excuse it
 }
 
@@ -186,6 +196,30 @@ TEST_CASE("seeds: a run of another scene is refused, seeds of one scene are foun
   CHECK(s.tau.rms_sd == Approx(0.5).epsilon(0.25));
   CHECK(s.u_n.rms_sd == Approx(0.0).margin(1e-12));
   CHECK(s.rows == a.u_x_mm.size());
+}
+
+TEST_CASE("a seed that sheared at the plate is left out of the cell, a drifting residual is counted",
+          "[comparison][verdicts]") {
+  auto a = comparison::load_dem_run(test::write_synthetic_dem({.name = "cell_a", .seed = 1, .tau_noise_kPa = 0.5}));
+  auto b = comparison::load_dem_run(test::write_synthetic_dem({.name = "cell_b", .seed = 2, .tau_noise_kPa = 0.5}));
+  auto c = comparison::load_dem_run(test::write_synthetic_dem({.name = "cell_c", .seed = 3, .tau_noise_kPa = 0.5}));
+  c.summary["shear_mode"] = "localised at the plate";  // as the summary says of such a run
+  b.summary["residual_is"] = "not steady";
+  const auto s = comparison::seed_scatter(a, {b, c});
+  CHECK(s.runs == std::vector<std::string>{a.dir.string(), b.dir.string()});
+  REQUIRE(s.left_out.size() == 1);
+  CHECK(s.left_out[0].first == c.dir.string());
+  CHECK(s.not_steady == std::vector<std::string>{b.dir.string()});
+  const auto v = comparison::judge(a, s, replay_of(KnownCurve()), {{"peak_friction", 0.1}, {"residual_friction", 0.05}});
+  CHECK(find(v, "peak_friction").seeds == 2);
+  CHECK_THAT(find(v, "peak_friction").notes.at(0), Catch::Contains("1 of 3 runs left out: localised at the plate"));
+  CHECK(find(v, "peak_friction").notes.size() == 1);  // the peak does not need a steady end
+  CHECK_THAT(find(v, "residual_friction").notes.at(1), Catch::Contains("1 of 2 runs not steady"));
+  // every run at the plate: nothing else to rest on, so they are kept and the verdicts say so
+  a.summary["shear_mode"] = b.summary["shear_mode"] = "localised at the plate";
+  const auto plate = comparison::seed_scatter(a, {b, c});
+  CHECK(plate.runs.size() == 3);
+  CHECK(plate.only_plate_runs);
 }
 
 TEST_CASE("joint fit recovers a known kappa_r and d_s from noisy seeds of the model itself", "[comparison][verdicts]") {
