@@ -22,28 +22,10 @@ EXTRA_CNL=(data/convergence/truth_clamped data/convergence/truth_clamped_rn025)
 stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(restore sweeps crosscheck copy compare report)
 
-# The committed part of a campaign: sweep.json, the job scenes, and per run the contract files
-# without VTK and without liggghts/ (inputs, logs, restart files), with fields/band*.csv.
+# The committed part of a campaign, copied afresh (../copy_campaign.sh says what it is).
 copy_campaign() {
-  local from=$1 to=$2
-  rm -rf "$to"
-  mkdir -p "$to/scenes"
-  cp "$from/sweep.json" "$to/"
-  cp "$from"/scenes/*.toml "$to/scenes/"
-  for run in "$from"/runs/*/; do
-    local name; name=$(basename "$run")
-    if ! grep -q '"status": "complete"' "$run/manifest.json"; then
-      echo "make.sh: $run is not complete; not copied (run the sweeps again to finish it)" >&2
-      continue
-    fi
-    mkdir -p "$to/runs/$name"
-    cp "$run"/{manifest.json,summary.json,timeseries.csv,profiles.csv} "$to/runs/$name/"
-    # the coarse-grained checks per snapshot and the band's mean profile (not the .vti images)
-    if [ -f "$run/fields/band.csv" ]; then
-      mkdir -p "$to/runs/$name/fields"
-      cp "$run"/fields/{band.csv,band_profile.csv} "$to/runs/$name/fields/"
-    fi
-  done
+  rm -rf "$2"
+  data/copy_campaign.sh "$1" "$2"
 }
 
 # The compact part of each complete seed run of the crosscheck, and its tables once every seed is
