@@ -15,9 +15,10 @@ WORK=${WORK:-runs/cyclic}
 DEST=data/cyclic
 COMMIT=${COMMIT:-0}
 COPY_EVERY_S=${COPY_EVERY_S:-120}
-# In order of value: the headline cell (R_n 0.5, CNS, A 1 mm, 5 seeds with the check's seed 1),
-# the other BCs at R_n 0.5, the small amplitude, the flat wall; flat x CV is cut first.
-read -r -a SWEEPS <<< "${SWEEPS:-cyclic_inertial cyclic_headline cyclic_rn05 cyclic_small cyclic_flat cyclic_flat_small cyclic_flat_cv}"
+# In order of value: the headline cell (R_n 0.5, CNS, A 1 mm; its seed 1 is the inertial-number
+# check's run, in cyclic_inertial/, made once before the campaign: README.md), the other BCs at
+# R_n 0.5, the small amplitude, the flat wall; flat x CV is cut first.
+read -r -a SWEEPS <<< "${SWEEPS:-cyclic_headline cyclic_rn05 cyclic_small cyclic_flat cyclic_flat_small cyclic_flat_cv}"
 export IWB_CONSOLIDATED_DIR=${IWB_CONSOLIDATED_DIR:-$PWD/$WORK/consolidated}
 stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(restore sweeps copy)
