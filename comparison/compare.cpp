@@ -1,5 +1,7 @@
 #include "comparison/compare.hpp"
 
+#include "comparison/cyclic_verdicts.hpp"
+
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
@@ -192,6 +194,8 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
 
   std::vector<Replay> replays;
   json variants = json::array();
+  const auto program = cyclic_program(dem);
+  const auto dem_cyclic = program ? std::optional(dem_cycles(dem, *program)) : std::nullopt;
   for (const auto& v : candidates) {
     replays.push_back(replay(dem, v));
     variants.push_back({{"index", replays.size() - 1},
@@ -201,6 +205,11 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
                         {"status", replays.back().status},
                         {"metrics", to_json(compare(dem, replays.back()))},
                         {"verdicts", to_json(judge(dem, scatter, replays.back(), tolerances))}});
+    if (dem_cyclic) {  // issue 34: the cycles judged on the quantities of src/cycles/
+      const auto model_cyclic = replay_cycles(dem, replays.back(), *program);
+      variants.back()["cyclic"] = {{"model", cycles::to_json(model_cyclic)},
+                                   {"verdicts", to_json(judge_cycles(dem, *dem_cyclic, model_cyclic))}};
+    }
   }
   const Feasibility scan = scan_feasibility(dem, scatter, predicted, tolerances, kScanPoints, bounds);
   json tol = json::object();
@@ -210,6 +219,7 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
                {"boundary", driver::to_string(dem.boundary)}, {"R_n", dem.R_n}, {"d50_mm", dem.d50_mm},
                {"sigma_n0_kPa", dem.sigma_n_kPa.front()}, {"e0_band", dem.e_band.front()}}},
       {"model", opt.model},
+      {"cyclic", dem_cyclic ? cycles::to_json(*dem_cyclic) : json(nullptr)},
       {"seeds", {{"runs", scatter.runs}, {"rows", scatter.rows}, {"tau_rms_sd_kPa", scatter.tau.rms_sd},
                  {"u_n_rms_sd_mm", scatter.u_n.rms_sd}, {"sigma_n_rms_sd_kPa", scatter.sigma_n.rms_sd}}},
       {"tolerances", tol},

@@ -29,6 +29,9 @@ struct SeedScatter {
   // Runs kept whose residual still drifted over the last fifth (summary.json residual_is): the
   // verdicts on the residual and on the dilation say how many.
   std::vector<std::string> not_steady;
+  // Runs kept whose shear split between the wall and the plate (a far field moving at 25-75 % of
+  // the first layer's speed): they measured the wall in part.
+  std::vector<std::string> split;
   std::size_t rows = 0;           // the compared run's rows that every seed covers
   // contract units (kPa, mm, kPa). Seeds write their rows at other u_x (the output fires on
   // whole multiples of its interval counted from the engine's step 0, and consolidation takes a

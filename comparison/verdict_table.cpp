@@ -87,6 +87,26 @@ Table verdict_table(const json& cmp) {
   return t;
 }
 
+Table cyclic_verdict_table(const json& cmp) {
+  Table t{{"quantity", "where", "DEM", "predicted model", "fitted model", "tolerance", "predicted", "fitted"}, {}};
+  const auto& v = cmp["variants"];
+  const auto& pred = v[cmp["verdicts"]["predicted_variant"].get<std::size_t>()];
+  const auto& fit = v[cmp["verdicts"]["fitted_variant"].get<std::size_t>()];
+  if (!pred.contains("cyclic")) return t;
+  const auto& p = pred["cyclic"]["verdicts"];
+  const auto& f = fit["cyclic"]["verdicts"];
+  auto cell = [](const json& x) {
+    if (!x["model"].is_number()) return std::string("not reached");
+    return fmt::format("{:.3g} ({:+.0f} %)", x["model"].get<double>(), 100 * x["relative_error"].get<double>());
+  };
+  for (std::size_t i = 0; i < p.size(); ++i)
+    t.rows.push_back({p[i]["quantity"].get<std::string>(), p[i]["where"].get<std::string>(),
+                      p[i]["dem"].is_number() ? fmt::format("{:.3g} (1 run)", p[i]["dem"].get<double>()) : "-",
+                      cell(p[i]), cell(f[i]), percent(p[i]["tolerance"]), p[i]["verdict"].get<std::string>(),
+                      f[i]["verdict"].get<std::string>()});
+  return t;
+}
+
 std::vector<std::string> verdict_findings(const json& cmp) {
   const auto& s = cmp["verdicts"]["summary"];
   const auto& v = cmp["variants"];

@@ -17,6 +17,10 @@ struct Table {
 // From compare.json.
 Table verdict_table(const nlohmann::json& compare);
 
+// The cyclic verdicts of a cyclic run (issue 34), predicted and fitted side by side: rows are the
+// quantity at a cycle; empty rows for a monotonic run.
+Table cyclic_verdict_table(const nlohmann::json& compare);
+
 // The sentences under the table: what the predicted and fitted models hold, and the scan.
 std::vector<std::string> verdict_findings(const nlohmann::json& compare);
 

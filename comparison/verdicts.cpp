@@ -53,6 +53,8 @@ std::vector<std::string> notes_for(const std::string& key, const SeedScatter& sc
     notes.push_back(fmt::format("{} of {} runs left out: localised at the plate", scatter.left_out.size(),
                                 n + scatter.left_out.size()));
   if (scatter.only_plate_runs) notes.push_back("every run localised at the plate: the DEM measured the plate");
+  if (!scatter.split.empty())
+    notes.push_back(fmt::format("{} of {} runs split between wall and plate", scatter.split.size(), n));
   if (needs_steady_end(key) && !scatter.not_steady.empty())
     notes.push_back(fmt::format("{} of {} runs not steady at the end (residual still drifting)",
                                 scatter.not_steady.size(), n));

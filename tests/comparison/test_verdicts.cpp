@@ -205,6 +205,7 @@ TEST_CASE("a seed that sheared at the plate is left out of the cell, a drifting 
   auto c = comparison::load_dem_run(test::write_synthetic_dem({.name = "cell_c", .seed = 3, .tau_noise_kPa = 0.5}));
   c.summary["shear_mode"] = "localised at the plate";  // as the summary says of such a run
   b.summary["residual_is"] = "not steady";
+  b.summary["shear_mode"] = "split between wall and plate";
   const auto s = comparison::seed_scatter(a, {b, c});
   CHECK(s.runs == std::vector<std::string>{a.dir.string(), b.dir.string()});
   REQUIRE(s.left_out.size() == 1);
@@ -213,8 +214,10 @@ TEST_CASE("a seed that sheared at the plate is left out of the cell, a drifting 
   const auto v = comparison::judge(a, s, replay_of(KnownCurve()), {{"peak_friction", 0.1}, {"residual_friction", 0.05}});
   CHECK(find(v, "peak_friction").seeds == 2);
   CHECK_THAT(find(v, "peak_friction").notes.at(0), Catch::Contains("1 of 3 runs left out: localised at the plate"));
-  CHECK(find(v, "peak_friction").notes.size() == 1);  // the peak does not need a steady end
-  CHECK_THAT(find(v, "residual_friction").notes.at(1), Catch::Contains("1 of 2 runs not steady"));
+  CHECK_THAT(find(v, "peak_friction").notes.at(1), Catch::Contains("1 of 2 runs split between wall and plate"));
+  CHECK(find(v, "peak_friction").notes.size() == 2);  // the peak does not need a steady end
+  CHECK_THAT(find(v, "residual_friction").notes.at(2), Catch::Contains("1 of 2 runs not steady"));
+  CHECK(s.split == std::vector<std::string>{b.dir.string()});
   // every run at the plate: nothing else to rest on, so they are kept and the verdicts say so
   a.summary["shear_mode"] = b.summary["shear_mode"] = "localised at the plate";
   const auto plate = comparison::seed_scatter(a, {b, c});

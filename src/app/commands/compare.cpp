@@ -52,6 +52,8 @@ int compare_run(const CompareCommand& o, const CommandContext& context) {
   opt.command_line = context.command_line;
   opt.seed_dirs.assign(o.seed_runs.begin(), o.seed_runs.end());
   const auto result = comparison::run_comparison(opt);
+  const auto cyclic = comparison::cyclic_verdict_table(result);
+  if (!cyclic.rows.empty()) fmt::print("Cycles (issue 34):\n{}\nMonotonic quantities over the whole path:\n", comparison::to_text(cyclic));
   fmt::print("{}", comparison::to_text(comparison::verdict_table(result)));
   for (const auto& f : comparison::verdict_findings(result)) fmt::print("{}\n", f);
   fmt::print("-> {} (iwb report {})\n", opt.out.string(), opt.out.string());

@@ -1,0 +1,96 @@
+// Cyclic verdicts on a constructed cyclic run: an elastic-perfectly plastic loop under a sigma_n
+// that decays and a u_n that ratchets, replayed by a "model" that is the run itself, then one
+// whose sigma_n falls faster by a known share, then one that stops early.
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
+
+#include "comparison/cyclic_verdicts.hpp"
+
+using namespace iwb;
+
+namespace {
+
+constexpr double kA = 1.0, kV = 1.0;  // mm, mm/s: the travel in mm is t in s
+constexpr int kCycles = 3;
+constexpr double kPost = 1.0, kRow = 0.00713;
+
+comparison::DemRun cyclic_run(driver::BoundaryKind bc) {
+  comparison::DemRun d;
+  d.boundary = bc;
+  d.d50_mm = 2.0;
+  d.scene_but_seed = {{"shear", {{"amplitude_mm", kA}, {"cycles", kCycles}, {"post_cyclic_mm", kPost}, {"velocity_mm_s", kV}}}};
+  double tau = 0.0;
+  for (double s = 0.0; s <= 4 * kA * kCycles + kPost; s += kRow) {
+    const double u = s >= 4 * kA * kCycles ? s - 4 * kA * kCycles : kA * (std::abs(std::fmod(s / kA + 3.0, 4.0) - 2.0) - 1.0);
+    if (!d.u_x_mm.empty()) tau = std::clamp(tau + 80.0 * (u - d.u_x_mm.back()), -10.0, 10.0);
+    d.t_s.push_back(s / kV), d.u_x_mm.push_back(u), d.tau_kPa.push_back(tau);
+    d.sigma_n_kPa.push_back(50.0 * std::exp(-s / 20.0)), d.u_n_mm.push_back(0.01 * s), d.e_band.push_back(0.7);
+  }
+  return d;
+}
+
+comparison::Replay replay_of(const comparison::DemRun& d) {
+  comparison::Replay r;
+  r.u_x_mm = d.u_x_mm, r.tau_kPa = d.tau_kPa, r.sigma_n_kPa = d.sigma_n_kPa, r.u_n_mm = d.u_n_mm;
+  return r;
+}
+
+std::vector<comparison::CyclicVerdict> judged(const comparison::DemRun& d, const comparison::Replay& r) {
+  const auto program = comparison::cyclic_program(d);
+  REQUIRE(program.has_value());
+  return comparison::judge_cycles(d, comparison::dem_cycles(d, *program), comparison::replay_cycles(d, r, *program));
+}
+
+const comparison::CyclicVerdict& find(const std::vector<comparison::CyclicVerdict>& v, const std::string& q,
+                                      const std::string& where) {
+  for (const auto& x : v)
+    if (x.quantity == q && x.where == where) return x;
+  FAIL("no verdict " << q << " at " << where);
+  return v.front();
+}
+
+}  // namespace
+
+TEST_CASE("a replay that is the DEM run holds on every cyclic quantity, at cycles 1, 2 and the last", "[comparison][cyclic]") {
+  const auto d = cyclic_run(driver::BoundaryKind::kCNS);
+  const auto v = judged(d, replay_of(d));
+  // CNS: peaks both ways, sigma_n ratio, u_n, reversal stiffness at cycles 1, 2, 3 (5 is beyond),
+  // and the post-cyclic peak and u_n change
+  CHECK(v.size() == 3 * 5 + 2);
+  for (const auto& x : v) {
+    INFO(x.quantity << " at " << x.where);
+    CHECK(x.verdict == "holds");
+    CHECK(x.error.value() == Approx(0.0).margin(1e-12));
+  }
+}
+
+TEST_CASE("a model whose sigma_n falls faster breaks the degradation where the miss exceeds 10 %", "[comparison][cyclic]") {
+  const auto d = cyclic_run(driver::BoundaryKind::kCNS);
+  auto r = replay_of(d);
+  // sigma_n lower by 20 % of the travel's share of the cycles: the ratio misses by -6.7 %, -13.3 %
+  // and -20 % at the ends of cycles 1, 2, 3
+  for (std::size_t i = 0; i < r.sigma_n_kPa.size(); ++i) r.sigma_n_kPa[i] *= 1.0 - 0.2 * std::min(1.0, d.t_s[i] * kV / 12.0);
+  const auto v = judged(d, r);
+  CHECK(find(v, "sigma_n_ratio", "cycle 1").error.value() == Approx(-0.2 / 3).epsilon(1e-3));
+  CHECK(find(v, "sigma_n_ratio", "cycle 1").verdict == "holds");
+  CHECK(find(v, "sigma_n_ratio", "cycle 2").error.value() == Approx(-0.4 / 3).epsilon(1e-3));
+  CHECK(find(v, "sigma_n_ratio", "cycle 2").verdict == "breaks");
+  CHECK(find(v, "sigma_n_ratio", "cycle 3").verdict == "breaks");
+  CHECK(find(v, "u_n_end_mm", "cycle 3").verdict == "holds");  // untouched
+}
+
+TEST_CASE("a replay that stopped in cycle 2 is not reached beyond; the BC decides what is judged", "[comparison][cyclic]") {
+  const auto d = cyclic_run(driver::BoundaryKind::kCNL);
+  auto r = replay_of(d);
+  const std::size_t keep = std::size_t(6.0 * kA / kRow);  // a cycle and a half
+  for (auto* x : {&r.u_x_mm, &r.tau_kPa, &r.sigma_n_kPa, &r.u_n_mm}) x->resize(keep);
+  const auto v = judged(d, r);
+  CHECK(find(v, "peak_friction_positive", "cycle 1").verdict == "holds");
+  CHECK(find(v, "peak_friction_positive", "cycle 2").verdict == "not reached");
+  CHECK(find(v, "post_cyclic_peak_friction", "after the cycles").verdict == "not reached");
+  for (const auto& x : v) CHECK(x.quantity != "sigma_n_ratio");  // CNL holds sigma_n
+  const auto cv = judged(cyclic_run(driver::BoundaryKind::kCV), replay_of(cyclic_run(driver::BoundaryKind::kCV)));
+  for (const auto& x : cv) CHECK(x.quantity.find("u_n") == std::string::npos);  // CV holds u_n
+  CHECK_FALSE(comparison::cyclic_program(comparison::DemRun{}).has_value());  // a monotonic run
+}
