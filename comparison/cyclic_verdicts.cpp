@@ -11,13 +11,6 @@ constexpr double kPeakTolerance = 0.10, kRatioTolerance = 0.10, kUnTolerance = 0
 constexpr double kUnFloorD50 = 0.02;  // as the monotonic dilation's floor (quantities.cpp)
 constexpr double kFrictionFloor = 0.01;
 
-std::vector<double> travel_of(const DemRun& dem, const cycles::Program&) {
-  const double v = dem.scene_but_seed.value("/shear/velocity_mm_s"_json_pointer, 0.0);
-  std::vector<double> s;
-  for (double t : dem.t_s) s.push_back(v * (t - dem.t_s.front()));
-  return s;
-}
-
 // The cycles a reader looks at first: 1, 2, 5 and the last (those that exist).
 std::vector<int> judged_cycles(int cycles) {
   std::vector<int> out;
@@ -68,6 +61,13 @@ std::optional<double> at_cycle(const cycles::CyclicQuantities& q, int c, double 
 
 }  // namespace
 
+std::vector<double> cyclic_travel(const DemRun& dem) {
+  const double v = dem.scene_but_seed.value("/shear/velocity_mm_s"_json_pointer, 0.0);
+  std::vector<double> s;
+  for (double t : dem.t_s) s.push_back(v * (t - dem.t_s.front()));
+  return s;
+}
+
 std::optional<cycles::Program> cyclic_program(const DemRun& dem) {
   if (!dem.scene_but_seed.is_object()) return std::nullopt;
   const auto& sh = dem.scene_but_seed.value("shear", nlohmann::json::object());
@@ -77,13 +77,13 @@ std::optional<cycles::Program> cyclic_program(const DemRun& dem) {
 }
 
 cycles::CyclicQuantities dem_cycles(const DemRun& dem, const cycles::Program& program) {
-  return cycles::cyclic_quantities({travel_of(dem, program), dem.u_x_mm, dem.u_n_mm, dem.sigma_n_kPa, dem.tau_kPa,
+  return cycles::cyclic_quantities({cyclic_travel(dem), dem.u_x_mm, dem.u_n_mm, dem.sigma_n_kPa, dem.tau_kPa,
                                     dem.e_band},
                                    program);
 }
 
 cycles::CyclicQuantities replay_cycles(const DemRun& dem, const Replay& r, const cycles::Program& program) {
-  auto travel = travel_of(dem, program);
+  auto travel = cyclic_travel(dem);
   travel.resize(r.u_x_mm.size());  // the rows the replay reached
   if (travel.size() < 2) return {};
   return cycles::cyclic_quantities({travel, r.u_x_mm, r.u_n_mm, r.sigma_n_kPa, r.tau_kPa, {}}, program);

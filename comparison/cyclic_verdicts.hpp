@@ -26,6 +26,9 @@ namespace iwb::comparison {
 // is monotonic.
 std::optional<cycles::Program> cyclic_program(const DemRun& dem);
 
+// A cyclic run's travel at each row: its wall moves at v throughout (no ramp with cycles), so v t.
+std::vector<double> cyclic_travel(const DemRun& dem);
+
 // The per-cycle quantities of the DEM run and of a replay of it (its rows are the DEM's, in time).
 cycles::CyclicQuantities dem_cycles(const DemRun& dem, const cycles::Program& program);
 cycles::CyclicQuantities replay_cycles(const DemRun& dem, const Replay& replay, const cycles::Program& program);

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "common/errors.hpp"
+#include "comparison/cyclic_verdicts.hpp"
 #include "comparison/quantities.hpp"
 
 namespace iwb::comparison {
@@ -21,8 +22,11 @@ void check_same_scene(const DemRun& run, const DemRun& seed) {
 }
 
 // The displacement travelled since the start of shear (u_x = 0) at each row: cyclic paths
-// return through the same u_x, the travel keeps increasing.
-std::vector<double> travel(const std::vector<double>& u_x) {
+// return through the same u_x, the travel keeps increasing. A cyclic run's wall moves at v, and
+// its travel is v t: summing |du_x| over rows would cut every reversal's corner (src/cycles/).
+std::vector<double> travel(const DemRun& r) {
+  if (cyclic_program(r)) return cyclic_travel(r);
+  const auto& u_x = r.u_x_mm;
   std::vector<double> s(u_x.size(), std::abs(u_x.front()));
   for (std::size_t i = 1; i < u_x.size(); ++i) s[i] = s[i - 1] + std::abs(u_x[i] - u_x[i - 1]);
   return s;
@@ -57,7 +61,7 @@ SeriesScatter series_scatter(const std::vector<const DemRun*>& all, const std::v
   double sum = 0.0;
   for (std::size_t i = 0; i < rows; ++i) {
     std::vector<double> values;
-    for (const auto* r : all) values.push_back(at(travel(r->u_x_mm), r->*member, where[i]));
+    for (const auto* r : all) values.push_back(at(travel(*r), r->*member, where[i]));
     const auto ms = mean_sd(values);
     out.mean.push_back(ms.mean), out.sd.push_back(ms.sd), sum += ms.sd * ms.sd;
   }
@@ -109,9 +113,9 @@ SeedScatter seed_scatter(const DemRun& run, const std::vector<DemRun>& other_see
   std::vector<const DemRun*> all = {&run};
   for (const auto& s : other_seeds) check_same_scene(run, s), all.push_back(&s);
   all = admitted(all, out);
-  const auto where = travel(run.u_x_mm);
+  const auto where = travel(run);
   double covered = where.back();
-  for (const auto* r : all) out.runs.push_back(r->dir.string()), covered = std::min(covered, travel(r->u_x_mm).back());
+  for (const auto* r : all) out.runs.push_back(r->dir.string()), covered = std::min(covered, travel(*r).back());
   // the run's rows up to the shortest seed's end (to half an output interval: the same end
   // displacement, written a fraction of an interval apart)
   const double half_row = 0.5 * where.back() / double(where.size());

@@ -92,7 +92,7 @@ std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const 
   for (const auto& q : quantity_table()) {
     if (!tolerances.count(q.key)) continue;
     Verdict v{q.key, d.at(q.key), std::nullopt, scatter.runs.empty() ? 1 : scatter.runs.size(),
-              m.at(q.key), std::nullopt, tolerances.at(q.key), ""};
+              m.at(q.key), std::nullopt, tolerances.at(q.key), "", std::nullopt, std::nullopt, std::nullopt, {}};
     if (scatter.from_seeds() && scatter.quantity_sd.count(q.key)) {  // the seed mean is the DEM's value
       v.dem = scatter.quantity_mean.at(q.key);
       v.dem_sd = scatter.quantity_sd.at(q.key);
