@@ -58,10 +58,12 @@ MeanSd mean_sd(const std::vector<double>& x) {
 SeriesScatter series_scatter(const std::vector<const DemRun*>& all, const std::vector<double>& where,
                              std::size_t rows, std::vector<double> DemRun::*member) {
   SeriesScatter out;
+  std::vector<std::vector<double>> travels;  // once per run, not per row
+  for (const auto* r : all) travels.push_back(travel(*r));
   double sum = 0.0;
   for (std::size_t i = 0; i < rows; ++i) {
     std::vector<double> values;
-    for (const auto* r : all) values.push_back(at(travel(*r), r->*member, where[i]));
+    for (std::size_t k = 0; k < all.size(); ++k) values.push_back(at(travels[k], all[k]->*member, where[i]));
     const auto ms = mean_sd(values);
     out.mean.push_back(ms.mean), out.sd.push_back(ms.sd), sum += ms.sd * ms.sd;
   }
