@@ -62,10 +62,7 @@ std::optional<double> at_cycle(const cycles::CyclicQuantities& q, int c, double 
 }  // namespace
 
 std::vector<double> cyclic_travel(const DemRun& dem) {
-  const double v = dem.scene_but_seed.value("/shear/velocity_mm_s"_json_pointer, 0.0);
-  std::vector<double> s;
-  for (double t : dem.t_s) s.push_back(v * (t - dem.t_s.front()));
-  return s;
+  return cycles::travel_at_speed(dem.t_s, dem.scene_but_seed.value("/shear/velocity_mm_s"_json_pointer, 0.0));
 }
 
 std::optional<cycles::Program> cyclic_program(const DemRun& dem) {

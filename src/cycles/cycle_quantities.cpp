@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "common/errors.hpp"
 
@@ -134,6 +133,12 @@ PostCyclic post_cyclic(const Rows& r, double from) {
 }
 
 }  // namespace
+
+std::vector<double> travel_at_speed(const std::vector<double>& t_s, double speed_mm_s) {
+  std::vector<double> s;
+  for (double t : t_s) s.push_back(speed_mm_s * (t - t_s.front()));
+  return s;
+}
 
 CyclicQuantities cyclic_quantities(const Path& path, const Program& program) {
   check(path, program);

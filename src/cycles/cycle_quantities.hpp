@@ -69,6 +69,10 @@ struct CyclicQuantities {
   std::optional<PostCyclic> post_cyclic;
 };
 
+// The travel of a wall moving at a constant speed (a cyclic program has no ramp) at each time t,
+// counted from the first: v (t - t_0).
+std::vector<double> travel_at_speed(const std::vector<double>& t_s, double speed_mm_s);
+
 // InputError when the rows are fewer than 2, the series differ in length, the travel decreases or
 // the program is not cyclic. A cycle counts when the rows reach its end within 1.5 row spacings
 // (the last row of a run lands on its end only up to the output's spacing); those they do not

@@ -164,9 +164,7 @@ Summary summarize(const Scene& scene, const io::CsvTable& ts, const io::CsvTable
     if (travel[i] >= u_from) xs.push_back(travel[i]), fs.push_back(friction[i]), ns.push_back(un[i]);
   if (scene.shear.cyclic()) {
     // the wall moves at v throughout (no ramp with cycles): its travel is v t
-    std::vector<double> travel;
-    for (double t : ts.values("t_s")) travel.push_back(scene.shear.velocity_m_s * t * 1e3);
-    cycles::Path path{travel, ux, un, sigma, tau,
+    cycles::Path path{cycles::travel_at_speed(ts.values("t_s"), scene.shear.velocity_m_s * 1e3), ux, un, sigma, tau,
                       ts.column("e_band") >= 0 ? ts.values("e_band") : std::vector<double>{}};
     s.cyclic = cycles::cyclic_quantities(
         path, {scene.shear.amplitude_m * 1e3, scene.shear.cycles, scene.shear.post_cyclic_m * 1e3});
