@@ -5,9 +5,11 @@
 #include <fmt/core.h>
 #include <functional>
 #include <numeric>
+#include <optional>
 
 #include "common/errors.hpp"
 #include "common/physical_limits.hpp"
+#include "dem/scene_keys.hpp"
 #include "dem/shear_start.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
@@ -21,85 +23,60 @@ constexpr double kMinBoxLengthInDmax = 10.0;    // DEM.md: box length at least 1
 constexpr double kMinWidthInDmax = 3.0;         // periodic images must not touch
 constexpr double kRecommendedHeightInD50 = 20.0;  // DEM.md: ~7 d50 gives no band
 constexpr double kMinFreeHeightInD50 = 5.0;       // below the plate's clamp: a band is 5-10 d50
-constexpr double kMaxSuctionKPa = 1e4;
 constexpr double kMaxCapillaryNumber = 400.0;     // u* of every capillary table (dem-scripts/yade/capillary)
-constexpr double kDefaultDtFraction = 0.15;  // of the Rayleigh time: the usual DEM choice
-constexpr double kMaxDtFraction = 0.5;       // beyond this Hertz contacts lose energy balance
-
-// Physical ranges of scene values: each bound lies far outside what an interface-shear scene uses
-// and inside what the engines can take, so a typo or a units mistake (kPa for Pa, a missing
-// exponent) is refused with its key before an engine starts instead of failing inside it.
-constexpr double kMaxD50Mm = 100.0;                // cobbles; a box of them is metres long
-constexpr double kMaxDensityKgM3 = 1e5;            // 4x osmium: room for density scaling
-constexpr double kMaxYoungsModulusPa = 1.2e12;     // diamond
-constexpr double kMaxFriction = 10.0;              // a coefficient, not an angle in degrees
-constexpr double kMaxSolidFraction = 0.75;         // densest sphere packing 0.7405
-constexpr double kMaxLengthD50 = 1e5;              // the particle count bounds the box anyway
-constexpr double kMaxParticles = 1e8;              // as for an explicit [specimen] particles
-constexpr double kMaxCnsStiffnessKPaPerMm = 1e7;   // stiffer than the grains: use CV
-constexpr double kMaxTravelMm = 1e4;               // 10 m of wall travel
-// I = gamma_dot d50 sqrt(rho/sigma_n) above 1 is a granular gas, not a sheared layer (DEM.md asks
-// for I < 1e-3; the tradeoff doubles I, so up to 1 is allowed).
-constexpr double kMaxInertialNumber = 1.0;
-constexpr double kMaxServoSpeedMS = 100.0;
-constexpr double kMaxServoGain = 1e3;
+constexpr double kMaxParticles = 1e8;             // as for an explicit [specimen] particles
 
 void require(bool ok, const std::string& message) {
   if (!ok) throw InputError(message);
 }
 
-std::string range_error(io::TableReader& t, const std::string& key, double v, const std::string& allowed) {
-  return fmt::format("{} = {:g} is out of range; allowed {}", t.where(key), v, allowed);
+using io::DeclaredTable;
+
+DeclaredTable declared_table(io::TableReader t, const std::string& name) {
+  return DeclaredTable(std::move(t), scene_keys(), name);
 }
 
-std::vector<double> numbers(io::TableReader& t, const std::string& key) {
-  std::vector<double> out;
-  const toml::node* n = t.node(key);
-  if (n == nullptr) return out;
-  const auto* arr = n->as_array();
-  require(arr != nullptr, fmt::format("{} = {} should be an array of numbers", t.where(key), io::describe(*n)));
-  for (const auto& x : *arr) {
-    const auto v = x.value<double>();
-    require(v.has_value(), fmt::format("{} has a non-number {}", t.where(key), io::describe(x)));
-    require(std::isfinite(*v), fmt::format("{} has {}, not a finite number", t.where(key), io::describe(x)));
-    out.push_back(*v);
-  }
-  return out;
+std::optional<DeclaredTable> optional_table(io::TableReader& top, const std::string& name) {
+  if (auto t = top.table(name)) return declared_table(*t, name);
+  return std::nullopt;
 }
 
-Particles read_particles(io::TableReader t) {
-  Particles p{};
-  p.d50_m = t.positive("d50_mm", kMaxD50Mm) * kMm;
-  const auto ratios = numbers(t, "d_over_d50");
-  const auto fractions = numbers(t, "mass_fraction");
+std::vector<SizeClass> read_sizes(DeclaredTable& t, double d50) {
+  const auto ratios = t.numbers("d_over_d50");
+  const auto fractions = t.numbers("mass_fraction");
   if (ratios.empty()) {
     require(fractions.empty(), t.where("mass_fraction") + " needs d_over_d50 beside it");
-    p.sizes = {{p.d50_m, 1.0}};
-  } else {
-    require(ratios.size() == fractions.size(),
-            fmt::format("{}: d_over_d50 has {} entries and mass_fraction {}; they must match",
-                        t.where(), ratios.size(), fractions.size()));
-    const double sum = std::accumulate(fractions.begin(), fractions.end(), 0.0);
-    require(std::abs(sum - 1.0) < 1e-6, fmt::format("{}: mass_fraction sums to {:g}; it must sum to 1",
-                                                    t.where(), sum));
-    for (std::size_t i = 0; i < ratios.size(); ++i) {
-      require(ratios[i] > 0.0 && fractions[i] > 0.0,
-              fmt::format("{}: size class {} (d_over_d50 = {:g}, mass_fraction = {:g}) must be > 0",
-                          t.where(), i, ratios[i], fractions[i]));
-      p.sizes.push_back({ratios[i] * p.d50_m, fractions[i]});
-    }
+    return {{d50, 1.0}};
   }
-  p.density_kg_m3 = t.positive("density_kg_m3", kMaxDensityKgM3);
-  p.youngs_modulus_Pa = t.positive("youngs_modulus_Pa", kMaxYoungsModulusPa);
-  p.poisson = t.number_in("poisson", {0.0, 0.5, false, true});
-  p.friction = t.number_in("friction", non_negative(kMaxFriction));
-  p.rolling_friction = t.optional_number_in("rolling_friction", non_negative(kMaxFriction)).value_or(0.0);
-  p.rolling_model = t.optional_text("rolling_model").value_or("cdt");
-  require(p.rolling_model == "cdt" || p.rolling_model == "epsd2",
-          fmt::format("{} = \"{}\"; allowed \"cdt\" or \"epsd2\"", t.where("rolling_model"), p.rolling_model));
-  p.restitution = t.optional_number_in("restitution", closed(0.0, 1.0)).value_or(0.5);
-  p.suction_Pa = t.optional_number_in("suction_kPa", non_negative(kMaxSuctionKPa)).value_or(0.0) * 1e3;
-  p.surface_tension_N_m = t.optional_number_in("surface_tension_N_m", {0.0, 1.0, true, false}).value_or(0.0728);
+  require(ratios.size() == fractions.size(),
+          fmt::format("{}: d_over_d50 has {} entries and mass_fraction {}; they must match",
+                      t.where(), ratios.size(), fractions.size()));
+  const double sum = std::accumulate(fractions.begin(), fractions.end(), 0.0);
+  require(std::abs(sum - 1.0) < 1e-6, fmt::format("{}: mass_fraction sums to {:g}; it must sum to 1",
+                                                  t.where(), sum));
+  std::vector<SizeClass> sizes;
+  for (std::size_t i = 0; i < ratios.size(); ++i) {
+    require(ratios[i] > 0.0 && fractions[i] > 0.0,
+            fmt::format("{}: size class {} (d_over_d50 = {:g}, mass_fraction = {:g}) must be > 0",
+                        t.where(), i, ratios[i], fractions[i]));
+    sizes.push_back({ratios[i] * d50, fractions[i]});
+  }
+  return sizes;
+}
+
+Particles read_particles(DeclaredTable t) {
+  Particles p{};
+  p.d50_m = t.number("d50_mm") * kMm;
+  p.sizes = read_sizes(t, p.d50_m);
+  p.density_kg_m3 = t.number("density_kg_m3");
+  p.youngs_modulus_Pa = t.number("youngs_modulus_Pa");
+  p.poisson = t.number("poisson");
+  p.friction = t.number("friction");
+  p.rolling_friction = t.number("rolling_friction");
+  p.rolling_model = t.text("rolling_model");
+  p.restitution = t.number("restitution");
+  p.suction_Pa = t.number("suction_kPa") * 1e3;
+  p.surface_tension_N_m = t.number("surface_tension_N_m");
   // the capillary tables (dem-scripts/yade/capillary) reach u* = s R / gamma = 400 (600 for the
   // radius ratios up to 1.25), for the largest grain radius of a pair
   const double u_max = p.suction_Pa * 0.5 * p.d_max() / p.surface_tension_N_m;
@@ -112,22 +89,17 @@ Particles read_particles(io::TableReader t) {
 }
 
 // `extra` reads keys a table holds besides the profile (the plate's clamp) before it is finished.
-RoughnessProfile read_profile(io::TableReader t, double d50, const std::function<void(io::TableReader&)>& extra = {}) {
+RoughnessProfile read_profile(DeclaredTable t, double d50, const std::function<void(DeclaredTable&)>& extra = {}) {
   RoughnessProfile r;
   const std::string kind = t.text("profile");
-  if (kind == "flat") {
-    r.kind = ProfileKind::kFlat;
-  } else if (kind == "sawtooth" || kind == "sinusoid") {
+  if (kind == "sawtooth" || kind == "sinusoid") {
     r.kind = kind == "sawtooth" ? ProfileKind::kSawtooth : ProfileKind::kSinusoid;
-    r.pitch_m = t.positive("pitch_d50", kMaxLengthD50) * d50;
-    r.height_m = t.positive("height_d50", kMaxLengthD50) * d50;
+    r.pitch_m = t.number("pitch_d50") * d50;
+    r.height_m = t.number("height_d50") * d50;
   } else if (kind == "glued") {
     r.kind = ProfileKind::kGlued;
-    r.height_m = t.positive("sphere_d50", kMaxLengthD50) * d50;
-    r.pitch_m = t.positive("spacing_d50", kMaxLengthD50) * d50;
-  } else {
-    throw InputError(fmt::format("{} = \"{}\"; allowed \"flat\", \"sawtooth\", \"sinusoid\", \"glued\"",
-                                 t.where("profile"), kind));
+    r.height_m = t.number("sphere_d50") * d50;
+    r.pitch_m = t.number("spacing_d50") * d50;
   }
   if (extra) extra(t);
   t.finish();
@@ -136,7 +108,7 @@ RoughnessProfile read_profile(io::TableReader t, double d50, const std::function
 
 // The particles a box holds at the estimated solid fraction (when [specimen] particles is not
 // given), refused above the limit of an explicit count: a height of 1e9 d50 must not start an engine.
-int derived_particle_count(io::TableReader& spec, const Scene& s) {
+int derived_particle_count(DeclaredTable& spec, const Scene& s) {
   const double n = s.solid_fraction_estimate * s.length_m * s.width_m * s.height_m /
                    s.particles.mean_particle_volume_m3();
   const double d50 = s.particles.d50_m;
@@ -157,9 +129,6 @@ void check_geometry(Scene& s, const std::string& file) {
   require(s.width_m >= kMinWidthInDmax * dmax - 1e-12,
           fmt::format("{}: key 'specimen.width_d50' = {:g} gives {:g} mm, narrower than {:g} d_max",
                       file, s.width_m / s.particles.d50_m, s.width_m / kMm, kMinWidthInDmax));
-  require(s.plate.kind != ProfileKind::kGlued,
-          fmt::format("{}: key 'plate.profile' = \"glued\": the servo plate is a mesh and cannot carry "
-                      "glued spheres; use a sawtooth", file));
   for (const auto& [name, prof] : {std::pair{"wall", &s.wall}, std::pair{"plate", &s.plate}}) {
     if (prof->kind == ProfileKind::kFlat) continue;
     const std::string key = prof->kind == ProfileKind::kGlued ? "spacing_d50" : "pitch_d50";
@@ -183,12 +152,9 @@ void check_geometry(Scene& s, const std::string& file) {
 // [shear] ramp_transits: the wall's speed ramps from 0 over that many round trips 2 H / c_s of a
 // shear wave (c_s: effective-medium estimate at sigma_n); 0 starts at full speed. Cycles start at
 // full speed, so only 0 is accepted with them. A ramp longer than the test is allowed with a warning.
-void read_ramp(io::TableReader& t, Scene& s) {
-  const auto given = t.optional_number("ramp_transits");
+void read_ramp(DeclaredTable& t, Scene& s) {
   Shear& sh = s.shear;
-  sh.ramp_transits = given.value_or(sh.cyclic() ? 0.0 : kDefaultRampTransits);
-  require(std::isfinite(sh.ramp_transits) && sh.ramp_transits >= 0.0,
-          range_error(t, "ramp_transits", sh.ramp_transits, "[0, inf) (0: the wall starts at full speed)"));
+  sh.ramp_transits = t.optional_number("ramp_transits").value_or(sh.cyclic() ? 0.0 : kDefaultRampTransits);
   require(!sh.cyclic() || sh.ramp_transits == 0.0,
           fmt::format("{} = {:g}: cyclic shear starts at full speed; allowed 0 with 'cycles'",
                       t.where("ramp_transits"), sh.ramp_transits));
@@ -201,6 +167,148 @@ void read_ramp(io::TableReader& t, Scene& s) {
                                      t.where("ramp_transits"), sh.ramp_transits, sh.ramp_displacement_m() / kMm,
                                      sh.displacement_m / kMm,
                                      sh.ramp_transits * sh.displacement_m / sh.ramp_displacement_m()));
+}
+
+void read_specimen(DeclaredTable spec, Scene& s) {
+  const double d50 = s.particles.d50_m;
+  s.length_m = spec.number("length_d50") * d50;
+  s.width_m = spec.number("width_d50") * d50;
+  s.height_m = spec.number("height_d50") * d50;
+  s.solid_fraction_estimate = spec.number("solid_fraction_estimate");
+  s.consolidation.friction = spec.number("consolidation_friction");
+  const auto given = spec.optional_whole_number("particles");
+  s.particle_count = given ? *given : derived_particle_count(spec, s);
+  spec.finish();
+}
+
+void read_walls(io::TableReader& top, Scene& s) {
+  const double d50 = s.particles.d50_m;
+  s.wall = read_profile(declared_table(top.required_table("wall"), "wall"), d50);
+  s.plate = read_profile(declared_table(top.required_table("plate"), "plate"), d50, [&](DeclaredTable& t) {
+    s.plate_clamp_m = t.number("clamp_d50") * d50;
+    // the band needs room below the clamped grains (DEM.md: at ~7 d50 no band forms)
+    require(s.plate_clamp_m == 0.0 || s.plate_clamp_m <= s.height_m - kMinFreeHeightInD50 * d50,
+            fmt::format("{} = {:g} leaves {:g} d50 of the {:g} d50 specimen free to shear; allowed: at least {:g} d50",
+                        t.where("clamp_d50"), s.plate_clamp_m / d50, (s.height_m - s.plate_clamp_m) / d50,
+                        s.height_m / d50, kMinFreeHeightInD50));
+  });
+}
+
+void read_boundary(DeclaredTable bc, Scene& s) {
+  s.boundary.kind = driver::parse_boundary_kind(bc.text("type"), bc.where("type"));
+  s.boundary.sigma_n_Pa = bc.number("sigma_n_kPa") * 1e3;
+  if (s.boundary.kind == driver::BoundaryKind::kCNS) s.boundary.K_Pa_per_m = bc.number("K_kPa_per_mm") * 1e3 / kMm;
+  bc.finish();
+}
+
+void read_travel(DeclaredTable& sh, Shear& shear) {
+  if (sh.one_of({"displacement_mm", "amplitude_mm"}) == "displacement_mm") {
+    require(!sh.has("post_cyclic_mm"), fmt::format("{} follows cycles; allowed only with amplitude_mm and cycles "
+                                                   "(monotonic shear: displacement_mm alone)",
+                                                   sh.where("post_cyclic_mm")));
+    shear.displacement_m = sh.number("displacement_mm") * kMm;
+  } else {
+    shear.amplitude_m = sh.number("amplitude_mm") * kMm;
+    shear.cycles = sh.whole_number("cycles");
+    shear.post_cyclic_m = sh.number("post_cyclic_mm") * kMm;
+  }
+}
+
+// The wall's speed, given or from the inertial number I = gamma_dot d50 sqrt(rho / sigma_n) with
+// gamma_dot ~ v / H (DEM.md, conservative: the whole specimen as the band); either way I at most
+// the declared bound of inertial_number.
+void read_speed(DeclaredTable& sh, Scene& s) {
+  const double d50 = s.particles.d50_m;
+  const double sqrt_rho_over_sigma = std::sqrt(s.particles.density_kg_m3 / s.boundary.sigma_n_Pa);
+  if (sh.one_of({"velocity_mm_s", "inertial_number"}) == "velocity_mm_s")
+    s.shear.velocity_m_s = sh.number("velocity_mm_s") * kMm;
+  else
+    s.shear.velocity_m_s = sh.number("inertial_number") * s.height_m / (d50 * sqrt_rho_over_sigma);
+  s.shear.inertial_number = s.shear.velocity_m_s / s.height_m * d50 * sqrt_rho_over_sigma;
+  const double max_i = io::declared(scene_keys(), "shear", "inertial_number").range.upper;
+  require(s.shear.inertial_number <= max_i * (1.0 + 1e-12),
+          fmt::format("{} = {:g} shears at an inertial number of {:.3g}; allowed up to {:g} (a granular "
+                      "gas beyond; DEM.md asks for I < 1e-3): below {:.4g} mm/s here",
+                      sh.where("velocity_mm_s"), s.shear.velocity_m_s / kMm, s.shear.inertial_number,
+                      max_i, max_i * s.shear.velocity_m_s / s.shear.inertial_number / kMm));
+}
+
+void read_shear(DeclaredTable sh, Scene& s) {
+  read_travel(sh, s.shear);
+  read_speed(sh, s);
+  read_ramp(sh, s);
+  sh.finish();
+}
+
+// An optional table's keys take their declared defaults whether the table is there or not.
+template <typename Read>
+void read_optional(io::TableReader& top, const std::string& name, Read read) {
+  static const toml::table kEmpty;
+  auto t = top.table(name);
+  DeclaredTable table = declared_table(t ? *t : io::TableReader(kEmpty, top.file(), name), name);
+  read(table);
+  table.finish();
+}
+
+void read_settings(io::TableReader& top, Scene& s) {
+  read_optional(top, "consolidation", [&](DeclaredTable& c) {
+    auto& co = s.consolidation;
+    co.sigma_tolerance = c.number("sigma_tolerance");
+    co.plate_tolerance_d50 = c.number("plate_tolerance_d50");
+    co.kinetic_energy_J = c.number("kinetic_energy_J");
+    co.windows_required = c.whole_number("windows_required");
+    co.max_windows = c.whole_number("max_windows");
+    co.window_steps = c.whole_number("window_steps");
+  });
+  const double height_d50 = s.height_m / s.particles.d50_m;
+  read_optional(top, "output", [&](DeclaredTable& o) {
+    // A spacing beyond the travel would leave the time series with its first row only.
+    s.outputs.timeseries_every_m = o.number("timeseries_every_mm", non_negative(s.shear.travel_m() / kMm)) * kMm;
+    s.outputs.profile_windows = o.whole_number("profile_windows");
+    s.outputs.profile_bin_d50 = o.number("profile_bin_d50", non_negative(height_d50));
+    s.outputs.vtk_every_m = o.number("vtk_every_mm") * kMm;
+  });
+  read_optional(top, "coarse_graining", [&](DeclaredTable& cg) {
+    s.coarse_graining.enabled = cg.flag("enabled");
+    // wider than the specimen's half height, the kernel would average the band away
+    s.coarse_graining.width_d50 = cg.number("width_d50", non_negative(0.5 * height_d50));
+  });
+  const double loop_number = servo_loop_number(s.particles.youngs_modulus_Pa, s.boundary.sigma_n_Pa);
+  read_optional(top, "servo", [&](DeclaredTable& sv) {
+    s.servo.vel_max_m_s = sv.number("vel_max_m_s");
+    s.servo.kp = sv.optional_number("kp").value_or(default_consolidation_servo_gain(loop_number));
+    s.servo.kp_shear = sv.optional_number("kp_shear").value_or(default_shear_servo_gain(loop_number));
+  });
+  read_optional(top, "numerics", [&](DeclaredTable& nu) { s.dt_fraction = nu.number("dt_fraction"); });
+}
+
+nlohmann::json resolved_values(const Scene& s) {
+  const double d50 = s.particles.d50_m;
+  return {
+      {"particles", {{"d50_mm", d50 / kMm}, {"d_max_mm", s.particles.d_max() / kMm},
+                     {"density_kg_m3", s.particles.density_kg_m3}, {"youngs_modulus_Pa", s.particles.youngs_modulus_Pa},
+                     {"poisson", s.particles.poisson}, {"friction", s.particles.friction},
+                     {"rolling_friction", s.particles.rolling_friction}, {"rolling_model", s.particles.rolling_model},
+                     {"suction_kPa", s.particles.suction_Pa / 1e3}, {"surface_tension_N_m", s.particles.surface_tension_N_m},
+                     {"restitution", s.particles.restitution}, {"count_requested", s.particle_count}}},
+      {"specimen", {{"length_mm", s.length_m / kMm}, {"width_mm", s.width_m / kMm},
+                    {"height_mm", s.height_m / kMm}, {"consolidation_friction", s.consolidation.friction}}},
+      {"wall", {{"profile", s.wall.describe()}, {"R_n", s.wall.normalized_roughness(d50)}}},
+      {"plate", {{"profile", s.plate.describe()}, {"R_n", s.plate.normalized_roughness(d50)},
+                 {"clamp_mm", s.plate_clamp_m / kMm}}},
+      {"boundary", {{"type", driver::to_string(s.boundary.kind)}, {"sigma_n_kPa", s.boundary.sigma_n_Pa / 1e3},
+                    {"K_kPa_per_mm", s.boundary.K_Pa_per_m * kMm / 1e3}}},
+      {"shear", {{"velocity_mm_s", s.shear.velocity_m_s / kMm}, {"displacement_mm", s.shear.displacement_m / kMm},
+                 {"amplitude_mm", s.shear.amplitude_m / kMm}, {"cycles", s.shear.cycles},
+                 {"post_cyclic_mm", s.shear.post_cyclic_m / kMm},
+                 {"travel_mm", s.shear.travel_m() / kMm}, {"inertial_number", s.shear.inertial_number},
+                 {"ramp_transits", s.shear.ramp_transits},
+                 {"shear_wave_speed_estimate_m_s", s.shear.shear_wave_speed_m_s},
+                 {"ramp_ms", s.shear.ramp_s * 1e3},
+                 {"ramp_displacement_mm", s.shear.ramp_displacement_m() / kMm}}},
+      {"stiffness_level", s.stiffness_level()},
+      {"numerics", {{"dt_fraction", s.dt_fraction}}},
+      {"seed", s.seed}};
 }
 
 }  // namespace
@@ -346,150 +454,24 @@ const char* to_string(ProfileKind k) {
 
 Scene parse_scene(const std::string& text, const std::string& source) {
   const auto root = io::parse_toml_text(text, source);
-  io::TableReader top(root, source);
+  io::TableReader reader(root, source);
+  DeclaredTable top = declared_table(reader, "");
   Scene s;
   s.source = source;
   s.name = std::filesystem::path(source).stem().string();
-  s.description = top.optional_text("description").value_or("");
-  s.seed = top.optional_count("seed").value_or(1);
-
-  s.particles = read_particles(top.required_table("particles"));
-  const double d50 = s.particles.d50_m;
-
-  auto spec = top.required_table("specimen");
-  s.length_m = spec.positive("length_d50", kMaxLengthD50) * d50;
-  s.width_m = spec.positive("width_d50", kMaxLengthD50) * d50;
-  s.height_m = spec.positive("height_d50", kMaxLengthD50) * d50;
-  s.solid_fraction_estimate = spec.optional_positive("solid_fraction_estimate", kMaxSolidFraction).value_or(0.58);
-  const double consolidation_friction =
-      spec.optional_number_in("consolidation_friction", non_negative(kMaxFriction)).value_or(0.1);
-  s.particle_count = spec.optional_count("particles").value_or(derived_particle_count(spec, s));
-  spec.finish();
-
-  s.wall = read_profile(top.required_table("wall"), d50);
-  s.plate = read_profile(top.required_table("plate"), d50, [&](io::TableReader& t) {
-    s.plate_clamp_m = t.optional_number_in("clamp_d50", non_negative(kMaxLengthD50)).value_or(0.0) * d50;
-    // the band needs room below the clamped grains (DEM.md: at ~7 d50 no band forms)
-    require(s.plate_clamp_m == 0.0 || s.plate_clamp_m <= s.height_m - kMinFreeHeightInD50 * d50,
-            fmt::format("{} = {:g} leaves {:g} d50 of the {:g} d50 specimen free to shear; allowed: at least {:g} d50",
-                        t.where("clamp_d50"), s.plate_clamp_m / d50, (s.height_m - s.plate_clamp_m) / d50,
-                        s.height_m / d50, kMinFreeHeightInD50));
-  });
+  s.description = top.text("description");
+  s.seed = top.whole_number("seed");
+  io::TableReader& tables = top.reader();
+  s.particles = read_particles(declared_table(tables.required_table("particles"), "particles"));
+  read_specimen(declared_table(tables.required_table("specimen"), "specimen"), s);
+  read_walls(tables, s);
   check_geometry(s, source);
-
-  auto bc = top.required_table("boundary");
-  s.boundary.kind = driver::parse_boundary_kind(bc.text("type"), bc.where("type"));
-  s.boundary.sigma_n_Pa = bc.positive("sigma_n_kPa", kMaxStressKPa) * 1e3;
-  if (s.boundary.kind == driver::BoundaryKind::kCNS)
-    s.boundary.K_Pa_per_m = bc.positive("K_kPa_per_mm", kMaxCnsStiffnessKPaPerMm) * 1e3 / kMm;
-  bc.finish();
-
-  auto sh = top.required_table("shear");
-  if (sh.one_of({"displacement_mm", "amplitude_mm"}) == "displacement_mm") {
-    require(!sh.has("post_cyclic_mm"), fmt::format("{} follows cycles; allowed only with amplitude_mm and cycles "
-                                                   "(monotonic shear: displacement_mm alone)",
-                                                   sh.where("post_cyclic_mm")));
-    s.shear.displacement_m = sh.positive("displacement_mm", kMaxTravelMm) * kMm;
-  } else {
-    s.shear.amplitude_m = sh.positive("amplitude_mm", kMaxTravelMm) * kMm;
-    s.shear.cycles = sh.count("cycles");
-    s.shear.post_cyclic_m = sh.optional_number_in("post_cyclic_mm", non_negative(kMaxTravelMm)).value_or(0.0) * kMm;
-  }
-  const double rho = s.particles.density_kg_m3;
-  const double sqrt_rho_over_sigma = std::sqrt(rho / s.boundary.sigma_n_Pa);
-  if (sh.one_of({"velocity_mm_s", "inertial_number"}) == "velocity_mm_s") {
-    s.shear.velocity_m_s = sh.positive("velocity_mm_s") * kMm;
-  } else {
-    // I = gamma_dot d50 sqrt(rho / sigma_n) with gamma_dot ~ v / H (DEM.md, conservative: the
-    // whole specimen as the band).
-    s.shear.velocity_m_s =
-        sh.positive("inertial_number", kMaxInertialNumber) * s.height_m / (d50 * sqrt_rho_over_sigma);
-  }
-  s.shear.inertial_number = s.shear.velocity_m_s / s.height_m * d50 * sqrt_rho_over_sigma;
-  require(s.shear.inertial_number <= kMaxInertialNumber * (1.0 + 1e-12),
-          fmt::format("{} = {:g} shears at an inertial number of {:.3g}; allowed up to {:g} (a granular "
-                      "gas beyond; DEM.md asks for I < 1e-3): below {:.4g} mm/s here",
-                      sh.where("velocity_mm_s"), s.shear.velocity_m_s / kMm, s.shear.inertial_number,
-                      kMaxInertialNumber, kMaxInertialNumber * s.shear.velocity_m_s / s.shear.inertial_number / kMm));
-  read_ramp(sh, s);
-  sh.finish();
-
-  s.consolidation.friction = consolidation_friction;
-  s.consolidation.sigma_tolerance = 0.02;
-  s.consolidation.plate_tolerance_d50 = 1e-3;
-  s.consolidation.kinetic_energy_J = 1e-6;
-  s.consolidation.windows_required = 3;
-  s.consolidation.max_windows = 60;
-  s.consolidation.window_steps = 2000;
-  if (auto c = top.table("consolidation")) {
-    s.consolidation.sigma_tolerance = c->optional_positive("sigma_tolerance", 1.0).value_or(0.02);
-    s.consolidation.plate_tolerance_d50 = c->optional_positive("plate_tolerance_d50", 1.0).value_or(1e-3);
-    s.consolidation.kinetic_energy_J = c->optional_positive("kinetic_energy_J", 1e3).value_or(1e-6);
-    s.consolidation.windows_required = c->optional_count("windows_required").value_or(3);
-    s.consolidation.max_windows = c->optional_count("max_windows").value_or(60);
-    s.consolidation.window_steps = c->optional_count("window_steps").value_or(2000);
-    c->finish();
-  }
-
-  s.outputs = {0.01 * kMm, 4, 0.25, 0.5 * kMm};
-  if (auto o = top.table("output")) {
-    // A spacing beyond the travel would leave the time series with its first row only.
-    const double travel_mm = s.shear.travel_m() / kMm;
-    s.outputs.timeseries_every_m = o->optional_positive("timeseries_every_mm", travel_mm).value_or(0.01) * kMm;
-    s.outputs.profile_windows = o->optional_count("profile_windows").value_or(4);
-    s.outputs.profile_bin_d50 = o->optional_positive("profile_bin_d50", s.height_m / d50).value_or(0.25);
-    s.outputs.vtk_every_m = o->optional_positive("vtk_every_mm", kMaxTravelMm).value_or(0.5) * kMm;
-    o->finish();
-  }
-  if (auto cg = top.table("coarse_graining")) {
-    s.coarse_graining.enabled = cg->optional_flag("enabled").value_or(true);
-    // wider than the specimen's half height, the kernel would average the band away
-    s.coarse_graining.width_d50 = cg->optional_positive("width_d50", 0.5 * s.height_m / d50).value_or(0.5);
-    cg->finish();
-  }
-
-  const double loop_number = servo_loop_number(s.particles.youngs_modulus_Pa, s.boundary.sigma_n_Pa);
-  const double kp = default_consolidation_servo_gain(loop_number);
-  const double kp_shear = default_shear_servo_gain(loop_number);
-  s.servo = {0.3, kp, kp_shear};
-  if (auto sv = top.table("servo")) {
-    s.servo.vel_max_m_s = sv->optional_positive("vel_max_m_s", kMaxServoSpeedMS).value_or(0.3);
-    s.servo.kp = sv->optional_positive("kp", kMaxServoGain).value_or(kp);
-    s.servo.kp_shear = sv->optional_positive("kp_shear", kMaxServoGain).value_or(kp_shear);
-    sv->finish();
-  }
-  if (auto nu = top.table("numerics")) {
-    s.dt_fraction = nu->optional_positive("dt_fraction", kMaxDtFraction).value_or(kDefaultDtFraction);
-    nu->finish();
-  }
-  if (auto rq = top.table("requirements")) s.requirements = read_requirements(*rq);
+  read_boundary(declared_table(tables.required_table("boundary"), "boundary"), s);
+  read_shear(declared_table(tables.required_table("shear"), "shear"), s);
+  read_settings(tables, s);
+  if (auto rq = tables.table("requirements")) s.requirements = read_requirements(*rq);
   top.finish();
-
-  s.resolved = {
-      {"particles", {{"d50_mm", d50 / kMm}, {"d_max_mm", s.particles.d_max() / kMm},
-                     {"density_kg_m3", rho}, {"youngs_modulus_Pa", s.particles.youngs_modulus_Pa},
-                     {"poisson", s.particles.poisson}, {"friction", s.particles.friction},
-                     {"rolling_friction", s.particles.rolling_friction}, {"rolling_model", s.particles.rolling_model},
-                     {"suction_kPa", s.particles.suction_Pa / 1e3}, {"surface_tension_N_m", s.particles.surface_tension_N_m},
-                     {"restitution", s.particles.restitution}, {"count_requested", s.particle_count}}},
-      {"specimen", {{"length_mm", s.length_m / kMm}, {"width_mm", s.width_m / kMm},
-                    {"height_mm", s.height_m / kMm}, {"consolidation_friction", consolidation_friction}}},
-      {"wall", {{"profile", s.wall.describe()}, {"R_n", s.wall.normalized_roughness(d50)}}},
-      {"plate", {{"profile", s.plate.describe()}, {"R_n", s.plate.normalized_roughness(d50)},
-                 {"clamp_mm", s.plate_clamp_m / kMm}}},
-      {"boundary", {{"type", driver::to_string(s.boundary.kind)}, {"sigma_n_kPa", s.boundary.sigma_n_Pa / 1e3},
-                    {"K_kPa_per_mm", s.boundary.K_Pa_per_m * kMm / 1e3}}},
-      {"shear", {{"velocity_mm_s", s.shear.velocity_m_s / kMm}, {"displacement_mm", s.shear.displacement_m / kMm},
-                 {"amplitude_mm", s.shear.amplitude_m / kMm}, {"cycles", s.shear.cycles},
-                 {"post_cyclic_mm", s.shear.post_cyclic_m / kMm},
-                 {"travel_mm", s.shear.travel_m() / kMm}, {"inertial_number", s.shear.inertial_number},
-                 {"ramp_transits", s.shear.ramp_transits},
-                 {"shear_wave_speed_estimate_m_s", s.shear.shear_wave_speed_m_s},
-                 {"ramp_ms", s.shear.ramp_s * 1e3},
-                 {"ramp_displacement_mm", s.shear.ramp_displacement_m() / kMm}}},
-      {"stiffness_level", s.stiffness_level()},
-      {"numerics", {{"dt_fraction", s.dt_fraction}}},
-      {"seed", s.seed}};
+  s.resolved = resolved_values(s);
   return s;
 }
 

@@ -229,7 +229,7 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
 
 // --- running a stage --------------------------------------------------------------------
 
-std::vector<std::string> command(const std::string& input, int processes) {
+std::vector<std::string> liggghts_command(const std::string& input, int processes) {
   // Line-buffered output: LIGGGHTS prints its ERROR line and then calls MPI_Abort, which loses a
   // block-buffered stdout (seen on Debian's 3.8.0: the message never appears).
   std::vector<std::string> cmd = {"stdbuf", "-oL", "liggghts", "-in", input, "-nocite"};
@@ -286,7 +286,7 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
   values.insert(extra_.begin(), extra_.end());
   io::write_atomically(ctx.work_dir / input, render_template(liggghts_templates().at(input), values, input));
   const double generation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  StageResult r = run_followed_stage(command(input, ctx.processes), stage, ctx, read_loop_time);
+  StageResult r = run_followed_stage(liggghts_command(input, ctx.processes), stage, ctx, read_loop_time);
   r.facts["generation_seconds"] = generation;
   return r;
 }

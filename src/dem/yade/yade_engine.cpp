@@ -72,7 +72,7 @@ nlohmann::json shear_parameters(const Scene& s, const Numerics& n) {
           {"vtk_every", n.vtk_every}, {"u_total", s.shear.travel_m()}};
 }
 
-std::vector<std::string> command(const std::string& stage, int threads) {
+std::vector<std::string> yade_command(const std::string& stage, int threads) {
   // -n: no GUI; -x: exit when the script ends. stdbuf keeps the IWB_ lines live.
   return {"stdbuf", "-oL", "yade", "-n", "-x", "-j", std::to_string(std::max(1, threads)), kScript,
           "yade_params.json", stage};
@@ -164,7 +164,7 @@ StageResult YadeEngine::run_stage(const std::string& stage, const StageContext& 
   io::write_atomically(ctx.work_dir / kScript, yade_scripts().at(kScript));
   if (s.particles.wet()) write_capillary_tables(ctx.work_dir);
   const double generation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  StageResult r = run_followed_stage(command(stage, ctx.processes), stage, ctx);
+  StageResult r = run_followed_stage(yade_command(stage, ctx.processes), stage, ctx);
   r.facts["generation_seconds"] = generation;
   return r;
 }
