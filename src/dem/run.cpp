@@ -1,4 +1,5 @@
 #include "dem/run.hpp"
+#include "dem/scene_roughness.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -30,6 +31,7 @@ nlohmann::json fresh_manifest(const Scene& scene, const std::string& text, Engin
           {"seed", scene.seed},
           {"numerics", engine.numerics(scene)},
           {"R_n", scene.wall.normalized_roughness(scene.particles.d50_m)},
+          {"roughness", scene_roughness(scene)},
           {"stiffness_level", scene.stiffness_level()},
           {"inertial_number", scene.shear.inertial_number},
           {"conventions", {{"signs", "compression positive; u_n > 0 is dilation; tau has the sign of the wall displacement"},

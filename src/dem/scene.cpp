@@ -336,68 +336,6 @@ double Particles::mean_particle_volume_m3() const {
   return volume / number;
 }
 
-double RoughnessProfile::surface_at(double x) const {
-  if (kind == ProfileKind::kFlat) return 0.0;
-  const double u = x - pitch_m * std::floor(x / pitch_m);  // position within one period
-  switch (kind) {
-    case ProfileKind::kSawtooth:
-      return height_m * (u < 0.5 * pitch_m ? u : pitch_m - u) / (0.5 * pitch_m);
-    case ProfileKind::kSinusoid:
-      return 0.5 * height_m * (1.0 - std::cos(2.0 * M_PI * u / pitch_m));
-    case ProfileKind::kGlued: {  // spheres centred at pitch/2 (+- pitch for overlapping ones)
-      const double r = 0.5 * height_m;
-      double z = 0.0;
-      for (double c : {-0.5 * pitch_m, 0.5 * pitch_m, 1.5 * pitch_m}) {
-        const double dx = u - c;
-        if (std::abs(dx) <= r) z = std::max(z, r + std::sqrt(r * r - dx * dx));
-      }
-      return z;
-    }
-    case ProfileKind::kFlat:
-      break;
-  }
-  return 0.0;
-}
-
-double RoughnessProfile::normalized_roughness(double d50) const {
-  if (kind == ProfileKind::kFlat) return 0.0;
-  if (kind == ProfileKind::kGlued) {
-    // R_max over a sliding gauge window of length d50 on the sampled profile (Uesugi & Kishida)
-    constexpr int kSamples = 4000;
-    const double dx = pitch_m / kSamples;
-    const int window = std::max(1, int(std::lround(d50 / dx)));
-    double r_max = 0.0;
-    for (int i = 0; i < kSamples; ++i) {
-      double lo = INFINITY, hi = -INFINITY;
-      for (int j = 0; j <= window; ++j) {
-        const double z = surface_at((i + j) * dx);
-        lo = std::min(lo, z), hi = std::max(hi, z);
-      }
-      r_max = std::max(r_max, hi - lo);
-    }
-    return r_max / d50;
-  }
-  const double half = 0.5 * pitch_m;  // a rise from valley to peak spans half a pitch
-  if (d50 >= half) return height_m / d50;
-  if (kind == ProfileKind::kSawtooth) return height_m * (d50 / half) / d50;
-  return height_m * std::sin(M_PI * d50 / pitch_m) / d50;  // sinusoid: steepest window
-}
-
-double RoughnessProfile::mean_height_m() const {
-  if (kind != ProfileKind::kGlued) return 0.5 * height_m;
-  constexpr int kSamples = 2000;
-  double sum = 0.0;
-  for (int i = 0; i < kSamples; ++i) sum += surface_at((i + 0.5) * pitch_m / kSamples);
-  return sum / kSamples;
-}
-
-std::string RoughnessProfile::describe() const {
-  if (kind == ProfileKind::kFlat) return "flat";
-  if (kind == ProfileKind::kGlued)
-    return fmt::format("glued spheres of {:g} mm at {:g} mm spacing", height_m / kMm, pitch_m / kMm);
-  return fmt::format("{} pitch {:g} mm, R_max {:g} mm", to_string(kind), pitch_m / kMm, height_m / kMm);
-}
-
 double Shear::displacement_at(double t) const {
   if (!cyclic()) {
     if (t < ramp_s) return 0.5 * velocity_m_s * t * t / ramp_s;  // v t^2 / (2 T) while ramping
@@ -442,15 +380,6 @@ double Scene::stiffness_level() const {
   return std::pow(p.youngs_modulus_Pa / ((1.0 - p.poisson * p.poisson) * boundary.sigma_n_Pa), 2.0 / 3.0);
 }
 
-const char* to_string(ProfileKind k) {
-  switch (k) {
-    case ProfileKind::kFlat: return "flat";
-    case ProfileKind::kSawtooth: return "sawtooth";
-    case ProfileKind::kSinusoid: return "sinusoid";
-    case ProfileKind::kGlued: return "glued";
-  }
-  return "?";
-}
 
 Scene parse_scene(const std::string& text, const std::string& source) {
   const auto root = io::parse_toml_text(text, source);

@@ -10,6 +10,7 @@
 
 #include "dem/requirements.hpp"
 #include "driver/control.hpp"  // BoundaryKind: the same CNL/CNS/CV in DEM and continuum
+#include "walls/profile.hpp"
 
 namespace iwb::dem {
 
@@ -43,24 +44,10 @@ struct Particles {
   double mean_particle_volume_m3() const;  // number-weighted, from the mass fractions
 };
 
-enum class ProfileKind { kFlat, kSawtooth, kSinusoid, kGlued };
-
-// A wall's surface profile along x (ridges along y): R_max = height, period = pitch. A glued wall
-// is a square layer of spheres of diameter `height_m` at centre spacing `pitch_m` on a flat base.
-struct RoughnessProfile {
-  ProfileKind kind = ProfileKind::kFlat;
-  double pitch_m = 0.0;
-  double height_m = 0.0;
-
-  // Height of the surface above the base plane at x (for glued walls: along a row of centres).
-  double surface_at(double x) const;
-
-  // Normalized roughness R_n = R_max(L = d50) / d50 (Uesugi & Kishida 1986): the largest
-  // peak-to-valley height within any gauge window of length d50, over d50.
-  double normalized_roughness(double d50) const;
-  double mean_height_m() const;  // mean surface height above the base plane
-  std::string describe() const;
-};
+// The walls' surfaces live in src/walls/ (line profiles, glued spheres, areal height maps).
+using walls::ProfileKind;
+using walls::RoughnessProfile;
+using walls::to_string;
 
 struct Boundary {
   driver::BoundaryKind kind = driver::BoundaryKind::kCNL;
@@ -187,7 +174,5 @@ Scene load_scene(const std::string& path);
 // The shipped scenes embedded in the binary ("default.toml", "smoke.toml"; generated at build).
 const std::map<std::string, std::string>& embedded_scenes();
 Scene parse_scene(const std::string& text, const std::string& source);
-
-const char* to_string(ProfileKind k);
 
 }  // namespace iwb::dem

@@ -24,6 +24,7 @@ void add_all_commands(CLI::App& app, CommandList& commands) {
   add_dem_summary_command(dem, commands);
   add_dem_fields_command(dem, commands);
   add_dem_keys_command(dem, commands);
+  add_dem_roughness_command(dem, commands);
   add_compare_command(app, commands);
   add_sweep_command(app, commands);
   add_report_command(app, commands);

@@ -17,6 +17,7 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands);
 void add_dem_crosscheck_command(CLI::App& dem, CommandList& commands);
 void add_dem_summary_command(CLI::App& dem, CommandList& commands);
 void add_dem_keys_command(CLI::App& dem, CommandList& commands);
+void add_dem_roughness_command(CLI::App& dem, CommandList& commands);
 void add_dem_fields_command(CLI::App& dem, CommandList& commands);
 void add_compare_command(CLI::App& app, CommandList& commands);
 void add_sweep_command(CLI::App& app, CommandList& commands);
