@@ -28,6 +28,7 @@ double interpolate(const io::CsvTable& t, const std::string& x_name, const std::
 }
 
 double top_of_roughness(const dem::RoughnessProfile& p, double length) {
+  if (p.areal()) return p.max_height_m();
   double top = 0.0;
   for (int k = 0; k <= 1000; ++k) top = std::max(top, p.surface_at(length * k / 1000.0));
   return top;

@@ -13,6 +13,7 @@
 #include "dem/shear_start.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
+#include "walls/random_surface.hpp"
 
 namespace iwb::dem {
 
@@ -88,8 +89,23 @@ Particles read_particles(DeclaredTable t) {
   return p;
 }
 
+// A random self-affine surface over the box (src/walls/random_surface.hpp), its lowest point on the
+// wall's base plane.
+RoughnessProfile read_random_surface(DeclaredTable& t, const Scene& s) {
+  const double d50 = s.particles.d50_m;
+  walls::RandomSurfaceSpec spec;
+  spec.rms_height_m = t.number("rms_height_d50") * d50;
+  spec.correlation_length_m = t.number("correlation_length_d50") * d50;
+  spec.hurst = t.number("hurst");
+  spec.seed = std::uint64_t(t.whole_number("surface_seed"));
+  auto map = std::make_shared<const walls::HeightMap>(
+      walls::random_surface(spec, s.length_m, s.width_m, t.number("grid_d50") * d50));
+  return {ProfileKind::kRandom, 0.0, map->max(), map};
+}
+
 // `extra` reads keys a table holds besides the profile (the plate's clamp) before it is finished.
-RoughnessProfile read_profile(DeclaredTable t, double d50, const std::function<void(DeclaredTable&)>& extra = {}) {
+RoughnessProfile read_profile(DeclaredTable t, const Scene& s, const std::function<void(DeclaredTable&)>& extra = {}) {
+  const double d50 = s.particles.d50_m;
   RoughnessProfile r;
   const std::string kind = t.text("profile");
   if (kind == "sawtooth" || kind == "sinusoid") {
@@ -100,6 +116,8 @@ RoughnessProfile read_profile(DeclaredTable t, double d50, const std::function<v
     r.kind = ProfileKind::kGlued;
     r.height_m = t.number("sphere_d50") * d50;
     r.pitch_m = t.number("spacing_d50") * d50;
+  } else if (kind == "random") {
+    r = read_random_surface(t, s);
   }
   if (extra) extra(t);
   t.finish();
@@ -130,7 +148,7 @@ void check_geometry(Scene& s, const std::string& file) {
           fmt::format("{}: key 'specimen.width_d50' = {:g} gives {:g} mm, narrower than {:g} d_max",
                       file, s.width_m / s.particles.d50_m, s.width_m / kMm, kMinWidthInDmax));
   for (const auto& [name, prof] : {std::pair{"wall", &s.wall}, std::pair{"plate", &s.plate}}) {
-    if (prof->kind == ProfileKind::kFlat) continue;
+    if (prof->kind == ProfileKind::kFlat || prof->areal()) continue;  // an areal map is made to tile the box
     const std::string key = prof->kind == ProfileKind::kGlued ? "spacing_d50" : "pitch_d50";
     // glued spheres sit on a square grid: the spacing must divide the width too
     std::vector<std::pair<const char*, double>> sides = {{"length", s.length_m}};
@@ -183,8 +201,8 @@ void read_specimen(DeclaredTable spec, Scene& s) {
 
 void read_walls(io::TableReader& top, Scene& s) {
   const double d50 = s.particles.d50_m;
-  s.wall = read_profile(declared_table(top.required_table("wall"), "wall"), d50);
-  s.plate = read_profile(declared_table(top.required_table("plate"), "plate"), d50, [&](DeclaredTable& t) {
+  s.wall = read_profile(declared_table(top.required_table("wall"), "wall"), s);
+  s.plate = read_profile(declared_table(top.required_table("plate"), "plate"), s, [&](DeclaredTable& t) {
     s.plate_clamp_m = t.number("clamp_d50") * d50;
     // the band needs room below the clamped grains (DEM.md: at ~7 d50 no band forms)
     require(s.plate_clamp_m == 0.0 || s.plate_clamp_m <= s.height_m - kMinFreeHeightInD50 * d50,

@@ -20,6 +20,7 @@ constexpr double kMaxYoungsModulusPa = 1.2e12;  // diamond
 constexpr double kMaxFriction = 10.0;           // a coefficient, not an angle in degrees
 constexpr double kMaxSolidFraction = 0.75;      // densest sphere packing 0.7405
 constexpr double kMaxLengthD50 = 1e5;           // the particle count bounds the box anyway
+constexpr double kMaxRmsHeightD50 = 100.0;      // a surface far rougher than any wall in the seed
 constexpr double kMaxSuctionKPa = 1e4;
 constexpr double kMaxCnsStiffnessKPaPerMm = 1e7;  // stiffer than the grains: use CV
 constexpr double kMaxTravelMm = 1e4;              // 10 m of wall travel
@@ -44,8 +45,24 @@ std::vector<KeyDeclaration> profile_keys(const std::string& table, const std::st
        .when = "sawtooth, sinusoid",
        .meaning = "peak-to-valley height R_max; R_n = R_max(L = d50)/d50 goes to the manifest"},
   };
+  const std::vector<KeyDeclaration> random = {
+      {.table = table, .key = "rms_height_d50", .range = positive(kMaxRmsHeightD50), .need = Need::kConditional,
+       .when = "random", .meaning = "the random surface's RMS height R_q"},
+      {.table = table, .key = "correlation_length_d50", .range = positive(kMaxLengthD50), .need = Need::kConditional,
+       .when = "random",
+       .meaning = "roll-off length xi: the spectrum is flat above wavelength 2 pi xi and falls as q^-2(1+H) below"},
+      {.table = table, .key = "hurst", .range = {0.0, 1.0, true, false}, .value = 0.8,
+       .limit = "only with random", .meaning = "the random surface's Hurst exponent H"},
+      {.table = table, .key = "grid_d50", .range = positive(1.0), .value = 0.25, .limit = "only with random",
+       .meaning = "the random surface's grid spacing (its mesh's edges); no finer feature is made"},
+      {.table = table, .key = "surface_seed", .kind = KeyKind::kWholeNumber, .value = 1.0,
+       .limit = "only with random",
+       .meaning = "the random surface's stream; the scene's seed does not change the wall"},
+  };
+  rows[0].choices.push_back("random");
+  rows.insert(rows.end(), random.begin(), random.end());
   if (!glued) return rows;
-  rows[0].choices.push_back("glued");
+  rows[0].choices.insert(rows[0].choices.end() - 1, "glued");
   const std::vector<KeyDeclaration> spheres = {
       {.table = table, .key = "sphere_d50", .range = positive(kMaxLengthD50), .need = Need::kConditional,
        .when = "glued", .meaning = "diameter of the glued spheres"},
@@ -112,7 +129,7 @@ io::KeyDeclarations declare() {
       {.table = "specimen", .key = "consolidation_friction", .range = non_negative(kMaxFriction), .value = 0.1,
        .meaning = "friction while consolidating (low: dense, high: loose)"},
   };
-  for (auto r : profile_keys("wall", "the wall under test (bottom, sheared in +x); glued: a square layer of fixed spheres on a flat base, moving with it", true)) rows.push_back(r);
+  for (auto r : profile_keys("wall", "the wall under test (bottom, sheared in +x); glued: a square layer of fixed spheres on a flat base, moving with it; random: a periodic self-affine Gaussian surface (areal)", true)) rows.push_back(r);
   for (auto r : profile_keys("plate", "the loading plate (top); make it rougher than the wall", false))
     rows.push_back(r);
   const io::KeyDeclarations rest = {

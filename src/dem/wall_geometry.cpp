@@ -31,10 +31,37 @@ std::vector<std::pair<double, double>> one_pitch(const RoughnessProfile& p) {
   return {};
 }
 
+// A quadrilateral cell p00 p10 p11 p01 as two triangles, counter-clockwise seen from the particles:
+// the normals point into the granular layer.
+void push_cell(std::vector<Triangle>& out, const Eigen::Vector3d& p00, const Eigen::Vector3d& p10,
+               const Eigen::Vector3d& p11, const Eigen::Vector3d& p01, bool facing_down) {
+  if (facing_down) {
+    out.push_back({p00, p11, p10});
+    out.push_back({p00, p01, p11});
+  } else {
+    out.push_back({p00, p10, p11});
+    out.push_back({p00, p11, p01});
+  }
+}
+
+// An areal height map: two triangles per grid cell, the far edges on the first row and column.
+std::vector<Triangle> areal_surface(const walls::HeightMap& map, double z_base, bool facing_down) {
+  const double sign = facing_down ? -1.0 : 1.0;
+  auto point = [&](int i, int j) {
+    return Eigen::Vector3d(map.length() * i / map.nx(), map.width() * j / map.ny(), z_base + sign * map.node(i, j));
+  };
+  std::vector<Triangle> out;
+  for (int j = 0; j < map.ny(); ++j)
+    for (int i = 0; i < map.nx(); ++i)
+      push_cell(out, point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1), facing_down);
+  return out;
+}
+
 }  // namespace
 
 std::vector<Triangle> profile_surface(const RoughnessProfile& profile, double length, double width,
                                       double z_base, bool facing_down, double max_edge) {
+  if (profile.areal()) return areal_surface(*profile.map, z_base, facing_down);
   // x breakpoints over the whole length
   std::vector<std::pair<double, double>> xs;
   // A flat wall (and the base of a glued one) is cut into equal strips no longer than max_edge;
@@ -54,15 +81,7 @@ std::vector<Triangle> profile_surface(const RoughnessProfile& profile, double le
   std::vector<Triangle> out;
   for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
     for (int j = 0; j < ny; ++j) {
-      const auto p00 = point(i, j), p10 = point(i + 1, j), p11 = point(i + 1, j + 1), p01 = point(i, j + 1);
-      // counter-clockwise seen from the particles: normals point into the granular layer
-      if (facing_down) {
-        out.push_back({p00, p11, p10});
-        out.push_back({p00, p01, p11});
-      } else {
-        out.push_back({p00, p10, p11});
-        out.push_back({p00, p11, p01});
-      }
+      push_cell(out, point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1), facing_down);
     }
   }
   return out;

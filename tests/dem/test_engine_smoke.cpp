@@ -247,6 +247,26 @@ void check_glued(const std::string& engine) {
   CHECK(manifest["R_n"].get<double>() == Approx(0.5).epsilon(1e-3));
 }
 
+// A random areal wall (issue 36): the engine takes its mesh of 2 triangles per grid cell, the mesh
+// carries the normal load, and the grains are dragged by its roughness.
+void check_random(const std::string& engine) {
+  const auto r = run("smoke_random", engine);
+  common_facts(r);
+  double mean = 0;
+  for (double s : column(r, "sigma_n_kPa")) mean += s;
+  mean /= double(r.ts.rows.size());
+  CHECK(std::abs(mean / (r.scene.boundary.sigma_n_Pa / 1e3) - 1.0) < 0.05);
+  const std::string stl = io::read_file(r.dir / engine / "wall.stl");
+  std::size_t facets = 0;
+  for (auto p = stl.find("facet normal"); p != std::string::npos; p = stl.find("facet normal", p + 1)) ++facets;
+  CHECK(facets == 2u * std::size_t(r.scene.wall.map->nx() * r.scene.wall.map->ny()));
+  const auto manifest = nlohmann::json::parse(io::read_file(r.dir / "manifest.json"));
+  CHECK(manifest["roughness"]["wall"]["R_q_d50"].get<double>() == Approx(0.15).epsilon(1e-9));
+  // a wall this rough drags the first grain layer along (a flat one lets it slip)
+  const auto summary = nlohmann::json::parse(io::read_file(r.dir / "summary.json"));
+  CHECK(summary["wall_slip"].get<double>() < 0.5);
+}
+
 void check_cv(const std::string& engine) {
   const auto r = run_first_mm("smoke_cv", engine);  // sigma_n has risen by 19 kPa in YADE by then
   common_facts(r);
@@ -394,6 +414,8 @@ TEST_CASE("LIGGGHTS smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][
 TEST_CASE("LIGGGHTS smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][liggghts]") { check_cyclic("liggghts"); }
 TEST_CASE("LIGGGHTS smoke glued: the glued layer carries the wall's load and drags the grains", "[dem][liggghts]") { check_glued("liggghts"); }
 TEST_CASE("LIGGGHTS smoke CV: the plate does not move and sigma_n is free", "[dem][liggghts]") { check_cv("liggghts"); }
+TEST_CASE("LIGGGHTS smoke random wall: the areal mesh carries the load and drags the grains", "[dem][liggghts]") { check_random("liggghts"); }
+TEST_CASE("YADE smoke random wall: the areal mesh carries the load and drags the grains", "[dem][yade][heavy]") { check_random("yade"); }
 TEST_CASE("YADE smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][yade]") { check_cnl("yade"); }
 TEST_CASE("YADE smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][yade]") { check_cns("yade"); }
 TEST_CASE("YADE smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][yade][heavy]") { check_cyclic("yade"); }

@@ -47,8 +47,11 @@ std::string refusal_of(const std::string& text) {
 // The scenes a key is tried in: one of them must take it (a conditional key needs its condition).
 std::vector<std::string> bases() {
   const std::string smoke = io::read_file("data/scenes/smoke.toml");
+  const std::string random = io::read_file("data/scenes/smoke_random.toml");
   return {smoke, io::read_file("data/scenes/smoke_cns.toml"), io::read_file("data/scenes/smoke_glued.toml"),
-          io::read_file("data/scenes/smoke_cyclic.toml"),
+          io::read_file("data/scenes/smoke_cyclic.toml"), random,
+          test::replaced(random, "profile = \"sawtooth\"\npitch_d50 = 2\nheight_d50 = 1.0",
+                         "profile = \"random\"\nrms_height_d50 = 0.3\ncorrelation_length_d50 = 1"),
           test::replaced(smoke, "inertial_number = 1e-3", "velocity_mm_s = 1")};
 }
 

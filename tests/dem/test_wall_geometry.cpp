@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "dem/wall_geometry.hpp"
+#include "walls/random_surface.hpp"
 
 using namespace iwb::dem;
 
@@ -43,4 +44,25 @@ TEST_CASE("STL text has one facet per triangle with unit normals", "[dem]") {
   for (auto p = stl.find("facet normal"); p != std::string::npos; p = stl.find("facet normal", p + 1)) ++facets;
   CHECK(facets == tris.size());
   CHECK(stl.rfind("endsolid w") != std::string::npos);
+}
+
+TEST_CASE("an areal random wall's mesh covers the box once, faces the grains and passes through the map's nodes",
+          "[dem]") {
+  const double L = 12e-3, W = 4e-3;
+  const auto map = std::make_shared<const walls::HeightMap>(
+      walls::random_surface({0.3e-3, 1e-3, 0.8, 3}, L, W, 0.5e-3));
+  const RoughnessProfile wall{ProfileKind::kRandom, 0.0, map->max(), map};
+  for (bool down : {false, true}) {
+    const auto tris = profile_surface(wall, L, W, 5e-3, down, 2e-3);
+    CHECK(tris.size() == 2u * std::size_t(map->nx() * map->ny()));
+    double projected = 0.0;
+    for (const auto& t : tris) {
+      const Eigen::Vector3d n = (t.b - t.a).cross(t.c - t.a);
+      CHECK((down ? -n.z() : n.z()) > 0.0);  // towards the granular layer
+      projected += 0.5 * std::abs(n.z());
+      for (const auto* v : {&t.a, &t.b, &t.c})
+        CHECK(v->z() == Approx(5e-3 + (down ? -1 : 1) * map->at(v->x(), v->y())).margin(1e-12));
+    }
+    CHECK(projected == Approx(L * W).epsilon(1e-12));
+  }
 }
