@@ -13,6 +13,7 @@
 #include "dem/shear_start.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
+#include "walls/measured_surface.hpp"
 #include "walls/random_surface.hpp"
 
 namespace iwb::dem {
@@ -35,11 +36,6 @@ using io::DeclaredTable;
 
 DeclaredTable declared_table(io::TableReader t, const std::string& name) {
   return DeclaredTable(std::move(t), scene_keys(), name);
-}
-
-std::optional<DeclaredTable> optional_table(io::TableReader& top, const std::string& name) {
-  if (auto t = top.table(name)) return declared_table(*t, name);
-  return std::nullopt;
 }
 
 std::vector<SizeClass> read_sizes(DeclaredTable& t, double d50) {
@@ -103,8 +99,28 @@ RoughnessProfile read_random_surface(DeclaredTable& t, const Scene& s) {
   return {ProfileKind::kRandom, 0.0, map->max(), map};
 }
 
+// A measured surface from a file relative to the scene's (src/walls/measured_surface.hpp).
+RoughnessProfile read_measured_surface(DeclaredTable& t, Scene& s) {
+  walls::MeasuredSurfaceSpec spec;
+  const std::string file = t.text("file");
+  spec.path = (std::filesystem::path(s.source).parent_path() / file).lexically_normal().string();
+  spec.layout = t.text("layout") == "map" ? walls::MeasuredLayout::kMap : walls::MeasuredLayout::kLine;
+  if (spec.layout == walls::MeasuredLayout::kMap) spec.spacing_m = t.number("spacing_mm") * kMm;
+  spec.offset_m = t.number("offset_mm") * kMm;
+  spec.scale = t.number("height_scale");
+  spec.resample_m = t.number("resample_d50") * s.particles.d50_m;
+  try {
+    auto m = walls::measured_surface(spec, s.length_m, s.width_m, s.particles.d50_m);
+    for (auto& w : m.warnings) s.warnings.push_back(t.where("file") + ": " + w);
+    auto map = std::make_shared<const walls::HeightMap>(std::move(m.map));
+    return {ProfileKind::kFile, 0.0, map->max(), map, spec.path, m.window_r_max_m};
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{} = \"{}\": {}", t.where("file"), file, e.what()));
+  }
+}
+
 // `extra` reads keys a table holds besides the profile (the plate's clamp) before it is finished.
-RoughnessProfile read_profile(DeclaredTable t, const Scene& s, const std::function<void(DeclaredTable&)>& extra = {}) {
+RoughnessProfile read_profile(DeclaredTable t, Scene& s, const std::function<void(DeclaredTable&)>& extra = {}) {
   const double d50 = s.particles.d50_m;
   RoughnessProfile r;
   const std::string kind = t.text("profile");
@@ -118,6 +134,8 @@ RoughnessProfile read_profile(DeclaredTable t, const Scene& s, const std::functi
     r.pitch_m = t.number("spacing_d50") * d50;
   } else if (kind == "random") {
     r = read_random_surface(t, s);
+  } else if (kind == "file") {
+    r = read_measured_surface(t, s);
   }
   if (extra) extra(t);
   t.finish();
@@ -300,6 +318,13 @@ void read_settings(io::TableReader& top, Scene& s) {
   read_optional(top, "numerics", [&](DeclaredTable& nu) { s.dt_fraction = nu.number("dt_fraction"); });
 }
 
+// A measured wall's file and what tiling did to its R_n; null for every other wall.
+nlohmann::json file_record(const RoughnessProfile& p, double d50) {
+  if (p.kind != ProfileKind::kFile) return nullptr;
+  return {{"file", p.file}, {"sha256", io::sha256_hex(io::read_file(p.file))},
+          {"R_n_untiled", p.untiled_r_max_m / d50}, {"R_n_tiled", p.normalized_roughness(d50)}};
+}
+
 nlohmann::json resolved_values(const Scene& s) {
   const double d50 = s.particles.d50_m;
   return {
@@ -312,6 +337,7 @@ nlohmann::json resolved_values(const Scene& s) {
       {"specimen", {{"length_mm", s.length_m / kMm}, {"width_mm", s.width_m / kMm},
                     {"height_mm", s.height_m / kMm}, {"consolidation_friction", s.consolidation.friction}}},
       {"wall", {{"profile", s.wall.describe()}, {"R_n", s.wall.normalized_roughness(d50)}}},
+      {"wall_file", file_record(s.wall, d50)},
       {"plate", {{"profile", s.plate.describe()}, {"R_n", s.plate.normalized_roughness(d50)},
                  {"clamp_mm", s.plate_clamp_m / kMm}}},
       {"boundary", {{"type", driver::to_string(s.boundary.kind)}, {"sigma_n_kPa", s.boundary.sigma_n_Pa / 1e3},

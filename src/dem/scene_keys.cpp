@@ -59,10 +59,27 @@ std::vector<KeyDeclaration> profile_keys(const std::string& table, const std::st
        .limit = "only with random",
        .meaning = "the random surface's stream; the scene's seed does not change the wall"},
   };
-  rows[0].choices.push_back("random");
+  const std::vector<KeyDeclaration> measured = {
+      {.table = table, .key = "file", .kind = KeyKind::kText, .need = Need::kConditional, .when = "file",
+       .meaning = "a measured surface, relative to the scene file: a line profile CSV (x_mm,z_mm) or a height map CSV "
+                  "(note below)"},
+      {.table = table, .key = "layout", .kind = KeyKind::kText, .choices = {"line", "map"}, .value = std::string("line"),
+       .limit = "only with file", .meaning = "line: x_mm,z_mm rows extruded along y; map: rows of heights in mm along x"},
+      {.table = table, .key = "spacing_mm", .unit = "mm", .range = positive(kMaxLengthD50), .need = Need::kConditional,
+       .when = "file, map", .meaning = "the height map's grid spacing in x and y"},
+      {.table = table, .key = "offset_mm", .unit = "mm", .range = non_negative(), .value = 0.0,
+       .limit = "only with file", .meaning = "where along x the box's window of the measurement starts"},
+      {.table = table, .key = "height_scale", .range = positive(1e3), .value = 1.0, .limit = "only with file",
+       .meaning = "the measured heights multiplied by this (0.5: half as rough)"},
+      {.table = table, .key = "resample_d50", .range = non_negative(1.0), .value = 0.05, .limit = "only with file",
+       .meaning = "finer samples averaged over cells of this size (no finer feature is felt; the sensor's noise goes); "
+                  "0: as measured"},
+  };
+  rows[0].choices.insert(rows[0].choices.end(), {"random", "file"});
   rows.insert(rows.end(), random.begin(), random.end());
+  rows.insert(rows.end(), measured.begin(), measured.end());
   if (!glued) return rows;
-  rows[0].choices.insert(rows[0].choices.end() - 1, "glued");
+  rows[0].choices.insert(rows[0].choices.end() - 2, "glued");
   const std::vector<KeyDeclaration> spheres = {
       {.table = table, .key = "sphere_d50", .range = positive(kMaxLengthD50), .need = Need::kConditional,
        .when = "glued", .meaning = "diameter of the glued spheres"},
@@ -129,7 +146,7 @@ io::KeyDeclarations declare() {
       {.table = "specimen", .key = "consolidation_friction", .range = non_negative(kMaxFriction), .value = 0.1,
        .meaning = "friction while consolidating (low: dense, high: loose)"},
   };
-  for (auto r : profile_keys("wall", "the wall under test (bottom, sheared in +x); glued: a square layer of fixed spheres on a flat base, moving with it; random: a periodic self-affine Gaussian surface (areal)", true)) rows.push_back(r);
+  for (auto r : profile_keys("wall", "the wall under test (bottom, sheared in +x); glued: a square layer of fixed spheres on a flat base, moving with it; random: a periodic self-affine Gaussian surface (areal); file: a measured one", true)) rows.push_back(r);
   for (auto r : profile_keys("plate", "the loading plate (top); make it rougher than the wall", false))
     rows.push_back(r);
   const io::KeyDeclarations rest = {

@@ -26,6 +26,8 @@ std::vector<std::pair<double, double>> one_pitch(const RoughnessProfile& p) {
     }
     case ProfileKind::kFlat:
     case ProfileKind::kGlued:  // the mesh is the flat base; the spheres are engine particles
+    case ProfileKind::kRandom:  // areal: meshed from the map
+    case ProfileKind::kFile:
       return {{0.0, 0.0}};
   }
   return {};

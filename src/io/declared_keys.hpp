@@ -36,18 +36,18 @@ enum class Need {
 using DefaultValue = std::variant<std::monostate, double, std::string, bool>;
 
 struct KeyDeclaration {
-  std::string table;  // "particles"; empty at the file's top level
-  std::string key;
+  std::string table = {};  // "particles"; empty at the file's top level
+  std::string key = {};
   KeyKind kind = KeyKind::kNumber;
-  std::string unit;  // "mm", "kPa"; empty for a ratio or a name
+  std::string unit = {};  // "mm", "kPa"; empty for a ratio or a name
   Range range = {};  // numbers: the allowed values (whole numbers: [1, 1e8])
   std::vector<std::string> choices = {};
   Need need = Need::kOptional;
   DefaultValue value = {};   // the default when the key is absent (monostate: none)
-  std::string default_note;  // a default derived from other keys, said in words
-  std::string when;          // kConditional: "CNS", "one of displacement_mm, amplitude_mm"
-  std::string limit;         // a bound set by other keys, checked by the reader where it is known
-  std::string meaning;       // one line
+  std::string default_note = {};  // a default derived from other keys, said in words
+  std::string when = {};          // kConditional: "CNS", "one of displacement_mm, amplitude_mm"
+  std::string limit = {};         // a bound set by other keys, checked by the reader where it is known
+  std::string meaning = {};       // one line
 
   std::string dotted() const { return table.empty() ? key : table + "." + key; }
   std::string allowed() const;       // "(0, 100] mm", "\"cdt\", \"epsd2\"", "true or false"

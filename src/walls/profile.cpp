@@ -35,7 +35,7 @@ double sampled_r_max(const RoughnessProfile& p, double period, int samples, doub
 
 double RoughnessProfile::surface_at(double x, double y) const {
   if (kind == ProfileKind::kFlat) return 0.0;
-  if (kind == ProfileKind::kRandom) return map->at(x, y);
+  if (areal()) return map->at(x, y);
   const double u = x - pitch_m * std::floor(x / pitch_m);  // position within one period
   switch (kind) {
     case ProfileKind::kSawtooth:
@@ -53,6 +53,7 @@ double RoughnessProfile::surface_at(double x, double y) const {
     }
     case ProfileKind::kFlat:
     case ProfileKind::kRandom:
+    case ProfileKind::kFile:
       break;
   }
   return 0.0;
@@ -61,7 +62,7 @@ double RoughnessProfile::surface_at(double x, double y) const {
 double RoughnessProfile::normalized_roughness(double d50) const {
   if (kind == ProfileKind::kFlat) return 0.0;
   if (kind == ProfileKind::kGlued) return sampled_r_max(*this, pitch_m, 4000, 0.0, 1, d50) / d50;
-  if (kind == ProfileKind::kRandom) {  // 50 samples a d50 along every row of the map
+  if (areal()) {  // 50 samples a d50 along every row of the map
     const int samples = int(std::ceil(50.0 * map->length() / d50));
     return sampled_r_max(*this, map->length(), samples, map->width(), map->ny(), d50) / d50;
   }
@@ -72,7 +73,7 @@ double RoughnessProfile::normalized_roughness(double d50) const {
 }
 
 double RoughnessProfile::mean_height_m() const {
-  if (kind == ProfileKind::kRandom) return map->mean();
+  if (areal()) return map->mean();
   if (kind != ProfileKind::kGlued) return 0.5 * height_m;
   constexpr int kSamples = 2000;
   double sum = 0.0;
@@ -81,7 +82,7 @@ double RoughnessProfile::mean_height_m() const {
 }
 
 double RoughnessProfile::max_height_m() const {
-  if (kind == ProfileKind::kRandom) return map->max();
+  if (areal()) return map->max();
   return height_m;  // line profiles: R_max; glued: the sphere diameter
 }
 
@@ -91,6 +92,8 @@ std::string RoughnessProfile::describe() const {
     return fmt::format("glued spheres of {:g} mm at {:g} mm spacing", height_m / kMm, pitch_m / kMm);
   if (kind == ProfileKind::kRandom)
     return fmt::format("random self-affine, R_max {:.4g} mm over a {} x {} grid", height_m / kMm, map->nx(), map->ny());
+  if (kind == ProfileKind::kFile)
+    return fmt::format("measured ({}), R_max {:.4g} mm over a {} x {} grid", file, height_m / kMm, map->nx(), map->ny());
   return fmt::format("{} pitch {:g} mm, R_max {:g} mm", to_string(kind), pitch_m / kMm, height_m / kMm);
 }
 
@@ -101,6 +104,7 @@ const char* to_string(ProfileKind k) {
     case ProfileKind::kSinusoid: return "sinusoid";
     case ProfileKind::kGlued: return "glued";
     case ProfileKind::kRandom: return "random";
+    case ProfileKind::kFile: return "file";
   }
   return "?";
 }

@@ -1,7 +1,7 @@
 #pragma once
 // A wall's rough surface (../shared/spec/DEM.md): line profiles along x with ridges along y
 // (sawtooth, sinusoid; R_max = height, period = pitch), a square layer of glued spheres of diameter
-// `height_m` at centre spacing `pitch_m` on a flat base, or an areal height map (random).
+// `height_m` at centre spacing `pitch_m` on a flat base, or an areal height map (random, file).
 #include <memory>
 #include <string>
 
@@ -9,13 +9,15 @@
 
 namespace iwb::walls {
 
-enum class ProfileKind { kFlat, kSawtooth, kSinusoid, kGlued, kRandom };
+enum class ProfileKind { kFlat, kSawtooth, kSinusoid, kGlued, kRandom, kFile };
 
 struct RoughnessProfile {
   ProfileKind kind = ProfileKind::kFlat;
   double pitch_m = 0.0;
   double height_m = 0.0;
-  std::shared_ptr<const HeightMap> map = nullptr;  // kRandom: the surface, its minimum at 0
+  std::shared_ptr<const HeightMap> map = nullptr;  // kRandom, kFile: the surface, its minimum at 0
+  std::string file = {};  // kFile: where it was read
+  double untiled_r_max_m = 0.0;  // kFile: the measurement's largest R_max over d50 before tiling
 
   // Height of the surface above the base plane at (x, y); line profiles and glued walls do not
   // depend on y (glued: along a row of centres).

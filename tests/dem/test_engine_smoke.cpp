@@ -247,10 +247,10 @@ void check_glued(const std::string& engine) {
   CHECK(manifest["R_n"].get<double>() == Approx(0.5).epsilon(1e-3));
 }
 
-// A random areal wall (issue 36): the engine takes its mesh of 2 triangles per grid cell, the mesh
-// carries the normal load, and the grains are dragged by its roughness.
-void check_random(const std::string& engine) {
-  const auto r = run("smoke_random", engine);
+// An areal wall (issue 36): the engine takes its mesh of 2 triangles per grid cell and the mesh
+// carries the normal load.
+SmokeRun check_areal_wall(const std::string& scene, const std::string& engine) {
+  auto r = run(scene, engine);
   common_facts(r);
   double mean = 0;
   for (double s : column(r, "sigma_n_kPa")) mean += s;
@@ -260,11 +260,26 @@ void check_random(const std::string& engine) {
   std::size_t facets = 0;
   for (auto p = stl.find("facet normal"); p != std::string::npos; p = stl.find("facet normal", p + 1)) ++facets;
   CHECK(facets == 2u * std::size_t(r.scene.wall.map->nx() * r.scene.wall.map->ny()));
+  return r;
+}
+
+// A random wall: its RMS height as asked, and rough enough to drag the grains along.
+void check_random(const std::string& engine) {
+  const auto r = check_areal_wall("smoke_random", engine);
   const auto manifest = nlohmann::json::parse(io::read_file(r.dir / "manifest.json"));
   CHECK(manifest["roughness"]["wall"]["R_q_d50"].get<double>() == Approx(0.15).epsilon(1e-9));
   // a wall this rough drags the first grain layer along (a flat one lets it slip)
   const auto summary = nlohmann::json::parse(io::read_file(r.dir / "summary.json"));
   CHECK(summary["wall_slip"].get<double>() < 0.5);
+}
+
+// A measured wall: the manifest records the file, its hash and what tiling did to R_n.
+void check_file(const std::string& engine) {
+  const auto r = check_areal_wall("smoke_file", engine);
+  const auto manifest = nlohmann::json::parse(io::read_file(r.dir / "manifest.json"));
+  const auto& record = manifest["scene"]["resolved"]["wall_file"];
+  CHECK(record["sha256"].get<std::string>() == io::sha256_hex(io::read_file("data/walls/sandblasted_like.csv")));
+  CHECK(record["R_n_untiled"].get<double>() == Approx(record["R_n_tiled"].get<double>()).epsilon(0.05));
 }
 
 void check_cv(const std::string& engine) {
@@ -416,6 +431,7 @@ TEST_CASE("LIGGGHTS smoke glued: the glued layer carries the wall's load and dra
 TEST_CASE("LIGGGHTS smoke CV: the plate does not move and sigma_n is free", "[dem][liggghts]") { check_cv("liggghts"); }
 TEST_CASE("LIGGGHTS smoke random wall: the areal mesh carries the load and drags the grains", "[dem][liggghts]") { check_random("liggghts"); }
 TEST_CASE("YADE smoke random wall: the areal mesh carries the load and drags the grains", "[dem][yade][heavy]") { check_random("yade"); }
+TEST_CASE("LIGGGHTS smoke file wall: a measured profile's mesh carries the load", "[dem][liggghts]") { check_file("liggghts"); }
 TEST_CASE("YADE smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][yade]") { check_cnl("yade"); }
 TEST_CASE("YADE smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][yade]") { check_cns("yade"); }
 TEST_CASE("YADE smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][yade][heavy]") { check_cyclic("yade"); }

@@ -2,6 +2,8 @@
 // enforces every declared range, and every declared key is one the parser takes.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -44,15 +46,34 @@ std::string refusal_of(const std::string& text) {
   return "(no error)";
 }
 
+// A smoke scene whose plate (its first sawtooth) is a file wall with these keys.
+std::string plate_from(const std::string& scene, const std::string& keys) {
+  return test::replaced(scene, "profile = \"sawtooth\"\npitch_d50 = 2\nheight_d50 = 1.0", "profile = \"file\"\n" + keys);
+}
+
 // The scenes a key is tried in: one of them must take it (a conditional key needs its condition).
 std::vector<std::string> bases() {
   const std::string smoke = io::read_file("data/scenes/smoke.toml");
   const std::string random = io::read_file("data/scenes/smoke_random.toml");
+  // file walls by absolute paths: the texts are parsed as "scene.toml" in the working directory
+  const std::string file = test::replaced(io::read_file("data/scenes/smoke_file.toml"), "../walls/sandblasted_like.csv",
+                                          std::filesystem::absolute("data/walls/sandblasted_like.csv").string());
+  const auto map = std::filesystem::temp_directory_path() / "iwb_scene_keys_map.csv";
+  {
+    std::ofstream out(map);
+    for (int j = 0; j <= 40; ++j)
+      for (int i = 0; i <= 120; ++i) out << (i ? "," : "") << 0.1 * std::sin(0.3 * i) * std::cos(0.2 * j) << (i == 120 ? "\n" : "");
+  }
   return {smoke, io::read_file("data/scenes/smoke_cns.toml"), io::read_file("data/scenes/smoke_glued.toml"),
           io::read_file("data/scenes/smoke_cyclic.toml"), random,
           test::replaced(random, "profile = \"sawtooth\"\npitch_d50 = 2\nheight_d50 = 1.0",
                          "profile = \"random\"\nrms_height_d50 = 0.3\ncorrelation_length_d50 = 1"),
-          test::replaced(smoke, "inertial_number = 1e-3", "velocity_mm_s = 1")};
+          test::replaced(smoke, "inertial_number = 1e-3", "velocity_mm_s = 1"), file,
+          test::replaced(test::replaced(file, std::filesystem::absolute("data/walls/sandblasted_like.csv").string(),
+                                        map.string()),
+                         "height_scale = 2.5", "layout = \"map\"\nspacing_mm = 0.2"),
+          plate_from(file, "file = \"" + std::filesystem::absolute("data/walls/sandblasted_like.csv").string() + "\""),
+          plate_from(file, "file = \"" + map.string() + "\"\nlayout = \"map\"\nspacing_mm = 0.2")};
 }
 
 // A value the row admits: the scene's own where it has one, else the default, else one inside the range.
@@ -76,7 +97,8 @@ std::unique_ptr<toml::node> admitted(const std::string& scene, const KeyDeclarat
     case KeyKind::kWholeNumber: return std::make_unique<toml::value<int64_t>>(2);
     case KeyKind::kFlag: return std::make_unique<toml::value<bool>>(true);
     case KeyKind::kTolerance: return std::make_unique<toml::value<double>>(0.1);
-    case KeyKind::kText: return std::make_unique<toml::value<std::string>>(row.choices.at(0));
+    case KeyKind::kText:
+      return std::make_unique<toml::value<std::string>>(row.choices.empty() ? "any text" : row.choices.front());
     case KeyKind::kNumberList: return nullptr;  // tried only where a scene has one
     case KeyKind::kNumber: {
       const double v = row.range.admits(1.0) ? 1.0 : 0.5 * (row.range.lower + row.range.upper);
