@@ -44,6 +44,11 @@ double recorded_seconds(const fs::path& dir) {
   return s;
 }
 
+// The sha256 that decides reuse of a job's run (dem::scene_sha256: its text and any wall file it names).
+std::string job_scene_sha256(const Job& job, const fs::path& out) {
+  return dem::scene_sha256(dem::parse_scene(job.scene_text, (out / scene_path(job)).string()), job.scene_text);
+}
+
 json initial_record(const SweepSpec& spec, const std::vector<Job>& jobs, const PoolOptions& opt) {
   json r = {{"kind", "dem-sweep"},
             {"sweep", spec.file.string()},
@@ -60,7 +65,7 @@ json initial_record(const SweepSpec& spec, const std::vector<Job>& jobs, const P
     for (const auto& [key, value] : job.values) values[key] = io::to_toml(value);
     r["jobs"].push_back({{"name", job.name}, {"engine", job.engine}, {"values", values},
                          {"scene", scene_path(job)}, {"run", run_path(job)},
-                         {"scene_sha256", io::sha256_hex(job.scene_text)}, {"status", "pending"}});
+                         {"scene_sha256", job_scene_sha256(job, opt.out)}, {"status", "pending"}});
   }
   return r;
 }
@@ -97,7 +102,7 @@ class Pool {
     std::vector<std::size_t> queue;
     for (std::size_t i = 0; i < jobs_.size(); ++i) {
       const fs::path dir = opt_.out / run_path(jobs_[i]);
-      if (how_to_start(dir, io::sha256_hex(jobs_[i].scene_text)) != JobStart::kSkip) {
+      if (how_to_start(dir, job_scene_sha256(jobs_[i], opt_.out)) != JobStart::kSkip) {
         queue.push_back(i);
         continue;
       }
@@ -127,7 +132,7 @@ class Pool {
     const fs::path dir = opt_.out / run_path(job);
     JobStart how = JobStart::kFresh;
     try {
-      how = how_to_start(dir, io::sha256_hex(job.scene_text));
+      how = how_to_start(dir, job_scene_sha256(job, opt_.out));
       const auto engine = dem::make_engine(job.engine);
       const auto scene = dem::parse_scene(job.scene_text, (opt_.out / scene_path(job)).string());
       dem::RunOptions ro{dir, opt_.processes, how == JobStart::kResume, how == JobStart::kFresh,

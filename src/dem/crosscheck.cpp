@@ -25,7 +25,7 @@ bool reusable_seed_run(const fs::path& dir, const Scene& scene, const std::strin
   if (!fs::exists(manifest)) return false;
   const auto m = io::read_json_file(manifest);
   return m.value("status", "") == "complete" &&
-         m.value("/scene/sha256"_json_pointer, std::string()) == io::sha256_hex(scene_text) &&
+         m.value("/scene/sha256"_json_pointer, std::string()) == scene_sha256(scene, scene_text) &&
          m.value("numerics", nlohmann::json()) == engine.numerics(scene);
 }
 

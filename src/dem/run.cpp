@@ -26,7 +26,7 @@ nlohmann::json fresh_manifest(const Scene& scene, const std::string& text, Engin
           {"workbench", {{"name", "iwb"}, {"version", IWB_VERSION}}},
           {"engine", {{"name", engine.name()}, {"version", engine.version()}, {"processes", opt.processes}}},
           {"command_line", opt.command_line},
-          {"scene", {{"source", scene.source}, {"sha256", io::sha256_hex(text)}, {"text", text},
+          {"scene", {{"source", scene.source}, {"sha256", scene_sha256(scene, text)}, {"text", text},
                      {"resolved", scene.resolved}}},
           {"seed", scene.seed},
           {"numerics", engine.numerics(scene)},
@@ -121,7 +121,7 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
                                    const RunOptions& opt, const nlohmann::json& fresh, RunOutcome& out,
                                    const std::string& sha_key) {
   auto& m = out.manifest;
-  const std::string sha = io::sha256_hex(text);
+  const std::string sha = scene_sha256(scene, text);
   if (opt.resume && !fs::exists(opt.out / "manifest.json"))  // refused before the lock creates anything
     throw InputError(fmt::format("{}: nothing to resume (no manifest.json)", opt.out.string()));
   auto lock = io::DirectoryLock::take(opt.out, opt.command_line);

@@ -448,6 +448,13 @@ Scene parse_scene(const std::string& text, const std::string& source) {
   return s;
 }
 
+std::string scene_sha256(const Scene& s, const std::string& text) {
+  std::string files;
+  for (const auto* p : {&s.wall, &s.plate})
+    if (p->kind == ProfileKind::kFile) files += "\n" + io::sha256_hex(io::read_file(p->file));
+  return io::sha256_hex(text + files);
+}
+
 Scene load_scene(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(fmt::format("{}: no such file", path));
   return parse_scene(io::read_file(path), path);

@@ -175,4 +175,9 @@ Scene load_scene(const std::string& path);
 const std::map<std::string, std::string>& embedded_scenes();
 Scene parse_scene(const std::string& text, const std::string& source);
 
+// The sha256 that decides whether a complete run is this scene's (resume, sweeps, crosscheck): of
+// the text, followed by the sha256 of every wall file it names, so that a changed measurement is
+// another scene. sha256(text) for a scene that names no file.
+std::string scene_sha256(const Scene& scene, const std::string& text);
+
 }  // namespace iwb::dem

@@ -1,9 +1,11 @@
 #include "dem/scene_content.hpp"
 
+#include <filesystem>
 #include <fmt/core.h>
 
 #include <algorithm>
 
+#include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
 
 namespace iwb::dem {
@@ -60,6 +62,13 @@ void differences(const json* mine, const json* theirs, const std::string& key, s
 json scene_content(const std::string& text, const std::string& source) {
   json content = to_json(io::parse_toml_text(text, source));
   for (const char* key : kNotRunKeys) content.erase(key);
+  // A wall file counts by what it holds, not by where it lies.
+  for (const char* table : {"wall", "plate"}) {
+    auto* t = content.contains(table) && content[table].is_object() ? &content[table] : nullptr;
+    if (t == nullptr || !t->contains("file") || !(*t)["file"].is_string()) continue;
+    const auto path = std::filesystem::path(source).parent_path() / (*t)["file"].get<std::string>();
+    if (std::filesystem::is_regular_file(path)) (*t)["file"] = "sha256:" + io::sha256_hex(io::read_file(path));
+  }
   return content;
 }
 

@@ -3,6 +3,9 @@
 // requirements do not count; every value that reaches the engine does, and is named.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+
+#include "dem/scene.hpp"
 #include "dem/scene_content.hpp"
 #include "io/run_directory.hpp"
 
@@ -59,4 +62,28 @@ TEST_CASE("the committed default tradeoff records the content of data/scenes/def
   const auto t = nlohmann::json::parse(iwb::io::read_file("data/tradeoff/default/tradeoff.json"));
   const auto content = scene_content(iwb::io::read_file("data/scenes/default.toml"), "default.toml");
   CHECK(content_differences(content, t.at("dem_scene")).empty());
+}
+
+TEST_CASE("a scene naming a wall file is another scene when the file's heights change but not when it moves", "[dem]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "iwb_scene_file_identity";
+  fs::create_directories(dir / "elsewhere");
+  const std::string profile = iwb::io::read_file("data/walls/sandblasted_like.csv");
+  iwb::io::write_atomically(dir / "wall.csv", profile);
+  iwb::io::write_atomically(dir / "elsewhere" / "wall.csv", profile);
+  std::string text = iwb::io::read_file("data/scenes/smoke_file.toml");
+  text.replace(text.find("../walls/sandblasted_like.csv"), 29, "wall.csv");
+  const auto here = (dir / "scene.toml").string(), there = (dir / "elsewhere" / "scene.toml").string();
+  const auto sha = iwb::dem::scene_sha256(iwb::dem::parse_scene(text, here), text);
+  CHECK(sha == iwb::dem::scene_sha256(iwb::dem::parse_scene(text, there), text));
+  CHECK(content_differences(scene_content(text, here), scene_content(text, there)).empty());
+  // one height changed by 1 um
+  std::string changed = profile;
+  changed.replace(changed.find("\n0.015,") + 7, 8, "-0.00900");
+  iwb::io::write_atomically(dir / "elsewhere" / "wall.csv", changed);
+  CHECK(sha != iwb::dem::scene_sha256(iwb::dem::parse_scene(text, there), text));
+  CHECK(content_differences(scene_content(text, here), scene_content(text, there)).size() == 1);
+  // a scene naming no file: the text's own sha256, as before wall files
+  const std::string smoke = iwb::io::read_file("data/scenes/smoke.toml");
+  CHECK(iwb::dem::scene_sha256(iwb::dem::parse_scene(smoke, "smoke.toml"), smoke) == iwb::io::sha256_hex(smoke));
 }

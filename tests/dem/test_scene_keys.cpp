@@ -71,7 +71,7 @@ std::vector<std::string> bases() {
           test::replaced(smoke, "inertial_number = 1e-3", "velocity_mm_s = 1"), file,
           test::replaced(test::replaced(file, std::filesystem::absolute("data/walls/sandblasted_like.csv").string(),
                                         map.string()),
-                         "height_scale = 2.5", "layout = \"map\"\nspacing_mm = 0.2"),
+                         "height_scale = 8", "layout = \"map\"\nspacing_mm = 0.2"),
           plate_from(file, "file = \"" + std::filesystem::absolute("data/walls/sandblasted_like.csv").string() + "\""),
           plate_from(file, "file = \"" + map.string() + "\"\nlayout = \"map\"\nspacing_mm = 0.2")};
 }
