@@ -1,11 +1,13 @@
 #include "campaign/jobs.hpp"
 
 #include <cctype>
+#include <filesystem>
 #include <fmt/core.h>
 #include <map>
 
 #include "common/errors.hpp"
 #include "dem/scene.hpp"
+#include "dem/scene_keys.hpp"
 #include "io/toml_reader.hpp"
 
 namespace iwb::campaign {
@@ -90,12 +92,30 @@ void drop_tables_of_profiles(toml::table& root, const std::vector<Setting>& valu
       root.erase(key.substr(0, key.size() - kProfile.size()));
 }
 
+namespace fs = std::filesystem;
+
+// Files a scene names (its declared path keys) made absolute: a job's scene is written elsewhere.
+// (Such a job's text, and so its reuse, then depends on where the file lies; the file's content
+// counts too: dem::scene_sha256.)
+// Run before the sweep's own values, for the base scene's (relative to the scene), and after them,
+// for the sweep's (relative to the sweep file); an absolute path stays.
+void absolute_paths(toml::table& root, const fs::path& folder) {
+  for (const auto& dotted : io::path_keys(dem::scene_keys())) {
+    const auto dot = dotted.find('.');
+    auto* value = root.at_path(dotted).as_string();
+    if (dot == std::string::npos || value == nullptr || fs::path(value->get()).is_absolute()) continue;
+    value->get() = fs::absolute(folder / value->get()).lexically_normal().string();
+  }
+}
+
 std::string job_scene(const SweepSpec& spec, const Job& job) {
   const std::string where = fmt::format("{}: job {}", spec.file.string(), job.name);
   auto root = io::parse_toml_text(spec.scene_text, spec.scene_file.string());
+  absolute_paths(root, spec.scene_file.parent_path());
   for (const auto& [key, value] : spec.set) io::set_dotted(root, key, value, where);
   drop_tables_of_profiles(root, job.values);
   for (const auto& [key, value] : job.values) io::set_dotted(root, key, value, where);
+  absolute_paths(root, spec.file.parent_path());
   // Comments of the base do not survive re-serialisation; this header says where the text came from.
   // File names only: the text's sha256 decides reuse and must not depend on the working directory.
   return fmt::format("# {} with {}{}{} (iwb sweep {}, job {})\n", spec.scene_file.filename().string(), describe(spec.set),

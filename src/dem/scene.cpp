@@ -102,7 +102,7 @@ RoughnessProfile read_random_surface(DeclaredTable& t, const Scene& s) {
 // A measured surface from a file relative to the scene's (src/walls/measured_surface.hpp).
 RoughnessProfile read_measured_surface(DeclaredTable& t, Scene& s) {
   walls::MeasuredSurfaceSpec spec;
-  const std::string file = t.text("file");
+  const std::string file = t.path("file");
   spec.path = (std::filesystem::path(s.source).parent_path() / file).lexically_normal().string();
   spec.layout = t.text("layout") == "map" ? walls::MeasuredLayout::kMap : walls::MeasuredLayout::kLine;
   if (spec.layout == walls::MeasuredLayout::kMap) spec.spacing_m = t.number("spacing_mm") * kMm;

@@ -60,8 +60,8 @@ std::vector<KeyDeclaration> profile_keys(const std::string& table, const std::st
        .meaning = "the random surface's stream; the scene's seed does not change the wall"},
   };
   const std::vector<KeyDeclaration> measured = {
-      {.table = table, .key = "file", .kind = KeyKind::kText, .need = Need::kConditional, .when = "file",
-       .meaning = "a measured surface, relative to the scene file: a line profile CSV (x_mm,z_mm) or a height map CSV "
+      {.table = table, .key = "file", .kind = KeyKind::kPath, .need = Need::kConditional, .when = "file",
+       .meaning = "a measured surface: a line profile CSV (x_mm,z_mm) or a height map CSV "
                   "(note below)"},
       {.table = table, .key = "layout", .kind = KeyKind::kText, .choices = {"line", "map"}, .value = std::string("line"),
        .limit = "only with file", .meaning = "line: x_mm,z_mm rows extruded along y; map: rows of heights in mm along x"},

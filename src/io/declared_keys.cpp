@@ -33,6 +33,7 @@ const char* kind_name(KeyKind k) {
     case KeyKind::kFlag: return "a flag";
     case KeyKind::kNumberList: return "a list of numbers";
     case KeyKind::kTolerance: return "a tolerance";
+    case KeyKind::kPath: return "a path";
   }
   return "?";
 }
@@ -55,6 +56,7 @@ std::string KeyDeclaration::allowed() const {
     case KeyKind::kFlag: s = "true or false"; break;
     case KeyKind::kNumberList: s = "array of numbers"; break;
     case KeyKind::kTolerance: s = "(0, 1] or \"not needed\""; break;
+    case KeyKind::kPath: s = "a file, relative to the scene"; break;
   }
   return limit.empty() ? s : s + "; " + limit;
 }
@@ -75,6 +77,13 @@ const KeyDeclaration& declared(const KeyDeclarations& rows, const std::string& t
   if (it == rows.end())
     throw std::logic_error(fmt::format("key '{}{}' is read but not declared", table.empty() ? "" : table + ".", key));
   return *it;
+}
+
+std::vector<std::string> path_keys(const KeyDeclarations& rows) {
+  std::vector<std::string> out;
+  for (const auto& r : rows)
+    if (r.kind == KeyKind::kPath) out.push_back(r.dotted());
+  return out;
 }
 
 std::string markdown_table(const KeyDeclarations& rows) {
@@ -153,6 +162,11 @@ std::string DeclaredTable::text(const std::string& key) {
     throw InputError(fmt::format("{} = \"{}\"; allowed {}{}", reader_.where(key), v, quoted_list(r.choices),
                                  r.limit.empty() ? "" : " (" + r.limit + ")"));
   return v;
+}
+
+std::string DeclaredTable::path(const std::string& key) {
+  row(key, KeyKind::kPath);
+  return reader_.text(key);
 }
 
 bool DeclaredTable::flag(const std::string& key) {

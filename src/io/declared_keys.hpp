@@ -24,6 +24,7 @@ enum class KeyKind {
   kFlag,        // true or false
   kNumberList,  // an array of finite numbers
   kTolerance,   // a relative tolerance in (0, 1], or "not needed" (io::read_tolerance)
+  kPath,        // a file, relative to the file that names it
 };
 
 // When a key must be given.
@@ -59,6 +60,9 @@ using KeyDeclarations = std::vector<KeyDeclaration>;
 // The declared row of table.key; std::logic_error when the code asks for a key it never declared.
 const KeyDeclaration& declared(const KeyDeclarations& rows, const std::string& table, const std::string& key);
 
+// The dotted keys of the rows that name files (a campaign rewrites them when it moves a file's text).
+std::vector<std::string> path_keys(const KeyDeclarations& rows);
+
 // The rows as a Markdown table (key | allowed | default | meaning), in declaration order.
 std::string markdown_table(const KeyDeclarations& rows);
 // The rows as JSON: one object per key (table, key, allowed, default, need, meaning, and the range's
@@ -81,6 +85,7 @@ class DeclaredTable {
   int whole_number(const std::string& key);
   std::optional<int> optional_whole_number(const std::string& key);
   std::string text(const std::string& key);  // checked against the declared choices
+  std::string path(const std::string& key);  // as written: the caller resolves it
   bool flag(const std::string& key);
   std::vector<double> numbers(const std::string& key);  // empty when absent
 

@@ -170,3 +170,24 @@ TEST_CASE("sweep: [slurm] time takes Slurm's formats only, anything else is refu
                     Catch::Contains("key 'slurm.time' = \"banana\" is not a Slurm time; allowed MM, MM:SS, HH:MM:SS"));
   CHECK(campaign::load_sweep(test::write_sweep(dir, "[slurm]\ntime = \"1-00:00:00\"\n")).slurm_time == "1-00:00:00");
 }
+
+TEST_CASE("sweep: a wall file is found from a job's scene written elsewhere: the base's relative to the scene, "
+          "the sweep's relative to the sweep file", "[campaign]") {
+  const fs::path dir = fs::temp_directory_path() / "iwb_sweep_wall_files";
+  fs::create_directories(dir);
+  fs::copy_file("data/walls/sandblasted_like.csv", dir / "mine.csv", fs::copy_options::overwrite_existing);
+  const std::string head = R"(scene = ")" + fs::absolute("data/scenes/smoke_file.toml").string() + R"("
+engines = ["liggghts"]
+[[axis]]
+)";
+  const auto scene_of = [&](const std::string& axis) {
+    const auto jobs = campaign::expand_jobs(campaign::parse_sweep(head + axis, dir / "walls.toml"));
+    REQUIRE(jobs.size() == 1);
+    // parsed where no relative path would resolve: the job's scene holds an absolute path
+    return dem::parse_scene(jobs[0].scene_text, "/nonexistent/scenes/job.toml");
+  };
+  CHECK(scene_of("key = \"wall.height_scale\"\nvalues = [4]\n").wall.file ==
+        fs::absolute("data/walls/sandblasted_like.csv").lexically_normal().string());
+  CHECK(scene_of("key = \"wall\"\nvalues = [{ profile = \"file\", file = \"mine.csv\", height_scale = 4 }]\n")
+            .wall.file == (dir / "mine.csv").lexically_normal().string());
+}

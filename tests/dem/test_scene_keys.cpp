@@ -99,6 +99,7 @@ std::unique_ptr<toml::node> admitted(const std::string& scene, const KeyDeclarat
     case KeyKind::kTolerance: return std::make_unique<toml::value<double>>(0.1);
     case KeyKind::kText:
       return std::make_unique<toml::value<std::string>>(row.choices.empty() ? "any text" : row.choices.front());
+    case KeyKind::kPath: return std::make_unique<toml::value<std::string>>("no such file.csv");
     case KeyKind::kNumberList: return nullptr;  // tried only where a scene has one
     case KeyKind::kNumber: {
       const double v = row.range.admits(1.0) ? 1.0 : 0.5 * (row.range.lower + row.range.upper);
@@ -131,6 +132,7 @@ std::vector<std::unique_ptr<toml::node>> refused_values(const KeyDeclaration& ro
       break;
     case KeyKind::kWholeNumber: out.push_back(std::make_unique<toml::value<int64_t>>(0)); break;
     case KeyKind::kTolerance: number(0.0), number(2.0); break;
+    case KeyKind::kPath:
     case KeyKind::kText:  // free text refuses only what is not text
       if (row.choices.empty()) out.push_back(std::make_unique<toml::value<int64_t>>(1));
       else out.push_back(std::make_unique<toml::value<std::string>>("no such choice"));
