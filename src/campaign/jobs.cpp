@@ -1,5 +1,6 @@
 #include "campaign/jobs.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fmt/core.h>
@@ -43,7 +44,19 @@ std::string name_part(const io::TomlScalar& value) {
 }
 
 // One value per axis, in axis order.
+namespace fs = std::filesystem;
 using Combination = std::vector<const AxisValue*>;
+
+bool is_path_key(const std::string& dotted) {
+  const auto keys = io::path_keys(dem::scene_keys());
+  return std::find(keys.begin(), keys.end(), dotted) != keys.end();
+}
+
+// A file names a job by its stem (file-sandblasted_like-6.3, not file-..-walls-sandblasted-like.csv-6.3).
+std::string file_stem(const io::TomlScalar& value) {
+  const auto* text = std::get_if<std::string>(&value);
+  return text != nullptr ? fs::path(*text).stem().string() : io::to_toml(value);
+}
 
 // label + value per axis, joined by '_'; a table value reads as its values joined by '-' (cns-50).
 std::string job_name(const std::string& engine, bool several_engines, const Combination& combination,
@@ -54,7 +67,8 @@ std::string job_name(const std::string& engine, bool several_engines, const Comb
     name += axes[i].label;
     for (std::size_t k = 0; k < combination[i]->size(); ++k) {
       if (k > 0) name += '-';
-      name += name_part((*combination[i])[k].second);
+      const auto& [key, value] = (*combination[i])[k];
+      name += name_part(is_path_key(key) ? io::TomlScalar(file_stem(value)) : value);
     }
   }
   return name.empty() ? "base" : name;
@@ -91,8 +105,6 @@ void drop_tables_of_profiles(toml::table& root, const std::vector<Setting>& valu
     if (key.size() > kProfile.size() && key.ends_with(kProfile) && key.find('.') == key.size() - kProfile.size())
       root.erase(key.substr(0, key.size() - kProfile.size()));
 }
-
-namespace fs = std::filesystem;
 
 // Files a scene names (its declared path keys) made absolute: a job's scene is written elsewhere.
 // (Such a job's text, and so its reuse, then depends on where the file lies; the file's content

@@ -190,4 +190,11 @@ engines = ["liggghts"]
         fs::absolute("data/walls/sandblasted_like.csv").lexically_normal().string());
   CHECK(scene_of("key = \"wall\"\nvalues = [{ profile = \"file\", file = \"mine.csv\", height_scale = 4 }]\n")
             .wall.file == (dir / "mine.csv").lexically_normal().string());
+  // a file names its job by its stem
+  fs::create_directories(dir / "x");
+  fs::copy_file(dir / "mine.csv", dir / "x" / "mine.csv", fs::copy_options::overwrite_existing);
+  const auto named = campaign::expand_jobs(campaign::parse_sweep(
+      head + "key = \"wall\"\nlabel = \"\"\nvalues = [{ profile = \"file\", file = \"../x/mine.csv\" }]\n",
+      dir / "sub" / "walls.toml"));
+  CHECK(named.front().name == "file-mine");
 }
