@@ -160,6 +160,20 @@ void chosen_roughness(const CompareOptions& opt, models::Roughness& r) {
 }
 }  // namespace
 
+// The cyclic quantities of the runs the seed statistics rest on (seed_scatter's: the compared run
+// first unless it was left out), as the monotonic verdicts'.
+std::vector<cycles::CyclicQuantities> cycles_of_seeds(const DemRun& dem, const std::vector<DemRun>& seeds,
+                                                      const SeedScatter& scatter, const cycles::Program& program) {
+  const auto admitted = [&](const DemRun& r) {
+    return std::find(scatter.runs.begin(), scatter.runs.end(), r.dir.string()) != scatter.runs.end();
+  };
+  std::vector<cycles::CyclicQuantities> out;
+  if (admitted(dem)) out.push_back(dem_cycles(dem, program));
+  for (const auto& s : seeds)
+    if (admitted(s)) out.push_back(dem_cycles(s, program));
+  return out;
+}
+
 models::ModelInputs validated_parameters(const std::string& model, const std::string& params) {
   models::ModelInputs in;
   in.tables = io::load_parameter_file(params);
@@ -196,6 +210,7 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
   json variants = json::array();
   const auto program = cyclic_program(dem);
   const auto dem_cyclic = program ? std::optional(dem_cycles(dem, *program)) : std::nullopt;
+  const auto seed_cycles = program ? cycles_of_seeds(dem, seeds, scatter, *program) : std::vector<cycles::CyclicQuantities>{};
   for (const auto& v : candidates) {
     replays.push_back(replay(dem, v));
     variants.push_back({{"index", replays.size() - 1},
@@ -208,7 +223,7 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
     if (dem_cyclic) {  // issue 34: the cycles judged on the quantities of src/cycles/
       const auto model_cyclic = replay_cycles(dem, replays.back(), *program);
       variants.back()["cyclic"] = {{"model", cycles::to_json(model_cyclic)},
-                                   {"verdicts", to_json(judge_cycles(dem, *dem_cyclic, model_cyclic))}};
+                                   {"verdicts", to_json(judge_cycles(dem, seed_cycles, model_cyclic))}};
     }
   }
   const Feasibility scan = scan_feasibility(dem, scatter, predicted, tolerances, kScanPoints, bounds);

@@ -1,5 +1,7 @@
 #include "comparison/cyclic_verdicts.hpp"
 
+#include "comparison/verdicts.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -19,15 +21,39 @@ std::vector<int> judged_cycles(int cycles) {
   return out;
 }
 
+// Mean and SD (n - 1) of the values the seeds have; the SD needs two.
+struct SeedValues {
+  std::optional<double> mean, sd;
+  std::size_t n = 0;
+};
+
+SeedValues over_seeds(const std::vector<std::optional<double>>& values) {
+  SeedValues s;
+  double sum = 0.0;
+  for (const auto& v : values)
+    if (v) sum += *v, ++s.n;
+  if (s.n == 0) return s;
+  s.mean = sum / double(s.n);
+  if (s.n < 2) return s;
+  double square = 0.0;
+  for (const auto& v : values)
+    if (v) square += (*v - *s.mean) * (*v - *s.mean);
+  s.sd = std::sqrt(square / double(s.n - 1));
+  return s;
+}
+
 struct Judge {
   std::vector<CyclicVerdict>& out;
-  void operator()(const std::string& quantity, const std::string& where, std::optional<double> dem,
+  void operator()(const std::string& quantity, const std::string& where, const std::vector<std::optional<double>>& dem,
                   std::optional<double> model, double tolerance, double floor) {
-    CyclicVerdict v{quantity, where, dem, model, std::nullopt, tolerance, "not reached"};
-    if (dem && model) {
-      v.error = (*model - *dem) / std::max(std::abs(*dem), floor);
-      v.verdict = std::abs(*v.error) <= tolerance ? "holds" : "breaks";
-    }
+    const SeedValues d = over_seeds(dem);
+    CyclicVerdict v{quantity, where, d.mean, model, std::nullopt, tolerance, "not reached", std::max<std::size_t>(d.n, 1),
+                    d.sd, std::nullopt, std::nullopt, std::nullopt};
+    const double scale = d.mean ? std::max(std::abs(*d.mean), floor) : 1.0;
+    const SeedInterval i = seed_interval(d.sd, v.seeds, tolerance, scale);
+    v.dem_ci = i.ci, v.detection_limit = i.detection_limit, v.seeds_needed = i.seeds_needed;
+    if (d.mean && model) v.error = (*model - *d.mean) / scale;
+    v.verdict = verdict_word(v.error, tolerance, scale, v.dem_ci);
     out.push_back(v);
   }
 };
@@ -86,8 +112,14 @@ cycles::CyclicQuantities replay_cycles(const DemRun& dem, const Replay& r, const
   return cycles::cyclic_quantities({travel, r.u_x_mm, r.u_n_mm, r.sigma_n_kPa, r.tau_kPa, {}}, program);
 }
 
-std::vector<CyclicVerdict> judge_cycles(const DemRun& dem, const cycles::CyclicQuantities& d,
+std::vector<CyclicVerdict> judge_cycles(const DemRun& dem, const std::vector<cycles::CyclicQuantities>& seeds,
                                         const cycles::CyclicQuantities& m) {
+  const auto& d = seeds.front();  // the cycles judged: those of the compared run
+  const auto each = [&](auto read) {
+    std::vector<std::optional<double>> values;
+    for (const auto& s : seeds) values.push_back(read(s));
+    return values;
+  };
   std::vector<CyclicVerdict> out;
   Judge judge{out};
   const bool normal_stress_free = dem.boundary != driver::BoundaryKind::kCNL;  // CNS, CV
@@ -99,14 +131,19 @@ std::vector<CyclicVerdict> judge_cycles(const DemRun& dem, const cycles::CyclicQ
   judged.push_back({"reversal_secant_50_kPa_per_mm", stiffness, kStiffnessTolerance, 1.0});
   for (int c : judged_cycles(int(d.cycles.size())))
     for (const auto& q : judged)
-      judge(q.name, "cycle " + std::to_string(c), at_cycle(d, c, q.get), at_cycle(m, c, q.get), q.tolerance, q.floor);
+      judge(q.name, "cycle " + std::to_string(c), each([&](const auto& s) { return at_cycle(s, c, q.get); }),
+            at_cycle(m, c, q.get), q.tolerance, q.floor);
   if (d.post_cyclic) {
     const auto mp = m.post_cyclic;
-    judge("post_cyclic_peak_friction", "after the cycles", d.post_cyclic->peak_friction,
-          mp ? std::optional(mp->peak_friction) : std::nullopt, kPeakTolerance, kFrictionFloor);
+    const auto peak = [](const auto& s) {
+      return s.post_cyclic ? std::optional(s.post_cyclic->peak_friction) : std::nullopt;
+    };
+    const auto u_n = [](const auto& s) {
+      return s.post_cyclic ? std::optional(s.post_cyclic->u_n_change_mm) : std::nullopt;
+    };
+    judge("post_cyclic_peak_friction", "after the cycles", each(peak), peak(m), kPeakTolerance, kFrictionFloor);
     if (u_n_free)
-      judge("post_cyclic_u_n_change_mm", "after the cycles", d.post_cyclic->u_n_change_mm,
-            mp ? std::optional(mp->u_n_change_mm) : std::nullopt, kUnTolerance, kUnFloorD50 * dem.d50_mm);
+      judge("post_cyclic_u_n_change_mm", "after the cycles", each(u_n), u_n(m), kUnTolerance, kUnFloorD50 * dem.d50_mm);
   }
   return out;
 }
@@ -115,8 +152,11 @@ nlohmann::json to_json(const std::vector<CyclicVerdict>& verdicts) {
   auto opt = [](const std::optional<double>& x) { return x ? nlohmann::json(*x) : nlohmann::json(nullptr); };
   nlohmann::json out = nlohmann::json::array();
   for (const auto& v : verdicts)
-    out.push_back({{"quantity", v.quantity}, {"where", v.where}, {"dem", opt(v.dem)}, {"model", opt(v.model)},
-                   {"relative_error", opt(v.error)}, {"tolerance", v.tolerance}, {"verdict", v.verdict}});
+    out.push_back({{"quantity", v.quantity}, {"where", v.where}, {"unit", ""}, {"dem", opt(v.dem)}, {"dem_seed_sd", opt(v.dem_sd)},
+                   {"seeds", v.seeds}, {"dem_t_interval_95", opt(v.dem_ci)}, {"detection_limit", opt(v.detection_limit)},
+                   {"seeds_needed", v.seeds_needed ? nlohmann::json(*v.seeds_needed) : nlohmann::json(nullptr)},
+                   {"model", opt(v.model)}, {"relative_error", opt(v.error)}, {"tolerance", v.tolerance},
+                   {"verdict", v.verdict}});
   return out;
 }
 

@@ -9,8 +9,11 @@
 //   secant stiffness over 50 % of A after reversals 30 %  (the 10 % secant is reported, not judged:
 //                                                          at 3e-4 it scatters by ~10 % per reversal)
 //   post-cyclic peak tau/sigma_n 10 %, its u_n change 20 %.
-// A verdict is "holds" within the tolerance, else "breaks" (one DEM run: no interval yet), or
-// "not reached" where the replay stopped before the cycle's end.
+// The DEM's value is the mean over the cell's seeds (those the monotonic verdicts rest on), with
+// the 95 % t-interval of that mean, the detection limit and the seeds an interval of half the
+// tolerance needs (verdicts.hpp, seed_interval). A verdict is "holds" within the tolerance,
+// "within DEM scatter" when the miss lies inside the interval, else "breaks", or "not reached"
+// where the replay stopped before the cycle's end.
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -36,12 +39,16 @@ cycles::CyclicQuantities replay_cycles(const DemRun& dem, const Replay& replay, 
 struct CyclicVerdict {
   std::string quantity;  // e.g. "sigma_n_ratio"
   std::string where;     // "cycle 5", "after the cycles"
-  std::optional<double> dem, model, error;
+  std::optional<double> dem, model, error;  // dem: the seed mean
   double tolerance = 0.0;
   std::string verdict;
+  std::size_t seeds = 1;  // the seeds that reached this cycle
+  std::optional<double> dem_sd, dem_ci, detection_limit;
+  std::optional<int> seeds_needed;
 };
 
-std::vector<CyclicVerdict> judge_cycles(const DemRun& dem, const cycles::CyclicQuantities& dem_q,
+// `dem_seeds`: the quantities of each seed run of the cell (at least the compared run's).
+std::vector<CyclicVerdict> judge_cycles(const DemRun& dem, const std::vector<cycles::CyclicQuantities>& dem_seeds,
                                         const cycles::CyclicQuantities& model_q);
 
 nlohmann::json to_json(const std::vector<CyclicVerdict>& verdicts);

@@ -88,7 +88,8 @@ Table verdict_table(const json& cmp) {
 }
 
 Table cyclic_verdict_table(const json& cmp) {
-  Table t{{"quantity", "where", "DEM", "predicted model", "fitted model", "tolerance", "predicted", "fitted"}, {}};
+  Table t{{"quantity", "where", "DEM", "predicted model", "fitted model", "tolerance", "detects", "predicted", "fitted"},
+          {}};
   const auto& v = cmp["variants"];
   const auto& pred = v[cmp["verdicts"]["predicted_variant"].get<std::size_t>()];
   const auto& fit = v[cmp["verdicts"]["fitted_variant"].get<std::size_t>()];
@@ -101,8 +102,8 @@ Table cyclic_verdict_table(const json& cmp) {
   };
   for (std::size_t i = 0; i < p.size(); ++i)
     t.rows.push_back({p[i]["quantity"].get<std::string>(), p[i]["where"].get<std::string>(),
-                      p[i]["dem"].is_number() ? fmt::format("{:.3g} (1 run)", p[i]["dem"].get<double>()) : "-",
-                      cell(p[i]), cell(f[i]), percent(p[i]["tolerance"]), p[i]["verdict"].get<std::string>(),
+                      p[i]["dem"].is_number() ? with_interval(p[i]) : "-", cell(p[i]), cell(f[i]),
+                      percent(p[i]["tolerance"]), percent(p[i]["detection_limit"]), p[i]["verdict"].get<std::string>(),
                       f[i]["verdict"].get<std::string>()});
   return t;
 }

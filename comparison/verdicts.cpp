@@ -28,22 +28,10 @@ bool needs_end(const std::string& key) { return key != "peak_friction" && key !=
 
 double floor_of(const QuantityInfo& q, double d50_mm) { return q.floor_in_d50 ? q.floor * d50_mm : q.floor; }
 
-std::string verdict_of(const Verdict& v, double scale) {
-  if (!v.model || !v.error) return "not reached";
-  const double miss = std::abs(*v.error) - v.tolerance;  // relative to `scale`
-  if (miss <= 0.0) return "holds";
-  if (miss * scale <= v.dem_ci.value_or(0.0)) return "within DEM scatter";
-  return "breaks";
-}
-
 // What the verdict rests on: the t-interval, the detection limit, the seeds the tolerance needs.
 void add_statistics(Verdict& v, double scale) {
-  v.detection_limit = v.tolerance;
-  if (!v.dem_sd) return;
-  v.dem_ci = statistics::t_half_width(*v.dem_sd, int(v.seeds));
-  if (v.dem_ci) v.detection_limit = v.tolerance + *v.dem_ci / scale;
-  v.seeds_needed = statistics::values_needed(*v.dem_sd, kResolvedShareOfTolerance * v.tolerance * scale,
-                                             kMostSeedsWorthSaying);
+  const SeedInterval i = seed_interval(v.dem_sd, v.seeds, v.tolerance, scale);
+  v.dem_ci = i.ci, v.detection_limit = i.detection_limit, v.seeds_needed = i.seeds_needed;
 }
 
 std::vector<std::string> notes_for(const std::string& key, const SeedScatter& scatter) {
@@ -102,10 +90,27 @@ std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const 
     if (v.model && v.dem) v.error = (*v.model - *v.dem) / scale;
     add_statistics(v, scale);
     v.notes = notes_for(q.key, scatter);
-    v.verdict = verdict_of(v, scale);
+    v.verdict = verdict_word(v.model ? v.error : std::nullopt, v.tolerance, scale, v.dem_ci);
     out.push_back(v);
   }
   return out;
+}
+
+SeedInterval seed_interval(std::optional<double> sd, std::size_t seeds, double tolerance, double scale) {
+  SeedInterval i{std::nullopt, tolerance, std::nullopt};
+  if (!sd) return i;
+  i.ci = statistics::t_half_width(*sd, int(seeds));
+  if (i.ci) i.detection_limit = tolerance + *i.ci / scale;
+  i.seeds_needed = statistics::values_needed(*sd, kResolvedShareOfTolerance * tolerance * scale, kMostSeedsWorthSaying);
+  return i;
+}
+
+std::string verdict_word(std::optional<double> error, double tolerance, double scale, std::optional<double> ci) {
+  if (!error) return "not reached";
+  const double miss = std::abs(*error) - tolerance;  // relative to `scale`
+  if (miss <= 0.0) return "holds";
+  if (miss * scale <= ci.value_or(0.0)) return "within DEM scatter";
+  return "breaks";
 }
 
 bool all_hold(const std::vector<Verdict>& verdicts) { return failing(verdicts).empty(); }

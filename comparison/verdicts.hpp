@@ -50,6 +50,18 @@ struct Verdict {
 std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const Replay& replay,
                            const Tolerances& tolerances);
 
+// What a verdict rests on, for the monotonic and the cyclic verdicts alike: from the seeds' SD (in
+// the quantity's unit) the half-width of the 95 % t-interval of their mean, the detection limit
+// (tolerance + interval / scale, relative) and the seeds an interval of half the tolerance needs.
+struct SeedInterval {
+  std::optional<double> ci, detection_limit;
+  std::optional<int> seeds_needed;
+};
+SeedInterval seed_interval(std::optional<double> sd, std::size_t seeds, double tolerance, double scale);
+// "holds" within the tolerance, "within DEM scatter" when the miss lies inside the seed interval,
+// else "breaks"; "not reached" without an error.
+std::string verdict_word(std::optional<double> error, double tolerance, double scale, std::optional<double> ci);
+
 bool all_hold(const std::vector<Verdict>& verdicts);
 // The keys of the verdicts that do not hold ("breaks" or "within DEM scatter" or "not reached").
 std::vector<std::string> failing(const std::vector<Verdict>& verdicts);

@@ -17,7 +17,8 @@ constexpr int kCycles = 3;
 constexpr double kPost = 1.0, kRow = 0.00713;
 
 // `offset`: the rows after the first fall this share of a row spacing later, as another seed's do
-comparison::DemRun cyclic_run(driver::BoundaryKind bc, double offset = 0.0) {
+// `decay`: sigma_n = 50 exp(-travel / decay) kPa
+comparison::DemRun cyclic_run(driver::BoundaryKind bc, double offset = 0.0, double decay = 20.0) {
   comparison::DemRun d;
   d.boundary = bc;
   d.d50_mm = 2.0;
@@ -35,7 +36,7 @@ comparison::DemRun cyclic_run(driver::BoundaryKind bc, double offset = 0.0) {
       tau = std::clamp(tau + 80.0 * (u_at(std::min(s, x + 1e-4)) - u_at(x)), -10.0, 10.0);
     s_before = s;
     d.t_s.push_back(s / kV), d.u_x_mm.push_back(u_at(s)), d.tau_kPa.push_back(tau);
-    d.sigma_n_kPa.push_back(50.0 * std::exp(-s / 20.0)), d.u_n_mm.push_back(0.01 * s), d.e_band.push_back(0.7);
+    d.sigma_n_kPa.push_back(50.0 * std::exp(-s / decay)), d.u_n_mm.push_back(0.01 * s), d.e_band.push_back(0.7);
   }
   return d;
 }
@@ -49,7 +50,7 @@ comparison::Replay replay_of(const comparison::DemRun& d) {
 std::vector<comparison::CyclicVerdict> judged(const comparison::DemRun& d, const comparison::Replay& r) {
   const auto program = comparison::cyclic_program(d);
   REQUIRE(program.has_value());
-  return comparison::judge_cycles(d, comparison::dem_cycles(d, *program), comparison::replay_cycles(d, r, *program));
+  return comparison::judge_cycles(d, {comparison::dem_cycles(d, *program)}, comparison::replay_cycles(d, r, *program));
 }
 
 const comparison::CyclicVerdict& find(const std::vector<comparison::CyclicVerdict>& v, const std::string& q,
@@ -113,4 +114,34 @@ TEST_CASE("seeds of a cyclic run are aligned by their travel v t, not by summed 
   a.dir = "a", b.dir = "b";
   const auto s = comparison::seed_scatter(a, {b});
   CHECK(s.tau.rms_sd < 0.01);  // kPa: interpolation alone (0.004); aligned by summed |du_x|: 0.023
+}
+
+TEST_CASE("cyclic verdicts rest on the seeds: their mean, its t-interval, and a miss inside it is DEM scatter",
+          "[comparison][cyclic]") {
+  // three seeds whose sigma_n decays over 15, 20 and 25 mm of travel: after cycle 3 (12 mm) the
+  // ratio is exp(-12/L); a model decaying over 12.5 mm misses their mean by 29 %
+  std::vector<comparison::DemRun> seeds;
+  for (double decay : {15.0, 20.0, 25.0}) seeds.push_back(cyclic_run(driver::BoundaryKind::kCNS, 0.0, decay));
+  const auto program = *comparison::cyclic_program(seeds[0]);
+  std::vector<cycles::CyclicQuantities> q;
+  for (const auto& s : seeds) q.push_back(comparison::dem_cycles(s, program));
+  const auto model = comparison::replay_cycles(seeds[0], replay_of(cyclic_run(driver::BoundaryKind::kCNS, 0.0, 12.5)),
+                                               program);
+  const double r1 = std::exp(-12.0 / 15), r2 = std::exp(-12.0 / 20), r3 = std::exp(-12.0 / 25);
+  const double mean = (r1 + r2 + r3) / 3;
+  const double sd = std::sqrt((std::pow(r1 - mean, 2) + std::pow(r2 - mean, 2) + std::pow(r3 - mean, 2)) / 2);
+  const auto all = comparison::judge_cycles(seeds[0], q, model);
+  const auto& v = find(all, "sigma_n_ratio", "cycle 3");
+  CHECK(v.seeds == 3);
+  CHECK(v.dem.value() == Approx(mean).epsilon(1e-3));
+  CHECK(v.dem_sd.value() == Approx(sd).epsilon(1e-2));
+  CHECK(v.dem_ci.value() == Approx(4.302653 * sd / std::sqrt(3.0)).epsilon(1e-2));  // t(0.975, 2)
+  CHECK(v.error.value() == Approx((std::exp(-12.0 / 12.5) - mean) / mean).epsilon(1e-2));
+  CHECK(v.verdict == "within DEM scatter");
+  // one seed alone: no interval, and the same model breaks
+  const auto one = comparison::judge_cycles(seeds[1], {q[1]}, model);
+  const auto& alone = find(one, "sigma_n_ratio", "cycle 3");
+  CHECK(alone.seeds == 1);
+  CHECK_FALSE(alone.dem_ci.has_value());
+  CHECK(alone.verdict == "breaks");
 }
