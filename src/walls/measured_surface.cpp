@@ -186,7 +186,7 @@ MeasuredSurface measured_surface(const MeasuredSurfaceSpec& spec, double length,
       grid.push_back(std::move(z));
     }
   }
-  MeasuredSurface out{HeightMap(1, 1, 1.0, 1.0, {0.0}), spacing, 0.0, {}};
+  MeasuredSurface out{HeightMap(1, 1, 1.0, 1.0, {0.0}), 0.0, {}};
   check_resolution(spec, spacing, d50, out.warnings);
   resample(grid, spacing, spec.resample_m);  // before R_max: the untiled window as the wall will be
   for (const auto& row : grid) out.window_r_max_m = std::max(out.window_r_max_m, window_r_max(row, spacing, d50));

@@ -30,7 +30,6 @@ struct MeasuredSurfaceSpec {
 
 struct MeasuredSurface {
   HeightMap map;
-  double sample_spacing_m;    // along x, as measured (line) or the grid's (map)
   double window_r_max_m;      // the largest R_max over d50 windows that do not cross the seam
   std::vector<std::string> warnings;
 };
