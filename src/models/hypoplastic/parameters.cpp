@@ -45,8 +45,23 @@ HypoplasticParameters HypoplasticParameters::from(const ParameterValues& v,
     throw InputError(fmt::format(
         "{}: void ratios must satisfy ed0 < ec0 < ei0; got ed0 = {:g}, ec0 = {:g}, ei0 = {:g}",
         source, ed0, ec0, ei0));
+  require_admissible(v.at("phi_c_deg") * M_PI / 180.0, ed0, ec0, ei0, v.at("alpha"), source);
   return {v.at("phi_c_deg") * M_PI / 180.0, v.at("hs_kPa"), v.at("n"), ed0, ec0, ei0,
           v.at("alpha"), v.at("beta")};
+}
+
+void require_admissible(double phi_c, double ed0, double ec0, double ei0, double alpha, const std::string& source) {
+  const double s = std::sin(phi_c);
+  const double a = std::sqrt(3.0) * (3.0 - s) / (2.0 * std::sqrt(2.0) * s);  // eq. 5.15
+  const double ratio = (ei0 - ed0) / (ec0 - ed0);                              // f_d at e_i is ratio^alpha
+  const double margin = 3.0 + a * a - std::sqrt(3.0) * a * std::pow(ratio, alpha);
+  if (margin > 0.0) return;
+  const double largest_alpha = std::log((3.0 + a * a) / (std::sqrt(3.0) * a)) / std::log(ratio);
+  throw InputError(fmt::format(
+      "{}: alpha = {:g} with ed0 = {:g}, ec0 = {:g}, ei0 = {:g} and phi_c_deg = {:g} is inadmissible: von "
+      "Wolffersdorff's condition 3 + a^2 - sqrt(3) a ((ei0 - ed0)/(ec0 - ed0))^alpha > 0 gives {:.4g} (a = {:.4g}, "
+      "eq. 5.15); with these void ratios and phi_c alpha must lie below {:.4g}",
+      source, alpha, ed0, ec0, ei0, phi_c * 180.0 / M_PI, margin, a, largest_alpha));
 }
 
 }  // namespace iwb::models
