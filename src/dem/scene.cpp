@@ -113,7 +113,8 @@ RoughnessProfile read_measured_surface(DeclaredTable& t, Scene& s) {
     auto m = walls::measured_surface(spec, s.length_m, s.width_m, s.particles.d50_m);
     for (auto& w : m.warnings) s.warnings.push_back(t.where("file") + ": " + w);
     auto map = std::make_shared<const walls::HeightMap>(std::move(m.map));
-    return {ProfileKind::kFile, 0.0, map->max(), map, spec.path, m.window_r_max_m};
+    return {ProfileKind::kFile, 0.0, map->max(), map, spec.path, io::sha256_hex(io::read_file(spec.path)),
+            m.window_r_max_m};
   } catch (const InputError& e) {
     throw InputError(fmt::format("{} = \"{}\": {}", t.where("file"), file, e.what()));
   }
@@ -318,16 +319,15 @@ void read_settings(io::TableReader& top, Scene& s) {
   read_optional(top, "numerics", [&](DeclaredTable& nu) { s.dt_fraction = nu.number("dt_fraction"); });
 }
 
-// A measured wall's file and what tiling did to its R_n; null for every other wall.
+// A measured wall's file and what tiling did to its R_n.
 nlohmann::json file_record(const RoughnessProfile& p, double d50) {
-  if (p.kind != ProfileKind::kFile) return nullptr;
-  return {{"file", p.file}, {"sha256", io::sha256_hex(io::read_file(p.file))},
+  return {{"file", p.file}, {"sha256", p.file_sha256},
           {"R_n_untiled", p.untiled_r_max_m / d50}, {"R_n_tiled", p.normalized_roughness(d50)}};
 }
 
 nlohmann::json resolved_values(const Scene& s) {
   const double d50 = s.particles.d50_m;
-  return {
+  nlohmann::json out = {
       {"particles", {{"d50_mm", d50 / kMm}, {"d_max_mm", s.particles.d_max() / kMm},
                      {"density_kg_m3", s.particles.density_kg_m3}, {"youngs_modulus_Pa", s.particles.youngs_modulus_Pa},
                      {"poisson", s.particles.poisson}, {"friction", s.particles.friction},
@@ -337,7 +337,6 @@ nlohmann::json resolved_values(const Scene& s) {
       {"specimen", {{"length_mm", s.length_m / kMm}, {"width_mm", s.width_m / kMm},
                     {"height_mm", s.height_m / kMm}, {"consolidation_friction", s.consolidation.friction}}},
       {"wall", {{"profile", s.wall.describe()}, {"R_n", s.wall.normalized_roughness(d50)}}},
-      {"wall_file", file_record(s.wall, d50)},
       {"plate", {{"profile", s.plate.describe()}, {"R_n", s.plate.normalized_roughness(d50)},
                  {"clamp_mm", s.plate_clamp_m / kMm}}},
       {"boundary", {{"type", driver::to_string(s.boundary.kind)}, {"sigma_n_kPa", s.boundary.sigma_n_Pa / 1e3},
@@ -353,6 +352,8 @@ nlohmann::json resolved_values(const Scene& s) {
       {"stiffness_level", s.stiffness_level()},
       {"numerics", {{"dt_fraction", s.dt_fraction}}},
       {"seed", s.seed}};
+  if (s.wall.kind == ProfileKind::kFile) out["wall_file"] = file_record(s.wall, d50);  // only where there is one
+  return out;
 }
 
 }  // namespace
@@ -451,7 +452,7 @@ Scene parse_scene(const std::string& text, const std::string& source) {
 std::string scene_sha256(const Scene& s, const std::string& text) {
   std::string files;
   for (const auto* p : {&s.wall, &s.plate})
-    if (p->kind == ProfileKind::kFile) files += "\n" + io::sha256_hex(io::read_file(p->file));
+    if (p->kind == ProfileKind::kFile) files += "\n" + p->file_sha256;
   return io::sha256_hex(text + files);
 }
 

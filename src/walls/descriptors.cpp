@@ -6,6 +6,8 @@
 #include <fmt/core.h>
 #include <unsupported/Eigen/FFT>
 
+#include "walls/gauge_windows.hpp"
+
 namespace iwb::walls {
 
 namespace {
@@ -37,18 +39,16 @@ Samples sample(const RoughnessProfile& p, double length, double width, double d5
   return s;
 }
 
-// R_max over every window of d50 along each row: the largest and the mean.
+// R_max over every window of d50 along each row (periodic): the largest and the mean.
 std::pair<double, double> gauge_ranges(const Samples& s, double d50) {
   const int w = std::max(1, int(std::lround(d50 / s.h)));
-  double largest = 0.0, sum = 0.0;
-  for (const auto& z : s.rows) {
-    for (int i = 0; i < s.n; ++i) {
-      double lo = INFINITY, hi = -INFINITY;
-      for (int k = 0; k <= w; ++k) lo = std::min(lo, z[(i + k) % s.n]), hi = std::max(hi, z[(i + k) % s.n]);
-      largest = std::max(largest, hi - lo), sum += hi - lo;
-    }
+  GaugeRanges r;
+  for (const auto& row : s.rows) {
+    std::vector<double> z(row);
+    for (int k = 0; k < w; ++k) z.push_back(row[k % s.n]);
+    add_gauge_ranges(z, w, s.n, r);
   }
-  return {largest, sum / double(s.n * s.rows.size())};
+  return {r.largest, r.sum / r.windows};
 }
 
 // One-sided PSD along x (k = 1 .. n/2, m^3) and the autocovariance (lags 0 .. n/2), both averaged

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "walls/gauge_windows.hpp"
 
 namespace iwb::walls {
 
@@ -97,12 +98,9 @@ std::vector<double> line_window(const std::vector<Row>& rows, const MeasuredSurf
 // The largest R_max over windows of d50 within one row that do not wrap.
 double window_r_max(const std::vector<double>& z, double spacing, double d50) {
   const int w = std::max(1, int(std::lround(d50 / spacing)));
-  double largest = 0.0;
-  for (std::size_t i = 0; i + w < z.size(); ++i) {
-    const auto [lo, hi] = std::minmax_element(z.begin() + long(i), z.begin() + long(i + w + 1));
-    largest = std::max(largest, *hi - *lo);
-  }
-  return largest;
+  GaugeRanges r;
+  add_gauge_ranges(z, w, std::max(0, int(z.size()) - w), r);
+  return r.largest;
 }
 
 // The samples z_0 .. z_n (spacing h) averaged over m + 1 cells centred on k n/m samples (the two end

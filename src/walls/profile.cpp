@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/core.h>
+#include <vector>
+
+#include "walls/gauge_windows.hpp"
 
 namespace iwb::walls {
 
@@ -16,19 +19,14 @@ constexpr double kMm = 1e-3;
 double sampled_r_max(const RoughnessProfile& p, double period, int samples, double width, int rows, double d50) {
   const double dx = period / samples;
   const int window = std::max(1, int(std::lround(d50 / dx)));
-  double r_max = 0.0;
+  GaugeRanges r;
   for (int row = 0; row < rows; ++row) {
     const double y = width * row / rows;
-    for (int i = 0; i < samples; ++i) {
-      double lo = INFINITY, hi = -INFINITY;
-      for (int j = 0; j <= window; ++j) {
-        const double z = p.surface_at((i + j) * dx, y);
-        lo = std::min(lo, z), hi = std::max(hi, z);
-      }
-      r_max = std::max(r_max, hi - lo);
-    }
+    std::vector<double> z(samples + window);  // at (i + j) dx: past the period the profile repeats
+    for (int i = 0; i < samples + window; ++i) z[i] = p.surface_at(i * dx, y);
+    add_gauge_ranges(z, window, samples, r);
   }
-  return r_max;
+  return r.largest;
 }
 
 }  // namespace
