@@ -193,7 +193,8 @@ std::vector<std::string> reference_run_names(const json& t) {
 }
 
 // Plan reads the reference's run directory (its summary chooses the default parameters) and
-// replays the complete base seeds: each must be there, not only the tables.
+// replays the complete base seeds: each must be there, not only the tables (their compact files
+// suffice: data/copy_campaign.sh copies them, and the shipped tradeoffs keep them).
 void require_run_directories(const json& t, const fs::path& file, const PlanOptions& opt) {
   std::vector<std::string> names = reference_run_names(t);
   for (const auto& n : complete_base_seeds(t))
@@ -203,10 +204,11 @@ void require_run_directories(const json& t, const fs::path& file, const PlanOpti
     if (!fs::is_regular_file(file.parent_path() / "runs" / n / "manifest.json"))
       missing += (missing.empty() ? "" : ", ") + (fs::path("runs") / n).string();
   if (!missing.empty())
-    throw InputError(fmt::format("{}: the tradeoff's run directories {} are missing (plan replays its runs; a "
-                                 "committed tradeoff holds tables only); run `iwb tradeoff {} -o {}` to make "
-                                 "them (complete runs there are reused)", file.string(), missing,
-                                 opt.scene_file.string(), file.parent_path().string()));
+    throw InputError(fmt::format("{}: the tradeoff's run directories {} are missing (plan replays its base runs: "
+                                 "their manifest, summary and time series are enough, as data/tradeoff/*/runs/ "
+                                 "keep them); run `iwb tradeoff {} -o {}` to make them (complete runs there are "
+                                 "reused)", file.string(), missing, opt.scene_file.string(),
+                                 file.parent_path().string()));
 }
 
 json load_tradeoff(const PlanOptions& opt) {

@@ -159,17 +159,25 @@ TEST_CASE("plan: a candidate's global uncertainty; the model that cannot dilate 
   CHECK(choice["chosen"]["name"] == "mc");
 }
 
-// `iwb plan` against the committed tradeoff of data/scenes/default.toml (tables only, no run
-// directories): the scene is compared by content, so a copy under another name is accepted and
-// refused only later, for the missing run directories; a copy with another value is refused
-// naming the key. Nothing is written either way.
+// `iwb plan` against the tables of the committed tradeoff of data/scenes/default.toml (its
+// tradeoff.json alone, without the runs committed beside it): the scene is compared by content, so
+// a copy under another name is accepted and refused only later, for the missing run directories; a
+// copy with another value is refused naming the key. Nothing is written either way.
 namespace {
 
 namespace fs = std::filesystem;
 
+// A committed tradeoff's tradeoff.json alone, in `dir` (one per test case: ctest -j2 runs them at once).
+fs::path tables_only(const fs::path& committed, const fs::path& dir) {
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(committed / "tradeoff.json", dir / "tradeoff.json");
+  return dir;
+}
+
 // The default scene copied into a scratch directory as `name`, the first `from` replaced by `to`.
 tradeoff::PlanOptions plan_on_copy(const std::string& name, const std::string& from = "",
-                                   const std::string& to = "", const fs::path& tradeoff_dir = "data/tradeoff/default") {
+                                   const std::string& to = "", fs::path tradeoff_dir = "") {
   // one directory per copy's name: ctest -j2 runs these test cases at once (they raced on one)
   const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / ("plan-scene-copy-" + name);
   fs::remove_all(dir);
@@ -179,7 +187,7 @@ tradeoff::PlanOptions plan_on_copy(const std::string& name, const std::string& f
   io::write_atomically(dir / name, text);
   tradeoff::PlanOptions opt;
   opt.scene_file = dir / name;
-  opt.tradeoff_dir = tradeoff_dir;
+  opt.tradeoff_dir = tradeoff_dir.empty() ? tables_only("data/tradeoff/default", dir / "tradeoff") : tradeoff_dir;
   opt.params = io::read_parameter_set("data/params/dem_default_grains.toml");
   opt.out = dir / "plan";
   return opt;
@@ -240,7 +248,7 @@ TEST_CASE("plan: a base-reference tradeoff asks for its base seeds' run director
           "[tradeoff]") {
   tradeoff::PlanOptions opt;
   opt.scene_file = "data/tradeoff/truth/truth_requirements.toml";
-  opt.tradeoff_dir = "data/tradeoff/truth";  // tables only
+  opt.tradeoff_dir = tables_only("data/tradeoff/truth", fs::path(IWB_TEST_RUNS_DIR) / "plan-truth-tables-only");
   opt.params = io::read_parameter_set("data/params/truth_grains_epsd2.toml");
   opt.out = fs::path(IWB_TEST_RUNS_DIR) / "plan-truth-base-reference";
   fs::remove_all(opt.out);
