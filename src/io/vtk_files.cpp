@@ -1,27 +1,12 @@
 #include "io/vtk_files.hpp"
 
+#include <dlfcn.h>
 #include <fmt/core.h>
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkDoubleArray.h>
-#include <vtkGenericDataObjectReader.h>
-#include <vtkGeometryFilter.h>
-#include <vtkImageData.h>
-#include <vtkNew.h>
-#include <vtkPointData.h>
-#include <vtkPointSet.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkTransform.h>
-#include <vtkTransformFilter.h>
-#include <vtkXMLImageDataReader.h>
-#include <vtkXMLImageDataWriter.h>
-#include <vtkXMLPolyDataReader.h>
-#include <vtkXMLPolyDataWriter.h>
-#include <vtkXMLWriter.h>
 
-#include "common/errors.hpp"
+#include <stdexcept>
+
 #include "io/run_directory.hpp"
+#include "io/vtk_plugin.hpp"
 
 namespace iwb::io {
 
@@ -35,59 +20,37 @@ const VtkArray* find_in(const std::vector<VtkArray>& arrays, const std::string& 
   return nullptr;
 }
 
-std::vector<VtkArray> arrays_of(vtkFieldData* data) {
-  std::vector<VtkArray> out;
-  for (int i = 0; i < data->GetNumberOfArrays(); ++i) {
-    vtkDataArray* a = data->GetArray(i);
-    if (!a || !a->GetName()) continue;  // string arrays and unnamed ones carry nothing we use
-    VtkArray v{a->GetName(), a->GetNumberOfComponents(), {}};
-    v.values.reserve(std::size_t(a->GetNumberOfTuples() * v.components));
-    for (vtkIdType t = 0; t < a->GetNumberOfTuples(); ++t)
-      for (int c = 0; c < v.components; ++c) v.values.push_back(a->GetComponent(t, c));
-    out.push_back(std::move(v));
-  }
+// Where the module is: beside an installed iwb (bin/../lib/.../iwb/, IWB_VTK_MODULE_FROM_BINDIR),
+// else where the build put it. The installed place comes first, so that an installed iwb never
+// runs on a build tree's module that happens to still exist.
+std::vector<fs::path> module_candidates() {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) out.push_back(exe.parent_path() / IWB_VTK_MODULE_FROM_BINDIR / IWB_VTK_MODULE_NAME);
+  out.emplace_back(IWB_VTK_MODULE_BUILD_PATH);
   return out;
 }
 
-void add_arrays(vtkFieldData* data, const std::vector<VtkArray>& arrays) {
-  for (const auto& a : arrays) {
-    vtkNew<vtkDoubleArray> d;
-    d->SetName(a.name.c_str());
-    d->SetNumberOfComponents(a.components);
-    d->SetNumberOfTuples(vtkIdType(a.values.size() / std::size_t(a.components)));
-    for (std::size_t i = 0; i < a.values.size(); ++i) d->SetValue(vtkIdType(i), a.values[i]);
-    data->AddArray(d);
+const VtkFunctions& load_module() {
+  std::string tried;
+  for (const auto& path : module_candidates()) {
+    // RTLD_LOCAL: VTK's symbols stay the module's own; loaded once, never unloaded
+    if (void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) {
+      using Entry = const VtkFunctions* (*)();
+      if (auto entry = reinterpret_cast<Entry>(dlsym(handle, "iwb_vtk_functions"))) return *entry();
+      tried += fmt::format("; {}: no iwb_vtk_functions", path.string());
+      continue;
+    }
+    tried += fmt::format("; {}", dlerror());
   }
+  throw std::runtime_error(fmt::format("VTK files need iwb's module {}, which did not load{} (reinstall iwb, or "
+                                       "rebuild it)", IWB_VTK_MODULE_NAME, tried));
 }
 
-// VTK writers report failures through their error code, not exceptions.
-template <class Writer>
-void write_through(Writer* writer, const fs::path& path) {
-  writer->SetDataModeToAppended();
-  writer->SetCompressorTypeToZLib();
-  writer->WriteToOutputStringOn();
-  if (writer->Write() != 1) throw std::runtime_error(fmt::format("{}: VTK could not write the dataset", path.string()));
-  write_atomically(path, writer->GetOutputString());
-}
-
-vtkSmartPointer<vtkDataObject> read_any(const fs::path& path) {
-  if (!fs::exists(path)) throw InputError(fmt::format("{}: no such file", path.string()));
-  if (path.extension() == ".vtp") {
-    vtkNew<vtkXMLPolyDataReader> r;
-    r->SetFileName(path.c_str());
-    r->Update();
-    if (r->GetErrorCode() != 0 || !r->GetOutput()) throw InputError(fmt::format("{}: not a VTK XML polydata file", path.string()));
-    return r->GetOutput();
-  }
-  vtkNew<vtkGenericDataObjectReader> r;
-  r->SetFileName(path.c_str());
-  // a legacy file's second SCALARS or VECTORS is dropped unless asked for (YADE writes several)
-  r->ReadAllScalarsOn();
-  r->ReadAllVectorsOn();
-  r->ReadAllFieldsOn();
-  r->Update();
-  if (r->GetErrorCode() != 0 || !r->GetOutput()) throw InputError(fmt::format("{}: not a legacy VTK file VTK can read", path.string()));
-  return r->GetOutput();
+const VtkFunctions& vtk() {
+  static const VtkFunctions& functions = load_module();  // thread-safe, once; a failure retries
+  return functions;
 }
 
 }  // namespace
@@ -95,117 +58,17 @@ vtkSmartPointer<vtkDataObject> read_any(const fs::path& path) {
 const VtkArray* PointCloud::find(const std::string& name) const { return find_in(arrays, name); }
 const VtkArray* Segments::find(const std::string& name) const { return find_in(arrays, name); }
 
-PointCloud read_points(const fs::path& path) {
-  auto data = read_any(path);
-  auto* set = vtkPointSet::SafeDownCast(data);
-  if (!set || !set->GetPoints()) throw InputError(fmt::format("{}: holds no points", path.string()));
-  PointCloud cloud;
-  for (vtkIdType i = 0; i < set->GetNumberOfPoints(); ++i) {
-    double p[3];
-    set->GetPoint(i, p);
-    cloud.points.emplace_back(p[0], p[1], p[2]);
-  }
-  cloud.arrays = arrays_of(set->GetPointData());
-  return cloud;
-}
-
-// Points with one vertex cell each, so that ParaView draws them without a Glyph first.
-void write_points(const fs::path& vtp, const PointCloud& cloud) {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> vertices;
-  for (const auto& p : cloud.points) {
-    const vtkIdType id = points->InsertNextPoint(p.x(), p.y(), p.z());
-    vertices->InsertNextCell(1, &id);
-  }
-  vtkNew<vtkPolyData> poly;
-  poly->SetPoints(points);
-  poly->SetVerts(vertices);
-  add_arrays(poly->GetPointData(), cloud.arrays);
-  vtkNew<vtkXMLPolyDataWriter> w;
-  w->SetInputData(poly);
-  write_through(w.GetPointer(), vtp);
-}
-
-Segments read_segments(const fs::path& vtp) {
-  const auto data = read_any(vtp);  // holds the dataset while it is read
-  auto* poly = vtkPolyData::SafeDownCast(data);
-  if (!poly) throw InputError(fmt::format("{}: not polydata", vtp.string()));
-  Segments s;
-  vtkCellArray* lines = poly->GetLines();
-  lines->InitTraversal();
-  vtkNew<vtkIdList> ids;
-  while (lines->GetNextCell(ids)) {
-    if (ids->GetNumberOfIds() != 2) throw InputError(fmt::format("{}: a line that is not a segment", vtp.string()));
-    double a[3], b[3];
-    poly->GetPoint(ids->GetId(0), a);
-    poly->GetPoint(ids->GetId(1), b);
-    s.from.emplace_back(a[0], a[1], a[2]);
-    s.to.emplace_back(b[0], b[1], b[2]);
-  }
-  s.arrays = arrays_of(poly->GetCellData());
-  return s;
-}
-
-void write_segments(const fs::path& vtp, const Segments& segments) {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> lines;
-  for (std::size_t i = 0; i < segments.from.size(); ++i) {
-    const vtkIdType ids[2] = {points->InsertNextPoint(segments.from[i].data()), points->InsertNextPoint(segments.to[i].data())};
-    lines->InsertNextCell(2, ids);
-  }
-  vtkNew<vtkPolyData> poly;
-  poly->SetPoints(points);
-  poly->SetLines(lines);
-  add_arrays(poly->GetCellData(), segments.arrays);
-  vtkNew<vtkXMLPolyDataWriter> w;
-  w->SetInputData(poly);
-  write_through(w.GetPointer(), vtp);
-}
-
+PointCloud read_points(const fs::path& path) { return vtk().read_points(path); }
+void write_points(const fs::path& vtp, const PointCloud& cloud) { vtk().write_points(vtp, cloud); }
+Segments read_segments(const fs::path& vtp) { return vtk().read_segments(vtp); }
+void write_segments(const fs::path& vtp, const Segments& segments) { vtk().write_segments(vtp, segments); }
 void convert_to_polydata(const fs::path& legacy, const fs::path& vtp, const Eigen::Vector3d& shift) {
-  auto data = read_any(legacy);
-  vtkNew<vtkGeometryFilter> surface;
-  surface->SetInputData(data);
-  vtkNew<vtkTransform> move;
-  move->Translate(shift.data());
-  vtkNew<vtkTransformFilter> moved;
-  moved->SetTransform(move);
-  moved->SetInputConnection(surface->GetOutputPort());
-  vtkNew<vtkXMLPolyDataWriter> w;
-  w->SetInputConnection(moved->GetOutputPort());
-  write_through(w.GetPointer(), vtp);
+  vtk().convert_to_polydata(legacy, vtp, shift);
 }
+void write_image(const fs::path& vti, const ImageGrid& image) { vtk().write_image(vti, image); }
+ImageGrid read_image(const fs::path& vti) { return vtk().read_image(vti); }
 
-void write_image(const fs::path& vti, const ImageGrid& image) {
-  vtkNew<vtkImageData> grid;
-  grid->SetDimensions(image.nx, image.ny, image.nz);
-  grid->SetOrigin(image.origin.data());
-  grid->SetSpacing(image.spacing.data());
-  add_arrays(grid->GetPointData(), image.arrays);
-  vtkNew<vtkXMLImageDataWriter> w;
-  w->SetInputData(grid);
-  write_through(w.GetPointer(), vti);
-}
-
-ImageGrid read_image(const fs::path& vti) {
-  if (!fs::exists(vti)) throw InputError(fmt::format("{}: no such file", vti.string()));
-  vtkNew<vtkXMLImageDataReader> r;
-  r->SetFileName(vti.c_str());
-  r->Update();
-  vtkImageData* grid = r->GetOutput();
-  if (r->GetErrorCode() != 0 || !grid) throw InputError(fmt::format("{}: not a VTK XML image data file", vti.string()));
-  ImageGrid im;
-  int dims[3];
-  grid->GetDimensions(dims);
-  im.nx = dims[0], im.ny = dims[1], im.nz = dims[2];
-  grid->GetOrigin(im.origin.data());
-  grid->GetSpacing(im.spacing.data());
-  im.arrays = arrays_of(grid->GetPointData());
-  return im;
-}
-
+// ParaView's collection is plain XML: no VTK needed.
 void write_collection(const fs::path& pvd, const std::vector<TimedFile>& files) {
   std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   for (const auto& f : files) xml += fmt::format("  <DataSet timestep=\"{:.10g}\" file=\"{}\"/>\n", f.time, f.file);

@@ -5,7 +5,9 @@
 #   2. `validate --scene smoke` runs the engine and writes the report, the parameter set built in;
 #   3. the same command again reuses the complete DEM run: the engine is not started (its run
 #      manifest is untouched) and compare.json, with every verdict, is byte-identical;
-#   4. with --params-dir (the installed share/iwb/params) it reuses the run too, same verdicts.
+#   4. with --params-dir (the installed share/iwb/params) it reuses the run too, same verdicts;
+#   5. the installed iwb links no VTK library (start-up, issue 37) and loads the VTK module from the
+#      install, not from the build tree, when the run writes its VTK files.
 set -u
 build=$1; prefix=$2
 fail() { echo "validate_anywhere.sh: $*"; exit 1; }
@@ -23,8 +25,13 @@ echo "$out"
 grep -q -- "--params-dir: no_such_dir: no such directory" <<<"$out" || fail "bad --params-dir not named"
 [ -z "$(ls -A)" ] || fail "bad --params-dir left files behind: $(ls -A)"
 
-"$iwb" validate --scene smoke --np 1 >first.log 2>&1 || { cat first.log; fail "first validate failed"; }
+LD_TRACE_LOADED_OBJECTS=1 "$iwb" | grep -q vtk && fail "the installed iwb links VTK: $(LD_TRACE_LOADED_OBJECTS=1 "$iwb" | grep vtk)"
+LD_DEBUG=files LD_DEBUG_OUTPUT=$scratch/loader "$iwb" validate --scene smoke --np 1 >first.log 2>&1 ||
+  { cat first.log; fail "first validate failed"; }
 cat first.log
+grep -h "file=.*libiwb_vtk_plugin" "$scratch"/loader.* | head -1
+grep -q "file=$prefix/.*/iwb/libiwb_vtk_plugin.so" "$scratch"/loader.* || fail "the VTK module was not loaded from $prefix"
+rm -f "$scratch"/loader.*
 run=runs/validate/dem-liggghts/manifest.json
 grep -q '"status": "complete"' "$run" || fail "the DEM run is not complete"
 grep -q "runs/validate/parameters/dem_default_grains.toml" runs/validate/compare-hvwe/manifest.json ||
