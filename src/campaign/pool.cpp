@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "campaign/job_start.hpp"
+#include "campaign/sweep_record.hpp"
 #include "dem/consolidation_cache.hpp"
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
@@ -23,10 +24,8 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-// How often the pool looks at the interrupt flag, and how often it repeats the progress line
-// while nothing changes.
+// How often the pool looks at the interrupt flag.
 constexpr auto kPoll = std::chrono::milliseconds(200);
-constexpr double kProgressEverySeconds = 15.0;
 
 struct JobResult {
   std::string status;
@@ -36,44 +35,13 @@ struct JobResult {
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// The engine's own time in an earlier run, for reused jobs.
-double recorded_seconds(const fs::path& dir) {
-  const auto m = io::read_json_file(dir / "manifest.json");
-  double s = 0.0;
-  for (const auto& [name, stage] : m["stages"].items()) s += stage.value("wall_seconds", 0.0);
-  return s;
-}
-
-// The sha256 that decides reuse of a job's run (dem::scene_sha256: its text and any wall file it names).
-std::string job_scene_sha256(const Job& job, const fs::path& out) {
-  return dem::scene_sha256(dem::parse_scene(job.scene_text, (out / scene_path(job)).string()), job.scene_text);
-}
-
-json initial_record(const SweepSpec& spec, const std::vector<Job>& jobs, const PoolOptions& opt) {
-  json r = {{"kind", "dem-sweep"},
-            {"sweep", spec.file.string()},
-            {"sweep_sha256", io::sha256_hex(spec.text)},
-            {"scene", spec.scene_file.string()},
-            {"command_line", opt.command_line},
-            {"jobs_at_once", opt.jobs},
-            {"processes_per_job", opt.processes},
-            {"started", io::utc_timestamp()},
-            {"status", "running"},
-            {"jobs", json::array()}};
-  for (const auto& job : jobs) {
-    json values = json::object();
-    for (const auto& [key, value] : job.values) values[key] = io::to_toml(value);
-    r["jobs"].push_back({{"name", job.name}, {"engine", job.engine}, {"values", values},
-                         {"scene", scene_path(job)}, {"run", run_path(job)},
-                         {"scene_sha256", job_scene_sha256(job, opt.out)}, {"status", "pending"}});
-  }
-  return r;
-}
-
 class Pool {
  public:
   Pool(const SweepSpec& spec, const std::vector<Job>& jobs, const PoolOptions& opt)
-      : jobs_(jobs), opt_(opt), record_(initial_record(spec, jobs, opt)) {}
+      : jobs_(jobs),
+        opt_(opt),
+        record_(initial_record(spec, jobs, opt.out, opt.command_line,
+                               {{"executor", "local"}, {"jobs_at_once", opt.jobs}, {"processes_per_job", opt.processes}})) {}
 
   json run() {
     std::vector<std::size_t> queue = reuse_complete_runs();
@@ -89,7 +57,7 @@ class Pool {
     }
     lock.unlock();
     for (auto& t : threads_) t.join();
-    record_["status"] = overall_status();
+    record_["status"] = overall_status(record_, stop_);
     record_["finished"] = io::utc_timestamp();
     write_record();
     report();
@@ -106,10 +74,7 @@ class Pool {
         queue.push_back(i);
         continue;
       }
-      auto& j = record_["jobs"][i];
-      j["status"] = "complete";
-      j["start"] = to_string(JobStart::kSkip);
-      j["wall_seconds"] = recorded_seconds(dir);
+      mark_reused(record_["jobs"][i], dir);
     }
     return queue;
   }
@@ -158,29 +123,8 @@ class Pool {
     report(fmt::format("{}: {}", jobs_[i].name, r.status));
   }
 
-  struct Counts {
-    int complete = 0, reused = 0, running = 0, failed = 0, pending = 0;
-  };
-  Counts counts() const {
-    Counts c;
-    for (const auto& j : record_["jobs"]) {
-      const std::string s = j["status"];
-      if (s == "complete") {
-        ++c.complete;
-        if (j.value("start", "") == "reused") ++c.reused;
-      } else if (s == "running") {
-        ++c.running;
-      } else if (s == "pending" || s.rfind("interrupted", 0) == 0) {
-        ++c.pending;  // an interrupted job is still to do
-      } else {
-        ++c.failed;
-      }
-    }
-    return c;
-  }
-
   // Remaining jobs in waves of `jobs` at once, each wave as long as the mean job run so far.
-  std::string eta(const Counts& c) const {
+  std::string eta(const JobCounts& c) const {
     if (run_seconds_.empty()) return "ETA after the first job";
     double mean = 0.0;
     for (double s : run_seconds_) mean += s / double(run_seconds_.size());
@@ -191,24 +135,14 @@ class Pool {
   void report(const std::string& event = "") {
     last_progress_ = Clock::now();
     if (!opt_.progress) return;
-    const Counts c = counts();
+    const JobCounts c = count_jobs(record_);
     const std::string prefix = event.empty() ? "" : event + "; ";
     opt_.progress(fmt::format("{}sweep: {}/{} complete ({} reused), {} running, {} failed, {} to do, {:.0f} s, {}",
                               prefix, c.complete, jobs_.size(), c.reused, c.running, c.failed, c.pending,
                               seconds_since(started_), eta(c)));
   }
 
-  std::string overall_status() const {
-    const Counts c = counts();
-    if (c.complete == int(jobs_.size())) return "complete";
-    if (stop_ && c.pending > 0) return "interrupted";
-    return fmt::format("finished: {} of {} failed", c.failed, jobs_.size());
-  }
-
-  void write_record() {
-    record_["updated"] = io::utc_timestamp();
-    io::write_atomically(opt_.out / "sweep.json", record_.dump(2) + "\n");
-  }
+  void write_record() { campaign::write_record(record_, opt_.out); }
 
   const std::vector<Job>& jobs_;
   const PoolOptions& opt_;

@@ -6,6 +6,7 @@
 #include "campaign/jobs.hpp"
 #include "campaign/pool.hpp"
 #include "campaign/slurm.hpp"
+#include "campaign/slurm_executor.hpp"
 #include "io/directory_lock.hpp"
 #include "io/run_directory.hpp"
 
@@ -32,22 +33,43 @@ comparison::RunSetOutcome compare_complete_runs(const Comparison& c, const nlohm
   return comparison::run_hypothesis_set(set);
 }
 
+// The Slurm settings: the command line's, the time from the sweep file unless given, the job named
+// after the sweep; the tasks of --executor slurm run this very binary.
+SlurmOptions slurm_options(const SweepOptions& opt, const SweepSpec& spec) {
+  SlurmOptions s = opt.slurm;
+  s.name = "iwb-" + opt.sweep_file.stem().string();
+  s.processes = opt.processes;
+  if (s.time.empty()) s.time = spec.slurm_time;
+  if (opt.on_slurm) s.iwb = fs::read_symlink("/proc/self/exe").string();
+  return s;
+}
+
+nlohmann::json run_jobs_somewhere(const SweepSpec& spec, const std::vector<Job>& jobs, const SlurmOptions& slurm,
+                                  const SweepOptions& opt, const fs::path& out) {
+  if (!opt.on_slurm)
+    return run_jobs(spec, jobs, {out, opt.jobs, opt.processes, opt.stop_after, opt.command_line, opt.interrupt,
+                                 opt.progress});
+  return run_jobs_on_slurm(spec, jobs,
+                           {fs::absolute(out), slurm, opt.poll_seconds, 1, opt.command_line, opt.interrupt, opt.progress});
+}
+
 }  // namespace
 
 SweepOutcome run_sweep(const SweepOptions& opt) {
   const SweepSpec spec = load_sweep(opt.sweep_file);
   const std::vector<Job> jobs = expand_jobs(spec);  // refuses the sweep before anything is written
+  const SlurmOptions slurm = slurm_options(opt, spec);
+  if (opt.emit_slurm) check_slurm_options(slurm);
+  if (opt.on_slurm) check_slurm_submission(jobs, slurm);  // the cluster's judgement too, nothing queued
   SweepOutcome outcome{opt.out.empty() ? default_out(opt.sweep_file) : opt.out, {}, std::nullopt};
   const auto lock = io::DirectoryLock::take(outcome.out, opt.command_line);  // each job locks its own run
   write_scenes(jobs, outcome.out);
   if (opt.emit_slurm) {
     fs::create_directories(outcome.out / "logs");  // Slurm does not create the --output folder
-    io::write_atomically(outcome.out / "sweep.slurm",
-                         slurm_script(jobs, {"iwb-" + opt.sweep_file.stem().string(), opt.processes, spec.slurm_time}));
+    io::write_atomically(outcome.out / "sweep.slurm", slurm_script(jobs, slurm));
     return outcome;
   }
-  outcome.record = run_jobs(spec, jobs, {outcome.out, opt.jobs, opt.processes, opt.stop_after, opt.command_line,
-                                         opt.interrupt, opt.progress});
+  outcome.record = run_jobs_somewhere(spec, jobs, slurm, opt, outcome.out);
   const bool stopped = outcome.record["status"] == "interrupted";
   const bool any_complete = std::any_of(outcome.record["jobs"].begin(), outcome.record["jobs"].end(),
                                         [](const auto& j) { return j["status"] == "complete"; });

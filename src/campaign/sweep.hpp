@@ -1,9 +1,9 @@
 #pragma once
 // `iwb sweep`: a campaign of DEM runs from a sweep file (data/sweeps/README.md). Loads and expands
 // the sweep (every job's scene validated before anything runs), writes DIR/scenes/<job>.toml, then
-// either emits a Slurm array (DIR/sweep.slurm) or runs the jobs here (pool.hpp) and, when the
-// sweep names a comparison, the hypothesis checks of `iwb compare --runs` over the complete runs
-// into DIR/compare.
+// either emits a Slurm array (DIR/sweep.slurm) or runs the jobs, here (pool.hpp) or on Slurm
+// (slurm_executor.hpp), and, when the sweep names a comparison, the hypothesis checks of
+// `iwb compare --runs` over the complete runs into DIR/compare.
 #include <atomic>
 #include <filesystem>
 #include <functional>
@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 
+#include "campaign/slurm.hpp"
 #include "comparison/run_set.hpp"
 
 namespace iwb::campaign {
@@ -21,6 +22,9 @@ struct SweepOptions {
   int jobs = 1;
   int processes = 1;
   bool emit_slurm = false;
+  bool on_slurm = false;        // --executor slurm
+  SlurmOptions slurm;           // partition, account, memory, prologue; time empty: the sweep file's
+  double poll_seconds = 10.0;   // --executor slurm: how often squeue is asked
   int stop_after = 0;
   std::string command_line;
   const std::atomic<bool>* interrupt = nullptr;

@@ -198,3 +198,33 @@ engines = ["liggghts"]
       dir / "sub" / "walls.toml"));
   CHECK(named.front().name == "file-mine");
 }
+
+TEST_CASE("slurm options: a value Slurm would misread is refused naming the option, before anything is written",
+          "[campaign]") {
+  campaign::SlurmOptions ok;
+  ok.time = "00:20:00";
+  ok.partition = "short,long";
+  ok.account = "geo_lab-1";
+  ok.memory = "4G";
+  ok.prologue = {"module load openmpi", "export OMP_NUM_THREADS=1"};
+  CHECK_NOTHROW(campaign::check_slurm_options(ok));
+  const auto refused = [&](auto change, const std::string& message) {
+    auto o = ok;
+    change(o);
+    CHECK_THROWS_WITH(campaign::check_slurm_options(o), Catch::Contains(message) && Catch::Contains("nothing was submitted"));
+  };
+  refused([](auto& o) { o.partition = "short long"; }, "--partition 'short long': not a partition name");
+  refused([](auto& o) { o.account = "lab;rm -rf"; }, "--account 'lab;rm -rf': not an account name");
+  refused([](auto& o) { o.memory = "4GB"; }, "--mem '4GB': not a Slurm memory size");
+  refused([](auto& o) { o.time = "1h"; }, "--time '1h': not one of Slurm's --time formats");
+  refused([](auto& o) { o.prologue = {"#SBATCH --exclusive"}; }, "--prologue '#SBATCH --exclusive'");
+  // what reaches the script: each option as its #SBATCH line, the prologue before the jobs
+  const auto jobs = campaign::expand_jobs(campaign::load_sweep("data/sweeps/tiny.toml"));
+  ok.name = "iwb-tiny";
+  const std::string script = campaign::slurm_script(jobs, ok, {"", "--resume", "--force"});
+  CHECK_THAT(script, Catch::Contains("#SBATCH --partition=short,long\n#SBATCH --account=geo_lab-1\n#SBATCH --mem=4G\n"));
+  CHECK(script.find("module load openmpi\n") < script.find("case \"$SLURM_ARRAY_TASK_ID\""));
+  CHECK_THAT(script, Catch::Contains("--out runs/u10 --consolidated consolidated --resume ;;") &&
+                         Catch::Contains("--out runs/u0.1 --consolidated consolidated --force ;;") &&
+                         Catch::Contains("--out runs/u0.05 --consolidated consolidated $(resume runs/u0.05) ;;"));
+}
