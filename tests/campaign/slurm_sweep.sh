@@ -5,9 +5,12 @@
 #              job's summary.json is the same. On Slurm the longest job's task is cancelled with
 #              scancel once its consolidation has finished: the executor resubmits it, the task
 #              resumes from the run directory (consolidation not run again) and ends complete.
-#   failing    a sweep whose second job the engine rejects (consolidation allowed one window: the
-#              servo cannot converge): that job is resubmitted once, then reported failed with its
-#              task's log; the other job completes; the sweep exits 1.
+#              The three jobs share one consolidation across tasks: one consolidates, the two others
+#              (one waiting on its lock) start from its specimen.
+#   failing    a sweep on 2 ranks per task (mpirun inside the Slurm task) whose second job the
+#              engine rejects (consolidation allowed one window: the servo cannot converge): that job
+#              is resubmitted once, then reported failed with its task's log; the other job
+#              completes on 2 ranks; the sweep exits 1.
 #   refused    bad input exits 2 naming it, nothing submitted: a partition the cluster does not
 #              have (sbatch --test-only's own words), a time Slurm would not take, no sbatch on PATH.
 set -uo pipefail
@@ -78,6 +81,14 @@ m = json.load(open(sys.argv[1] + "/runs/u10/manifest.json"))
 assert len(m["resumed"]) == 1, m.get("resumed")
 print("u10 resumed at", m["resumed"][0])
 EOF
+  /usr/bin/python3 - "$scratch/slurm" <<'EOF' || fail "the tasks did not share one consolidation"
+import json, sys
+stages = [json.load(open(f"{sys.argv[1]}/runs/{j}/manifest.json"))["stages"]["consolidate"]["consolidation"]
+          for j in ("u0.05", "u10", "u0.1")]
+assert len({s["key"] for s in stages}) == 1, stages
+assert sum(1 for s in stages if "consolidated_in" in s) == 2, stages
+print("one consolidation for the three tasks, in", [s for s in stages if "consolidated_in" in s][0]["consolidated_in"])
+EOF
   for job in u0.05 u10 u0.1; do
     same_summaries "$scratch/local/runs/$job/summary.json" "$scratch/slurm/runs/$job/summary.json" ||
       fail "$job: the Slurm run's summary differs from the local one"
@@ -100,7 +111,7 @@ key = "consolidation.max_windows"
 label = "w"
 values = [60, 1]
 EOF
-  "$iwb" sweep "$scratch/failing.toml" -o "$scratch/out" --executor slurm --poll 1 >"$scratch/out.log" 2>&1; code=$?
+  "$iwb" sweep "$scratch/failing.toml" -o "$scratch/out" --executor slurm --np 2 --poll 1 >"$scratch/out.log" 2>&1; code=$?
   cat "$scratch/out.log"
   [ "$code" -eq 1 ] || fail "a sweep with a failed job exits $code, expected 1"
   grep -q "w1: its task ended with the run 'failed: servo did not converge" "$scratch/out.log" ||
@@ -110,6 +121,8 @@ EOF
   grep -q "servo did not converge" "$scratch/out/logs/"1-*.out || fail "the task's log does not say why"
   grep -q '"status": "finished: 1 of 2 failed"' "$scratch/out/sweep.json" || fail "sweep.json's status"
   grep -q '"status": "complete"' "$scratch/out/runs/w60/manifest.json" || fail "the other job did not complete"
+  grep -q '"processes": 2' "$scratch/out/runs/w60/manifest.json" || fail "the other job did not run on 2 ranks"
+  grep -q "Loop time of .* on 2 procs" "$scratch/out/runs/w60/liggghts/shear.out" || fail "LIGGGHTS did not run on 2 MPI ranks"
   ;;
 refused)
   before=$(jobs_submitted)
