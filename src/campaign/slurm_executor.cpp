@@ -139,12 +139,14 @@ class SlurmWatch {
 
   fs::path run_dir(std::size_t i) const { return opt_.out / run_path(jobs_[i]); }
 
-  // The Slurm job of each job's last task, from the sweep.json of an earlier watch of this campaign.
-  std::map<std::size_t, std::string> previous_tasks() const {
+  // The Slurm job of each job's last task, from the sweep.json of an earlier watch of this campaign
+  // (whose submissions the record keeps).
+  std::map<std::size_t, std::string> previous_tasks() {
     std::map<std::size_t, std::string> out;
     if (!fs::exists(opt_.out / "sweep.json")) return out;
     const json old = io::read_json_file(opt_.out / "sweep.json");
     if (old.value("executor", "") != "slurm") return out;
+    record_["slurm"]["submissions"] = old["slurm"].value("submissions", json::array());
     for (std::size_t i = 0; i < jobs_.size() && i < old["jobs"].size(); ++i) {
       const auto& j = old["jobs"][i];
       if (j.value("name", "") == jobs_[i].name && j.contains("slurm_job")) out[i] = j["slurm_job"];

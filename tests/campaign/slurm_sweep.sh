@@ -11,6 +11,9 @@
 #              engine rejects (consolidation allowed one window: the servo cannot converge): that job
 #              is resubmitted once, then reported failed with its task's log; the other job
 #              completes on 2 ranks; the sweep exits 1.
+#   adopt      the watcher stopped with Ctrl-C once the tasks are queued leaves them to Slurm (sweep
+#              "interrupted", the tasks still listed by squeue); the same command again adopts them
+#              (no second submission) and ends complete.
 #   refused    bad input exits 2 naming it, nothing submitted: a partition the cluster does not
 #              have (sbatch --test-only's own words), a time Slurm would not take, no sbatch on PATH.
 set -uo pipefail
@@ -123,6 +126,26 @@ EOF
   grep -q '"status": "complete"' "$scratch/out/runs/w60/manifest.json" || fail "the other job did not complete"
   grep -q '"processes": 2' "$scratch/out/runs/w60/manifest.json" || fail "the other job did not run on 2 ranks"
   grep -q "Loop time of .* on 2 procs" "$scratch/out/runs/w60/liggghts/shear.out" || fail "LIGGGHTS did not run on 2 MPI ranks"
+  ;;
+adopt)
+  "$iwb" sweep data/sweeps/tiny.toml -o "$scratch/out" --executor slurm --poll 1 >"$scratch/first.log" 2>&1 &
+  watcher=$!
+  for _ in $(seq 1 100); do grep -q "submitted Slurm job" "$scratch/first.log" && break; sleep 0.1; done
+  kill -INT $watcher; wait $watcher; code=$?
+  cat "$scratch/first.log"
+  [ "$code" -eq 1 ] || fail "the stopped watch exits $code, expected 1"
+  grep -q '"status": "interrupted"' "$scratch/out/sweep.json" || fail "the stopped watch's sweep.json is not interrupted"
+  [ "$(jobs_submitted)" -ge 1 ] || fail "stopping the watch took the tasks out of Slurm"
+  "$iwb" sweep data/sweeps/tiny.toml -o "$scratch/out" --executor slurm --poll 1 >"$scratch/second.log" 2>&1 ||
+    { cat "$scratch/second.log"; fail "the second watch failed"; }
+  cat "$scratch/second.log"
+  grep -q "submitted Slurm job" "$scratch/second.log" && fail "the second watch submitted again"
+  /usr/bin/python3 - "$scratch/out/sweep.json" <<'EOF' || fail "the second watch did not adopt the tasks"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["status"] == "complete" and len(d["slurm"]["submissions"]) == 1, d["slurm"]
+assert {j["start"] for j in d["jobs"]} <= {"adopted", "reused"}, [j["start"] for j in d["jobs"]]
+EOF
   ;;
 refused)
   before=$(jobs_submitted)

@@ -33,7 +33,8 @@ void require_slurm_for_slurm_options(const SweepCommand& o) {
 // The tasks' logs of the jobs that failed on Slurm: the last lines of each, so the reason is seen here.
 void print_failed_task_logs(const nlohmann::json& record, const std::filesystem::path& out) {
   for (const auto& j : record["jobs"]) {
-    if (!j.contains("log") || j["status"] == "complete") continue;
+    const std::string status = j["status"];
+    if (!j.contains("log") || status == "complete" || status == "queued" || status == "running") continue;
     fmt::print("{}: {}\n  log {}:\n", j["name"].get<std::string>(), j["status"].get<std::string>(),
                (out / j["log"].get<std::string>()).string());
     std::vector<std::string> lines;
@@ -60,6 +61,7 @@ int run_sweep(const SweepCommand& o, const CommandContext& context) {
     return 0;
   }
   if (opt.on_slurm) print_failed_task_logs(outcome.record, outcome.out);
+  if (outcome.record.contains("note")) fmt::print("{}\n", outcome.record["note"].get<std::string>());
   fmt::print("sweep: {} -> {}\n", outcome.record["status"].get<std::string>(), (outcome.out / "sweep.json").string());
   if (outcome.comparison) {
     print_hypothesis_checks(outcome.comparison->hypotheses);
