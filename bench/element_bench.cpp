@@ -1,12 +1,13 @@
 #include "bench/element_bench.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
-#include <fmt/core.h>
 
 #include "common/subprocess.hpp"
 #include "driver/element_test.hpp"
@@ -120,7 +121,8 @@ std::size_t shared_libraries_loaded() {
   std::ifstream maps("/proc/self/maps");
   std::set<std::string> libraries;
   for (std::string line; std::getline(maps, line);)
-    if (const auto at = line.find('/'); at != std::string::npos && line.find(".so", at) != std::string::npos)
+    if (const auto at = line.find('/');
+        at != std::string::npos && line.find(".so", at) != std::string::npos)
       libraries.insert(line.substr(at));
   return libraries.size();
 }
@@ -130,13 +132,18 @@ nlohmann::json startup_figure() {
   for (int i = 0; i < kStartupRuns; ++i) {
     const auto t0 = std::chrono::steady_clock::now();
     run_process({"/proc/self/exe", "--help"}, ".", [](const std::string&) { return true; });
-    ms.push_back(1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    ms.push_back(1e3 *
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   std::sort(ms.begin(), ms.end());
   const std::size_t libraries = shared_libraries_loaded();
-  fmt::print("\nstart-up: `iwb --help` as a whole process, best {:.1f} ms, median {:.1f} ms of {} runs; "
-             "{} shared libraries loaded (goal: under 5 ms)\n", ms.front(), ms[ms.size() / 2], kStartupRuns, libraries);
-  return {{"startup_best_ms", ms.front()}, {"startup_median_ms", ms[ms.size() / 2]}, {"shared_libraries", libraries}};
+  fmt::print(
+      "\nstart-up: `iwb --help` as a whole process, best {:.1f} ms, median {:.1f} ms of {} runs; "
+      "{} shared libraries loaded (goal: under 5 ms)\n",
+      ms.front(), ms[ms.size() / 2], kStartupRuns, libraries);
+  return {{"startup_best_ms", ms.front()},
+          {"startup_median_ms", ms[ms.size() / 2]},
+          {"shared_libraries", libraries}};
 }
 
 }  // namespace
@@ -145,9 +152,11 @@ nlohmann::json run_element_bench(const ElementBenchOptions& opt) {
   const auto base = io::shipped_inputs(kBaseSet);
   const auto extra = parameter_set(opt.igs_params);
   nlohmann::json out = nlohmann::json::array();
-  fmt::print("iwb bench element: Table 5.1 sand, e0 = 0.80, sigma_n = 100 kPa, CNL simple shear,\n"
-             "2000 increments of d gamma = 1e-4, adaptive rk32, rtol 1e-6, Newton to 1e-8; "
-             "best of {} runs, one core\n\n", opt.repeats);
+  fmt::print(
+      "iwb bench element: Table 5.1 sand, e0 = 0.80, sigma_n = 100 kPa, CNL simple shear,\n"
+      "2000 increments of d gamma = 1e-4, adaptive rk32, rtol 1e-6, Newton to 1e-8; "
+      "best of {} runs, one core\n\n",
+      opt.repeats);
   fmt::print("{:<16} {:>9} {:>11} {:>9} {:>12} {:>12} {:>13}\n", "model", "test ms", "rate evals",
              "Newton", "ns/eval dbl", "ns/eval dual", "evals/s (dbl)");
   std::vector<std::string> notes;
@@ -159,9 +168,11 @@ nlohmann::json run_element_bench(const ElementBenchOptions& opt) {
     } else if (missing_tables(extra, spec).empty()) {
       out.push_back(bench_model(spec, extra, spec.name + " *", opt));
       used_extra = true;
-    } else if (other_family(base, spec) && !declared.empty() && !spec.declaration.example_start.empty()) {
+    } else if (other_family(base, spec) && !declared.empty() &&
+               !spec.declaration.example_start.empty()) {
       // a model of another family (clay): its own declared example set and start
-      out.push_back(bench_model(spec, io::shipped_inputs(declared), spec.name + " +", opt, spec.declaration.example_start));
+      out.push_back(bench_model(spec, io::shipped_inputs(declared), spec.name + " +", opt,
+                                spec.declaration.example_start));
       used_declared = true;
     } else {
       notes.push_back(fmt::format("skipped {}: needs {}, in neither {} nor {}", spec.name,
@@ -172,7 +183,9 @@ nlohmann::json run_element_bench(const ElementBenchOptions& opt) {
     fmt::print("\n* parameters of {} at the same start: Table 5.1 has no [intergranular_strain]\n",
                extra.source);
   if (used_declared)
-    fmt::print("+ the model's own declared example set and start (iwb models; e.g. Table 6.1 for hcc, hce)\n");
+    fmt::print(
+        "+ the model's own declared example set and start (iwb models; e.g. Table 6.1 for hcc, "
+        "hce)\n");
   if (!notes.empty()) fmt::print("\n");
   for (const auto& n : notes) fmt::print("{} (pass --igs-params FILE)\n", n);
   fmt::print("\ntarget: the whole test under 10 ms on one core (issue 2)\n");

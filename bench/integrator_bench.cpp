@@ -100,7 +100,8 @@ std::vector<TradeoffPoint> run_tradeoff(const models::ModelSpec& spec,
                                         const TradeoffPath& tp,
                                         const std::vector<TradeoffSetting>& settings) {
   const auto model = spec.make(inputs);
-  const auto s0 = model->initial_state(models::offer(spec, inputs, {{"sigma_n_kPa", tp.sigma_n_kPa}, {"e0", tp.e0}}));
+  const auto s0 = model->initial_state(
+      models::offer(spec, inputs, {{"sigma_n_kPa", tp.sigma_n_kPa}, {"e0", tp.e0}}));
   const auto path = driver::monotonic_path({bc, tp.cns_K_kPa}, tp.gamma, driver::ShearDirection::kX,
                                            tp.increments);
   const auto ref = run_with(*model, s0, path, adaptive("rk54", kReferenceRtol));
@@ -306,7 +307,8 @@ nlohmann::json run_integrator_bench(const IntegratorBenchOptions& opt) {
                    p.status == "complete" ? "" : "  " + p.status.substr(0, 80));
         all.push_back(p);
       }
-  io::StagedDirectory staged(opt.out);  // the table, its summary and its fronts together or not at all
+  io::StagedDirectory staged(
+      opt.out);  // the table, its summary and its fronts together or not at all
   io::write_atomically(staged.path() / "integrators.csv", points_csv(all));
   const auto ov = overall(all, tp.increments);
   const std::string md = markdown(all, ov, opt, tp);

@@ -1,8 +1,9 @@
 #include "comparison/band_figures.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 #include <regex>
 
 #include "io/csv_table.hpp"
@@ -22,29 +23,43 @@ std::vector<std::string> field_files(const fs::path& fields) {
   const std::string pvd = io::read_file(fields / "fields.pvd");
   const std::regex entry("file=\"(fields_[0-9]+\\.vti)\"");
   std::vector<std::string> out;
-  for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), entry); it != std::sregex_iterator(); ++it) out.push_back((*it)[1]);
+  for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), entry); it != std::sregex_iterator();
+       ++it)
+    out.push_back((*it)[1]);
   return out;
 }
 
-Figure shear_rate_map(const fs::path& vti, double u_x_mm, double wall_mean, double d50, std::size_t k) {
+Figure shear_rate_map(const fs::path& vti, double u_x_mm, double wall_mean, double d50,
+                      std::size_t k) {
   const io::ImageGrid im = io::read_image(vti);
   const io::VtkArray* rate = nullptr;
   for (const auto& a : im.arrays)
     if (a.name == "shear_rate_dvx_dz_1_s") rate = &a;
   if (!rate) throw std::runtime_error(vti.string() + ": no shear_rate_dvx_dz_1_s");
-  Figure f{fmt::format("band_map_{}", k), fmt::format("|dV_x/dz| over x-z at u_x = {:.2f} mm (coarse-grained)", u_x_mm),
-           "x / d50", "z / d50 (above the wall's mean surface)", {}, {}, "", ""};
+  Figure f{fmt::format("band_map_{}", k),
+           fmt::format("|dV_x/dz| over x-z at u_x = {:.2f} mm (coarse-grained)", u_x_mm),
+           "x / d50",
+           "z / d50 (above the wall's mean surface)",
+           {},
+           {},
+           "",
+           ""};
   f.data.columns = {"x_over_d50", "z_over_d50", "shear_rate_1_s"};
   for (int j = 0; j < im.nz; ++j)
     for (int i = 0; i < im.nx; ++i)
-      f.data.rows.push_back({(im.origin.x() + i * im.spacing.x()) / d50, (im.origin.z() + j * im.spacing.z() - wall_mean) / d50,
-                             std::abs(rate->values[std::size_t(j) * std::size_t(im.nx) + std::size_t(i)])});
-  f.extra = "set size ratio -1\nset palette rgbformulae 21,22,23\nset cblabel '1/s'\nunset key\nset tics out\n";
+      f.data.rows.push_back(
+          {(im.origin.x() + i * im.spacing.x()) / d50,
+           (im.origin.z() + j * im.spacing.z() - wall_mean) / d50,
+           std::abs(rate->values[std::size_t(j) * std::size_t(im.nx) + std::size_t(i)])});
+  f.extra =
+      "set size ratio -1\nset palette rgbformulae 21,22,23\nset cblabel '1/s'\nunset key\nset tics "
+      "out\n";
   f.plot = fmt::format("plot {} using 1:2:3 skip 1 with image", gnuplot_string(f.name + ".csv"));
   return f;
 }
 
-Figure profiles_figure(const io::CsvTable& p, const std::vector<ShearZoneMark>& marks, double v_wall, double sigma_n) {
+Figure profiles_figure(const io::CsvTable& p, const std::vector<ShearZoneMark>& marks,
+                       double v_wall, double sigma_n) {
   const auto z = p.values("z_over_d50");
   const auto scaled = [&](const char* name, double by) {
     auto v = p.values(name);
@@ -55,8 +70,8 @@ Figure profiles_figure(const io::CsvTable& p, const std::vector<ShearZoneMark>& 
   double peak = 1e-30;
   for (double r : rate) peak = std::max(peak, std::abs(r));
   for (double& r : rate) r = std::abs(r) / peak;
-  Figure f = curves_figure("band_profiles", "Coarse-grained profiles, second half of the travel", "value (normalised)",
-                           "z / d50 (above the wall's mean surface)",
+  Figure f = curves_figure("band_profiles", "Coarse-grained profiles, second half of the travel",
+                           "value (normalised)", "z / d50 (above the wall's mean surface)",
                            {{"solid fraction", p.values("solid_fraction"), z},
                             {"V_x / v_wall", scaled("velocity_x_m_s", v_wall), z},
                             {"|dV_x/dz| / its peak", rate, z},
@@ -65,19 +80,22 @@ Figure profiles_figure(const io::CsvTable& p, const std::vector<ShearZoneMark>& 
   f.extra += "set xrange [-0.1:1.3]\n";
   const char* colours[] = {"#cc0000", "#0055cc", "#228833"};
   for (std::size_t i = 0; i < marks.size(); ++i)
-    f.extra += fmt::format("set arrow from -0.1,{0} to 1.3,{0} nohead dt 2 lw 2 lc rgb '{1}'\n"
-                           "set label {2} at 0.95,{0} offset 0,0.7 tc rgb '{1}'\n",
-                           marks[i].d_s_d50, colours[i % 3], gnuplot_string(marks[i].label));
+    f.extra += fmt::format(
+        "set arrow from -0.1,{0} to 1.3,{0} nohead dt 2 lw 2 lc rgb '{1}'\n"
+        "set label {2} at 0.95,{0} offset 0,0.7 tc rgb '{1}'\n",
+        marks[i].d_s_d50, colours[i % 3], gnuplot_string(marks[i].label));
   return f;
 }
 
 // The void ratio's change since the start of shear inside each marked shear zone: where the DEM's
 // dilation happens against where the model puts it.
-Figure void_ratio_figure(const fs::path& fields, const std::vector<std::string>& profiles, const std::vector<double>& u,
-                         const std::vector<ShearZoneMark>& marks, double d50_mm) {
+Figure void_ratio_figure(const fs::path& fields, const std::vector<std::string>& profiles,
+                         const std::vector<double>& u, const std::vector<ShearZoneMark>& marks,
+                         double d50_mm) {
   std::vector<PlotCurve> curves;
   for (const auto& m : marks) {
-    PlotCurve dem{fmt::format("DEM, coarse-grained, z <= {} ({:.1f} d50)", m.label, m.d_s_d50), {}, {}};
+    PlotCurve dem{
+        fmt::format("DEM, coarse-grained, z <= {} ({:.1f} d50)", m.label, m.d_s_d50), {}, {}};
     double e_start = NAN;
     for (std::size_t i = 0; i < profiles.size(); ++i) {
       const auto p = io::read_csv_table(fields / profiles[i]);
@@ -95,7 +113,8 @@ Figure void_ratio_figure(const fs::path& fields, const std::vector<std::string>&
     curves.push_back(std::move(dem));
     curves.push_back(std::move(model));
   }
-  return curves_figure("band_void_ratio", "Void ratio change inside the shear zone", "u_x (mm)", "e - e(start of shear)", curves);
+  return curves_figure("band_void_ratio", "Void ratio change inside the shear zone", "u_x (mm)",
+                       "e - e(start of shear)", curves);
 }
 
 }  // namespace
@@ -130,7 +149,9 @@ std::vector<Figure> band_figures(const fs::path& dem_dir, const std::vector<Shea
   }
   if (!marks.empty()) {
     std::vector<std::string> profiles;
-    for (const auto& f : files) profiles.push_back(std::regex_replace(f, std::regex("fields_([0-9]+)\\.vti"), "profile_$1.csv"));
+    for (const auto& f : files)
+      profiles.push_back(
+          std::regex_replace(f, std::regex("fields_([0-9]+)\\.vti"), "profile_$1.csv"));
     out.push_back(void_ratio_figure(fields, profiles, u, marks, 1e3 * d50));
   }
   return out;

@@ -21,6 +21,7 @@ struct ShearZoneMark {
 };
 
 // Empty if the run has no fields (coarse-graining off, or a run from before issue 21).
-std::vector<Figure> band_figures(const std::filesystem::path& dem_dir, const std::vector<ShearZoneMark>& marks);
+std::vector<Figure> band_figures(const std::filesystem::path& dem_dir,
+                                 const std::vector<ShearZoneMark>& marks);
 
 }  // namespace iwb::comparison

@@ -1,10 +1,9 @@
 #include "comparison/compare.hpp"
 
-#include "comparison/cyclic_verdicts.hpp"
-
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
+#include "comparison/cyclic_verdicts.hpp"
 #include "comparison/feasibility.hpp"
 #include "comparison/metrics.hpp"
 #include "comparison/verdicts.hpp"
@@ -32,20 +31,25 @@ FitBounds fit_bounds(const std::string& model) {
 
 std::pair<double, std::string> predicted_kappa(const models::ModelSpec& spec, const DemRun& dem,
                                                const models::ModelInputs& parameters) {
-  if (!spec.uses_roughness) return {1.0, fmt::format("no kappa_r ({} reads no wall roughness)", spec.name)};
+  if (!spec.uses_roughness)
+    return {1.0, fmt::format("no kappa_r ({} reads no wall roughness)", spec.name)};
   for (const auto& f : spec.declaration.fit)
-    if (f.target == models::FitParameter::Target::kRoughness && f.predict) return f.predict({dem.R_n, dem.d50_mm});
+    if (f.target == models::FitParameter::Target::kRoughness && f.predict)
+      return f.predict({dem.R_n, dem.d50_mm});
   const double k = parameters.roughness.kappa_r;
   return {k, fmt::format("kappa_r = {:g} ({} predicts none from the wall)", k, spec.name)};
 }
 
 std::string curves_csv(const DemRun& dem, const std::vector<Replay>& replays) {
-  std::string s = "variant,u_x_mm,tau_dem_kPa,tau_model_kPa,sigma_n_dem_kPa,sigma_n_model_kPa,u_n_dem_mm,u_n_model_mm\n";
+  std::string s =
+      "variant,u_x_mm,tau_dem_kPa,tau_model_kPa,sigma_n_dem_kPa,sigma_n_model_kPa,u_n_dem_mm,u_n_"
+      "model_mm\n";
   for (std::size_t v = 0; v < replays.size(); ++v) {
     const auto& r = replays[v];
     for (std::size_t i = 0; i < r.u_x_mm.size(); ++i)
-      s += fmt::format("{},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", v, r.u_x_mm[i], dem.tau_kPa[i],
-                       r.tau_kPa[i], dem.sigma_n_kPa[i], r.sigma_n_kPa[i], dem.u_n_mm[i], r.u_n_mm[i]);
+      s += fmt::format("{},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", v, r.u_x_mm[i],
+                       dem.tau_kPa[i], r.tau_kPa[i], dem.sigma_n_kPa[i], r.sigma_n_kPa[i],
+                       dem.u_n_mm[i], r.u_n_mm[i]);
   }
   return s;
 }
@@ -53,32 +57,40 @@ std::string curves_csv(const DemRun& dem, const std::vector<Replay>& replays) {
 // The DEM's seed band per row (mean and SD over the seeds, on the compared run's rows every seed
 // covers), for the report's figures.
 std::string seed_band_csv(const DemRun& dem, const SeedScatter& s) {
-  std::string out = "u_x_mm,tau_mean_kPa,tau_sd_kPa,sigma_n_mean_kPa,sigma_n_sd_kPa,u_n_mean_mm,u_n_sd_mm\n";
+  std::string out =
+      "u_x_mm,tau_mean_kPa,tau_sd_kPa,sigma_n_mean_kPa,sigma_n_sd_kPa,u_n_mean_mm,u_n_sd_mm\n";
   for (std::size_t i = 0; i < s.rows; ++i)
-    out += fmt::format("{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", dem.u_x_mm[i], s.tau.mean[i], s.tau.sd[i],
-                       s.sigma_n.mean[i], s.sigma_n.sd[i], s.u_n.mean[i], s.u_n.sd[i]);
+    out += fmt::format("{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", dem.u_x_mm[i],
+                       s.tau.mean[i], s.tau.sd[i], s.sigma_n.mean[i], s.sigma_n.sd[i],
+                       s.u_n.mean[i], s.u_n.sd[i]);
   return out;
 }
 
-Variant fitted_variant(const Variant& start, const FitResult& fit, const std::string& what, double d50) {
+Variant fitted_variant(const Variant& start, const FitResult& fit, const std::string& what,
+                       double d50) {
   Variant v = start;
   v.inputs.roughness.kappa_r = fit.kappa_r;
   v.d_s_mm = fit.d_s_mm;
-  const std::string kappa = fit.kappa_fitted ? fmt::format("kappa_r = {:.3f} +- {:.3f}", fit.kappa_r, fit.sigma_kappa_r)
-                                             : fmt::format("kappa_r fixed at {:g} (no roughness)", fit.kappa_r);
-  v.label = fmt::format("fitted to {}: {}, d_s = {:.2f} +- {:.2f} mm ({:.1f} d50)", what, kappa, fit.d_s_mm,
-                        fit.sigma_d_s_mm, fit.d_s_mm / d50);
+  const std::string kappa =
+      fit.kappa_fitted ? fmt::format("kappa_r = {:.3f} +- {:.3f}", fit.kappa_r, fit.sigma_kappa_r)
+                       : fmt::format("kappa_r fixed at {:g} (no roughness)", fit.kappa_r);
+  v.label = fmt::format("fitted to {}: {}, d_s = {:.2f} +- {:.2f} mm ({:.1f} d50)", what, kappa,
+                        fit.d_s_mm, fit.sigma_d_s_mm, fit.d_s_mm / d50);
   return v;
 }
 
 json fit_json(const FitResult& fit, const DemRun& dem, const Metrics& at_optimum) {
-  return {{"kappa_r", fit.kappa_r},         {"sigma_kappa_r", fit.sigma_kappa_r},
-          {"d_s_mm", fit.d_s_mm},           {"sigma_d_s_mm", fit.sigma_d_s_mm},
+  return {{"kappa_r", fit.kappa_r},
+          {"sigma_kappa_r", fit.sigma_kappa_r},
+          {"d_s_mm", fit.d_s_mm},
+          {"sigma_d_s_mm", fit.sigma_d_s_mm},
           {"d_s_over_d50", fit.d_s_mm / dem.d50_mm},
           {"rmse_tau_kPa", at_optimum.rmse_tau_kPa},
           {"rms_scaled_residual", fit.rms_scaled},
-          {"evaluations", fit.evaluations}, {"at_bound", fit.at_bound},
-          {"algorithm", fit.algorithm}, {"stop", fit.stop_reason}};
+          {"evaluations", fit.evaluations},
+          {"at_bound", fit.at_bound},
+          {"algorithm", fit.algorithm},
+          {"stop", fit.stop_reason}};
 }
 
 std::vector<DemRun> load_seeds(const CompareOptions& opt) {
@@ -93,12 +105,13 @@ json manifest_of(const CompareOptions& opt) {
   return {{"kind", "comparison"},
           {"workbench", {{"name", "iwb"}, {"version", IWB_VERSION}}},
           {"command_line", opt.command_line},
-          {"inputs", {{"dem_run", opt.dem_dir.string()},
-                      {"dem_manifest_sha256", io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json"))},
-                      {"seed_runs", seeds},
-                      {"parameters", opt.params},
-                      {"parameters_sha256", io::sha256_hex(io::read_file(opt.params))},
-                      {"predicted_d_s_over_d50", opt.predicted_ds_d50}}},
+          {"inputs",
+           {{"dem_run", opt.dem_dir.string()},
+            {"dem_manifest_sha256", io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json"))},
+            {"seed_runs", seeds},
+            {"parameters", opt.params},
+            {"parameters_sha256", io::sha256_hex(io::read_file(opt.params))},
+            {"predicted_d_s_over_d50", opt.predicted_ds_d50}}},
           {"started", io::utc_timestamp()},
           {"status", "running"}};
 }
@@ -107,7 +120,8 @@ json manifest_of(const CompareOptions& opt) {
 json headline(const json& predicted, const json& fitted, const Feasibility& scan) {
   auto summary = [](const json& verdicts) {
     json s = {{"holds", json::array()}, {"fails", json::array()}};
-    for (const auto& v : verdicts) s[v["verdict"] == "holds" ? "holds" : "fails"].push_back(v["quantity"]);
+    for (const auto& v : verdicts)
+      s[v["verdict"] == "holds" ? "holds" : "fails"].push_back(v["quantity"]);
     return s;
   };
   return {{"predicted", summary(predicted)}, {"fitted", summary(fitted)}, {"scan", to_json(scan)}};
@@ -121,15 +135,18 @@ double gutjahr_kappa_r(double R_n, double log_base) {
 }
 
 std::vector<Variant> standard_variants(const DemRun& dem, const std::string& model,
-                                       const models::ModelInputs& parameters, double predicted_ds_d50) {
+                                       const models::ModelInputs& parameters,
+                                       double predicted_ds_d50) {
   const auto& spec = models::find_model(model);
   const auto [kappa, kappa_label] = predicted_kappa(spec, dem, parameters);
   std::vector<std::pair<double, std::string>> thicknesses = {
       {predicted_ds_d50 * dem.d50_mm, fmt::format("d_s = {:g} d50", predicted_ds_d50)}};
   for (double k : {5.0, 10.0})
-    if (k != predicted_ds_d50) thicknesses.push_back({k * dem.d50_mm, fmt::format("d_s = {:g} d50", k)});
+    if (k != predicted_ds_d50)
+      thicknesses.push_back({k * dem.d50_mm, fmt::format("d_s = {:g} d50", k)});
   if (const auto band = dem.band_d50())
-    thicknesses.push_back({*band * dem.d50_mm, fmt::format("d_s = measured wall band ({:.2g} d50)", *band)});
+    thicknesses.push_back(
+        {*band * dem.d50_mm, fmt::format("d_s = measured wall band ({:.2g} d50)", *band)});
   std::vector<Variant> out;
   for (const auto& [d_s, label] : thicknesses) {
     Variant v{fmt::format("{}, {}", kappa_label, label), model, parameters, d_s};
@@ -141,20 +158,24 @@ std::vector<Variant> standard_variants(const DemRun& dem, const std::string& mod
 }
 
 namespace {
-// --roughness-scheme and --f-c applied to a variant's wall; InputError for what the model does not take.
+// --roughness-scheme and --f-c applied to a variant's wall; InputError for what the model does not
+// take.
 void chosen_roughness(const CompareOptions& opt, models::Roughness& r) {
   const auto& support = models::find_model(opt.model).declaration.roughness;
   if (!opt.roughness_scheme.empty()) {
     const auto named = support.scheme_named(opt.roughness_scheme);
     if (!named)
-      throw InputError(fmt::format("--roughness-scheme {}: {} takes {}", opt.roughness_scheme, opt.model,
-                                   support.schemes.empty() ? "no wall roughness" : support.scheme_names(", ")));
+      throw InputError(
+          fmt::format("--roughness-scheme {}: {} takes {}", opt.roughness_scheme, opt.model,
+                      support.schemes.empty() ? "no wall roughness" : support.scheme_names(", ")));
     r.scheme = *named;
   }
   if (!opt.f_c.empty()) {
     if (!support.reads_arnold_herle_factor(r.scheme))
-      throw InputError(fmt::format("--f-c {}: the rate factor of Arnold & Herle's sand scheme; give --roughness-scheme "
-                                   "arnold-herle with a sand model", opt.f_c));
+      throw InputError(fmt::format(
+          "--f-c {}: the rate factor of Arnold & Herle's sand scheme; give --roughness-scheme "
+          "arnold-herle with a sand model",
+          opt.f_c));
     r.f_c = models::parse_arnold_herle_factor(opt.f_c, "--f-c");
   }
 }
@@ -162,10 +183,13 @@ void chosen_roughness(const CompareOptions& opt, models::Roughness& r) {
 
 // The cyclic quantities of the runs the seed statistics rest on (seed_scatter's: the compared run
 // first unless it was left out), as the monotonic verdicts'.
-std::vector<cycles::CyclicQuantities> cycles_of_seeds(const DemRun& dem, const std::vector<DemRun>& seeds,
-                                                      const SeedScatter& scatter, const cycles::Program& program) {
+std::vector<cycles::CyclicQuantities> cycles_of_seeds(const DemRun& dem,
+                                                      const std::vector<DemRun>& seeds,
+                                                      const SeedScatter& scatter,
+                                                      const cycles::Program& program) {
   const auto admitted = [&](const DemRun& r) {
-    return std::find(scatter.runs.begin(), scatter.runs.end(), r.dir.string()) != scatter.runs.end();
+    return std::find(scatter.runs.begin(), scatter.runs.end(), r.dir.string()) !=
+           scatter.runs.end();
   };
   std::vector<cycles::CyclicQuantities> out;
   if (admitted(dem)) out.push_back(dem_cycles(dem, program));
@@ -203,14 +227,17 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
   const FitTargets joint = joint_targets(dem, scatter);
   const FitResult fit = fit_kappa_and_ds(dem, predicted, joint, bounds);
   candidates.push_back(fitted_variant(predicted, tau_fit, "tau alone", dem.d50_mm));
-  candidates.push_back(fitted_variant(predicted, fit, dem.boundary == driver::BoundaryKind::kCNL ? "tau and u_n" : "tau and sigma_n", dem.d50_mm));
+  candidates.push_back(fitted_variant(
+      predicted, fit,
+      dem.boundary == driver::BoundaryKind::kCNL ? "tau and u_n" : "tau and sigma_n", dem.d50_mm));
   const std::size_t fitted_index = candidates.size() - 1;
 
   std::vector<Replay> replays;
   json variants = json::array();
   const auto program = cyclic_program(dem);
   const auto dem_cyclic = program ? std::optional(dem_cycles(dem, *program)) : std::nullopt;
-  const auto seed_cycles = program ? cycles_of_seeds(dem, seeds, scatter, *program) : std::vector<cycles::CyclicQuantities>{};
+  const auto seed_cycles = program ? cycles_of_seeds(dem, seeds, scatter, *program)
+                                   : std::vector<cycles::CyclicQuantities>{};
   for (const auto& v : candidates) {
     replays.push_back(replay(dem, v));
     variants.push_back({{"index", replays.size() - 1},
@@ -222,38 +249,56 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
                         {"verdicts", to_json(judge(dem, scatter, replays.back(), tolerances))}});
     if (dem_cyclic) {  // issue 34: the cycles judged on the quantities of src/cycles/
       const auto model_cyclic = replay_cycles(dem, replays.back(), *program);
-      variants.back()["cyclic"] = {{"model", cycles::to_json(model_cyclic)},
-                                   {"verdicts", to_json(judge_cycles(dem, seed_cycles, model_cyclic))}};
+      variants.back()["cyclic"] = {
+          {"model", cycles::to_json(model_cyclic)},
+          {"verdicts", to_json(judge_cycles(dem, seed_cycles, model_cyclic))}};
     }
   }
-  const Feasibility scan = scan_feasibility(dem, scatter, predicted, tolerances, kScanPoints, bounds);
+  const Feasibility scan =
+      scan_feasibility(dem, scatter, predicted, tolerances, kScanPoints, bounds);
   json tol = json::object();
   for (const auto& [k, t] : tolerances) tol[k] = t;
   const json result = {
-      {"dem", {{"dir", opt.dem_dir.string()}, {"engine", dem.engine}, {"status", dem.status},
-               {"boundary", driver::to_string(dem.boundary)}, {"R_n", dem.R_n}, {"d50_mm", dem.d50_mm},
-               {"sigma_n0_kPa", dem.sigma_n_kPa.front()}, {"e0_band", dem.e_band.front()}}},
+      {"dem",
+       {{"dir", opt.dem_dir.string()},
+        {"engine", dem.engine},
+        {"status", dem.status},
+        {"boundary", driver::to_string(dem.boundary)},
+        {"R_n", dem.R_n},
+        {"d50_mm", dem.d50_mm},
+        {"sigma_n0_kPa", dem.sigma_n_kPa.front()},
+        {"e0_band", dem.e_band.front()}}},
       {"model", opt.model},
       {"cyclic", dem_cyclic ? cycles::to_json(*dem_cyclic) : json(nullptr)},
-      {"seeds", {{"runs", scatter.runs}, {"rows", scatter.rows}, {"tau_rms_sd_kPa", scatter.tau.rms_sd},
-                 {"u_n_rms_sd_mm", scatter.u_n.rms_sd}, {"sigma_n_rms_sd_kPa", scatter.sigma_n.rms_sd}}},
+      {"seeds",
+       {{"runs", scatter.runs},
+        {"rows", scatter.rows},
+        {"tau_rms_sd_kPa", scatter.tau.rms_sd},
+        {"u_n_rms_sd_mm", scatter.u_n.rms_sd},
+        {"sigma_n_rms_sd_kPa", scatter.sigma_n.rms_sd}}},
       {"tolerances", tol},
-      {"verdicts", {{"predicted_variant", 0}, {"tau_only_variant", fitted_index - 1}, {"fitted_variant", fitted_index},
-                    {"summary", headline(variants[0]["verdicts"], variants[fitted_index]["verdicts"], scan)}}},
+      {"verdicts",
+       {{"predicted_variant", 0},
+        {"tau_only_variant", fitted_index - 1},
+        {"fitted_variant", fitted_index},
+        {"summary", headline(variants[0]["verdicts"], variants[fitted_index]["verdicts"], scan)}}},
       {"variants", variants},
       {"fit", fit_json(fit, dem, compare(dem, replays[fitted_index]))},
       {"fit_tau_only", fit_json(tau_fit, dem, compare(dem, replays[fitted_index - 1]))},
-      {"replay", {{"normal_control", "the DEM's boundary condition: CNL with its measured sigma_n(t), CNS with its K, CV"},
-                  {"initial_state", "DEM sigma_n and band void ratio of the first row; K0 = 1 - sin(phi_c)"},
-                  {"strain_increment", kReplayStrainIncrement}}}};
-  std::vector<std::pair<std::string, std::string>> files = {{"compare.json", result.dump(2) + "\n"},
-                                                             {"compare.csv", curves_csv(dem, replays)}};
+      {"replay",
+       {{"normal_control",
+         "the DEM's boundary condition: CNL with its measured sigma_n(t), CNS with its K, CV"},
+        {"initial_state", "DEM sigma_n and band void ratio of the first row; K0 = 1 - sin(phi_c)"},
+        {"strain_increment", kReplayStrainIncrement}}}};
+  std::vector<std::pair<std::string, std::string>> files = {
+      {"compare.json", result.dump(2) + "\n"}, {"compare.csv", curves_csv(dem, replays)}};
   if (scatter.from_seeds()) files.push_back({"seed_band.csv", seed_band_csv(dem, scatter)});
   manifest["files"] = json::array();
   for (const auto& [name, content] : files) {
     io::write_atomically(opt.out / name, content);
     manifest["files"].push_back(name);
-    manifest["sha256"][name] = io::sha256_hex(content);  // `iwb report` refuses a file that changed since
+    manifest["sha256"][name] =
+        io::sha256_hex(content);  // `iwb report` refuses a file that changed since
   }
   manifest["finished"] = io::utc_timestamp();
   manifest["status"] = "complete";

@@ -1,15 +1,16 @@
 #include "comparison/cyclic_verdicts.hpp"
 
-#include "comparison/verdicts.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "comparison/verdicts.hpp"
 
 namespace iwb::comparison {
 
 namespace {
 
-constexpr double kPeakTolerance = 0.10, kRatioTolerance = 0.10, kUnTolerance = 0.20, kStiffnessTolerance = 0.30;
+constexpr double kPeakTolerance = 0.10, kRatioTolerance = 0.10, kUnTolerance = 0.20,
+                 kStiffnessTolerance = 0.30;
 constexpr double kUnFloorD50 = 0.02;  // as the monotonic dilation's floor (quantities.cpp)
 constexpr double kFrictionFloor = 0.01;
 
@@ -44,11 +45,13 @@ SeedValues over_seeds(const std::vector<std::optional<double>>& values) {
 
 struct Judge {
   std::vector<CyclicVerdict>& out;
-  void operator()(const std::string& quantity, const std::string& where, const std::vector<std::optional<double>>& dem,
-                  std::optional<double> model, double tolerance, double floor) {
+  void operator()(const std::string& quantity, const std::string& where,
+                  const std::vector<std::optional<double>>& dem, std::optional<double> model,
+                  double tolerance, double floor) {
     const SeedValues d = over_seeds(dem);
-    CyclicVerdict v{quantity, where, d.mean, model, std::nullopt, tolerance, "not reached", std::max<std::size_t>(d.n, 1),
-                    d.sd, std::nullopt, std::nullopt, std::nullopt};
+    CyclicVerdict v{quantity,     where,        d.mean,        model,
+                    std::nullopt, tolerance,    "not reached", std::max<std::size_t>(d.n, 1),
+                    d.sd,         std::nullopt, std::nullopt,  std::nullopt};
     const double scale = d.mean ? std::max(std::abs(*d.mean), floor) : 1.0;
     const SeedInterval i = seed_interval(d.sd, v.seeds, tolerance, scale);
     v.dem_ci = i.ci, v.detection_limit = i.detection_limit, v.seeds_needed = i.seeds_needed;
@@ -64,10 +67,18 @@ const cycles::Cycle* cycle_of(const cycles::CyclicQuantities& q, int c) {
   return nullptr;
 }
 
-double peak_plus(const cycles::Cycle& c) { return c.peak_friction_positive; }
-double peak_minus(const cycles::Cycle& c) { return c.peak_friction_negative; }
-double ratio(const cycles::Cycle& c) { return c.sigma_n_ratio; }
-double u_n_end(const cycles::Cycle& c) { return c.u_n_end_mm; }
+double peak_plus(const cycles::Cycle& c) {
+  return c.peak_friction_positive;
+}
+double peak_minus(const cycles::Cycle& c) {
+  return c.peak_friction_negative;
+}
+double ratio(const cycles::Cycle& c) {
+  return c.sigma_n_ratio;
+}
+double u_n_end(const cycles::Cycle& c) {
+  return c.u_n_end_mm;
+}
 double stiffness(const cycles::Cycle& c) {
   return 0.5 * (c.at_plus.secant_50_kPa_per_mm + c.at_minus.secant_50_kPa_per_mm);
 }
@@ -80,7 +91,8 @@ struct PerCycle {
   double floor;
 };
 
-std::optional<double> at_cycle(const cycles::CyclicQuantities& q, int c, double (*get)(const cycles::Cycle&)) {
+std::optional<double> at_cycle(const cycles::CyclicQuantities& q, int c,
+                               double (*get)(const cycles::Cycle&)) {
   const auto* x = cycle_of(q, c);
   return x ? std::optional(get(*x)) : std::nullopt;
 }
@@ -88,7 +100,8 @@ std::optional<double> at_cycle(const cycles::CyclicQuantities& q, int c, double 
 }  // namespace
 
 std::vector<double> cyclic_travel(const DemRun& dem) {
-  return cycles::travel_at_speed(dem.t_s, dem.scene_but_seed.value("/shear/velocity_mm_s"_json_pointer, 0.0));
+  return cycles::travel_at_speed(
+      dem.t_s, dem.scene_but_seed.value("/shear/velocity_mm_s"_json_pointer, 0.0));
 }
 
 std::optional<cycles::Program> cyclic_program(const DemRun& dem) {
@@ -100,19 +113,22 @@ std::optional<cycles::Program> cyclic_program(const DemRun& dem) {
 }
 
 cycles::CyclicQuantities dem_cycles(const DemRun& dem, const cycles::Program& program) {
-  return cycles::cyclic_quantities({cyclic_travel(dem), dem.u_x_mm, dem.u_n_mm, dem.sigma_n_kPa, dem.tau_kPa,
-                                    dem.e_band},
-                                   program);
+  return cycles::cyclic_quantities(
+      {cyclic_travel(dem), dem.u_x_mm, dem.u_n_mm, dem.sigma_n_kPa, dem.tau_kPa, dem.e_band},
+      program);
 }
 
-cycles::CyclicQuantities replay_cycles(const DemRun& dem, const Replay& r, const cycles::Program& program) {
+cycles::CyclicQuantities replay_cycles(const DemRun& dem, const Replay& r,
+                                       const cycles::Program& program) {
   auto travel = cyclic_travel(dem);
   travel.resize(r.u_x_mm.size());  // the rows the replay reached
   if (travel.size() < 2) return {};
-  return cycles::cyclic_quantities({travel, r.u_x_mm, r.u_n_mm, r.sigma_n_kPa, r.tau_kPa, {}}, program);
+  return cycles::cyclic_quantities({travel, r.u_x_mm, r.u_n_mm, r.sigma_n_kPa, r.tau_kPa, {}},
+                                   program);
 }
 
-std::vector<CyclicVerdict> judge_cycles(const DemRun& dem, const std::vector<cycles::CyclicQuantities>& seeds,
+std::vector<CyclicVerdict> judge_cycles(const DemRun& dem,
+                                        const std::vector<cycles::CyclicQuantities>& seeds,
                                         const cycles::CyclicQuantities& m) {
   const auto& d = seeds.front();  // the cycles judged: those of the compared run
   const auto each = [&](auto read) {
@@ -124,15 +140,18 @@ std::vector<CyclicVerdict> judge_cycles(const DemRun& dem, const std::vector<cyc
   Judge judge{out};
   const bool normal_stress_free = dem.boundary != driver::BoundaryKind::kCNL;  // CNS, CV
   const bool u_n_free = dem.boundary != driver::BoundaryKind::kCV;             // CNL, CNS
-  std::vector<PerCycle> judged = {{"peak_friction_positive", peak_plus, kPeakTolerance, kFrictionFloor},
-                                  {"peak_friction_negative", peak_minus, kPeakTolerance, kFrictionFloor}};
-  if (normal_stress_free) judged.push_back({"sigma_n_ratio", ratio, kRatioTolerance, kFrictionFloor});
+  std::vector<PerCycle> judged = {
+      {"peak_friction_positive", peak_plus, kPeakTolerance, kFrictionFloor},
+      {"peak_friction_negative", peak_minus, kPeakTolerance, kFrictionFloor}};
+  if (normal_stress_free)
+    judged.push_back({"sigma_n_ratio", ratio, kRatioTolerance, kFrictionFloor});
   if (u_n_free) judged.push_back({"u_n_end_mm", u_n_end, kUnTolerance, kUnFloorD50 * dem.d50_mm});
   judged.push_back({"reversal_secant_50_kPa_per_mm", stiffness, kStiffnessTolerance, 1.0});
   for (int c : judged_cycles(int(d.cycles.size())))
     for (const auto& q : judged)
-      judge(q.name, "cycle " + std::to_string(c), each([&](const auto& s) { return at_cycle(s, c, q.get); }),
-            at_cycle(m, c, q.get), q.tolerance, q.floor);
+      judge(q.name, "cycle " + std::to_string(c),
+            each([&](const auto& s) { return at_cycle(s, c, q.get); }), at_cycle(m, c, q.get),
+            q.tolerance, q.floor);
   if (d.post_cyclic) {
     const auto mp = m.post_cyclic;
     const auto peak = [](const auto& s) {
@@ -141,21 +160,34 @@ std::vector<CyclicVerdict> judge_cycles(const DemRun& dem, const std::vector<cyc
     const auto u_n = [](const auto& s) {
       return s.post_cyclic ? std::optional(s.post_cyclic->u_n_change_mm) : std::nullopt;
     };
-    judge("post_cyclic_peak_friction", "after the cycles", each(peak), peak(m), kPeakTolerance, kFrictionFloor);
+    judge("post_cyclic_peak_friction", "after the cycles", each(peak), peak(m), kPeakTolerance,
+          kFrictionFloor);
     if (u_n_free)
-      judge("post_cyclic_u_n_change_mm", "after the cycles", each(u_n), u_n(m), kUnTolerance, kUnFloorD50 * dem.d50_mm);
+      judge("post_cyclic_u_n_change_mm", "after the cycles", each(u_n), u_n(m), kUnTolerance,
+            kUnFloorD50 * dem.d50_mm);
   }
   return out;
 }
 
 nlohmann::json to_json(const std::vector<CyclicVerdict>& verdicts) {
-  auto opt = [](const std::optional<double>& x) { return x ? nlohmann::json(*x) : nlohmann::json(nullptr); };
+  auto opt = [](const std::optional<double>& x) {
+    return x ? nlohmann::json(*x) : nlohmann::json(nullptr);
+  };
   nlohmann::json out = nlohmann::json::array();
   for (const auto& v : verdicts)
-    out.push_back({{"quantity", v.quantity}, {"where", v.where}, {"unit", ""}, {"dem", opt(v.dem)}, {"dem_seed_sd", opt(v.dem_sd)},
-                   {"seeds", v.seeds}, {"dem_t_interval_95", opt(v.dem_ci)}, {"detection_limit", opt(v.detection_limit)},
-                   {"seeds_needed", v.seeds_needed ? nlohmann::json(*v.seeds_needed) : nlohmann::json(nullptr)},
-                   {"model", opt(v.model)}, {"relative_error", opt(v.error)}, {"tolerance", v.tolerance},
+    out.push_back({{"quantity", v.quantity},
+                   {"where", v.where},
+                   {"unit", ""},
+                   {"dem", opt(v.dem)},
+                   {"dem_seed_sd", opt(v.dem_sd)},
+                   {"seeds", v.seeds},
+                   {"dem_t_interval_95", opt(v.dem_ci)},
+                   {"detection_limit", opt(v.detection_limit)},
+                   {"seeds_needed",
+                    v.seeds_needed ? nlohmann::json(*v.seeds_needed) : nlohmann::json(nullptr)},
+                   {"model", opt(v.model)},
+                   {"relative_error", opt(v.error)},
+                   {"tolerance", v.tolerance},
                    {"verdict", v.verdict}});
   return out;
 }

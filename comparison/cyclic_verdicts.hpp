@@ -7,7 +7,8 @@
 //                                                          shaft friction fatigue)
 //   accumulated u_n at the cycle's end              20 %  (CNL and CNS; against at least 0.02 d50)
 //   secant stiffness over 50 % of A after reversals 30 %  (the 10 % secant is reported, not judged:
-//                                                          at 3e-4 it scatters by ~10 % per reversal)
+//                                                          at 3e-4 it scatters by ~10 % per
+//                                                          reversal)
 //   post-cyclic peak tau/sigma_n 10 %, its u_n change 20 %.
 // The DEM's value is the mean over the cell's seeds (those the monotonic verdicts rest on), with
 // the 95 % t-interval of that mean, the detection limit and the seeds an interval of half the
@@ -34,11 +35,12 @@ std::vector<double> cyclic_travel(const DemRun& dem);
 
 // The per-cycle quantities of the DEM run and of a replay of it (its rows are the DEM's, in time).
 cycles::CyclicQuantities dem_cycles(const DemRun& dem, const cycles::Program& program);
-cycles::CyclicQuantities replay_cycles(const DemRun& dem, const Replay& replay, const cycles::Program& program);
+cycles::CyclicQuantities replay_cycles(const DemRun& dem, const Replay& replay,
+                                       const cycles::Program& program);
 
 struct CyclicVerdict {
-  std::string quantity;  // e.g. "sigma_n_ratio"
-  std::string where;     // "cycle 5", "after the cycles"
+  std::string quantity;                     // e.g. "sigma_n_ratio"
+  std::string where;                        // "cycle 5", "after the cycles"
   std::optional<double> dem, model, error;  // dem: the seed mean
   double tolerance = 0.0;
   std::string verdict;
@@ -48,7 +50,8 @@ struct CyclicVerdict {
 };
 
 // `dem_seeds`: the quantities of each seed run of the cell (at least the compared run's).
-std::vector<CyclicVerdict> judge_cycles(const DemRun& dem, const std::vector<cycles::CyclicQuantities>& dem_seeds,
+std::vector<CyclicVerdict> judge_cycles(const DemRun& dem,
+                                        const std::vector<cycles::CyclicQuantities>& dem_seeds,
                                         const cycles::CyclicQuantities& model_q);
 
 nlohmann::json to_json(const std::vector<CyclicVerdict>& verdicts);

@@ -12,12 +12,14 @@ namespace iwb::comparison {
 namespace fs = std::filesystem;
 
 const std::vector<std::string>& required_timeseries_columns() {
-  static const std::vector<std::string> c = {"t_s", "u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa", "e_band"};
+  static const std::vector<std::string> c = {"t_s",         "u_x_mm",  "u_n_mm",
+                                             "sigma_n_kPa", "tau_kPa", "e_band"};
   return c;
 }
 
 std::optional<double> DemRun::band_d50() const {
-  if (summary.is_object() && summary.contains("wall_band_d50") && summary["wall_band_d50"].is_number())
+  if (summary.is_object() && summary.contains("wall_band_d50") &&
+      summary["wall_band_d50"].is_number())
     return summary["wall_band_d50"].get<double>();
   return std::nullopt;
 }
@@ -29,11 +31,13 @@ DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
   const auto m = io::read_json_file(manifest_path);
   r.status = io::json_field<std::string>(m, "/status", manifest_path);
   if (r.status != "complete" && !allow_partial)
-    throw InputError(fmt::format("{}: run status is '{}'; pass --allow-partial to compare it anyway",
-                                 dir.string(), r.status));
+    throw InputError(
+        fmt::format("{}: run status is '{}'; pass --allow-partial to compare it anyway",
+                    dir.string(), r.status));
   r.engine = m.value("/engine/name"_json_pointer, std::string("unknown"));
-  r.boundary = driver::parse_boundary_kind(io::json_field<std::string>(m, "/scene/resolved/boundary/type", manifest_path),
-                                           manifest_path.string() + ": /scene/resolved/boundary/type");
+  r.boundary = driver::parse_boundary_kind(
+      io::json_field<std::string>(m, "/scene/resolved/boundary/type", manifest_path),
+      manifest_path.string() + ": /scene/resolved/boundary/type");
   r.sigma_n0_kPa = io::json_field<double>(m, "/scene/resolved/boundary/sigma_n_kPa", manifest_path);
   r.K_kPa_per_mm = m.value("/scene/resolved/boundary/K_kPa_per_mm"_json_pointer, 0.0);
   r.d50_mm = io::json_field<double>(m, "/scene/resolved/particles/d50_mm", manifest_path);
@@ -49,14 +53,16 @@ DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
     if (ts.column(c) < 0) {
       std::string have;
       for (const auto& x : ts.columns) have += (have.empty() ? "" : ", ") + x;
-      throw InputError(fmt::format("{}:1: missing column '{}' (the header has: {})", ts_path.string(), c, have));
+      throw InputError(
+          fmt::format("{}:1: missing column '{}' (the header has: {})", ts_path.string(), c, have));
     }
-  if (ts.rows.size() < 2) throw InputError(fmt::format("{}: fewer than two rows", ts_path.string()));
+  if (ts.rows.size() < 2)
+    throw InputError(fmt::format("{}: fewer than two rows", ts_path.string()));
   r.t_s = ts.values("t_s");
   for (std::size_t i = 1; i < r.t_s.size(); ++i)
     if (!(r.t_s[i] > r.t_s[i - 1]))
-      throw InputError(fmt::format("{}:{}: t_s = {:g} after {:g}: time must increase", ts_path.string(), i + 2,
-                                   r.t_s[i], r.t_s[i - 1]));
+      throw InputError(fmt::format("{}:{}: t_s = {:g} after {:g}: time must increase",
+                                   ts_path.string(), i + 2, r.t_s[i], r.t_s[i - 1]));
   r.u_x_mm = ts.values("u_x_mm");
   r.u_n_mm = ts.values("u_n_mm");
   r.sigma_n_kPa = ts.values("sigma_n_kPa");
@@ -64,12 +70,15 @@ DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
   r.e_band = ts.values("e_band");
   for (std::size_t i = 0; i < r.sigma_n_kPa.size(); ++i)
     if (!(r.sigma_n_kPa[i] > 0.0))
-      throw InputError(fmt::format("{}:{}: sigma_n_kPa = {:g}; the contract's normal stress is compression "
-                                   "positive and must be > 0", ts_path.string(), i + 2, r.sigma_n_kPa[i]));
+      throw InputError(
+          fmt::format("{}:{}: sigma_n_kPa = {:g}; the contract's normal stress is compression "
+                      "positive and must be > 0",
+                      ts_path.string(), i + 2, r.sigma_n_kPa[i]));
   // the contract's profiles are the band the report draws: a run without them is refused here,
   // not by the report after a comparison was written (issue 37)
   if (!fs::exists(dir / "profiles.csv"))
-    throw InputError(fmt::format("{}: missing (the run-directory contract's velocity profiles)", (dir / "profiles.csv").string()));
+    throw InputError(fmt::format("{}: missing (the run-directory contract's velocity profiles)",
+                                 (dir / "profiles.csv").string()));
   if (fs::exists(dir / "summary.json")) r.summary = io::read_json_file(dir / "summary.json");
   return r;
 }

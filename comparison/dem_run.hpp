@@ -16,8 +16,8 @@ struct DemRun {
   std::string status;
   std::string engine;
   driver::BoundaryKind boundary;
-  double sigma_n0_kPa;   // the scene's consolidation stress
-  double K_kPa_per_mm;   // CNS
+  double sigma_n0_kPa;  // the scene's consolidation stress
+  double K_kPa_per_mm;  // CNS
   double d50_mm;
   double R_n;
   // the time series, contract units

@@ -21,30 +21,37 @@ double range(const std::vector<double>& x) {
 
 // A scale that is never 0: a DEM series without scatter or range (a CV run's u_n) gets a tiny
 // one relative to its magnitude, so a residual stays finite.
-double usable(double scale, double magnitude) { return std::max(scale, 1e-9 * std::max(magnitude, 1.0)); }
+double usable(double scale, double magnitude) {
+  return std::max(scale, 1e-9 * std::max(magnitude, 1.0));
+}
 
-void append(std::vector<double>& res, const std::vector<double>& dem, const std::vector<double>& model,
-            double scale) {
-  for (std::size_t i = 0; i < dem.size(); ++i) res.push_back(((i < model.size() ? model[i] : 0.0) - dem[i]) / scale);
+void append(std::vector<double>& res, const std::vector<double>& dem,
+            const std::vector<double>& model, double scale) {
+  for (std::size_t i = 0; i < dem.size(); ++i)
+    res.push_back(((i < model.size() ? model[i] : 0.0) - dem[i]) / scale);
 }
 
 }  // namespace
 
-FitTargets tau_only_targets() { return {1.0, 0.0, 0.0, "tau alone, in kPa"}; }
+FitTargets tau_only_targets() {
+  return {1.0, 0.0, 0.0, "tau alone, in kPa"};
+}
 
 FitTargets joint_targets(const DemRun& dem, const SeedScatter& s) {
   const bool seeds = s.from_seeds();
   const double tau = seeds ? s.tau.rms_sd : range(dem.tau_kPa);
   FitTargets t{usable(tau, range(dem.tau_kPa)), 0.0, 0.0, ""};
-  const char* what = seeds ? "seed scatter (RMS over rows of the SD across seeds)" : "range over the run (no seeds given)";
+  const char* what = seeds ? "seed scatter (RMS over rows of the SD across seeds)"
+                           : "range over the run (no seeds given)";
   if (dem.boundary == driver::BoundaryKind::kCNL) {
     t.u_n_scale_mm = usable(seeds ? s.u_n.rms_sd : range(dem.u_n_mm), range(dem.u_n_mm));
-    t.weighting = fmt::format("tau / {:.3g} kPa and u_n / {:.3g} mm: each by its {}", t.tau_scale_kPa,
-                              t.u_n_scale_mm, what);
+    t.weighting = fmt::format("tau / {:.3g} kPa and u_n / {:.3g} mm: each by its {}",
+                              t.tau_scale_kPa, t.u_n_scale_mm, what);
   } else {
-    t.sigma_n_scale_kPa = usable(seeds ? s.sigma_n.rms_sd : range(dem.sigma_n_kPa), range(dem.sigma_n_kPa));
-    t.weighting = fmt::format("tau / {:.3g} kPa and sigma_n / {:.3g} kPa: each by its {}", t.tau_scale_kPa,
-                              t.sigma_n_scale_kPa, what);
+    t.sigma_n_scale_kPa =
+        usable(seeds ? s.sigma_n.rms_sd : range(dem.sigma_n_kPa), range(dem.sigma_n_kPa));
+    t.weighting = fmt::format("tau / {:.3g} kPa and sigma_n / {:.3g} kPa: each by its {}",
+                              t.tau_scale_kPa, t.sigma_n_scale_kPa, what);
   }
   return t;
 }
@@ -59,18 +66,27 @@ Eigen::VectorXd fit_residuals(const DemRun& dem, const Replay& r, const FitTarge
 
 double value_of(const Variant& v, const models::FitParameter& what) {
   switch (what.target) {
-    case models::FitParameter::Target::kRoughness: return v.inputs.roughness.kappa_r;
-    case models::FitParameter::Target::kShearZone: return v.d_s_mm;
-    case models::FitParameter::Target::kParameter: return v.inputs.tables.at(what.table).at(what.key);
+    case models::FitParameter::Target::kRoughness:
+      return v.inputs.roughness.kappa_r;
+    case models::FitParameter::Target::kShearZone:
+      return v.d_s_mm;
+    case models::FitParameter::Target::kParameter:
+      return v.inputs.tables.at(what.table).at(what.key);
   }
   return NAN;
 }
 
 void set_value(Variant& v, const models::FitParameter& what, double x) {
   switch (what.target) {
-    case models::FitParameter::Target::kRoughness: v.inputs.roughness.kappa_r = x; return;
-    case models::FitParameter::Target::kShearZone: v.d_s_mm = x; return;
-    case models::FitParameter::Target::kParameter: v.inputs.tables[what.table][what.key] = x; return;
+    case models::FitParameter::Target::kRoughness:
+      v.inputs.roughness.kappa_r = x;
+      return;
+    case models::FitParameter::Target::kShearZone:
+      v.d_s_mm = x;
+      return;
+    case models::FitParameter::Target::kParameter:
+      v.inputs.tables[what.table][what.key] = x;
+      return;
   }
 }
 
@@ -78,15 +94,21 @@ VariantFit fit_variant(const DemRun& dem, const Variant& start, const FitTargets
                        const std::vector<Unknown>& unknowns) {
   const int n = int(unknowns.size());
   // the optimiser's coordinate of unknown k and back: ln x for a logarithmic one
-  const auto to_x = [&](int k, double v) { return unknowns[std::size_t(k)].what.logarithmic ? std::log(v) : v; };
-  const auto from_x = [&](int k, double x) { return unknowns[std::size_t(k)].what.logarithmic ? std::exp(x) : x; };
+  const auto to_x = [&](int k, double v) {
+    return unknowns[std::size_t(k)].what.logarithmic ? std::log(v) : v;
+  };
+  const auto from_x = [&](int k, double x) {
+    return unknowns[std::size_t(k)].what.logarithmic ? std::exp(x) : x;
+  };
   const auto variant_at = [&](const Eigen::VectorXd& x) {
     Variant v = start;
     for (int k = 0; k < n; ++k) set_value(v, unknowns[std::size_t(k)].what, from_x(k, x(k)));
     return v;
   };
   fitting::LeastSquaresProblem p;
-  p.residuals = [&](const Eigen::VectorXd& x) { return fit_residuals(dem, replay(dem, variant_at(x)), targets); };
+  p.residuals = [&](const Eigen::VectorXd& x) {
+    return fit_residuals(dem, replay(dem, variant_at(x)), targets);
+  };
   p.lower.resize(n), p.upper.resize(n), p.start.resize(n), p.difference_step.resize(n);
   for (int k = 0; k < n; ++k) {
     const auto& u = unknowns[std::size_t(k)];
@@ -99,7 +121,8 @@ VariantFit fit_variant(const DemRun& dem, const Variant& start, const FitTargets
   for (int k = 0; k < n; ++k) {
     const double v = from_x(k, r.x(k)), width = p.upper(k) - p.lower(k);
     const double sigma = unknowns[std::size_t(k)].what.logarithmic ? v * r.sigma(k) : r.sigma(k);
-    const bool at_bound = std::abs(r.x(k) - p.lower(k)) < kAtBound * width || std::abs(r.x(k) - p.upper(k)) < kAtBound * width;
+    const bool at_bound = std::abs(r.x(k) - p.lower(k)) < kAtBound * width ||
+                          std::abs(r.x(k) - p.upper(k)) < kAtBound * width;
     out.values.push_back({unknowns[std::size_t(k)].what.name, v, sigma, at_bound});
   }
   return out;
@@ -113,7 +136,8 @@ FitResult fit_kappa_and_ds(const DemRun& dem, const Variant& start, const FitTar
   using Target = models::FitParameter::Target;
   std::vector<Unknown> unknowns;
   if (kappa_fitted) unknowns.push_back({{"kappa_r", Target::kRoughness}, b.kappa_min, b.kappa_max});
-  unknowns.push_back({{"d_s", Target::kShearZone, {}, {}, 0.0, 0.0, false, true}, b.d_s_min_d50 * dem.d50_mm,
+  unknowns.push_back({{"d_s", Target::kShearZone, {}, {}, 0.0, 0.0, false, true},
+                      b.d_s_min_d50 * dem.d50_mm,
                       b.d_s_max_d50 * dem.d50_mm});
   Variant from = start;
   if (!kappa_fitted) from.inputs.roughness.kappa_r = b.kappa_min;
@@ -128,9 +152,11 @@ FitResult fit_kappa_and_ds(const DemRun& dem, const Variant& start, const FitTar
   out.evaluations = r.evaluations;
   for (const auto& v : r.values)
     if (v.at_bound) out.at_bound.push_back(v.name);
-  out.algorithm = fmt::format("NLopt LN_BOBYQA on {}; residuals: {}",
-                              kappa_fitted ? "(kappa_r, ln d_s)" : fmt::format("ln d_s (kappa_r fixed at {:g})", b.kappa_min),
-                              targets.weighting);
+  out.algorithm =
+      fmt::format("NLopt LN_BOBYQA on {}; residuals: {}",
+                  kappa_fitted ? "(kappa_r, ln d_s)"
+                               : fmt::format("ln d_s (kappa_r fixed at {:g})", b.kappa_min),
+                  targets.weighting);
   out.stop_reason = r.stop_reason;
   return out;
 }

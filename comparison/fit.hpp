@@ -37,8 +37,8 @@ FitTargets joint_targets(const DemRun& dem, const SeedScatter& scatter);
 struct FitResult {
   double kappa_r = 0.0, d_s_mm = 0.0;
   double sigma_kappa_r = 0.0, sigma_d_s_mm = 0.0;  // one standard deviation
-  bool kappa_fitted = true;                         // false: kappa_r fixed (a model without roughness)
-  double rms_scaled = 0.0;                          // RMS residual at the optimum, in scale units
+  bool kappa_fitted = true;  // false: kappa_r fixed (a model without roughness)
+  double rms_scaled = 0.0;   // RMS residual at the optimum, in scale units
   int evaluations = 0;
   // "kappa_r" or "d_s" where the optimum sits on the box's bound: the data ask for more than the
   // model's parameter range allows (kappa_r > 1 would be rougher than fully rough)
@@ -62,8 +62,8 @@ struct FittedValue {
 };
 
 struct VariantFit {
-  Variant best;                      // the start with every fitted value set
-  std::vector<FittedValue> values;   // in the order of the unknowns
+  Variant best;                     // the start with every fitted value set
+  std::vector<FittedValue> values;  // in the order of the unknowns
   double rms_scaled = 0.0;
   int evaluations = 0;
   std::string stop_reason;

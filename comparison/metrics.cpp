@@ -21,7 +21,8 @@ Friction friction(const std::vector<double>& u, const std::vector<double>& tau,
                   const std::vector<double>& sigma, std::size_t n) {
   Friction f{0.0, 0.0, 0.0};
   for (std::size_t i = 0; i < n; ++i)
-    if (std::abs(tau[i]) / sigma[i] > f.peak) f.peak = std::abs(tau[i]) / sigma[i], f.u_at_peak = u[i];
+    if (std::abs(tau[i]) / sigma[i] > f.peak)
+      f.peak = std::abs(tau[i]) / sigma[i], f.u_at_peak = u[i];
   const double from = (1.0 - kResidualWindowShare) * u[n - 1];
   int count = 0;
   for (std::size_t i = 0; i < n; ++i)
@@ -44,20 +45,29 @@ Metrics compare(const DemRun& dem, const Replay& r) {
   m.residual_friction_dem = fd.residual, m.residual_friction_model = fm.residual;
   m.u_x_at_peak_dem_mm = fd.u_at_peak, m.u_x_at_peak_model_mm = fm.u_at_peak;
   if (dem.boundary != driver::BoundaryKind::kCV) m.rmse_u_n_mm = rmse(dem.u_n_mm, r.u_n_mm, n);
-  if (dem.boundary != driver::BoundaryKind::kCNL) m.rmse_sigma_n_kPa = rmse(dem.sigma_n_kPa, r.sigma_n_kPa, n);
+  if (dem.boundary != driver::BoundaryKind::kCNL)
+    m.rmse_sigma_n_kPa = rmse(dem.sigma_n_kPa, r.sigma_n_kPa, n);
   return m;
 }
 
 nlohmann::json to_json(const Metrics& m) {
-  auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  auto opt = [](const std::optional<double>& v) {
+    return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+  };
   return {{"rows_compared", m.rows_compared},
           {"rmse_tau_kPa", m.rmse_tau_kPa},
-          {"peak_friction", {{"dem", m.peak_friction_dem}, {"model", m.peak_friction_model},
-                             {"error", m.peak_friction_model - m.peak_friction_dem}}},
-          {"residual_friction", {{"dem", m.residual_friction_dem}, {"model", m.residual_friction_model},
-                                 {"error", m.residual_friction_model - m.residual_friction_dem}}},
-          {"u_x_at_peak_mm", {{"dem", m.u_x_at_peak_dem_mm}, {"model", m.u_x_at_peak_model_mm},
-                              {"error", m.u_x_at_peak_model_mm - m.u_x_at_peak_dem_mm}}},
+          {"peak_friction",
+           {{"dem", m.peak_friction_dem},
+            {"model", m.peak_friction_model},
+            {"error", m.peak_friction_model - m.peak_friction_dem}}},
+          {"residual_friction",
+           {{"dem", m.residual_friction_dem},
+            {"model", m.residual_friction_model},
+            {"error", m.residual_friction_model - m.residual_friction_dem}}},
+          {"u_x_at_peak_mm",
+           {{"dem", m.u_x_at_peak_dem_mm},
+            {"model", m.u_x_at_peak_model_mm},
+            {"error", m.u_x_at_peak_model_mm - m.u_x_at_peak_dem_mm}}},
           {"rmse_u_n_mm", opt(m.rmse_u_n_mm)},
           {"rmse_sigma_n_kPa", opt(m.rmse_sigma_n_kPa)}};
 }

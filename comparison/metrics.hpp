@@ -17,8 +17,8 @@ struct Metrics {
   double peak_friction_dem, peak_friction_model;
   double residual_friction_dem, residual_friction_model;  // mean over the last fifth of u_x
   double u_x_at_peak_dem_mm, u_x_at_peak_model_mm;
-  std::optional<double> rmse_u_n_mm;         // CNL and CNS: dilation u_n(u_x)
-  std::optional<double> rmse_sigma_n_kPa;    // CNS and CV: the normal-stress path
+  std::optional<double> rmse_u_n_mm;       // CNL and CNS: dilation u_n(u_x)
+  std::optional<double> rmse_sigma_n_kPa;  // CNS and CV: the normal-stress path
   std::size_t rows_compared;
 };
 

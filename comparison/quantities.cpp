@@ -56,11 +56,12 @@ std::vector<std::string> judged_quantities(driver::BoundaryKind boundary) {
   return k;
 }
 
-std::map<std::string, std::optional<double>> evaluate_quantities(const Curve& c,
-                                                                 const std::vector<std::string>& keys) {
+std::map<std::string, std::optional<double>> evaluate_quantities(
+    const Curve& c, const std::vector<std::string>& keys) {
   std::map<std::string, std::optional<double>> out;
   for (const auto& k : keys) out[k] = std::nullopt;
-  const std::size_t n = std::min({c.u_x_mm.size(), c.tau_kPa.size(), c.sigma_n_kPa.size(), c.u_n_mm.size()});
+  const std::size_t n =
+      std::min({c.u_x_mm.size(), c.tau_kPa.size(), c.sigma_n_kPa.size(), c.u_n_mm.size()});
   if (n < 2) return out;
   std::vector<double> friction(n);
   for (std::size_t i = 0; i < n; ++i) friction[i] = std::abs(c.tau_kPa[i]) / c.sigma_n_kPa[i];

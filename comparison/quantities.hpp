@@ -13,14 +13,14 @@
 namespace iwb::comparison {
 
 struct QuantityInfo {
-  const char* key;     // as in a scene's [requirements] and in compare.json
-  const char* name;    // for people
-  const char* unit;    // of the value; "" for ratios
-  double tolerance;    // default relative tolerance (issue 14), overridden by [requirements]
+  const char* key;   // as in a scene's [requirements] and in compare.json
+  const char* name;  // for people
+  const char* unit;  // of the value; "" for ratios
+  double tolerance;  // default relative tolerance (issue 14), overridden by [requirements]
   // Relative errors are taken against max(|DEM value|, floor): a DEM value near zero (a flat
   // wall that barely dilates) would otherwise turn a small absolute miss into an infinite one.
   double floor;
-  bool floor_in_d50;   // the floor is in grain diameters (lengths), else in the value's unit
+  bool floor_in_d50;  // the floor is in grain diameters (lengths), else in the value's unit
 };
 
 // In the order reports list them.
@@ -41,7 +41,7 @@ struct Curve {
 
 // Each quantity of `keys` from the curve; nullopt where the curve cannot give it (fewer than two
 // rows, or no rows in the last fifth).
-std::map<std::string, std::optional<double>> evaluate_quantities(const Curve& curve,
-                                                                 const std::vector<std::string>& keys);
+std::map<std::string, std::optional<double>> evaluate_quantities(
+    const Curve& curve, const std::vector<std::string>& keys);
 
 }  // namespace iwb::comparison

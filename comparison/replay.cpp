@@ -1,7 +1,8 @@
 #include "comparison/replay.hpp"
 
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
 
 #include "common/errors.hpp"
 
@@ -36,7 +37,8 @@ Replay replay(const DemRun& dem, const Variant& v, const driver::RunSettings& se
     // a miss like an inadmissible start
     model = spec.make(in);
     // from the DEM's first state: its sigma_n, the void ratio of its wall band
-    const auto init = models::offer(spec, v.inputs, {{"sigma_n_kPa", dem.sigma_n_kPa.front()}, {"e0", out.e0}});
+    const auto init =
+        models::offer(spec, v.inputs, {{"sigma_n_kPa", dem.sigma_n_kPa.front()}, {"e0", out.e0}});
     s0 = model->initial_state(init);
   } catch (const InputError& e) {
     // the DEM's start lies outside this variant's domain (a clay model's critical state cone

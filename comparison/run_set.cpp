@@ -31,7 +31,8 @@ Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
   const bool same = m.value("/inputs/dem_manifest_sha256"_json_pointer, std::string()) ==
                         io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json")) &&
                     m.value("/inputs/seed_runs"_json_pointer, json()) == seeds &&
-                    m.value("/inputs/predicted_d_s_over_d50"_json_pointer, json()) == json(opt.predicted_ds_d50) &&
+                    m.value("/inputs/predicted_d_s_over_d50"_json_pointer, json()) ==
+                        json(opt.predicted_ds_d50) &&
                     m.value("/inputs/parameters_sha256"_json_pointer, std::string()) ==
                         io::sha256_hex(io::read_file(opt.params)) &&
                     io::read_json_file(dir / "compare.json").value("model", "") == opt.model;

@@ -1,8 +1,8 @@
 #pragma once
 // `iwb compare --runs DIR...`: every DEM run of a set compared (or an earlier complete comparison
 // of the same inputs reused) into OUT/<run name>, with the runs of the set that are its scene with
-// other seeds as its seeds (comparison/seed_scatter.hpp), then the hypothesis checks over the set into
-// OUT/hypotheses.json and OUT/hypotheses.md, with OUT/manifest.json saying what was done.
+// other seeds as its seeds (comparison/seed_scatter.hpp), then the hypothesis checks over the set
+// into OUT/hypotheses.json and OUT/hypotheses.md, with OUT/manifest.json saying what was done.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>

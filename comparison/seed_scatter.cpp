@@ -16,9 +16,10 @@ namespace {
 
 void check_same_scene(const DemRun& run, const DemRun& seed) {
   if (seed.scene_but_seed != run.scene_but_seed)
-    throw InputError(fmt::format("{}: not a seed of {}: its scene differs in more than the seed "
-                                 "(manifest.json /scene/resolved)",
-                                 seed.dir.string(), run.dir.string()));
+    throw InputError(
+        fmt::format("{}: not a seed of {}: its scene differs in more than the seed "
+                    "(manifest.json /scene/resolved)",
+                    seed.dir.string(), run.dir.string()));
 }
 
 // The displacement travelled since the start of shear (u_x = 0) at each row: cyclic paths
@@ -55,15 +56,17 @@ MeanSd mean_sd(const std::vector<double>& x) {
 }
 
 // Per row of the compared run (`where`, its travel), mean and SD over the seeds of one series.
-SeriesScatter series_scatter(const std::vector<const DemRun*>& all, const std::vector<double>& where,
-                             std::size_t rows, std::vector<double> DemRun::*member) {
+SeriesScatter series_scatter(const std::vector<const DemRun*>& all,
+                             const std::vector<double>& where, std::size_t rows,
+                             std::vector<double> DemRun::*member) {
   SeriesScatter out;
   std::vector<std::vector<double>> travels;  // once per run, not per row
   for (const auto* r : all) travels.push_back(travel(*r));
   double sum = 0.0;
   for (std::size_t i = 0; i < rows; ++i) {
     std::vector<double> values;
-    for (std::size_t k = 0; k < all.size(); ++k) values.push_back(at(travels[k], all[k]->*member, where[i]));
+    for (std::size_t k = 0; k < all.size(); ++k)
+      values.push_back(at(travels[k], all[k]->*member, where[i]));
     const auto ms = mean_sd(values);
     out.mean.push_back(ms.mean), out.sd.push_back(ms.sd), sum += ms.sd * ms.sd;
   }
@@ -75,7 +78,8 @@ void quantity_scatter(const std::vector<const DemRun*>& all, SeedScatter& out) {
   const auto keys = judged_quantities(all.front()->boundary);
   std::map<std::string, std::vector<double>> values;
   for (const auto* r : all)
-    for (const auto& [k, v] : evaluate_quantities({r->u_x_mm, r->tau_kPa, r->sigma_n_kPa, r->u_n_mm}, keys))
+    for (const auto& [k, v] :
+         evaluate_quantities({r->u_x_mm, r->tau_kPa, r->sigma_n_kPa, r->u_n_mm}, keys))
       if (v) values[k].push_back(*v);
   for (const auto& [k, v] : values) {
     const auto ms = mean_sd(v);
@@ -103,7 +107,8 @@ std::vector<const DemRun*> admitted(const std::vector<const DemRun*>& all, SeedS
       out.left_out.emplace_back(r->dir.string(), kAtThePlate);
   for (const auto* r : kept) {
     if (summary_text(*r, "residual_is") == "not steady") out.not_steady.push_back(r->dir.string());
-    if (summary_text(*r, "shear_mode") == "split between wall and plate") out.split.push_back(r->dir.string());
+    if (summary_text(*r, "shear_mode") == "split between wall and plate")
+      out.split.push_back(r->dir.string());
   }
   return kept;
 }
@@ -117,11 +122,13 @@ SeedScatter seed_scatter(const DemRun& run, const std::vector<DemRun>& other_see
   all = admitted(all, out);
   const auto where = travel(run);
   double covered = where.back();
-  for (const auto* r : all) out.runs.push_back(r->dir.string()), covered = std::min(covered, travel(*r).back());
+  for (const auto* r : all)
+    out.runs.push_back(r->dir.string()), covered = std::min(covered, travel(*r).back());
   // the run's rows up to the shortest seed's end (to half an output interval: the same end
   // displacement, written a fraction of an interval apart)
   const double half_row = 0.5 * where.back() / double(where.size());
-  out.rows = std::size_t(std::upper_bound(where.begin(), where.end(), covered + half_row) - where.begin());
+  out.rows =
+      std::size_t(std::upper_bound(where.begin(), where.end(), covered + half_row) - where.begin());
   out.tau = series_scatter(all, where, out.rows, &DemRun::tau_kPa);
   out.u_n = series_scatter(all, where, out.rows, &DemRun::u_n_mm);
   out.sigma_n = series_scatter(all, where, out.rows, &DemRun::sigma_n_kPa);

@@ -4,9 +4,9 @@
 // (tau in kPa, u_n in mm: each residual in units of its own scatter) and tells a verdict whether
 // a model's miss is larger than the DEM's own uncertainty.
 #include <map>
-#include <utility>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "comparison/dem_run.hpp"
@@ -32,7 +32,7 @@ struct SeedScatter {
   // Runs kept whose shear split between the wall and the plate (a far field moving at 25-75 % of
   // the first layer's speed): they measured the wall in part.
   std::vector<std::string> split;
-  std::size_t rows = 0;           // the compared run's rows that every seed covers
+  std::size_t rows = 0;  // the compared run's rows that every seed covers
   // contract units (kPa, mm, kPa). Seeds write their rows at other u_x (the output fires on
   // whole multiples of its interval counted from the engine's step 0, and consolidation takes a
   // different number of steps per seed): each seed is interpolated linearly in the travelled

@@ -28,16 +28,19 @@ std::string with_interval(const json& verdict) {
   const std::string ci = value(verdict["dem_t_interval_95"], unit);
   const json& needed = verdict["seeds_needed"];
   const std::string need = needed.is_number() ? fmt::format("; {} needed", needed.get<int>()) : "";
-  return fmt::format("{} ± {} (95 % t, {} seeds{})", value(verdict["dem"], unit), ci.substr(0, ci.find(' ')),
-                     verdict["seeds"].get<std::size_t>(), need);
+  return fmt::format("{} ± {} (95 % t, {} seeds{})", value(verdict["dem"], unit),
+                     ci.substr(0, ci.find(' ')), verdict["seeds"].get<std::size_t>(), need);
 }
 
-std::string percent(const json& x) { return x.is_number() ? fmt::format("{:.0f} %", 100 * x.get<double>()) : "-"; }
+std::string percent(const json& x) {
+  return x.is_number() ? fmt::format("{:.0f} %", 100 * x.get<double>()) : "-";
+}
 
 std::string model_cell(const json& verdict) {
   if (!verdict["model"].is_number()) return "not reached";
   const std::string unit = verdict["unit"];
-  return fmt::format("{} ({:+.0f} %)", value(verdict["model"], unit), 100 * verdict["relative_error"].get<double>());
+  return fmt::format("{} ({:+.0f} %)", value(verdict["model"], unit),
+                     100 * verdict["relative_error"].get<double>());
 }
 
 std::string holds_list(const json& s) {
@@ -48,11 +51,15 @@ std::string holds_list(const json& s) {
 
 // Where the joint fit stops on the box's bound, the data ask for more than the model allows.
 std::string bound_note(const json& fit) {
-  if (!fit.contains("at_bound") || fit["at_bound"].empty()) return "The joint fit's optimum is inside the box.";
+  if (!fit.contains("at_bound") || fit["at_bound"].empty())
+    return "The joint fit's optimum is inside the box.";
   std::string which;
-  for (const auto& b : fit["at_bound"]) which += (which.empty() ? "" : " and ") + b.get<std::string>();
-  return fmt::format("The joint fit stops on the bound of {}: the DEM asks for more than the model's range allows "
-                     "(kappa_r <= 1 is fully rough).", which);
+  for (const auto& b : fit["at_bound"])
+    which += (which.empty() ? "" : " and ") + b.get<std::string>();
+  return fmt::format(
+      "The joint fit stops on the bound of {}: the DEM asks for more than the model's range allows "
+      "(kappa_r <= 1 is fully rough).",
+      which);
 }
 
 // What the verdicts rest on: the detection limit's meaning and each note once (runs left out,
@@ -64,8 +71,9 @@ std::string statistics_note(const json& verdicts) {
       const std::string text = v["name"].get<std::string>() + ": " + n.get<std::string>();
       if (std::find(notes.begin(), notes.end(), text) == notes.end()) notes.push_back(text);
     }
-  std::string out = "'detects': the smallest relative error the DEM can call 'breaks' (the tolerance plus the "
-                    "95 % t-interval of its seed mean).";
+  std::string out =
+      "'detects': the smallest relative error the DEM can call 'breaks' (the tolerance plus the "
+      "95 % t-interval of its seed mean).";
   for (const auto& n : notes) out += " " + n + ".";
   return out;
 }
@@ -73,7 +81,9 @@ std::string statistics_note(const json& verdicts) {
 }  // namespace
 
 Table verdict_table(const json& cmp) {
-  Table t{{"quantity", "DEM", "predicted model", "fitted model", "tolerance", "detects", "predicted", "fitted"}, {}};
+  Table t{{"quantity", "DEM", "predicted model", "fitted model", "tolerance", "detects",
+           "predicted", "fitted"},
+          {}};
   const auto& v = cmp["variants"];
   const auto& pred = v[cmp["verdicts"]["predicted_variant"].get<std::size_t>()]["verdicts"];
   const auto& fit = v[cmp["verdicts"]["fitted_variant"].get<std::size_t>()]["verdicts"];
@@ -82,13 +92,15 @@ Table verdict_table(const json& cmp) {
     const std::string unit = p["unit"];
     t.rows.push_back({p["name"].get<std::string>() + (unit.empty() ? "" : " (" + unit + ")"),
                       with_interval(p), model_cell(p), model_cell(fit[i]), percent(p["tolerance"]),
-                      percent(p["detection_limit"]), p["verdict"].get<std::string>(), fit[i]["verdict"].get<std::string>()});
+                      percent(p["detection_limit"]), p["verdict"].get<std::string>(),
+                      fit[i]["verdict"].get<std::string>()});
   }
   return t;
 }
 
 Table cyclic_verdict_table(const json& cmp) {
-  Table t{{"quantity", "where", "DEM", "predicted model", "fitted model", "tolerance", "detects", "predicted", "fitted"},
+  Table t{{"quantity", "where", "DEM", "predicted model", "fitted model", "tolerance", "detects",
+           "predicted", "fitted"},
           {}};
   const auto& v = cmp["variants"];
   const auto& pred = v[cmp["verdicts"]["predicted_variant"].get<std::size_t>()];
@@ -98,13 +110,14 @@ Table cyclic_verdict_table(const json& cmp) {
   const auto& f = fit["cyclic"]["verdicts"];
   auto cell = [](const json& x) {
     if (!x["model"].is_number()) return std::string("not reached");
-    return fmt::format("{:.3g} ({:+.0f} %)", x["model"].get<double>(), 100 * x["relative_error"].get<double>());
+    return fmt::format("{:.3g} ({:+.0f} %)", x["model"].get<double>(),
+                       100 * x["relative_error"].get<double>());
   };
   for (std::size_t i = 0; i < p.size(); ++i)
     t.rows.push_back({p[i]["quantity"].get<std::string>(), p[i]["where"].get<std::string>(),
                       p[i]["dem"].is_number() ? with_interval(p[i]) : "-", cell(p[i]), cell(f[i]),
-                      percent(p[i]["tolerance"]), percent(p[i]["detection_limit"]), p[i]["verdict"].get<std::string>(),
-                      f[i]["verdict"].get<std::string>()});
+                      percent(p[i]["tolerance"]), percent(p[i]["detection_limit"]),
+                      p[i]["verdict"].get<std::string>(), f[i]["verdict"].get<std::string>()});
   return t;
 }
 
@@ -114,19 +127,22 @@ std::vector<std::string> verdict_findings(const json& cmp) {
   const auto label = [&](const char* which) {
     return v[cmp["verdicts"][which].get<std::size_t>()]["label"].get<std::string>();
   };
-  return {fmt::format("Predicted ({}): holds on {}; does not hold on {}.", label("predicted_variant"),
-                      holds_list(s["predicted"]["holds"]), holds_list(s["predicted"]["fails"])),
-          fmt::format("Fitted ({}): holds on {}; does not hold on {}.", label("fitted_variant"),
-                      holds_list(s["fitted"]["holds"]), holds_list(s["fitted"]["fails"])),
-          fmt::format("Scan of the (kappa_r, d_s) box: {}.", s["scan"]["finding"].get<std::string>()),
-          bound_note(cmp["fit"]), statistics_note(v[cmp["verdicts"]["predicted_variant"].get<std::size_t>()]["verdicts"])};
+  return {
+      fmt::format("Predicted ({}): holds on {}; does not hold on {}.", label("predicted_variant"),
+                  holds_list(s["predicted"]["holds"]), holds_list(s["predicted"]["fails"])),
+      fmt::format("Fitted ({}): holds on {}; does not hold on {}.", label("fitted_variant"),
+                  holds_list(s["fitted"]["holds"]), holds_list(s["fitted"]["fails"])),
+      fmt::format("Scan of the (kappa_r, d_s) box: {}.", s["scan"]["finding"].get<std::string>()),
+      bound_note(cmp["fit"]),
+      statistics_note(v[cmp["verdicts"]["predicted_variant"].get<std::size_t>()]["verdicts"])};
 }
 
 std::string to_text(const Table& t) {
   std::vector<std::size_t> w(t.columns.size());
   // UTF-8 "±" is two bytes and one column wide: count code points, not bytes
   auto width = [](const std::string& s) {
-    return std::size_t(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+    return std::size_t(
+        std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
   };
   for (std::size_t c = 0; c < w.size(); ++c) {
     w[c] = width(t.columns[c]);
@@ -134,7 +150,8 @@ std::string to_text(const Table& t) {
   }
   auto line = [&](const std::vector<std::string>& cells) {
     std::string s;
-    for (std::size_t c = 0; c < cells.size(); ++c) s += cells[c] + std::string(w[c] - width(cells[c]) + 2, ' ');
+    for (std::size_t c = 0; c < cells.size(); ++c)
+      s += cells[c] + std::string(w[c] - width(cells[c]) + 2, ' ');
     return s.substr(0, s.find_last_not_of(' ') + 1) + "\n";
   };
   std::string out = line(t.columns);

@@ -24,9 +24,13 @@ bool needs_steady_end(const std::string& key) {
 }
 
 // The quantities that need the DEM's last rows: a model that stopped early has no value for them.
-bool needs_end(const std::string& key) { return key != "peak_friction" && key != "u_x_at_peak"; }
+bool needs_end(const std::string& key) {
+  return key != "peak_friction" && key != "u_x_at_peak";
+}
 
-double floor_of(const QuantityInfo& q, double d50_mm) { return q.floor_in_d50 ? q.floor * d50_mm : q.floor; }
+double floor_of(const QuantityInfo& q, double d50_mm) {
+  return q.floor_in_d50 ? q.floor * d50_mm : q.floor;
+}
 
 // What the verdict rests on: the t-interval, the detection limit, the seeds the tolerance needs.
 void add_statistics(Verdict& v, double scale) {
@@ -38,11 +42,13 @@ std::vector<std::string> notes_for(const std::string& key, const SeedScatter& sc
   std::vector<std::string> notes;
   const std::size_t n = scatter.runs.size();
   if (!scatter.left_out.empty())
-    notes.push_back(fmt::format("{} of {} runs left out: localised at the plate", scatter.left_out.size(),
-                                n + scatter.left_out.size()));
-  if (scatter.only_plate_runs) notes.push_back("every run localised at the plate: the DEM measured the plate");
+    notes.push_back(fmt::format("{} of {} runs left out: localised at the plate",
+                                scatter.left_out.size(), n + scatter.left_out.size()));
+  if (scatter.only_plate_runs)
+    notes.push_back("every run localised at the plate: the DEM measured the plate");
   if (!scatter.split.empty())
-    notes.push_back(fmt::format("{} of {} runs split between wall and plate", scatter.split.size(), n));
+    notes.push_back(
+        fmt::format("{} of {} runs split between wall and plate", scatter.split.size(), n));
   if (needs_steady_end(key) && !scatter.not_steady.empty())
     notes.push_back(fmt::format("{} of {} runs not steady at the end (residual still drifting)",
                                 scatter.not_steady.size(), n));
@@ -55,10 +61,12 @@ Tolerances tolerances_for(const DemRun& dem) {
   Tolerances t;
   for (const auto& k : judged_quantities(dem.boundary)) t[k] = quantity(k).tolerance;
   if (dem.scene_text.empty()) return t;
-  const auto scene = io::parse_toml_text(dem.scene_text, (dem.dir / "manifest.json").string() + " /scene/text");
+  const auto scene =
+      io::parse_toml_text(dem.scene_text, (dem.dir / "manifest.json").string() + " /scene/text");
   const auto* req = scene["requirements"].as_table();
   if (req == nullptr) return t;
-  io::TableReader reader(*req, (dem.dir / "manifest.json").string() + " /scene/text", "requirements");
+  io::TableReader reader(*req, (dem.dir / "manifest.json").string() + " /scene/text",
+                         "requirements");
   for (const auto& k : judged_quantities(dem.boundary))
     if (const auto tol = io::read_tolerance(reader, k)) {
       if (*tol)
@@ -79,9 +87,20 @@ std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const 
   std::vector<Verdict> out;
   for (const auto& q : quantity_table()) {
     if (!tolerances.count(q.key)) continue;
-    Verdict v{q.key, d.at(q.key), std::nullopt, scatter.runs.empty() ? 1 : scatter.runs.size(),
-              m.at(q.key), std::nullopt, tolerances.at(q.key), "", std::nullopt, std::nullopt, std::nullopt, {}};
-    if (scatter.from_seeds() && scatter.quantity_sd.count(q.key)) {  // the seed mean is the DEM's value
+    Verdict v{q.key,
+              d.at(q.key),
+              std::nullopt,
+              scatter.runs.empty() ? 1 : scatter.runs.size(),
+              m.at(q.key),
+              std::nullopt,
+              tolerances.at(q.key),
+              "",
+              std::nullopt,
+              std::nullopt,
+              std::nullopt,
+              {}};
+    if (scatter.from_seeds() &&
+        scatter.quantity_sd.count(q.key)) {  // the seed mean is the DEM's value
       v.dem = scatter.quantity_mean.at(q.key);
       v.dem_sd = scatter.quantity_sd.at(q.key);
     }
@@ -96,16 +115,19 @@ std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const 
   return out;
 }
 
-SeedInterval seed_interval(std::optional<double> sd, std::size_t seeds, double tolerance, double scale) {
+SeedInterval seed_interval(std::optional<double> sd, std::size_t seeds, double tolerance,
+                           double scale) {
   SeedInterval i{std::nullopt, tolerance, std::nullopt};
   if (!sd) return i;
   i.ci = statistics::t_half_width(*sd, int(seeds));
   if (i.ci) i.detection_limit = tolerance + *i.ci / scale;
-  i.seeds_needed = statistics::values_needed(*sd, kResolvedShareOfTolerance * tolerance * scale, kMostSeedsWorthSaying);
+  i.seeds_needed = statistics::values_needed(*sd, kResolvedShareOfTolerance * tolerance * scale,
+                                             kMostSeedsWorthSaying);
   return i;
 }
 
-std::string verdict_word(std::optional<double> error, double tolerance, double scale, std::optional<double> ci) {
+std::string verdict_word(std::optional<double> error, double tolerance, double scale,
+                         std::optional<double> ci) {
   if (!error) return "not reached";
   const double miss = std::abs(*error) - tolerance;  // relative to `scale`
   if (miss <= 0.0) return "holds";
@@ -113,7 +135,9 @@ std::string verdict_word(std::optional<double> error, double tolerance, double s
   return "breaks";
 }
 
-bool all_hold(const std::vector<Verdict>& verdicts) { return failing(verdicts).empty(); }
+bool all_hold(const std::vector<Verdict>& verdicts) {
+  return failing(verdicts).empty();
+}
 
 std::vector<std::string> failing(const std::vector<Verdict>& verdicts) {
   std::vector<std::string> f;
@@ -123,16 +147,27 @@ std::vector<std::string> failing(const std::vector<Verdict>& verdicts) {
 }
 
 nlohmann::json to_json(const std::vector<Verdict>& verdicts) {
-  auto opt = [](const std::optional<double>& x) { return x ? nlohmann::json(*x) : nlohmann::json(nullptr); };
+  auto opt = [](const std::optional<double>& x) {
+    return x ? nlohmann::json(*x) : nlohmann::json(nullptr);
+  };
   nlohmann::json out = nlohmann::json::array();
   for (const auto& v : verdicts) {
     const auto& q = quantity(v.key);
-    out.push_back({{"quantity", v.key}, {"name", q.name}, {"unit", q.unit}, {"dem", opt(v.dem)},
-                   {"dem_seed_sd", opt(v.dem_sd)}, {"seeds", v.seeds}, {"dem_t_interval_95", opt(v.dem_ci)},
+    out.push_back({{"quantity", v.key},
+                   {"name", q.name},
+                   {"unit", q.unit},
+                   {"dem", opt(v.dem)},
+                   {"dem_seed_sd", opt(v.dem_sd)},
+                   {"seeds", v.seeds},
+                   {"dem_t_interval_95", opt(v.dem_ci)},
                    {"detection_limit", opt(v.detection_limit)},
-                   {"seeds_needed", v.seeds_needed ? nlohmann::json(*v.seeds_needed) : nlohmann::json(nullptr)},
-                   {"notes", v.notes}, {"model", opt(v.model)},
-                   {"relative_error", opt(v.error)}, {"tolerance", v.tolerance}, {"verdict", v.verdict}});
+                   {"seeds_needed",
+                    v.seeds_needed ? nlohmann::json(*v.seeds_needed) : nlohmann::json(nullptr)},
+                   {"notes", v.notes},
+                   {"model", opt(v.model)},
+                   {"relative_error", opt(v.error)},
+                   {"tolerance", v.tolerance},
+                   {"verdict", v.verdict}});
   }
   return out;
 }

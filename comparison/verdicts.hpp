@@ -38,11 +38,13 @@ struct Verdict {
   std::optional<double> dem_sd;  // seed standard deviation (none with a single run)
   std::size_t seeds = 1;
   std::optional<double> model;
-  std::optional<double> error;   // (model - DEM) / max(|DEM|, floor), signed
+  std::optional<double> error;  // (model - DEM) / max(|DEM|, floor), signed
   double tolerance = 0.0;
   std::string verdict;
-  std::optional<double> dem_ci;  // half-width of the t-interval of the seed mean (none with one run)
-  std::optional<double> detection_limit;  // relative: tolerance + dem_ci / scale (tolerance alone: one run)
+  std::optional<double>
+      dem_ci;  // half-width of the t-interval of the seed mean (none with one run)
+  std::optional<double>
+      detection_limit;  // relative: tolerance + dem_ci / scale (tolerance alone: one run)
   std::optional<int> seeds_needed;  // for an interval of at most half the tolerance
   std::vector<std::string> notes;
 };
@@ -57,10 +59,12 @@ struct SeedInterval {
   std::optional<double> ci, detection_limit;
   std::optional<int> seeds_needed;
 };
-SeedInterval seed_interval(std::optional<double> sd, std::size_t seeds, double tolerance, double scale);
+SeedInterval seed_interval(std::optional<double> sd, std::size_t seeds, double tolerance,
+                           double scale);
 // "holds" within the tolerance, "within DEM scatter" when the miss lies inside the seed interval,
 // else "breaks"; "not reached" without an error.
-std::string verdict_word(std::optional<double> error, double tolerance, double scale, std::optional<double> ci);
+std::string verdict_word(std::optional<double> error, double tolerance, double scale,
+                         std::optional<double> ci);
 
 bool all_hold(const std::vector<Verdict>& verdicts);
 // The keys of the verdicts that do not hold ("breaks" or "within DEM scatter" or "not reached").

@@ -24,36 +24,52 @@ struct ReducedOps {
   static constexpr bool kHasLodeAngle = true;
 
   template <class S>
-  static S trace(const Tensor<S>& x) { return reduced::trace(x); }
+  static S trace(const Tensor<S>& x) {
+    return reduced::trace(x);
+  }
   template <class S>
   static S contract(const Tensor<S>& x, const Tensor<S>& y) {
     return reduced::double_contraction(x, y);
   }
   template <class S>
-  static S trace_of_cube(const Tensor<S>& x) { return reduced::trace_of_cube(x); }
+  static S trace_of_cube(const Tensor<S>& x) {
+    return reduced::trace_of_cube(x);
+  }
   template <class S>
-  static Tensor<S> unit() { return reduced::unit<S>(); }
+  static Tensor<S> unit() {
+    return reduced::unit<S>();
+  }
   // X . Y, eq. 5.31 (ERRATA 2: the embedding is not closed under it)
   template <class S>
-  static Tensor<S> product(const Tensor<S>& x, const Tensor<S>& y) { return reduced::inner_product(x, y); }
+  static Tensor<S> product(const Tensor<S>& x, const Tensor<S>& y) {
+    return reduced::inner_product(x, y);
+  }
 
   template <class S, class V>
-  static Tensor<S> unpack(const V& v, int offset) { return v.template segment<4>(offset); }
+  static Tensor<S> unpack(const V& v, int offset) {
+    return v.template segment<4>(offset);
+  }
   template <class S, class V>
-  static void pack(const Tensor<S>& x, V& v, int offset) { v.template segment<4>(offset) = x; }
+  static void pack(const Tensor<S>& x, V& v, int offset) {
+    v.template segment<4>(offset) = x;
+  }
 };
 
 // Same storage as ReducedOps; trace, ':' and tr(X^3) are taken on embed(X). Differs from
 // ReducedOps only in tr(X^3) of non-deviatoric arguments, which the model never forms.
 struct EmbeddedReducedOps : ReducedOps {
   template <class S>
-  static S trace(const Tensor<S>& x) { return reduced::embed(x).trace(); }
+  static S trace(const Tensor<S>& x) {
+    return reduced::embed(x).trace();
+  }
   template <class S>
   static S contract(const Tensor<S>& x, const Tensor<S>& y) {
     return tensor3::double_contraction(reduced::embed(x), reduced::embed(y));
   }
   template <class S>
-  static S trace_of_cube(const Tensor<S>& x) { return tensor3::trace_of_cube(reduced::embed(x)); }
+  static S trace_of_cube(const Tensor<S>& x) {
+    return tensor3::trace_of_cube(reduced::embed(x));
+  }
 };
 
 struct Tensor3Ops {
@@ -63,17 +79,25 @@ struct Tensor3Ops {
   static constexpr bool kHasLodeAngle = true;
 
   template <class S>
-  static S trace(const Tensor<S>& x) { return x.trace(); }
+  static S trace(const Tensor<S>& x) {
+    return x.trace();
+  }
   template <class S>
   static S contract(const Tensor<S>& x, const Tensor<S>& y) {
     return tensor3::double_contraction(x, y);
   }
   template <class S>
-  static S trace_of_cube(const Tensor<S>& x) { return tensor3::trace_of_cube(x); }
+  static S trace_of_cube(const Tensor<S>& x) {
+    return tensor3::trace_of_cube(x);
+  }
   template <class S>
-  static Tensor<S> unit() { return Tensor<S>::Identity(); }
+  static Tensor<S> unit() {
+    return Tensor<S>::Identity();
+  }
   template <class S>
-  static Tensor<S> product(const Tensor<S>& x, const Tensor<S>& y) { return x * y; }
+  static Tensor<S> product(const Tensor<S>& x, const Tensor<S>& y) {
+    return x * y;
+  }
 
   template <class S, class V>
   static Tensor<S> unpack(const V& v, int o) {
@@ -102,16 +126,26 @@ struct ShearPlaneOps {
   static constexpr bool kHasLodeAngle = false;  // F = 1 in the 1D model (seed 3.3.4)
 
   template <class S>
-  static S trace(const Tensor<S>& x) { return x(0); }
+  static S trace(const Tensor<S>& x) {
+    return x(0);
+  }
   template <class S>
-  static S contract(const Tensor<S>& x, const Tensor<S>& y) { return x.dot(y); }
+  static S contract(const Tensor<S>& x, const Tensor<S>& y) {
+    return x.dot(y);
+  }
   template <class S>
-  static Tensor<S> unit() { return Tensor<S>(S(1.0), S(0.0)); }
+  static Tensor<S> unit() {
+    return Tensor<S>(S(1.0), S(0.0));
+  }
 
   template <class S, class V>
-  static Tensor<S> unpack(const V& v, int offset) { return v.template segment<2>(offset); }
+  static Tensor<S> unpack(const V& v, int offset) {
+    return v.template segment<2>(offset);
+  }
   template <class S, class V>
-  static void pack(const Tensor<S>& x, V& v, int offset) { v.template segment<2>(offset) = x; }
+  static void pack(const Tensor<S>& x, V& v, int offset) {
+    v.template segment<2>(offset) = x;
+  }
 };
 
 }  // namespace iwb::algebra

@@ -78,8 +78,9 @@ int critical_void_ratio_index(const models::ModelSpec& spec) {
 }  // namespace
 
 DensityAxis density_axis_of(const models::ModelSpec& spec) {
-  const bool has_limits = std::any_of(spec.declaration.diagnostics.begin(), spec.declaration.diagnostics.end(),
-                                      [](const auto& d) { return d.name == "e_d"; });
+  const bool has_limits =
+      std::any_of(spec.declaration.diagnostics.begin(), spec.declaration.diagnostics.end(),
+                  [](const auto& d) { return d.name == "e_d"; });
   if (!has_limits && models::find_initial_input(spec.declaration.initial, "OCR"))
     return DensityAxis::kOverconsolidationRatio;
   if (!has_limits && critical_void_ratio_index(spec) >= 0) return DensityAxis::kStateParameter;
@@ -206,8 +207,9 @@ void walk(const models::Model& m, const models::StateVector& s0, const Stability
 }
 
 // Builds the model, finds the limits and the start; throws InputError if the start is refused.
-models::StateVector prepare(const models::ModelSpec& spec, const models::Model& m, const models::ModelInputs& in,
-                            const StabilityPoint& p, StabilityResult& out) {
+models::StateVector prepare(const models::ModelSpec& spec, const models::Model& m,
+                            const models::ModelInputs& in, const StabilityPoint& p,
+                            StabilityResult& out) {
   const double K0 = models::offer(spec, in, {}).K0;
   if (density_axis_of(spec) == DensityAxis::kNone) {  // no void ratio to place
     out.e_d = out.e_c = out.e_i = out.e0 = NAN;
@@ -217,12 +219,14 @@ models::StateVector prepare(const models::ModelSpec& spec, const models::Model& 
     // the model turns the OCR into e0 (its asymptotic state boundary surface) or into its
     // preconsolidation (modified Cam clay, whose e0 is a default label); no e_d, e_i
     out.e_d = out.e_c = out.e_i = NAN;
-    const auto s0 = m.initial_state(models::offer(spec, in, {{"sigma_n_kPa", p.sigma_n_kPa}, {"K0", K0}, {"OCR", p.density}}));
+    const auto s0 = m.initial_state(
+        models::offer(spec, in, {{"sigma_n_kPa", p.sigma_n_kPa}, {"K0", K0}, {"OCR", p.density}}));
     out.e0 = m.void_ratio(s0);
     return s0;
   }
   if (density_axis_of(spec) == DensityAxis::kStateParameter) {
-    // e_c at sigma_n0 from the model's own diagnostic (of any admissible start), then e0 = e_c + psi
+    // e_c at sigma_n0 from the model's own diagnostic (of any admissible start), then e0 = e_c +
+    // psi
     out.e_d = out.e_i = NAN;
     const auto probe = m.initial_state({p.sigma_n_kPa, K0, 1.0});
     out.e_c = m.diagnostics(probe)[critical_void_ratio_index(spec)].value;

@@ -41,8 +41,8 @@ struct StabilityPoint {
   double sigma_n_kPa = 100.0;
   // Where e0 lies, on the sweep's density axis (DensityAxis): for sand the density index
   // e0 = e_d + I (e_i - e_d), so 0 is e_d and 1 is e_i (values outside [0, 1] ask for an
-  // inadmissible start on purpose); for clay the overconsolidation ratio (1: normally consolidated);
-  // for a state-parameter model psi = e0 - e_c.
+  // inadmissible start on purpose); for clay the overconsolidation ratio (1: normally
+  // consolidated); for a state-parameter model psi = e0 - e_c.
   double density = 0.5;
   double kappa_r = 1.0;
   double d_gamma = 1e-4;  // shear strain per increment
@@ -53,8 +53,8 @@ struct StabilityPoint {
 // void ratios when it reports e_d and e_i (sand, Bauer eq. 5.13), else by its overconsolidation
 // ratio when it declares an OCR input (clay, seed 6.2: 1 on the asymptotic state boundary surface).
 // kStateParameter: by psi = e0 - e_c when it reports only a critical void ratio (Lashkari's model,
-// seed 3.3.5: dense below 0, loose above). kNone: a model without a void ratio or an OCR input (mc):
-// one level, the map's density axis unused.
+// seed 3.3.5: dense below 0, loose above). kNone: a model without a void ratio or an OCR input
+// (mc): one level, the map's density axis unused.
 enum class DensityAxis { kDensityIndex, kOverconsolidationRatio, kStateParameter, kNone };
 DensityAxis density_axis_of(const models::ModelSpec& spec);
 const char* column_of(DensityAxis axis);  // "density_index", "OCR"

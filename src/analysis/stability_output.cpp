@@ -40,7 +40,8 @@ std::map<Outcome, long> count_outcomes(const std::vector<StabilityResult>& resul
 
 std::string stability_csv(const std::vector<StabilityResult>& results, DensityAxis axis) {
   std::string out =
-      "boundary,path,sigma_n0_kPa," + std::string(column_of(axis)) + ",e0,e_d,e_c,e_i,kappa_r,d_gamma,outcome,reason,"
+      "boundary,path,sigma_n0_kPa," + std::string(column_of(axis)) +
+      ",e0,e_d,e_c,e_i,kappa_r,d_gamma,outcome,reason,"
       "increments,increments_planned,rate_evaluations,rejected_substeps,domain_cutbacks,seconds,"
       "sigma_n_end_kPa,tau_end_kPa,e_end,message\n";
   for (const auto& r : results) {
@@ -48,11 +49,10 @@ std::string stability_csv(const std::vector<StabilityResult>& results, DensityAx
     out += fmt::format(
         "{},{},{:g},{:g},{:.6g},{:.6g},{:.6g},{:.6g},{:g},{:g},{},{},{},{},{},{},{},{:.4g},"
         "{:.8g},{:.8g},{:.8g},{}\n",
-        driver::to_string(p.boundary), path_name(p.path), p.sigma_n_kPa, p.density, r.e0,
-        r.e_d, r.e_c, r.e_i, p.kappa_r, p.d_gamma, to_string(r.outcome), csv_text(r.reason),
-        r.increments, r.increments_planned, r.rate_evaluations, r.rejected_substeps,
-        r.domain_cutbacks, r.seconds, r.sigma_n_end_kPa, r.tau_end_kPa, r.e_end,
-        csv_text(r.message));
+        driver::to_string(p.boundary), path_name(p.path), p.sigma_n_kPa, p.density, r.e0, r.e_d,
+        r.e_c, r.e_i, p.kappa_r, p.d_gamma, to_string(r.outcome), csv_text(r.reason), r.increments,
+        r.increments_planned, r.rate_evaluations, r.rejected_substeps, r.domain_cutbacks, r.seconds,
+        r.sigma_n_end_kPa, r.tau_end_kPa, r.e_end, csv_text(r.message));
   }
   return out;
 }
@@ -93,8 +93,10 @@ std::string reason_table(const std::vector<StabilityResult>& results, DensityAxi
     md += fmt::format(
         "| {} | {} | {} {} sigma_n0 = {:g} kPa, {} = {:g}, kappa_r = {:g}, d gamma = {:g}: {} |\n",
         why, v.first, driver::to_string(p.boundary), path_name(p.path), p.sigma_n_kPa,
-        axis == DensityAxis::kOverconsolidationRatio ? "OCR" : axis == DensityAxis::kStateParameter ? "psi" : "I", p.density,
-        p.kappa_r, p.d_gamma, msg);
+        axis == DensityAxis::kOverconsolidationRatio ? "OCR"
+        : axis == DensityAxis::kStateParameter       ? "psi"
+                                                     : "I",
+        p.density, p.kappa_r, p.d_gamma, msg);
   }
   return md;
 }
@@ -129,10 +131,11 @@ std::string stability_markdown(const std::vector<StabilityResult>& results,
       "stiffness {:g} sigma_n0 per unit normal strain. Budget {:g} s per point, {} substeps per "
       "increment. "
       "Adaptive rk32, rtol 1e-6.\n\n",
-      fmt::join(sw.sigma_n_kPa, ", "), label_of(info.axis), fmt::join(sw.densities(info.axis), ", "),
-      fmt::join(sw.kappa_r, ", "), fmt::join(sw.d_gamma, ", "), sw.gamma_total, sw.max_increments,
-      sw.cycles, sw.cyclic_amplitude, sw.cyclic_per_quarter, kCnsStiffnessPerSigma,
-      sw.budget_seconds, sw.max_substeps);
+      fmt::join(sw.sigma_n_kPa, ", "), label_of(info.axis),
+      fmt::join(sw.densities(info.axis), ", "), fmt::join(sw.kappa_r, ", "),
+      fmt::join(sw.d_gamma, ", "), sw.gamma_total, sw.max_increments, sw.cycles,
+      sw.cyclic_amplitude, sw.cyclic_per_quarter, kCnsStiffnessPerSigma, sw.budget_seconds,
+      sw.max_substeps);
   md += "## Outcomes\n\n" + outcome_table(results, sw) + "\n## Why points stopped\n\n" +
         reason_table(results, info.axis);
   md += "\n## Integrator cut-backs\n\n" + cutback_summary(results);
@@ -145,7 +148,8 @@ namespace {
 // its points (kappa_r, increment sizes, cyclic), labelled completed/points, crossed where the
 // integrator cut back.
 comparison::Figure boundary_map(const std::vector<StabilityResult>& results,
-                                driver::BoundaryKind bc, const std::string& model, DensityAxis axis) {
+                                driver::BoundaryKind bc, const std::string& model,
+                                DensityAxis axis) {
   struct Cell {
     int worst = 0;
     long done = 0, all = 0, cut = 0;
@@ -182,7 +186,9 @@ comparison::Figure boundary_map(const std::vector<StabilityResult>& results,
       "set logscale x\nset xrange [*:*] noextend\nset offsets graph 0.08, graph 0.08, 0.08, 0.08\n";
   // OCR spans decades: logarithmic, with margins in graph units like x's
   if (axis == DensityAxis::kOverconsolidationRatio)
-    f.extra += "set logscale y\nset yrange [*:*] noextend\nset offsets graph 0.08, graph 0.08, graph 0.1, graph 0.1\n";
+    f.extra +=
+        "set logscale y\nset yrange [*:*] noextend\nset offsets graph 0.08, graph 0.08, graph 0.1, "
+        "graph 0.1\n";
   const std::string csv = comparison::gnuplot_string(f.name + ".csv");
   f.plot = fmt::format(
       "plot {0} using 1:2:($3+1) skip 1 with points pt 5 ps 5 lc variable notitle, "
@@ -205,7 +211,9 @@ std::vector<fs::path> write_stability_map(const std::vector<StabilityResult>& re
   io::write_atomically(staged.path() / "stability.md", stability_markdown(results, sweep, info));
   std::vector<fs::path> figures;
   for (auto bc : sweep.boundaries)
-    figures.push_back(dir / comparison::draw(boundary_map(results, bc, info.model, info.axis), staged.path()).filename());
+    figures.push_back(
+        dir / comparison::draw(boundary_map(results, bc, info.model, info.axis), staged.path())
+                  .filename());
   staged.commit_into();
   return figures;
 }

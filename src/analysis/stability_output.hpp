@@ -15,7 +15,7 @@ namespace iwb::analysis {
 struct StabilityMapInfo {
   std::string model;
   std::string parameter_file;
-  std::string form;  // "reduced" or "full"
+  std::string form;                               // "reduced" or "full"
   DensityAxis axis = DensityAxis::kDensityIndex;  // how e0 was placed (density_axis_of)
 };
 

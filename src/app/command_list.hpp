@@ -15,7 +15,7 @@ namespace iwb::app {
 
 // What every command may need beyond its own options.
 struct CommandContext {
-  std::string command_line;                     // as typed, for the manifests
+  std::string command_line;                      // as typed, for the manifests
   const std::atomic<bool>* interrupt = nullptr;  // set by SIGINT or SIGTERM: stop cleanly
 };
 

@@ -1,9 +1,10 @@
 #include "app/default_job.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
 #include "io/element_run.hpp"
@@ -43,13 +44,16 @@ constexpr const char* kStudyParameters = "table_5_1_evaluation.toml";
 std::filesystem::path study_parameters(const std::filesystem::path& out) {
   for (const auto& set : io::parameter_sets({}))
     if (set.name == kStudyParameters) return io::parameter_set_file(set, out / "parameters");
-  throw std::logic_error(fmt::format("{} is not among the parameter sets built into iwb", kStudyParameters));
+  throw std::logic_error(
+      fmt::format("{} is not among the parameter sets built into iwb", kStudyParameters));
 }
 
-std::string test_text(const std::string& model, const std::string& bc, const std::filesystem::path& parameters) {
+std::string test_text(const std::string& model, const std::string& bc,
+                      const std::filesystem::path& parameters) {
   std::string t = kDefaultElementTest;
   auto replace = [&t](const std::string& key, const std::string& value) {
-    for (auto p = t.find(key); p != std::string::npos; p = t.find(key)) t.replace(p, key.size(), value);
+    for (auto p = t.find(key); p != std::string::npos; p = t.find(key))
+      t.replace(p, key.size(), value);
   };
   replace("{model}", model);
   replace("{boundary}", bc);
@@ -88,8 +92,9 @@ Curve curve_of(const io::ElementRunOutcome& o, const models::Model& m) {
 
 int run_default_job(const std::filesystem::path& out, bool force, const std::string& command_line) {
   nlohmann::json summary;
-  fmt::print("iwb run: embedded default, hvwe against vw3d in simple shear (seed Table 5.1, "
-             "e0 = 0.80, 100 kPa)\n");
+  fmt::print(
+      "iwb run: embedded default, hvwe against vw3d in simple shear (seed Table 5.1, "
+      "e0 = 0.80, 100 kPa)\n");
   fmt::print("{:<4} {:>9} {:>9} {:>9} {:>8} | {:^39} |\n", "", "", "hvwe", "", "",
              "max |hvwe - vw3d| along the path");
   fmt::print("{:<4} {:>9} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>9} {:>9} | {}\n", "BC", "peak t/s",
@@ -104,7 +109,8 @@ int run_default_job(const std::filesystem::path& out, bool force, const std::str
       const std::string text = test_text(model, bc, parameters);
       const std::string name = fmt::format("<embedded:default {} {}>", model, bc);
       const auto spec = io::parse_element_test(io::parse_toml_text(text, name), name, ".");
-      io::ElementRunOptions opt{out / fmt::format("{}-{}", model, bc), force, command_line, text, nullptr};
+      io::ElementRunOptions opt{out / fmt::format("{}-{}", model, bc), force, command_line, text,
+                                nullptr};
       const auto outcome = io::run_element_to_directory(spec, opt);
       const auto m = models::find_model(model).make(spec.inputs);
       curves[i++] = curve_of(outcome, *m);
@@ -113,15 +119,17 @@ int run_default_job(const std::filesystem::path& out, bool force, const std::str
     }
     const auto d = max_differences(curves[0], curves[1]);
     const Curve& h = curves[0];
-    fmt::print("{:<4} {:>9.4f} {:>9.4f} {:>9.2f} {:>8.4f} | {:>9.2e} {:>9.2e} {:>9.2e} {:>9.2e} | {}\n",
-               bc, h.peak, h.last, h.sigma_last, h.e_last, d[0], d[1], d[2], d[3],
-               status == "complete" ? "ok" : "FAILED");
-    summary[bc] = {{"hvwe_peak_tau_over_sigma_n", h.peak},
-                   {"hvwe_end_tau_over_sigma_n", h.last},
-                   {"hvwe_end_sigma_n_kPa", h.sigma_last},
-                   {"hvwe_end_e", h.e_last},
-                   {"max_abs_difference_hvwe_vw3d",
-                    {{"tau_kPa", d[0]}, {"sigma_n_kPa", d[1]}, {"sigma_p_kPa", d[2]}, {"e", d[3]}}}};
+    fmt::print(
+        "{:<4} {:>9.4f} {:>9.4f} {:>9.2f} {:>8.4f} | {:>9.2e} {:>9.2e} {:>9.2e} {:>9.2e} | {}\n",
+        bc, h.peak, h.last, h.sigma_last, h.e_last, d[0], d[1], d[2], d[3],
+        status == "complete" ? "ok" : "FAILED");
+    summary[bc] = {
+        {"hvwe_peak_tau_over_sigma_n", h.peak},
+        {"hvwe_end_tau_over_sigma_n", h.last},
+        {"hvwe_end_sigma_n_kPa", h.sigma_last},
+        {"hvwe_end_e", h.e_last},
+        {"max_abs_difference_hvwe_vw3d",
+         {{"tau_kPa", d[0]}, {"sigma_n_kPa", d[1]}, {"sigma_p_kPa", d[2]}, {"e", d[3]}}}};
   }
   io::write_atomically(out / "summary.json", summary.dump(2) + "\n");
   fmt::print("run directories and summary.json in {}\n", out.string());

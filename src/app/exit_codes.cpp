@@ -1,9 +1,9 @@
 #include "app/exit_codes.hpp"
 
 #include <fmt/core.h>
-#include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/errors.hpp"

@@ -13,7 +13,9 @@
 namespace {
 
 std::atomic<bool> g_interrupt{false};
-void on_signal(int) { g_interrupt.store(true); }
+void on_signal(int) {
+  g_interrupt.store(true);
+}
 
 std::string joined(int argc, char** argv) {
   std::string s;
@@ -31,21 +33,28 @@ int main(int argc, char** argv) {
       "  iwb models                                  list models, parameters, units, bounds\n"
       "  iwb element data/tests/hvwe_cnl_dense.toml  run one element test into runs/<name>/\n"
       "  iwb run --study clay                        the seed's clay interface comparisons (6.4)\n"
-      "  iwb run --study chapter8                    HCE, Barodesy, modified Cam clay under CV (seed 8.4)\n"
+      "  iwb run --study chapter8                    HCE, Barodesy, modified Cam clay under CV "
+      "(seed 8.4)\n"
       "  iwb dem run data/scenes/smoke.toml          a DEM interface-shear scene in LIGGGHTS\n"
-      "  iwb sweep data/sweeps/example.toml -j 2     a campaign of scenes (R_n x d50 x CNL/CNS/CV x seed)\n"
+      "  iwb sweep data/sweeps/example.toml -j 2     a campaign of scenes (R_n x d50 x CNL/CNS/CV "
+      "x seed)\n"
       "  iwb tradeoff data/scenes/default.toml -j 2  DEM speed against accuracy, knob by knob\n"
       "  iwb bench element                           cost of the continuum core\n"
-      "  iwb stability hvwe data/params/table_5_1_evaluation.toml   where a model runs and where it stops\n"};
+      "  iwb stability hvwe data/params/table_5_1_evaluation.toml   where a model runs and where "
+      "it stops\n"};
   app.require_subcommand(1);
   // A user's own model (src/models/external/README.md): before the command, anywhere on the line.
   std::string model_lib, model_entry;
-  auto* lib = app.add_option("--model-lib", model_lib,
-                             "a user's interface model: a shared library with a UMAT-style entry point "
-                             "(src/models/external/README.md), usable as --model NAME or [model] name = NAME by every "
-                             "command")
-                  ->check(CLI::ExistingFile);
-  app.add_option("--entry", model_entry, "the entry point in --model-lib, which is also the model's name")->needs(lib);
+  auto* lib =
+      app.add_option("--model-lib", model_lib,
+                     "a user's interface model: a shared library with a UMAT-style entry point "
+                     "(src/models/external/README.md), usable as --model NAME or [model] name = "
+                     "NAME by every "
+                     "command")
+          ->check(CLI::ExistingFile);
+  app.add_option("--entry", model_entry,
+                 "the entry point in --model-lib, which is also the model's name")
+      ->needs(lib);
   lib->needs(app.get_option("--entry"));
   app.fallthrough();  // the two may follow the command's own arguments
   iwb::app::CommandList commands;
@@ -58,7 +67,8 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   try {
-    if (!model_lib.empty()) iwb::models::add_runtime_model(iwb::models::external_model_spec(model_lib, model_entry));
+    if (!model_lib.empty())
+      iwb::models::add_runtime_model(iwb::models::external_model_spec(model_lib, model_entry));
     return commands.run_parsed({joined(argc, argv), &g_interrupt}).value_or(0);
   } catch (...) {
     return iwb::app::exit_for(std::current_exception());

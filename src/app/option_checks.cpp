@@ -1,7 +1,8 @@
 #include "app/option_checks.hpp"
 
-#include <filesystem>
 #include <fmt/core.h>
+
+#include <filesystem>
 
 namespace iwb::app {
 
@@ -66,12 +67,14 @@ CLI::Validator whole_in(long lower, long upper) {
 namespace {
 // A validator of a path: `refusal` gets the text and what is there (kind_of) and says what is
 // wrong, or nothing. A link loop and a path through a file are refused for every kind of path.
-CLI::Validator path_check(const std::string& name, std::string (*refusal)(const std::string&, const std::string&)) {
+CLI::Validator path_check(const std::string& name,
+                          std::string (*refusal)(const std::string&, const std::string&)) {
   return CLI::Validator(
       [refusal](std::string& text) {
         const std::string kind = kind_of(text);
         if (kind == "loop") return text + ": a symbolic link loop (the link leads back to itself)";
-        if (kind == "under a file") return text + ": a path through a file (a part of it is a file, not a directory)";
+        if (kind == "under a file")
+          return text + ": a path through a file (a part of it is a file, not a directory)";
         return refusal(text, kind);
       },
       name);
@@ -82,7 +85,8 @@ CLI::Validator input_file() {
   return path_check("FILE", [](const std::string& text, const std::string& kind) -> std::string {
     if (kind == "file") return "";
     if (kind == "missing") return text + ": no such file";
-    return fmt::format("{}: is a {}, not a file", text, kind == "directory" ? "directory" : "special file");
+    return fmt::format("{}: is a {}, not a file", text,
+                       kind == "directory" ? "directory" : "special file");
   });
 }
 
@@ -109,7 +113,9 @@ CLI::Validator output_file() {
 CLI::Validator output_directory() {
   return path_check("DIR", [](const std::string& text, const std::string& kind) -> std::string {
     if (text.empty()) return "an empty path; give a directory";
-    return kind == "missing" || kind == "directory" ? "" : text + ": is a file; give the directory to write";
+    return kind == "missing" || kind == "directory"
+               ? ""
+               : text + ": is a file; give the directory to write";
   });
 }
 

@@ -32,7 +32,7 @@ CLI::Validator output_directory();
 std::vector<std::string> split_list(const std::string& csv);
 
 // Physical ranges shared by the commands (kPa, d50, strain).
-inline constexpr double kMaxStressKPa = 1e5;  // 100 MPa: far beyond grain crushing
+inline constexpr double kMaxStressKPa = 1e5;     // 100 MPa: far beyond grain crushing
 inline constexpr double kMaxShearStrain = 10.0;  // 1000 % shear strain
 inline constexpr double kMaxVoidRatio = 10.0;
 inline constexpr double kMaxCellSizeD50 = 1000.0;

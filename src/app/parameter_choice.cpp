@@ -1,7 +1,8 @@
 #include "app/parameter_choice.hpp"
 
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
 
 #include "common/errors.hpp"
 
@@ -31,8 +32,8 @@ bool calibrated_set(const io::ParameterSet& set) {
 
 bool same_grains(const dem::Particles& a, const dem::Particles& b) {
   const auto key = [](const dem::Particles& p) {
-    std::vector<double> k{p.d50_m, p.density_kg_m3, p.youngs_modulus_Pa, p.poisson, p.friction, p.rolling_friction,
-                          p.restitution};
+    std::vector<double> k{p.d50_m,    p.density_kg_m3,    p.youngs_modulus_Pa, p.poisson,
+                          p.friction, p.rolling_friction, p.restitution};
     for (const auto& c : p.sizes) k.insert(k.end(), {c.diameter_m, c.mass_fraction});
     return k;
   };
@@ -49,15 +50,17 @@ const double* phi_c_of(const io::ParameterSet& set) {
 
 }  // namespace
 
-const io::ParameterSet* calibrated_parameters(const std::vector<io::ParameterSet>& sets, const dem::Scene& scene,
-                                              std::string& why) {
+const io::ParameterSet* calibrated_parameters(const std::vector<io::ParameterSet>& sets,
+                                              const dem::Scene& scene, std::string& why) {
   for (const auto& c : kCalibratedGrains) {
-    auto base = dem::parse_scene(dem::embedded_scenes().at(std::string(c.scene) + ".toml"), c.scene);
+    auto base =
+        dem::parse_scene(dem::embedded_scenes().at(std::string(c.scene) + ".toml"), c.scene);
     if (*c.rolling_model != '\0') base.particles.rolling_model = c.rolling_model;
     if (!same_grains(base.particles, scene.particles)) continue;
     for (const auto& set : sets)
       if (set.name == c.file) {
-        why = fmt::format("calibrated on DEM soil tests of the {} scene's grains (data/calibration/)", c.scene);
+        why = fmt::format(
+            "calibrated on DEM soil tests of the {} scene's grains (data/calibration/)", c.scene);
         return &set;
       }
   }
@@ -67,14 +70,17 @@ const io::ParameterSet* calibrated_parameters(const std::vector<io::ParameterSet
 void require_matchable(const std::vector<io::ParameterSet>& sets, const std::string& where) {
   for (const auto& set : sets)
     if (!calibrated_set(set) && phi_c_of(set) != nullptr) return;
-  throw InputError(fmt::format("{}: no parameter set with [hypoplastic] phi_c_deg to match the DEM's residual "
-                               "friction angle", where));
+  throw InputError(
+      fmt::format("{}: no parameter set with [hypoplastic] phi_c_deg to match the DEM's residual "
+                  "friction angle",
+                  where));
 }
 
 // The only property of the grains a DEM run tells without calibration is its residual interface
-// friction angle atan(tau/sigma_n); the closest phi_c is the best guess (issue 7 calibrates properly).
-const io::ParameterSet& matching_parameters(const std::vector<io::ParameterSet>& sets, double residual_friction,
-                                            std::string& why) {
+// friction angle atan(tau/sigma_n); the closest phi_c is the best guess (issue 7 calibrates
+// properly).
+const io::ParameterSet& matching_parameters(const std::vector<io::ParameterSet>& sets,
+                                            double residual_friction, std::string& why) {
   const double phi_dem = std::atan(residual_friction) * 180.0 / M_PI;
   const io::ParameterSet* best = nullptr;
   double best_gap = INFINITY;
@@ -83,13 +89,16 @@ const io::ParameterSet& matching_parameters(const std::vector<io::ParameterSet>&
     if (calibrated_set(set) || phi == nullptr) continue;
     if (const double gap = std::abs(*phi - phi_dem); gap < best_gap) best_gap = gap, best = &set;
   }
-  if (best == nullptr) require_matchable(sets, "the parameter sets");  // throws: none can be matched
-  why = fmt::format("phi_c closest to the DEM's residual friction angle atan({:.3f}) = {:.1f} deg", residual_friction, phi_dem);
+  if (best == nullptr)
+    require_matchable(sets, "the parameter sets");  // throws: none can be matched
+  why = fmt::format("phi_c closest to the DEM's residual friction angle atan({:.3f}) = {:.1f} deg",
+                    residual_friction, phi_dem);
   return *best;
 }
 
-const io::ParameterSet& parameters_for(const std::vector<io::ParameterSet>& sets, const dem::Scene& scene,
-                                       double residual_friction, std::string& why) {
+const io::ParameterSet& parameters_for(const std::vector<io::ParameterSet>& sets,
+                                       const dem::Scene& scene, double residual_friction,
+                                       std::string& why) {
   const auto* calibrated = calibrated_parameters(sets, scene, why);
   return calibrated != nullptr ? *calibrated : matching_parameters(sets, residual_friction, why);
 }

@@ -13,17 +13,18 @@
 namespace iwb::app {
 
 // The set calibrated on the scene's grains, or nullptr if none of `sets` is; `why` says so.
-const io::ParameterSet* calibrated_parameters(const std::vector<io::ParameterSet>& sets, const dem::Scene& scene,
-                                              std::string& why);
+const io::ParameterSet* calibrated_parameters(const std::vector<io::ParameterSet>& sets,
+                                              const dem::Scene& scene, std::string& why);
 
 // The set (calibrated ones excepted: they stand for their own grains only) whose phi_c is closest
 // to atan(residual_friction); `why` says so. InputError when no set has [hypoplastic] phi_c_deg.
-const io::ParameterSet& matching_parameters(const std::vector<io::ParameterSet>& sets, double residual_friction,
-                                            std::string& why);
+const io::ParameterSet& matching_parameters(const std::vector<io::ParameterSet>& sets,
+                                            double residual_friction, std::string& why);
 
 // calibrated_parameters, else matching_parameters.
-const io::ParameterSet& parameters_for(const std::vector<io::ParameterSet>& sets, const dem::Scene& scene,
-                                       double residual_friction, std::string& why);
+const io::ParameterSet& parameters_for(const std::vector<io::ParameterSet>& sets,
+                                       const dem::Scene& scene, double residual_friction,
+                                       std::string& why);
 
 // InputError (naming where the sets came from) unless some set can be matched by phi_c: checked
 // before a DEM run whose result the choice waits for.

@@ -8,10 +8,12 @@
 namespace iwb::app {
 
 std::function<void(long, long)> increment_progress(const std::string& what) {
-  auto start = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
+  auto start =
+      std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
   auto last = std::make_shared<double>(1.0);
   return [start, last, what](long done, long total) {
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - *start).count();
+    const double t =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - *start).count();
     if (t < *last && done < total) return;
     *last = t + 1.0;
     if (t < 1.0) return;
@@ -34,6 +36,8 @@ std::function<void(const std::string&)> engine_progress() {
   };
 }
 
-void print_progress_line(const std::string& line) { fmt::print(stderr, "  {}\n", line); }
+void print_progress_line(const std::string& line) {
+  fmt::print(stderr, "  {}\n", line);
+}
 
 }  // namespace iwb::app

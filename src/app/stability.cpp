@@ -31,14 +31,14 @@ int run_stability(const StabilityOptions& opt) {
   const auto dir = opt.out.empty() ? std::filesystem::path("runs") / ("stability-" + opt.model)
                                    : std::filesystem::path(opt.out);
   fmt::print(stderr, "iwb stability: {} with {} ({} form, {} points) -> {}\n", opt.model,
-             opt.params, opt.full ? "full" : "reduced", sweep.points(spec).size(),
-             dir.string());
+             opt.params, opt.full ? "full" : "reduced", sweep.points(spec).size(), dir.string());
   const auto t0 = std::chrono::steady_clock::now();
   const auto results = analysis::run_stability_sweep(spec, inputs, sweep);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  analysis::write_stability_map(results, sweep,
-                                {opt.model, opt.params, opt.full ? "full" : "reduced", analysis::density_axis_of(spec)}, dir);
+  analysis::write_stability_map(
+      results, sweep,
+      {opt.model, opt.params, opt.full ? "full" : "reduced", analysis::density_axis_of(spec)}, dir);
   for (const auto& [o, n] : analysis::count_outcomes(results))
     fmt::print("{:<20} {}\n", analysis::to_string(o), n);
   fmt::print("{} points in {:.1f} s -> {}\n", results.size(), seconds,

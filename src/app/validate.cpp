@@ -1,7 +1,8 @@
 #include "app/validate.hpp"
 
-#include <chrono>
 #include <fmt/core.h>
+
+#include <chrono>
 
 #include "app/parameter_choice.hpp"
 #include "common/errors.hpp"
@@ -26,8 +27,10 @@ std::pair<std::string, std::string> scene_source(const std::string& scene) {
     return {it->second, "<embedded:" + scene + ">"};
   if (fs::is_regular_file(scene)) return {io::read_file(scene), scene};
   std::string names;
-  for (const auto& [n, t] : embedded) names += (names.empty() ? "" : ", ") + n.substr(0, n.size() - 5);
-  throw InputError(fmt::format("--scene {}: neither an embedded scene ({}) nor a file", scene, names));
+  for (const auto& [n, t] : embedded)
+    names += (names.empty() ? "" : ", ") + n.substr(0, n.size() - 5);
+  throw InputError(
+      fmt::format("--scene {}: neither an embedded scene ({}) nor a file", scene, names));
 }
 
 enum class DemStart {
@@ -51,8 +54,9 @@ DemRun plan_dem_run(const std::string& engine, const fs::path& dir, const std::s
   const fs::path file = dir / "manifest.json";
   if (force || !fs::exists(file)) return run;
   const auto refuse = [&](const std::string& why) {
-    return InputError(fmt::format("--out: {} holds a DEM run of {}; pass --force to replace it, or another --out",
-                                  dir.string(), why));
+    return InputError(
+        fmt::format("--out: {} holds a DEM run of {}; pass --force to replace it, or another --out",
+                    dir.string(), why));
   };
   try {
     run.manifest = json::parse(io::read_file(file));
@@ -62,13 +66,18 @@ DemRun plan_dem_run(const std::string& engine, const fs::path& dir, const std::s
   const std::string ran_engine = run.manifest.value("/engine/name"_json_pointer, std::string("?"));
   if (ran_engine != engine) throw refuse(fmt::format("engine {}, not {}", ran_engine, engine));
   const std::string ran_text = run.manifest.value("/scene/text"_json_pointer, std::string());
-  const auto diff = dem::content_differences(dem::scene_content(text, source),
-                                             dem::scene_content(ran_text, file.string() + " /scene/text"));
+  const auto diff =
+      dem::content_differences(dem::scene_content(text, source),
+                               dem::scene_content(ran_text, file.string() + " /scene/text"));
   if (!diff.empty()) throw refuse(fmt::format("another scene ({})", dem::differences_text(diff)));
-  if (run.manifest.value("status", "") == "complete") run.start = DemStart::kReuse;
-  else if (ran_text == text) run.start = DemStart::kResume;
-  else throw refuse(fmt::format("the same scene, stopped ({}), from another scene text: it cannot resume",
-                                run.manifest.value("status", "?")));
+  if (run.manifest.value("status", "") == "complete")
+    run.start = DemStart::kReuse;
+  else if (ran_text == text)
+    run.start = DemStart::kResume;
+  else
+    throw refuse(
+        fmt::format("the same scene, stopped ({}), from another scene text: it cannot resume",
+                    run.manifest.value("status", "?")));
   return run;
 }
 
@@ -88,44 +97,57 @@ Inputs resolve_inputs(const ValidateOptions& opt) {
   std::tie(in.text, in.source) = scene_source(opt.scene);
   in.scene = dem::parse_scene(in.text, in.source);
   in.sets = io::parameter_sets(opt.params_dir);
-  in.sets_origin = opt.params_dir.empty() ? "built into iwb" : "--params-dir " + opt.params_dir.string();
+  in.sets_origin =
+      opt.params_dir.empty() ? "built into iwb" : "--params-dir " + opt.params_dir.string();
   std::string why;
-  if (calibrated_parameters(in.sets, in.scene, why) == nullptr) require_matchable(in.sets, in.sets_origin);
+  if (calibrated_parameters(in.sets, in.scene, why) == nullptr)
+    require_matchable(in.sets, in.sets_origin);
   for (const auto& e : opt.engines)
-    in.runs.push_back(plan_dem_run(e, opt.out / fmt::format("dem-{}", e), in.text, in.source, opt.force));
+    in.runs.push_back(
+        plan_dem_run(e, opt.out / fmt::format("dem-{}", e), in.text, in.source, opt.force));
   return in;
 }
 
 // Runs (or resumes) the scene in one engine; false (and says why) if it did not complete.
-bool run_dem(const Inputs& in, const DemRun& run, const ValidateOptions& opt, const std::string& step) {
+bool run_dem(const Inputs& in, const DemRun& run, const ValidateOptions& opt,
+             const std::string& step) {
   if (run.start == DemStart::kReuse) {
-    fmt::print(stderr, "iwb validate: {} DEM run of {} in {}: reused the complete run in {} (finished {}, {} "
-               "processes); the engine is not started (--force runs it again)\n", step, in.source, run.engine,
-               run.dir.string(), run.manifest.value("finished", "?"),
-               run.manifest.value("/engine/processes"_json_pointer, 0));
+    fmt::print(
+        stderr,
+        "iwb validate: {} DEM run of {} in {}: reused the complete run in {} (finished {}, {} "
+        "processes); the engine is not started (--force runs it again)\n",
+        step, in.source, run.engine, run.dir.string(), run.manifest.value("finished", "?"),
+        run.manifest.value("/engine/processes"_json_pointer, 0));
     return true;
   }
   const bool resume = run.start == DemStart::kResume;
-  fmt::print(stderr, "iwb validate: {} DEM run of {} in {} ({} processes{}) -> {}\n", step, in.source, run.engine,
-             opt.processes, resume ? ", resuming the stopped run there" : "", run.dir.string());
+  fmt::print(stderr, "iwb validate: {} DEM run of {} in {} ({} processes{}) -> {}\n", step,
+             in.source, run.engine, opt.processes, resume ? ", resuming the stopped run there" : "",
+             run.dir.string());
   const auto engine = dem::make_engine(run.engine);
   auto last = std::chrono::steady_clock::now();
-  const auto outcome = dem::run_scene(in.scene, in.text, *engine,
-                                      {run.dir, opt.processes, resume, opt.force, opt.command_line, nullptr,
-                                       [&last](const std::string& l) {
-                                         if (std::chrono::steady_clock::now() - last < std::chrono::seconds(3)) return;
-                                         last = std::chrono::steady_clock::now();
-                                         fmt::print(stderr, "  {}\n", l);
-                                       }});
-  if (!outcome.complete()) fmt::print(stderr, "iwb validate: the {} run did not complete: {}\n", run.engine, outcome.status);
+  const auto outcome =
+      dem::run_scene(in.scene, in.text, *engine,
+                     {run.dir, opt.processes, resume, opt.force, opt.command_line, nullptr,
+                      [&last](const std::string& l) {
+                        if (std::chrono::steady_clock::now() - last < std::chrono::seconds(3))
+                          return;
+                        last = std::chrono::steady_clock::now();
+                        fmt::print(stderr, "  {}\n", l);
+                      }});
+  if (!outcome.complete())
+    fmt::print(stderr, "iwb validate: the {} run did not complete: {}\n", run.engine,
+               outcome.status);
   return outcome.complete();
 }
 
 // The parameter file for the replays, chosen on the first engine's run so that every engine is
 // compared through the same continuum model; an embedded set is written into OUT/parameters/.
-fs::path replay_parameters(const Inputs& in, const fs::path& dem_dir, const fs::path& out, std::string& why) {
+fs::path replay_parameters(const Inputs& in, const fs::path& dem_dir, const fs::path& out,
+                           std::string& why) {
   const auto summary = json::parse(io::read_file(dem_dir / "summary.json"));
-  const auto& set = parameters_for(in.sets, in.scene, summary["residual_friction"].get<double>(), why);
+  const auto& set =
+      parameters_for(in.sets, in.scene, summary["residual_friction"].get<double>(), why);
   why += ", " + in.sets_origin;
   return io::parameter_set_file(set, out / "parameters");
 }
@@ -144,9 +166,11 @@ int run_validate(const ValidateOptions& opt) {
   for (const auto& run : in.runs) {
     if (!run_dem(in, run, opt, fmt::format("{}/{}", ++step, steps))) return 1;
     if (params.empty()) params = replay_parameters(in, run.dir, opt.out, why);
-    fmt::print(stderr, "iwb validate: {}/{} replay of the {} run through hvwe with {} ({})\n", ++step, steps,
-               run.engine, params.string(), why);
-    const fs::path out = opt.out / (in.runs.size() == 1 ? "compare-hvwe" : fmt::format("compare-hvwe-{}", run.engine));
+    fmt::print(stderr, "iwb validate: {}/{} replay of the {} run through hvwe with {} ({})\n",
+               ++step, steps, run.engine, params.string(), why);
+    const fs::path out =
+        opt.out /
+        (in.runs.size() == 1 ? "compare-hvwe" : fmt::format("compare-hvwe-{}", run.engine));
     // The replay is redone on every call (seconds), replacing the last one: it follows the DEM
     // run beside it and the parameters chosen now.
     comparison::CompareOptions copt;

@@ -15,7 +15,7 @@
 namespace iwb::app {
 
 struct ValidateOptions {
-  std::string scene = "default";  // an embedded scene name or a scene file
+  std::string scene = "default";                    // an embedded scene name or a scene file
   std::vector<std::string> engines = {"liggghts"};  // each runs the scene; one report
   int processes = 2;
   std::filesystem::path out = "runs/validate";

@@ -12,10 +12,11 @@ namespace iwb::assessment {
 
 // f(row) for every row. f is called from several threads at once: it must not write shared state
 // (a progress counter is the caller's, made atomic). threads 0: every core.
-std::vector<std::vector<double>> evaluate_rows(const std::vector<std::vector<double>>& rows, const Quantities& f,
-                                               int threads = 0);
+std::vector<std::vector<double>> evaluate_rows(const std::vector<std::vector<double>>& rows,
+                                               const Quantities& f, int threads = 0);
 
 // f counting its calls into progress(done, total), which is called by one thread at a time.
-Quantities with_progress(const Quantities& f, long total, const std::function<void(long, long)>& progress);
+Quantities with_progress(const Quantities& f, long total,
+                         const std::function<void(long, long)>& progress);
 
 }  // namespace iwb::assessment

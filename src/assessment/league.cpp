@@ -8,8 +8,8 @@
 
 #include "assessment/distribution_file.hpp"
 #include "assessment/evaluate.hpp"
-#include "comparison/compare.hpp"
 #include "common/errors.hpp"
+#include "comparison/compare.hpp"
 
 namespace iwb::assessment {
 
@@ -23,29 +23,40 @@ std::vector<T> first(const std::vector<T>& v, std::size_t n) {
   return std::vector<T>(v.begin(), v.begin() + long(std::min(n, v.size())));
 }
 
-bool cv_boundary(const DemRun& dem) { return dem.boundary == driver::BoundaryKind::kCV; }
+bool cv_boundary(const DemRun& dem) {
+  return dem.boundary == driver::BoundaryKind::kCV;
+}
 
 // The floor of the normal points' denominators: the verdicts' (0.02 d50 of u_n, 1 kPa of sigma_n).
-double normal_floor(const DemRun& dem) { return cv_boundary(dem) ? 1.0 : 0.02 * dem.d50_mm; }
+double normal_floor(const DemRun& dem) {
+  return cv_boundary(dem) ? 1.0 : 0.02 * dem.d50_mm;
+}
 
 // The distributions of the model's parameters, about their values in `inputs`: each table's file
 // <dir>/<table>.toml gives kind and COV (its means are the seed's data sets, not this scene's).
 // A parameter without a file entry is held; so is one whose value a lognormal cannot take.
-std::vector<Distribution> distributions_about(const models::ModelSpec& spec, const models::ModelInputs& inputs,
-                                              const std::map<std::string, std::string>& files, std::vector<std::string>& held,
+std::vector<Distribution> distributions_about(const models::ModelSpec& spec,
+                                              const models::ModelInputs& inputs,
+                                              const std::map<std::string, std::string>& files,
+                                              std::vector<std::string>& held,
                                               std::vector<models::FitParameter>& where) {
   std::vector<Distribution> out;
   for (const auto* table : spec.tables) {
     const std::string file = table->name + ".toml";
     std::vector<Distribution> given;
-    if (const auto f = files.find(file); f != files.end()) given = parse_distributions(f->second, file);
+    if (const auto f = files.find(file); f != files.end())
+      given = parse_distributions(f->second, file);
     for (const auto& d : given)
       if (!table->find(d.name))
-        throw InputError(fmt::format("{}: [[parameter]] key = \"{}\": [{}] has no such parameter", file, d.name, table->name));
+        throw InputError(fmt::format("{}: [[parameter]] key = \"{}\": [{}] has no such parameter",
+                                     file, d.name, table->name));
     for (const auto& e : table->entries) {
-      if (e.role != models::ParameterRole::kMaterial && e.role != models::ParameterRole::kCriticalFrictionAngle) continue;
+      if (e.role != models::ParameterRole::kMaterial &&
+          e.role != models::ParameterRole::kCriticalFrictionAngle)
+        continue;
       const double v = inputs.tables.at(table->name).at(e.key);
-      const auto d = std::find_if(given.begin(), given.end(), [&](const Distribution& g) { return g.name == e.key; });
+      const auto d = std::find_if(given.begin(), given.end(),
+                                  [&](const Distribution& g) { return g.name == e.key; });
       if (d == given.end() || v == 0.0 || (d->kind == Distribution::Kind::kLognormal && v < 0.0)) {
         held.push_back(e.key);
         continue;
@@ -63,8 +74,10 @@ constexpr double kNotIdentifiedCov = 0.5;
 
 // Each fitted quantity spread by its own sigma: normal, or lognormal where it was fitted as ln x
 // (a stiffness, d_s); a quantity without a usable sigma (not identified) is held.
-std::vector<Distribution> distributions_of_fit(const comparison::VariantFit& fit, const std::vector<comparison::Unknown>& unknowns,
-                                               std::vector<std::string>& held, std::vector<models::FitParameter>& where) {
+std::vector<Distribution> distributions_of_fit(const comparison::VariantFit& fit,
+                                               const std::vector<comparison::Unknown>& unknowns,
+                                               std::vector<std::string>& held,
+                                               std::vector<models::FitParameter>& where) {
   std::vector<Distribution> out;
   for (std::size_t k = 0; k < fit.values.size(); ++k) {
     const auto& v = fit.values[k];
@@ -73,7 +86,8 @@ std::vector<Distribution> distributions_of_fit(const comparison::VariantFit& fit
       held.push_back(v.name + " (not identified)");
       continue;
     }
-    const auto kind = unknowns[k].what.logarithmic ? Distribution::Kind::kLognormal : Distribution::Kind::kNormal;
+    const auto kind =
+        unknowns[k].what.logarithmic ? Distribution::Kind::kLognormal : Distribution::Kind::kNormal;
     out.push_back({v.name, kind, v.value, cov});
     where.push_back(unknowns[k].what);
   }
@@ -81,7 +95,8 @@ std::vector<Distribution> distributions_of_fit(const comparison::VariantFit& fit
 }
 
 // A variant with the sampled values x set where they go.
-comparison::Variant with_values(comparison::Variant v, const std::vector<models::FitParameter>& where,
+comparison::Variant with_values(comparison::Variant v,
+                                const std::vector<models::FitParameter>& where,
                                 const std::vector<double>& x) {
   for (std::size_t i = 0; i < where.size(); ++i) comparison::set_value(v, where[i], x[i]);
   return v;
@@ -136,19 +151,23 @@ SceneReference scene_reference(const std::vector<DemRun>& runs) {
   m.t_s = first(m.t_s, n), m.u_x_mm = first(m.u_x_mm, n), m.e_band = first(m.e_band, n);
   m.tau_kPa = first(ref.scatter.tau.mean, n), m.u_n_mm = first(ref.scatter.u_n.mean, n);
   m.sigma_n_kPa = first(ref.scatter.sigma_n.mean, n);
-  if (n < 5) throw InputError(fmt::format("{}: fewer than 5 rows that every seed covers", runs.front().dir.string()));
+  if (n < 5)
+    throw InputError(
+        fmt::format("{}: fewer than 5 rows that every seed covers", runs.front().dir.string()));
   return ref;
 }
 
-ResponseCurve response_curve(const DemRun& dem, const std::vector<double>& u_x, const std::vector<double>& tau,
-                             const std::vector<double>& u_n, const std::vector<double>& sigma_n) {
+ResponseCurve response_curve(const DemRun& dem, const std::vector<double>& u_x,
+                             const std::vector<double>& tau, const std::vector<double>& u_n,
+                             const std::vector<double>& sigma_n) {
   ResponseCurve c{u_x, tau, {}};
   const auto& normal = cv_boundary(dem) ? sigma_n : u_n;
   for (double v : normal) c.normal.push_back(v - normal.front());
   return c;
 }
 
-std::vector<comparison::Unknown> calibration_unknowns(const models::ModelSpec& spec, const DemRun& dem) {
+std::vector<comparison::Unknown> calibration_unknowns(const models::ModelSpec& spec,
+                                                      const DemRun& dem) {
   using Target = models::FitParameter::Target;
   const auto& d = spec.declaration;
   std::vector<comparison::Unknown> out;
@@ -157,7 +176,9 @@ std::vector<comparison::Unknown> calibration_unknowns(const models::ModelSpec& s
     out.push_back({f, f.lower * scale, f.upper * scale});
   }
   if (d.fit.empty() && !d.displacement_based)
-    out.push_back({{"d_s_mm", Target::kShearZone, {}, {}, 1.0, 40.0, true, true}, 1.0 * dem.d50_mm, 40.0 * dem.d50_mm});
+    out.push_back({{"d_s_mm", Target::kShearZone, {}, {}, 1.0, 40.0, true, true},
+                   1.0 * dem.d50_mm,
+                   40.0 * dem.d50_mm});
   if (!d.calibration_recipe.empty()) return out;  // the material is calibrated from soil tests
   for (const auto* table : spec.tables)
     for (const auto& e : table->entries)
@@ -170,12 +191,13 @@ std::vector<comparison::Unknown> calibration_unknowns(const models::ModelSpec& s
 }
 
 const std::vector<std::string>& league_quantities() {
-  static const std::vector<std::string> q{"peak_tau_kPa", "residual_tau_kPa", "normal_end", "normal_rate"};
+  static const std::vector<std::string> q{"peak_tau_kPa", "residual_tau_kPa", "normal_end",
+                                          "normal_rate"};
   return q;
 }
 
-LeagueEntry assess_model(const SceneReference& ref, const std::string& model, const models::ModelInputs& start,
-                         const LeagueOptions& o) {
+LeagueEntry assess_model(const SceneReference& ref, const std::string& model,
+                         const models::ModelInputs& start, const LeagueOptions& o) {
   const auto& spec = models::find_model(model);
   const DemRun& dem = ref.mean;
   LeagueEntry e;
@@ -183,23 +205,31 @@ LeagueEntry assess_model(const SceneReference& ref, const std::string& model, co
   e.parameters_source = start.source;
   auto variant = comparison::standard_variants(dem, model, start).front();
   const auto unknowns = calibration_unknowns(spec, dem);
-  e.fit = comparison::fit_variant(dem, variant, comparison::joint_targets(dem, ref.scatter), unknowns);
+  e.fit =
+      comparison::fit_variant(dem, variant, comparison::joint_targets(dem, ref.scatter), unknowns);
   const auto best = comparison::replay(dem, e.fit.best);
   e.verdicts = comparison::judge(dem, ref.scatter, best, comparison::tolerances_for(dem));
   e.reference = response_curve(dem, dem.u_x_mm, dem.tau_kPa, dem.u_n_mm, dem.sigma_n_kPa);
   e.fitted = response_curve(dem, best.u_x_mm, best.tau_kPa, best.u_n_mm, best.sigma_n_kPa);
-  if (best.status != "complete") e.status = "the calibrated model stops before the end: " + best.status;
+  if (best.status != "complete")
+    e.status = "the calibrated model stops before the end: " + best.status;
   e.model_uncertainty = model_uncertainty(e.reference, e.fitted, normal_floor(dem));
 
-  e.distributions = o.spread == ParameterSpread::kSeedCovs
-                        ? distributions_about(spec, e.fit.best.inputs, o.distributions, e.held, e.sampled)
-                        : distributions_of_fit(e.fit, unknowns, e.held, e.sampled);
-  const long runs = long(o.uncertainty_samples) + (o.sobol_samples > 0 ? long(o.sobol_samples) * long(e.distributions.size() + 2) : 0);
+  e.distributions =
+      o.spread == ParameterSpread::kSeedCovs
+          ? distributions_about(spec, e.fit.best.inputs, o.distributions, e.held, e.sampled)
+          : distributions_of_fit(e.fit, unknowns, e.held, e.sampled);
+  const long runs =
+      long(o.uncertainty_samples) +
+      (o.sobol_samples > 0 ? long(o.sobol_samples) * long(e.distributions.size() + 2) : 0);
   const Quantities f = with_progress(
-      [&](const std::vector<double>& x) { return sample_outputs(dem, comparison::replay(dem, with_values(e.fit.best, e.sampled, x))); },
+      [&](const std::vector<double>& x) {
+        return sample_outputs(dem, comparison::replay(dem, with_values(e.fit.best, e.sampled, x)));
+      },
       runs, o.progress);
   if (!e.distributions.empty()) {
-    const auto outputs = evaluate_rows(latin_hypercube(e.distributions, o.uncertainty_samples, o.seed), f, o.threads);
+    const auto outputs = evaluate_rows(
+        latin_hypercube(e.distributions, o.uncertainty_samples, o.seed), f, o.threads);
     std::vector<std::vector<double>> quantities;
     for (const auto& q : outputs) quantities.emplace_back(q.begin(), q.begin() + 4);
     e.parameter_uncertainty = summarize(league_quantities(), quantities);
@@ -215,11 +245,13 @@ LeagueEntry assess_model(const SceneReference& ref, const std::string& model, co
         const auto q = f(x);
         return std::vector<double>(q.begin(), q.begin() + 4);
       };
-      e.sobol = total_sobol_indices(e.distributions, league_quantities(), four, o.sobol_samples, o.seed + 1, 200, o.threads);
+      e.sobol = total_sobol_indices(e.distributions, league_quantities(), four, o.sobol_samples,
+                                    o.seed + 1, 200, o.threads);
     }
   }
   e.global_shear = root_sum_square({e.model_uncertainty.shear_norm, e.ua_par});
-  e.global = root_sum_square({e.model_uncertainty.shear_norm, e.model_uncertainty.normal_norm, e.ua_par});
+  e.global =
+      root_sum_square({e.model_uncertainty.shear_norm, e.model_uncertainty.normal_norm, e.ua_par});
   return e;
 }
 

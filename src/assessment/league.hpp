@@ -37,7 +37,8 @@ struct SceneReference {
 SceneReference scene_reference(const std::vector<comparison::DemRun>& runs);
 
 // What a fit to the runs adjusts for `model` (see above), boxes in absolute units.
-std::vector<comparison::Unknown> calibration_unknowns(const models::ModelSpec& spec, const comparison::DemRun& dem);
+std::vector<comparison::Unknown> calibration_unknowns(const models::ModelSpec& spec,
+                                                      const comparison::DemRun& dem);
 
 // Where the parameter samples spread: the seed's Table 4.8 / Appendix A COVs about the calibrated
 // values (its framework: parameters as a lab would know them), or each fitted quantity's own
@@ -50,8 +51,8 @@ struct LeagueOptions {
   // distribution files by name, <table>.toml per parameter table (Table 4.8's COVs):
   // distribution_texts() of a directory or the embedded ones
   std::map<std::string, std::string> distributions;
-  int uncertainty_samples = 1000;           // Latin hypercube samples
-  int sobol_samples = 0;                    // N of the Sobol indices; 0: none
+  int uncertainty_samples = 1000;  // Latin hypercube samples
+  int sobol_samples = 0;           // N of the Sobol indices; 0: none
   unsigned seed = 1;
   int threads = 0;  // 0: every core
   std::function<void(long done, long total)> progress;
@@ -66,26 +67,29 @@ struct LeagueEntry {
   std::string parameters_source;
   std::string status = "assessed";  // or why the model could not be assessed
   comparison::VariantFit fit;
-  ResponseCurve reference, fitted;  // the seed mean and the calibrated model's replay
+  ResponseCurve reference, fitted;          // the seed mean and the calibrated model's replay
   std::vector<double> band_low, band_high;  // 5 % and 95 % of tau over the samples, per row
   TestUncertainty model_uncertainty;
-  std::vector<comparison::Verdict> verdicts;  // the calibrated model's quantities of interest against the seed mean
-  std::vector<Distribution> distributions;  // about the calibrated values
+  std::vector<comparison::Verdict>
+      verdicts;  // the calibrated model's quantities of interest against the seed mean
+  std::vector<Distribution> distributions;    // about the calibrated values
   std::vector<models::FitParameter> sampled;  // where each distribution's value goes
-  std::vector<std::string> held;            // parameters without a distribution: held at their value
+  std::vector<std::string> held;  // parameters without a distribution: held at their value
   UncertaintyResult parameter_uncertainty;
   std::optional<SobolResult> sobol;
-  double ua_par = 0.0;          // CV of the peak shear stress (the seed's Appendix B: one per model)
-  double global_shear = 0.0;    // sqrt(UA_model,shear^2 + UA_par^2): the seed's measure
-  double global = 0.0;          // sqrt(UA_model,shear^2 + UA_model,normal^2 + UA_par^2)
+  double ua_par = 0.0;        // CV of the peak shear stress (the seed's Appendix B: one per model)
+  double global_shear = 0.0;  // sqrt(UA_model,shear^2 + UA_par^2): the seed's measure
+  double global = 0.0;        // sqrt(UA_model,shear^2 + UA_model,normal^2 + UA_par^2)
 };
 
 // One model on the scene: calibrated from `start` (its parameter set), then judged.
-LeagueEntry assess_model(const SceneReference& reference, const std::string& model, const models::ModelInputs& start,
-                         const LeagueOptions& options);
+LeagueEntry assess_model(const SceneReference& reference, const std::string& model,
+                         const models::ModelInputs& start, const LeagueOptions& options);
 
-// The free normal quantity of a curve on `dem`'s boundary: u_n - u_n0 (CNL, CNS) or sigma_n - sigma_n0 (CV).
-ResponseCurve response_curve(const comparison::DemRun& dem, const std::vector<double>& u_x, const std::vector<double>& tau,
-                             const std::vector<double>& u_n, const std::vector<double>& sigma_n);
+// The free normal quantity of a curve on `dem`'s boundary: u_n - u_n0 (CNL, CNS) or sigma_n -
+// sigma_n0 (CV).
+ResponseCurve response_curve(const comparison::DemRun& dem, const std::vector<double>& u_x,
+                             const std::vector<double>& tau, const std::vector<double>& u_n,
+                             const std::vector<double>& sigma_n);
 
 }  // namespace iwb::assessment

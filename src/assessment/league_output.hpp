@@ -18,11 +18,13 @@ nlohmann::json entry_json(const LeagueEntry& entry);
 std::vector<nlohmann::json> ranked(std::vector<nlohmann::json> entries);
 
 // `header`: what the league ran on (runs, scene, samples), as league.json's "league".
-std::string league_markdown(const nlohmann::json& header, const std::vector<nlohmann::json>& ranked_entries);
+std::string league_markdown(const nlohmann::json& header,
+                            const std::vector<nlohmann::json>& ranked_entries);
 std::string league_csv(const std::vector<nlohmann::json>& ranked_entries);
 
 // figures/<model>_tau.svg and figures/<model>_normal.svg (DEM seed mean and SD, the calibrated
 // model, the 5-95 % band of its parameter samples) and figures/league.svg (the uncertainties).
-void draw_league_figures(const std::vector<nlohmann::json>& ranked_entries, const std::filesystem::path& dir);
+void draw_league_figures(const std::vector<nlohmann::json>& ranked_entries,
+                         const std::filesystem::path& dir);
 
 }  // namespace iwb::assessment

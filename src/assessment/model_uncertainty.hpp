@@ -22,10 +22,11 @@ struct ResponseCurve {
 };
 
 struct ObjectivePoint {
-  std::string name;     // "hardening", "peak", "softening", "residual"; "normal at peak", "normal at end"
-  double u_x = 0.0;     // where it is read on the reference (the peak: each curve's own maximum)
+  std::string
+      name;  // "hardening", "peak", "softening", "residual"; "normal at peak", "normal at end"
+  double u_x = 0.0;  // where it is read on the reference (the peak: each curve's own maximum)
   double reference = 0.0, model = 0.0;
-  double ua = 0.0;      // eq. 4.3
+  double ua = 0.0;  // eq. 4.3
 };
 
 struct TestUncertainty {
@@ -44,7 +45,8 @@ inline constexpr double kNormalQuantile95 = 1.645;
 // reference's peak displacement and at the end. `normal_floor` bounds the normal denominators
 // from below (a dilation near 0 would make any miss infinite; the verdicts' floor, 0.02 d50 or
 // 1 kPa). A model curve that stops early counts as 0 beyond its end.
-TestUncertainty model_uncertainty(const ResponseCurve& reference, const ResponseCurve& model, double normal_floor);
+TestUncertainty model_uncertainty(const ResponseCurve& reference, const ResponseCurve& model,
+                                  double normal_floor);
 
 // sqrt(sum of squares): eq. 4.15's norm and eq. 4.4's global combination.
 double root_sum_square(const std::vector<double>& values);

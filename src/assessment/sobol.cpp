@@ -1,12 +1,12 @@
 #include "assessment/sobol.hpp"
 
-#include "assessment/evaluate.hpp"
-
 #include <algorithm>
 #include <boost/math/distributions/lognormal.hpp>
 #include <boost/math/distributions/normal.hpp>
 #include <cmath>
 #include <stdexcept>
+
+#include "assessment/evaluate.hpp"
 
 namespace iwb::assessment {
 
@@ -32,7 +32,8 @@ double Distribution::quantile(double p) const {
       return boost::math::quantile(boost::math::normal(mean, cov * std::abs(mean)), p);
     case Kind::kLognormal: {
       const double s2 = std::log(1.0 + cov * cov);
-      return boost::math::quantile(boost::math::lognormal(std::log(mean) - 0.5 * s2, std::sqrt(s2)), p);
+      return boost::math::quantile(boost::math::lognormal(std::log(mean) - 0.5 * s2, std::sqrt(s2)),
+                                   p);
     }
     case Kind::kUniform: {
       const double half = std::sqrt(3.0) * cov * std::abs(mean);
@@ -53,9 +54,10 @@ Matrix sample_matrix(const std::vector<Distribution>& p, int n, std::mt19937_64&
   return m;
 }
 
-// Jansen's total index over the rows `rows` of the outputs of A (ya) and A_B^i (yi) for one quantity.
-double jansen(const std::vector<double>& ya, const std::vector<double>& yb, const std::vector<double>& yi,
-              const std::vector<std::size_t>& rows) {
+// Jansen's total index over the rows `rows` of the outputs of A (ya) and A_B^i (yi) for one
+// quantity.
+double jansen(const std::vector<double>& ya, const std::vector<double>& yb,
+              const std::vector<double>& yi, const std::vector<std::size_t>& rows) {
   double mean = 0.0, var = 0.0, num = 0.0;
   for (auto r : rows) mean += ya[r] + yb[r];
   mean /= 2.0 * double(rows.size());
@@ -69,9 +71,11 @@ double jansen(const std::vector<double>& ya, const std::vector<double>& yb, cons
 
 }  // namespace
 
-SobolResult total_sobol_indices(const std::vector<Distribution>& p, const std::vector<std::string>& quantities,
-                                const Quantities& f, int n, unsigned seed, int bootstrap, int threads) {
-  if (n < 2 || p.empty()) throw std::invalid_argument("Sobol indices need at least 2 samples and 1 parameter");
+SobolResult total_sobol_indices(const std::vector<Distribution>& p,
+                                const std::vector<std::string>& quantities, const Quantities& f,
+                                int n, unsigned seed, int bootstrap, int threads) {
+  if (n < 2 || p.empty())
+    throw std::invalid_argument("Sobol indices need at least 2 samples and 1 parameter");
   std::mt19937_64 rng(seed);
   const Matrix A = sample_matrix(p, n, rng), B = sample_matrix(p, n, rng);
   const std::size_t k = p.size(), m = quantities.size();
@@ -99,7 +103,8 @@ SobolResult total_sobol_indices(const std::vector<Distribution>& p, const std::v
   for (int r = 0; r < n; ++r)
     if (ok[std::size_t(r)]) rows.push_back(std::size_t(r));
   out.failed = n - long(rows.size());
-  if (rows.size() < 2) throw std::runtime_error("fewer than two sample rows with finite quantities");
+  if (rows.size() < 2)
+    throw std::runtime_error("fewer than two sample rows with finite quantities");
   std::uniform_int_distribution<std::size_t> pick(0, rows.size() - 1);
   out.total.assign(m, std::vector<TotalIndex>(k));
   for (std::size_t j = 0; j < m; ++j)
@@ -114,7 +119,9 @@ SobolResult total_sobol_indices(const std::vector<Distribution>& p, const std::v
         boot.push_back(jansen(ya, yb, yi, resampled));
       }
       std::sort(boot.begin(), boot.end());
-      const auto at = [&](double q) { return boot.empty() ? NAN : boot[std::size_t(q * double(boot.size() - 1))]; };
+      const auto at = [&](double q) {
+        return boot.empty() ? NAN : boot[std::size_t(q * double(boot.size() - 1))];
+      };
       out.total[j][i] = {jansen(ya, yb, yi, rows), at(0.025), at(0.975)};
     }
   return out;

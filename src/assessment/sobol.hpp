@@ -38,8 +38,9 @@ struct SobolResult {
 // from several threads at once (evaluate.hpp); threads 0: every core.
 using Quantities = std::function<std::vector<double>(const std::vector<double>&)>;
 
-SobolResult total_sobol_indices(const std::vector<Distribution>& parameters, const std::vector<std::string>& quantities,
-                                const Quantities& f, int base_samples, unsigned seed, int bootstrap = 200,
+SobolResult total_sobol_indices(const std::vector<Distribution>& parameters,
+                                const std::vector<std::string>& quantities, const Quantities& f,
+                                int base_samples, unsigned seed, int bootstrap = 200,
                                 int threads = 0);
 
 }  // namespace iwb::assessment

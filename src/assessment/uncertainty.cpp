@@ -1,16 +1,17 @@
 #include "assessment/uncertainty.hpp"
 
-#include "assessment/evaluate.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <random>
 #include <stdexcept>
 
+#include "assessment/evaluate.hpp"
+
 namespace iwb::assessment {
 
-std::vector<std::vector<double>> latin_hypercube(const std::vector<Distribution>& p, int n, unsigned seed) {
+std::vector<std::vector<double>> latin_hypercube(const std::vector<Distribution>& p, int n,
+                                                 unsigned seed) {
   if (n < 1) throw std::invalid_argument("a Latin hypercube needs at least one sample");
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> within(0.0, 1.0);
@@ -19,12 +20,14 @@ std::vector<std::vector<double>> latin_hypercube(const std::vector<Distribution>
   for (std::size_t j = 0; j < p.size(); ++j) {
     std::iota(strata.begin(), strata.end(), 0);
     std::shuffle(strata.begin(), strata.end(), rng);
-    for (int i = 0; i < n; ++i) x[std::size_t(i)][j] = p[j].quantile((strata[std::size_t(i)] + within(rng)) / n);
+    for (int i = 0; i < n; ++i)
+      x[std::size_t(i)][j] = p[j].quantile((strata[std::size_t(i)] + within(rng)) / n);
   }
   return x;
 }
 
-UncertaintyResult summarize(const std::vector<std::string>& names, const std::vector<std::vector<double>>& outputs) {
+UncertaintyResult summarize(const std::vector<std::string>& names,
+                            const std::vector<std::vector<double>>& outputs) {
   UncertaintyResult out;
   out.samples = int(outputs.size());
   std::vector<std::vector<double>> values(names.size());
@@ -49,8 +52,9 @@ UncertaintyResult summarize(const std::vector<std::string>& names, const std::ve
   return out;
 }
 
-UncertaintyResult parameter_uncertainty(const std::vector<Distribution>& p, const std::vector<std::string>& names,
-                                        const Quantities& f, int n, unsigned seed, int threads) {
+UncertaintyResult parameter_uncertainty(const std::vector<Distribution>& p,
+                                        const std::vector<std::string>& names, const Quantities& f,
+                                        int n, unsigned seed, int threads) {
   return summarize(names, evaluate_rows(latin_hypercube(p, n, seed), f, threads));
 }
 

@@ -69,8 +69,8 @@ void require(bool condition, const std::string& why) {
   if (!condition) throw iwb::InputError(why);
 }
 
-std::unique_ptr<iwb_material> make_material(const char* model, iwb::models::ModelInputs inputs, double kappa_r,
-                                            const char* integration) {
+std::unique_ptr<iwb_material> make_material(const char* model, iwb::models::ModelInputs inputs,
+                                            double kappa_r, const char* integration) {
   require(model != nullptr, "model name is NULL");
   auto m = std::make_unique<iwb_material>();
   m->spec = &iwb::models::find_model(model);
@@ -80,18 +80,24 @@ std::unique_ptr<iwb_material> make_material(const char* model, iwb::models::Mode
     inputs.roughness.scheme = support.default_scheme;
     inputs.roughness.kappa_r = kappa_r;
   } else {
-    require(kappa_r == 1.0, fmt::format("model '{}' is a continuum model and takes no wall roughness: give kappa_r = 1 "
-                                        "(given {:g})", model, kappa_r));
+    require(
+        kappa_r == 1.0,
+        fmt::format("model '{}' is a continuum model and takes no wall roughness: give kappa_r = 1 "
+                    "(given {:g})",
+                    model, kappa_r));
   }
   if (integration != nullptr && *integration != '\0')
-    m->settings = iwb::io::parse_integrator_settings(iwb::io::parse_toml_text(integration, "integration"), "integration");
+    m->settings = iwb::io::parse_integrator_settings(
+        iwb::io::parse_toml_text(integration, "integration"), "integration");
   m->inputs = std::move(inputs);
-  m->model = m->spec->make(m->inputs);  // validates the parameters (InputError naming file, key, value)
+  m->model =
+      m->spec->make(m->inputs);  // validates the parameters (InputError naming file, key, value)
   m->state_names = m->model->state_names();
   return m;
 }
 
-iwb_status create(char* message, size_t size, iwb_material** out, const std::function<std::unique_ptr<iwb_material>()>& make) {
+iwb_status create(char* message, size_t size, iwb_material** out,
+                  const std::function<std::unique_ptr<iwb_material>()>& make) {
   if (out != nullptr) *out = nullptr;
   return guarded(message, size, [&] {
     require(out != nullptr, "out is NULL");
@@ -100,8 +106,9 @@ iwb_status create(char* message, size_t size, iwb_material** out, const std::fun
 }
 
 // d(traction)/d(strain component j) of the integrated increment, by one pass on dual numbers.
-StateVector derivative_of_increment(const iwb_material& m, const StateVector& s, const iwb::models::InterfaceStrain& d,
-                                    int j, StateVector& values) {
+StateVector derivative_of_increment(const iwb_material& m, const StateVector& s,
+                                    const iwb::models::InterfaceStrain& d, int j,
+                                    StateVector& values) {
   using iwb::Dual;
   const double c[3] = {d.eps_n, d.gamma_x, d.gamma_y};
   Dual x[3];
@@ -109,8 +116,8 @@ StateVector derivative_of_increment(const iwb_material& m, const StateVector& s,
   iwb::integration::IntegrationCounters counters;
   double first_step = 1.0;
   const StateVectorT<Dual> start = s.cast<Dual>();
-  const auto end = iwb::integration::integrate_increment<Dual>(*m.model, start, {x[0], x[1], x[2]}, m.settings, counters,
-                                                               first_step);
+  const auto end = iwb::integration::integrate_increment<Dual>(*m.model, start, {x[0], x[1], x[2]},
+                                                               m.settings, counters, first_step);
   StateVector derivative(end.size());
   values.resize(end.size());
   for (int i = 0; i < end.size(); ++i) {
@@ -133,10 +140,13 @@ StateVector state_of(const iwb_material& m, const double* values) {
 
 extern "C" {
 
-const char* iwb_version(void) { return IWB_VERSION; }
+const char* iwb_version(void) {
+  return IWB_VERSION;
+}
 
-iwb_status iwb_material_create(const char* model, const char* parameter_file, double kappa_r, const char* integration,
-                               iwb_material** out, char* message, size_t message_size) {
+iwb_status iwb_material_create(const char* model, const char* parameter_file, double kappa_r,
+                               const char* integration, iwb_material** out, char* message,
+                               size_t message_size) {
   return create(message, message_size, out, [&] {
     require(parameter_file != nullptr, "parameter_file is NULL");
     iwb::models::ModelInputs inputs;
@@ -146,9 +156,10 @@ iwb_status iwb_material_create(const char* model, const char* parameter_file, do
   });
 }
 
-iwb_status iwb_material_create_from_values(const char* model, const char* const* keys, const double* values, int n,
-                                           double kappa_r, const char* integration, iwb_material** out, char* message,
-                                           size_t message_size) {
+iwb_status iwb_material_create_from_values(const char* model, const char* const* keys,
+                                           const double* values, int n, double kappa_r,
+                                           const char* integration, iwb_material** out,
+                                           char* message, size_t message_size) {
   return create(message, message_size, out, [&] {
     require(n >= 0 && (n == 0 || (keys != nullptr && values != nullptr)), "keys or values is NULL");
     iwb::models::ModelInputs inputs;
@@ -165,9 +176,13 @@ iwb_status iwb_material_create_from_values(const char* model, const char* const*
   });
 }
 
-void iwb_material_destroy(iwb_material* material) { delete material; }
+void iwb_material_destroy(iwb_material* material) {
+  delete material;
+}
 
-int iwb_state_size(const iwb_material* material) { return material ? material->model->state_size() : 0; }
+int iwb_state_size(const iwb_material* material) {
+  return material ? material->model->state_size() : 0;
+}
 
 const char* iwb_state_name(const iwb_material* material, int i) {
   if (material == nullptr || i < 0 || i >= int(material->state_names.size())) return nullptr;
@@ -183,8 +198,9 @@ const char* iwb_initial_input_key(const iwb_material* material, int i) {
   return material->spec->declaration.initial[i].key.c_str();
 }
 
-iwb_status iwb_initial_state(const iwb_material* material, const char* const* keys, const double* values, int n,
-                             double* state, char* message, size_t message_size) {
+iwb_status iwb_initial_state(const iwb_material* material, const char* const* keys,
+                             const double* values, int n, double* state, char* message,
+                             size_t message_size) {
   return guarded(message, message_size, [&] {
     require(material != nullptr && state != nullptr, "material or state is NULL");
     require(n >= 0 && (n == 0 || (keys != nullptr && values != nullptr)), "keys or values is NULL");
@@ -193,28 +209,32 @@ iwb_status iwb_initial_state(const iwb_material* material, const char* const* ke
       require(keys[i] != nullptr, fmt::format("key {} is NULL", i));
       initial.insert_or_assign(keys[i], values[i]);
     }
-    const auto init = iwb::io::parse_initial_state(initial, material->spec->name, material->inputs, "initial state");
+    const auto init = iwb::io::parse_initial_state(initial, material->spec->name, material->inputs,
+                                                   "initial state");
     const auto s = material->model->initial_state(init);
     std::copy(s.data(), s.data() + s.size(), state);
   });
 }
 
-iwb_status iwb_traction(const iwb_material* material, const double* state, double traction[3], char* message,
-                        size_t message_size) {
+iwb_status iwb_traction(const iwb_material* material, const double* state, double traction[3],
+                        char* message, size_t message_size) {
   return guarded(message, message_size, [&] {
-    require(material != nullptr && state != nullptr && traction != nullptr, "material, state or traction is NULL");
+    require(material != nullptr && state != nullptr && traction != nullptr,
+            "material, state or traction is NULL");
     write_traction(*material, state_of(*material, state), traction);
   });
 }
 
-iwb_status iwb_update(const iwb_material* material, const double* state_in, const double du[3], double thickness,
-                      double dt, const double* external, double* state_out, double traction[3], double* tangent,
-                      double* step_factor, char* message, size_t message_size) {
+iwb_status iwb_update(const iwb_material* material, const double* state_in, const double du[3],
+                      double thickness, double dt, const double* external, double* state_out,
+                      double traction[3], double* tangent, double* step_factor, char* message,
+                      size_t message_size) {
   (void)dt;        // no model of the workbench reads time yet (issue 19)
   (void)external;  // nor temperature or suction: their increments will travel with the stretching
   if (step_factor != nullptr) *step_factor = 1.0;
   const iwb_status status = guarded(message, message_size, [&] {
-    require(material != nullptr && state_in != nullptr && du != nullptr && state_out != nullptr && traction != nullptr,
+    require(material != nullptr && state_in != nullptr && du != nullptr && state_out != nullptr &&
+                traction != nullptr,
             "material, state_in, du, state_out or traction is NULL");
     require(thickness > 0.0, fmt::format("thickness d_s^v = {:g} must be positive", thickness));
     const StateVector s = state_of(*material, state_in);
@@ -223,7 +243,8 @@ iwb_status iwb_update(const iwb_material* material, const double* state_in, cons
     if (tangent == nullptr) {
       iwb::integration::IntegrationCounters counters;
       double first_step = 1.0;
-      end = iwb::integration::integrate_increment<double>(*material->model, s, d, material->settings, counters, first_step);
+      end = iwb::integration::integrate_increment<double>(*material->model, s, d,
+                                                          material->settings, counters, first_step);
     } else {
       // The traction is linear in the state (every model's stress() selects and signs components),
       // so the derivative of the traction is the traction of the state's derivative.
@@ -234,14 +255,18 @@ iwb_status iwb_update(const iwb_material* material, const double* state_in, cons
         for (int i = 0; i < 3; ++i) tangent[3 * i + j] = column[i] / thickness;
       }
     }
-    if (const auto why = material->model->domain_violation(end); !why.empty()) throw iwb::DomainError(why);
+    if (const auto why = material->model->domain_violation(end); !why.empty())
+      throw iwb::DomainError(why);
     material->model->flush_negligible_components(end);
     std::copy(end.data(), end.data() + end.size(), state_out);
     write_traction(*material, end, traction);
   });
-  if ((status == IWB_ERROR_DOMAIN || status == IWB_ERROR_CONVERGENCE) && step_factor != nullptr) *step_factor = 0.5;
-  if (status != IWB_OK && material != nullptr && state_in != nullptr && state_out != nullptr && state_out != state_in)
-    std::copy(state_in, state_in + material->model->state_size(), state_out);  // the caller retries from here
+  if ((status == IWB_ERROR_DOMAIN || status == IWB_ERROR_CONVERGENCE) && step_factor != nullptr)
+    *step_factor = 0.5;
+  if (status != IWB_OK && material != nullptr && state_in != nullptr && state_out != nullptr &&
+      state_out != state_in)
+    std::copy(state_in, state_in + material->model->state_size(),
+              state_out);  // the caller retries from here
   return status;
 }
 

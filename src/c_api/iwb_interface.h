@@ -49,42 +49,47 @@ IWB_API const char* iwb_version(void);
  * integration: the stress-point integrator as the TOML text of a test file's [integration] table
  * ("scheme = \"euler\"\nsubsteps = 4", or "rtol = 1e-8"); NULL or "": adaptive rk32, rtol 1e-6.
  * On error *out is NULL and message holds why. */
-IWB_API iwb_status iwb_material_create(const char* model, const char* parameter_file, double kappa_r,
-                                       const char* integration, iwb_material** out, char* message,
-                                       size_t message_size);
+IWB_API iwb_status iwb_material_create(const char* model, const char* parameter_file,
+                                       double kappa_r, const char* integration, iwb_material** out,
+                                       char* message, size_t message_size);
 
 /* The same from n parameters given as "table.key" = value ("hypoplastic.phi_c_deg" = 30). */
-IWB_API iwb_status iwb_material_create_from_values(const char* model, const char* const* keys, const double* values,
-                                                   int n, double kappa_r, const char* integration,
-                                                   iwb_material** out, char* message, size_t message_size);
+IWB_API iwb_status iwb_material_create_from_values(const char* model, const char* const* keys,
+                                                   const double* values, int n, double kappa_r,
+                                                   const char* integration, iwb_material** out,
+                                                   char* message, size_t message_size);
 
 IWB_API void iwb_material_destroy(iwb_material* material);
 
 IWB_API int iwb_state_size(const iwb_material* material);
-/* Name of state component i ("T_n", "e", "p_c", ...), valid while the material lives; NULL if out of range. */
+/* Name of state component i ("T_n", "e", "p_c", ...), valid while the material lives; NULL if out
+ * of range. */
 IWB_API const char* iwb_state_name(const iwb_material* material, int i);
-/* Number of the model's declared initial inputs and the key of input i ("sigma_n_kPa", "e0", "K0", "OCR"). */
+/* Number of the model's declared initial inputs and the key of input i ("sigma_n_kPa", "e0", "K0",
+ * "OCR"). */
 IWB_API int iwb_initial_input_count(const iwb_material* material);
 IWB_API const char* iwb_initial_input_key(const iwb_material* material, int i);
 
 /* The initial state from n inputs by key (as a test file's [initial]: "sigma_n_kPa", "e0", "K0",
  * "OCR", ...); undeclared keys are refused, missing ones take the model's defaults. */
-IWB_API iwb_status iwb_initial_state(const iwb_material* material, const char* const* keys, const double* values, int n,
-                                     double* state, char* message, size_t message_size);
+IWB_API iwb_status iwb_initial_state(const iwb_material* material, const char* const* keys,
+                                     const double* values, int n, double* state, char* message,
+                                     size_t message_size);
 
 /* The traction of a state. */
-IWB_API iwb_status iwb_traction(const iwb_material* material, const double* state, double traction[3],
-                                char* message, size_t message_size);
+IWB_API iwb_status iwb_traction(const iwb_material* material, const double* state,
+                                double traction[3], char* message, size_t message_size);
 
 /* One increment: state_in and du (with the virtual thickness d_s^v > 0) -> state_out, traction and
  * (if tangent is not NULL) the consistent tangent. dt and external (temperature, suction, time
  * increments; NULL when the model reads none) are passed to models that declare them. On
  * IWB_ERROR_DOMAIN or IWB_ERROR_CONVERGENCE state_out is state_in and *step_factor < 1 suggests the
- * fraction of du to retry with (as Abaqus' PNEWDT); on success *step_factor is 1. step_factor may be
- * NULL. state_out may alias state_in. */
-IWB_API iwb_status iwb_update(const iwb_material* material, const double* state_in, const double du[3],
-                              double thickness, double dt, const double* external, double* state_out,
-                              double traction[3], double* tangent, double* step_factor, char* message,
+ * fraction of du to retry with (as Abaqus' PNEWDT); on success *step_factor is 1. step_factor may
+ * be NULL. state_out may alias state_in. */
+IWB_API iwb_status iwb_update(const iwb_material* material, const double* state_in,
+                              const double du[3], double thickness, double dt,
+                              const double* external, double* state_out, double traction[3],
+                              double* tangent, double* step_factor, char* message,
                               size_t message_size);
 
 #ifdef __cplusplus

@@ -83,7 +83,9 @@ struct Calibrator {
   // The test's scales: measured over its seeds (seed_scatter.hpp) where given, else declared.
   void append_residuals(const SoilTest& t, const Simulated& s, std::vector<double>& r) const {
     const double declared_stress = kStressRatioScale * t.sigma0_kPa;
-    const auto or_declared = [](double measured, double declared) { return measured > 0.0 ? measured : declared; };
+    const auto or_declared = [](double measured, double declared) {
+      return measured > 0.0 ? measured : declared;
+    };
     const double tau_scale = or_declared(t.scales.tau_kPa, declared_stress);
     const double sigma_scale = or_declared(t.scales.sigma_n_kPa, declared_stress);
     const double e_scale = or_declared(t.scales.e, kVoidRatioScale);
@@ -217,7 +219,8 @@ void stage_compression(Calibrator& c, const CalibrationOptions& o) {
 double smallest_admissible_ec0(const Calibrator& c) {
   double out = 0.0;
   for (const auto& t : c.tests) {
-    const double factor = std::exp(-std::pow(3.0 * t.sigma0_kPa / c.current.at("hs_kPa"), c.current.at("n")));
+    const double factor =
+        std::exp(-std::pow(3.0 * t.sigma0_kPa / c.current.at("hs_kPa"), c.current.at("n")));
     out = std::max(out, 1.01 * t.e0 / (kEi0OverEc0 * factor));
   }
   return out;
@@ -246,15 +249,15 @@ void stage_void_ratios(Calibrator& c, const Indices& critical) {
   const bool raised = admissible > c.current["ec0"];
   c.current["ec0"] = std::max(c.current["ec0"], admissible);
   set_limits_from_ec0(c.current);
-  c.notes.push_back(
-      fmt::format("C: e_c0 = {:.4f} from the critical void ratios of {} test(s){}; e_i0 = "
-                  "{} e_c0, e_d0 = {} e_c0 as starting values",
-                  c.current["ec0"], critical.size(),
-                  raised ? fmt::format(", raised from {:.4f} so that every test starts below e_i (a localised "
-                                       "cell's bulk e lies below the critical state line)",
-                                       ec0 / double(critical.size()))
-                         : "",
-                  kEi0OverEc0, kEd0OverEc0));
+  c.notes.push_back(fmt::format(
+      "C: e_c0 = {:.4f} from the critical void ratios of {} test(s){}; e_i0 = "
+      "{} e_c0, e_d0 = {} e_c0 as starting values",
+      c.current["ec0"], critical.size(),
+      raised ? fmt::format(", raised from {:.4f} so that every test starts below e_i (a localised "
+                           "cell's bulk e lies below the critical state line)",
+                           ec0 / double(critical.size()))
+             : "",
+      kEi0OverEc0, kEd0OverEc0));
 }
 
 void stage_density(Calibrator& c, const CalibrationOptions& o) {
@@ -319,7 +322,8 @@ models::ParameterValues CalibrationResult::values() const {
   return v;
 }
 
-TestFit test_fit(const SoilTest& t, const std::string& model, const models::ParameterValues& values) {
+TestFit test_fit(const SoilTest& t, const std::string& model,
+                 const models::ParameterValues& values) {
   models::ModelInputs in;
   in.tables["hypoplastic"] = values;
   in.source = "calibrated set";
@@ -337,8 +341,10 @@ TestFit test_fit(const SoilTest& t, const std::string& model, const models::Para
     for (std::size_t i = 0; i < model_values.size(); ++i)
       sum += (model_values[i] - data[i]) * (model_values[i] - data[i]);
     const double end_model = model_values.empty() ? NAN : model_values.back();
-    const double end_data = data.empty() ? NAN : data[model_values.empty() ? 0 : model_values.size() - 1];
-    f.rmse.push_back({column, std::sqrt(sum / double(std::max<std::size_t>(model_values.size(), 1))),
+    const double end_data =
+        data.empty() ? NAN : data[model_values.empty() ? 0 : model_values.size() - 1];
+    f.rmse.push_back({column,
+                      std::sqrt(sum / double(std::max<std::size_t>(model_values.size(), 1))),
                       end_model, end_data});
   };
   rmse("e", s.e, t.e);
@@ -391,13 +397,15 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
   out.model = o.model;
   out.converged = joint.converged;
   if (!joint.converged)
-    c.notes.push_back("E: the joint fit did NOT converge (it stopped at its limit): the estimates "
-                      "and their sigmas are not to be trusted");
+    c.notes.push_back(
+        "E: the joint fit did NOT converge (it stopped at its limit): the estimates "
+        "and their sigmas are not to be trusted");
   const double m = double(joint.residuals.size()), p = double(keys.size());
   out.s2 = joint.residuals.squaredNorm() / std::max(m - p, 1.0);
   for (const auto& b : kBox) {
     const double none = std::numeric_limits<double>::infinity();
-    ParameterEstimate e{b.key, c.current.at(b.key), none, none, 0.0, none, false, "", b.lower, b.upper};
+    ParameterEstimate e{b.key,  c.current.at(b.key), none, none, 0.0, none, false, "", b.lower,
+                        b.upper};
     const auto it = std::find(keys.begin(), keys.end(), b.key);
     if (it == keys.end()) {
       e.how = fmt::format(

@@ -64,7 +64,8 @@ struct CalibrationOptions {
 struct ParameterEstimate {
   std::string key;  // as in the parameter file: phi_c_deg, hs_kPa, ...
   double value = 0.0;
-  double sigma = 0.0;  // one standard deviation: sqrt(statistical^2 + systematic^2); inf when singular
+  double sigma =
+      0.0;  // one standard deviation: sqrt(statistical^2 + systematic^2); inf when singular
   double sigma_statistical = 0.0;  // s^2 (J^T J)^-1
   double sigma_systematic = 0.0;   // from the e_d0, e_i0 factors when they stand in (else 0)
   // The same at the declared scatter (s^2 = 1 if the fit is better than that): what decides
@@ -91,7 +92,7 @@ struct CalibrationResult {
   std::string model;
   std::vector<ParameterEstimate> parameters;
   std::vector<TestFit> tests;
-  std::vector<TestFit> held_out;  // tests left out of the fit and predicted with its set
+  std::vector<TestFit> held_out;   // tests left out of the fit and predicted with its set
   std::vector<std::string> notes;  // what was assumed, what was not identifiable, stage summaries
   double s2 = 0.0;                 // residual variance of the joint fit in scatter units
   int evaluations = 0;
@@ -105,7 +106,8 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests,
 
 // A test run through `model` with a parameter set: its RMSE per column and end values. For the
 // tests of a fit, and for a test held out of it (a prediction).
-TestFit test_fit(const SoilTest& test, const std::string& model, const models::ParameterValues& values);
+TestFit test_fit(const SoilTest& test, const std::string& model,
+                 const models::ParameterValues& values);
 
 // The parameter file (data/params format, header comment: source and fit quality) and
 // calibration.json next to it.

@@ -75,19 +75,25 @@ nlohmann::json calibration_json(const CalibrationResult& r, const std::vector<So
     if (tests[i].seed > 0) tj["seed"] = tests[i].seed;
     const auto& sc = tests[i].scales;
     if (sc.replicates > 1)  // measured over the seeds; otherwise the declared residual_scales
-      tj["residual_scales"] = {{"tau_kPa", sc.tau_kPa}, {"sigma_n_kPa", sc.sigma_n_kPa}, {"e", sc.e},
+      tj["residual_scales"] = {{"tau_kPa", sc.tau_kPa},
+                               {"sigma_n_kPa", sc.sigma_n_kPa},
+                               {"e", sc.e},
                                {"seeds", sc.replicates}};
     for (const auto& c : t.rmse) tj["rmse"][c.column] = c.rmse;
     j["tests"].push_back(tj);
   }
   j["held_out"] = nlohmann::json::array();
   for (const auto& t : r.held_out) {
-    nlohmann::json tj = {{"dir", t.name}, {"test", t.test}, {"status", t.status},
-                         {"rows_reached", t.rows_reached}, {"rows", t.rows}};
+    nlohmann::json tj = {{"dir", t.name},
+                         {"test", t.test},
+                         {"status", t.status},
+                         {"rows_reached", t.rows_reached},
+                         {"rows", t.rows}};
     if (!t.boundary.empty()) tj["boundary"] = t.boundary;
     for (const auto& c : t.rmse)
-      tj["rmse"][c.column] = c.rmse, tj["end"][c.column] = {{"model", finite_or_null(c.end_model)},
-                                                           {"measured", finite_or_null(c.end_measured)}};
+      tj["rmse"][c.column] = c.rmse,
+      tj["end"][c.column] = {{"model", finite_or_null(c.end_model)},
+                             {"measured", finite_or_null(c.end_measured)}};
     j["held_out"].push_back(tj);
   }
   j["notes"] = r.notes;
@@ -100,8 +106,10 @@ void write_calibration(const CalibrationResult& r, const std::filesystem::path& 
                        const std::vector<SoilTest>& tests, const std::string& command_line) {
   // the parameter file and its calibration.json together or not at all
   io::StagedDirectory staged(std::filesystem::absolute(toml_file).parent_path());
-  io::write_atomically(staged.path() / toml_file.filename(), parameter_file(r, tests, command_line));
-  io::write_atomically(staged.path() / "calibration.json", calibration_json(r, tests, command_line).dump(2) + "\n");
+  io::write_atomically(staged.path() / toml_file.filename(),
+                       parameter_file(r, tests, command_line));
+  io::write_atomically(staged.path() / "calibration.json",
+                       calibration_json(r, tests, command_line).dump(2) + "\n");
   staged.commit_into();
 }
 

@@ -11,14 +11,17 @@ bool same_design(const SoilTest& a, const SoilTest& b) {
   // sigma0 within 5 %: an oedometer records the stress its servo reached (10.19 and 10.05 kPa for
   // two seeds of a 10 kPa start); designs of a campaign differ by factors of 2 or more.
   constexpr double kSameStress = 0.05;
-  return a.kind == b.kind && a.boundary == b.boundary && a.specimen == b.specimen && a.source == b.source &&
-         std::abs(a.sigma0_kPa - b.sigma0_kPa) <= kSameStress * std::max(a.sigma0_kPa, b.sigma0_kPa);
+  return a.kind == b.kind && a.boundary == b.boundary && a.specimen == b.specimen &&
+         a.source == b.source &&
+         std::abs(a.sigma0_kPa - b.sigma0_kPa) <=
+             kSameStress * std::max(a.sigma0_kPa, b.sigma0_kPa);
 }
 
 namespace {
 
 // RMS over rows 1..rows-1 of the sample SD across the members of one column.
-double row_scatter(const std::vector<const SoilTest*>& members, std::vector<double> SoilTest::*column) {
+double row_scatter(const std::vector<const SoilTest*>& members,
+                   std::vector<double> SoilTest::*column) {
   std::size_t rows = members.front()->rows();
   for (const auto* m : members) rows = std::min(rows, m->rows());
   const double n = double(members.size());
@@ -50,8 +53,10 @@ void measure_seed_scatter(std::vector<SoilTest>& tests) {
     ResidualScales s;
     s.replicates = int(group.size());
     s.e = std::max(kVoidRatioScale, row_scatter(members, &SoilTest::e));
-    s.tau_kPa = shear ? std::max(stress_floor, row_scatter(members, &SoilTest::tau_kPa)) : stress_floor;
-    s.sigma_n_kPa = shear ? std::max(stress_floor, row_scatter(members, &SoilTest::sigma_n_kPa)) : stress_floor;
+    s.tau_kPa =
+        shear ? std::max(stress_floor, row_scatter(members, &SoilTest::tau_kPa)) : stress_floor;
+    s.sigma_n_kPa =
+        shear ? std::max(stress_floor, row_scatter(members, &SoilTest::sigma_n_kPa)) : stress_floor;
     for (const auto j : group) tests[j].scales = s;
   }
 }

@@ -48,7 +48,8 @@ void record(Simulated& out, const models::Model& model, const driver::HistoryRow
 
 }  // namespace
 
-double initial_K0(const SoilTest& test, const std::string& model_name, const models::ModelInputs& inputs) {
+double initial_K0(const SoilTest& test, const std::string& model_name,
+                  const models::ModelInputs& inputs) {
   return test.K0 > 0.0 ? test.K0 : models::offer(models::find_model(model_name), inputs, {}).K0;
 }
 
@@ -59,7 +60,8 @@ Simulated simulate(const SoilTest& test, const std::string& model_name,
   models::StateVector initial;
   try {
     model = models::find_model(model_name).make(inputs);
-    initial = model->initial_state({test.sigma0_kPa, initial_K0(test, model_name, inputs), test.e0});
+    initial =
+        model->initial_state({test.sigma0_kPa, initial_K0(test, model_name, inputs), test.e0});
   } catch (const InputError& e) {
     out.status = fmt::format("refused: {}", e.what());
     return out;

@@ -24,6 +24,7 @@ Simulated simulate(const SoilTest& test, const std::string& model_name,
                    const models::ModelInputs& inputs);
 
 // Initial lateral stress ratio of `test` under `inputs`: the test's K0, or 1 - sin(phi_c).
-double initial_K0(const SoilTest& test, const std::string& model_name, const models::ModelInputs& inputs);
+double initial_K0(const SoilTest& test, const std::string& model_name,
+                  const models::ModelInputs& inputs);
 
 }  // namespace iwb::calibration

@@ -77,7 +77,8 @@ void read_header(SoilTest& t, const fs::path& file) {
   if (m.contains("K0")) t.K0 = require_positive(m, "K0", file, "initial lateral stress ratio");
   t.source = require<std::string>(m, "source", file, "\"dem:<engine>\" or \"synthetic:<model>\"");
   if (m.contains("source_parameters")) t.source_parameters = m["source_parameters"];
-  if (m.contains("density") && m["density"].is_string()) t.specimen = m["density"].get<std::string>();
+  if (m.contains("density") && m["density"].is_string())
+    t.specimen = m["density"].get<std::string>();
   if (m.contains("seed") && m["seed"].is_number_integer()) t.seed = m["seed"].get<int>();
   if (m.contains("status") && m["status"] != "complete")
     throw InputError(

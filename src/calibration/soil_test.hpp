@@ -31,8 +31,8 @@ struct SoilTest {
   driver::BoundaryKind boundary = driver::BoundaryKind::kCNL;  // simple shear: CNL or CV
   double sigma0_kPa = 0.0;  // sigma_v0 (oedometer) or sigma_n0 (simple shear)
   double e0 = 0.0;
-  double K0 = 0.0;     // lateral / vertical stress at the start; 0 = not given: 1 - sin(phi_c)
-  std::string source;  // "dem:<engine>" or "synthetic:<model>"
+  double K0 = 0.0;       // lateral / vertical stress at the start; 0 = not given: 1 - sin(phi_c)
+  std::string source;    // "dem:<engine>" or "synthetic:<model>"
   std::string specimen;  // how it was prepared, if the manifest says ("dense", "loose"; DEM cells)
   int seed = 0;          // the DEM seed, if the manifest says (0: not given)
   ResidualScales scales;

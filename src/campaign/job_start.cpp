@@ -13,7 +13,8 @@ JobStart how_to_start(const std::filesystem::path& dir, const std::string& sha) 
   try {
     m = nlohmann::json::parse(io::read_file(file));
   } catch (const nlohmann::json::parse_error&) {
-    return JobStart::kFresh;  // manifests are written atomically: a broken one is not ours to resume
+    return JobStart::kFresh;  // manifests are written atomically: a broken one is not ours to
+                              // resume
   }
   if (m.value("/scene/sha256"_json_pointer, std::string()) != sha) return JobStart::kFresh;
   if (m.value("status", "") == "complete") return JobStart::kSkip;
@@ -22,9 +23,12 @@ JobStart how_to_start(const std::filesystem::path& dir, const std::string& sha) 
 
 const char* to_string(JobStart s) {
   switch (s) {
-    case JobStart::kSkip: return "reused";
-    case JobStart::kResume: return "resumed";
-    case JobStart::kFresh: return "fresh";
+    case JobStart::kSkip:
+      return "reused";
+    case JobStart::kResume:
+      return "resumed";
+    case JobStart::kFresh:
+      return "fresh";
   }
   return "?";
 }

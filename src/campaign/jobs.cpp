@@ -1,9 +1,10 @@
 #include "campaign/jobs.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fmt/core.h>
 #include <map>
 
 #include "common/errors.hpp"
@@ -13,12 +14,17 @@
 
 namespace iwb::campaign {
 
-std::string scene_path(const Job& job) { return "scenes/" + job.name + ".toml"; }
-std::string run_path(const Job& job) { return "runs/" + job.name; }
+std::string scene_path(const Job& job) {
+  return "scenes/" + job.name + ".toml";
+}
+std::string run_path(const Job& job) {
+  return "runs/" + job.name;
+}
 
 std::string describe(const std::vector<Setting>& settings) {
   std::string s;
-  for (const auto& [key, value] : settings) s += (s.empty() ? "" : ", ") + key + " = " + io::to_toml(value);
+  for (const auto& [key, value] : settings)
+    s += (s.empty() ? "" : ", ") + key + " = " + io::to_toml(value);
   return s;
 }
 
@@ -30,9 +36,12 @@ std::string name_part(const io::TomlScalar& value) {
   std::string text = std::visit(
       [](const auto& v) -> std::string {
         using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, std::string>) return v;
-        else if constexpr (std::is_same_v<T, double>) return fmt::format("{}", v);  // shortest round trip
-        else return io::to_toml(v);
+        if constexpr (std::is_same_v<T, std::string>)
+          return v;
+        else if constexpr (std::is_same_v<T, double>)
+          return fmt::format("{}", v);  // shortest round trip
+        else
+          return io::to_toml(v);
       },
       value);
   if (text.size() > 2 && text.compare(text.size() - 2, 2, ".0") == 0) text.resize(text.size() - 2);
@@ -52,15 +61,16 @@ bool is_path_key(const std::string& dotted) {
   return std::find(keys.begin(), keys.end(), dotted) != keys.end();
 }
 
-// A file names a job by its stem (file-sandblasted_like-6.3, not file-..-walls-sandblasted-like.csv-6.3).
+// A file names a job by its stem (file-sandblasted_like-6.3, not
+// file-..-walls-sandblasted-like.csv-6.3).
 std::string file_stem(const io::TomlScalar& value) {
   const auto* text = std::get_if<std::string>(&value);
   return text != nullptr ? fs::path(*text).stem().string() : io::to_toml(value);
 }
 
 // label + value per axis, joined by '_'; a table value reads as its values joined by '-' (cns-50).
-std::string job_name(const std::string& engine, bool several_engines, const Combination& combination,
-                     const std::vector<Axis>& axes) {
+std::string job_name(const std::string& engine, bool several_engines,
+                     const Combination& combination, const std::vector<Axis>& axes) {
   std::string name = several_engines ? engine : "";
   for (std::size_t i = 0; i < combination.size(); ++i) {
     if (!name.empty()) name += '_';
@@ -102,7 +112,8 @@ std::vector<Setting> flattened(const Combination& combination) {
 void drop_tables_of_profiles(toml::table& root, const std::vector<Setting>& values) {
   constexpr std::string_view kProfile = ".profile";
   for (const auto& [key, value] : values)
-    if (key.size() > kProfile.size() && key.ends_with(kProfile) && key.find('.') == key.size() - kProfile.size())
+    if (key.size() > kProfile.size() && key.ends_with(kProfile) &&
+        key.find('.') == key.size() - kProfile.size())
       root.erase(key.substr(0, key.size() - kProfile.size()));
 }
 
@@ -115,7 +126,8 @@ void absolute_paths(toml::table& root, const fs::path& folder) {
   for (const auto& dotted : io::path_keys(dem::scene_keys())) {
     const auto dot = dotted.find('.');
     auto* value = root.at_path(dotted).as_string();
-    if (dot == std::string::npos || value == nullptr || fs::path(value->get()).is_absolute()) continue;
+    if (dot == std::string::npos || value == nullptr || fs::path(value->get()).is_absolute())
+      continue;
     value->get() = fs::absolute(folder / value->get()).lexically_normal().string();
   }
 }
@@ -128,9 +140,11 @@ std::string job_scene(const SweepSpec& spec, const Job& job) {
   drop_tables_of_profiles(root, job.values);
   for (const auto& [key, value] : job.values) io::set_dotted(root, key, value, where);
   absolute_paths(root, spec.file.parent_path());
-  // Comments of the base do not survive re-serialisation; this header says where the text came from.
-  // File names only: the text's sha256 decides reuse and must not depend on the working directory.
-  return fmt::format("# {} with {}{}{} (iwb sweep {}, job {})\n", spec.scene_file.filename().string(), describe(spec.set),
+  // Comments of the base do not survive re-serialisation; this header says where the text came
+  // from. File names only: the text's sha256 decides reuse and must not depend on the working
+  // directory.
+  return fmt::format("# {} with {}{}{} (iwb sweep {}, job {})\n",
+                     spec.scene_file.filename().string(), describe(spec.set),
                      spec.set.empty() || job.values.empty() ? "" : ", ", describe(job.values),
                      spec.file.filename().string(), job.name) +
          io::serialise(root);
@@ -140,8 +154,8 @@ void validate(const SweepSpec& spec, const Job& job) {
   try {
     dem::parse_scene(job.scene_text, scene_path(job));
   } catch (const InputError& e) {
-    throw InputError(fmt::format("{}: job {} ({}) is not a valid scene; nothing was run: {}", spec.file.string(),
-                                 job.name, describe(job.values), e.what()));
+    throw InputError(fmt::format("{}: job {} ({}) is not a valid scene; nothing was run: {}",
+                                 spec.file.string(), job.name, describe(job.values), e.what()));
   }
 }
 
@@ -152,11 +166,13 @@ std::vector<Job> expand_jobs(const SweepSpec& spec) {
   std::map<std::string, std::string> seen;  // name -> its values, to explain a collision
   for (const auto& engine : spec.engines)
     for (const auto& combination : combinations(spec.axes)) {
-      Job job{job_name(engine, spec.engines.size() > 1, combination, spec.axes), engine, flattened(combination), ""};
+      Job job{job_name(engine, spec.engines.size() > 1, combination, spec.axes), engine,
+              flattened(combination), ""};
       if (auto [it, fresh] = seen.emplace(job.name, describe(job.values)); !fresh)
-        throw InputError(fmt::format("{}: two jobs would be named {} ({} and {}); give the axes distinct values "
-                                     "or labels",
-                                     spec.file.string(), job.name, it->second, describe(job.values)));
+        throw InputError(
+            fmt::format("{}: two jobs would be named {} ({} and {}); give the axes distinct values "
+                        "or labels",
+                        spec.file.string(), job.name, it->second, describe(job.values)));
       job.scene_text = job_scene(spec, job);
       validate(spec, job);
       jobs.push_back(std::move(job));

@@ -11,7 +11,7 @@
 namespace iwb::campaign {
 
 struct Job {
-  std::string name;    // readable and unique: rn0.5_d2_cnl_s1 (engine first when there are several)
+  std::string name;  // readable and unique: rn0.5_d2_cnl_s1 (engine first when there are several)
   std::string engine;
   std::vector<Setting> values;  // this job's axis values, in axis order
   std::string scene_text;       // what the job runs; its sha256 decides reuse

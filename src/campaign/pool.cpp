@@ -1,9 +1,10 @@
 #include "campaign/pool.hpp"
 
+#include <fmt/core.h>
+
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
-#include <fmt/core.h>
 #include <mutex>
 #include <thread>
 
@@ -33,7 +34,9 @@ struct JobResult {
   JobStart how = JobStart::kFresh;
 };
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 class Pool {
  public:
@@ -41,7 +44,9 @@ class Pool {
       : jobs_(jobs),
         opt_(opt),
         record_(initial_record(spec, jobs, opt.out, opt.command_line,
-                               {{"executor", "local"}, {"jobs_at_once", opt.jobs}, {"processes_per_job", opt.processes}})) {}
+                               {{"executor", "local"},
+                                {"jobs_at_once", opt.jobs},
+                                {"processes_per_job", opt.processes}})) {}
 
   json run() {
     std::vector<std::size_t> queue = reuse_complete_runs();
@@ -100,8 +105,14 @@ class Pool {
       how = how_to_start(dir, job_scene_sha256(job, opt_.out));
       const auto engine = dem::make_engine(job.engine);
       const auto scene = dem::parse_scene(job.scene_text, (opt_.out / scene_path(job)).string());
-      dem::RunOptions ro{dir, opt_.processes, how == JobStart::kResume, how == JobStart::kFresh,
-                         opt_.command_line, &stop_, nullptr, dem::consolidation_cache_dir(opt_.out / "consolidated")};
+      dem::RunOptions ro{dir,
+                         opt_.processes,
+                         how == JobStart::kResume,
+                         how == JobStart::kFresh,
+                         opt_.command_line,
+                         &stop_,
+                         nullptr,
+                         dem::consolidation_cache_dir(opt_.out / "consolidated")};
       const auto outcome = dem::run_scene(scene, job.scene_text, *engine, ro);
       return {outcome.status, seconds_since(t0), how};
     } catch (const std::exception& e) {
@@ -137,9 +148,10 @@ class Pool {
     if (!opt_.progress) return;
     const JobCounts c = count_jobs(record_);
     const std::string prefix = event.empty() ? "" : event + "; ";
-    opt_.progress(fmt::format("{}sweep: {}/{} complete ({} reused), {} running, {} failed, {} to do, {:.0f} s, {}",
-                              prefix, c.complete, jobs_.size(), c.reused, c.running, c.failed, c.pending,
-                              seconds_since(started_), eta(c)));
+    opt_.progress(fmt::format(
+        "{}sweep: {}/{} complete ({} reused), {} running, {} failed, {} to do, {:.0f} s, {}",
+        prefix, c.complete, jobs_.size(), c.reused, c.running, c.failed, c.pending,
+        seconds_since(started_), eta(c)));
   }
 
   void write_record() { campaign::write_record(record_, opt_.out); }

@@ -18,8 +18,8 @@ namespace iwb::campaign {
 
 struct PoolOptions {
   std::filesystem::path out;
-  int jobs = 1;       // at once
-  int processes = 1;  // per job
+  int jobs = 1;        // at once
+  int processes = 1;   // per job
   int stop_after = 0;  // stop cleanly once this many jobs have ended in this invocation (0: never)
   std::string command_line;
   const std::atomic<bool>* interrupt = nullptr;
@@ -28,6 +28,7 @@ struct PoolOptions {
 
 // Returns sweep.json as written last: "status" is "complete", "interrupted" or
 // "finished: N of M failed"; each job has its status, how it started and its wall time.
-nlohmann::json run_jobs(const SweepSpec& spec, const std::vector<Job>& jobs, const PoolOptions& options);
+nlohmann::json run_jobs(const SweepSpec& spec, const std::vector<Job>& jobs,
+                        const PoolOptions& options);
 
 }  // namespace iwb::campaign

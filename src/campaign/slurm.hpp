@@ -12,14 +12,14 @@
 namespace iwb::campaign {
 
 struct SlurmOptions {
-  std::string name;          // the Slurm job name
-  int processes = 1;         // --ntasks of each array task: MPI ranks (LIGGGHTS) or threads (YADE)
-  std::string time;          // --time of each array task
-  std::string partition;     // --partition; empty: the cluster's default
-  std::string account;       // --account; empty: the user's default
-  std::string memory;        // --mem of each array task (Slurm's size: 4000, 4G); empty: the default
+  std::string name;       // the Slurm job name
+  int processes = 1;      // --ntasks of each array task: MPI ranks (LIGGGHTS) or threads (YADE)
+  std::string time;       // --time of each array task
+  std::string partition;  // --partition; empty: the cluster's default
+  std::string account;    // --account; empty: the user's default
+  std::string memory;     // --mem of each array task (Slurm's size: 4000, 4G); empty: the default
   std::vector<std::string> prologue;  // shell lines before the job runs (module load ...)
-  std::string iwb = "iwb";   // the iwb binary the tasks run (IWB in the environment wins)
+  std::string iwb = "iwb";            // the iwb binary the tasks run (IWB in the environment wins)
 };
 
 // Whether `text` is one of Slurm's --time formats: minutes, minutes:seconds,
@@ -37,9 +37,11 @@ using StartFlags = std::vector<std::string>;
 
 // The script's text. Submit it from the campaign directory: paths in it are relative to it. Its
 // array covers every job; `sbatch --array=LIST` submits a subset.
-std::string slurm_script(const std::vector<Job>& jobs, const SlurmOptions& options, const StartFlags& flags = {});
+std::string slurm_script(const std::vector<Job>& jobs, const SlurmOptions& options,
+                         const StartFlags& flags = {});
 
-// Where array task `index` of Slurm job `job_id` writes its output, relative to the campaign directory.
+// Where array task `index` of Slurm job `job_id` writes its output, relative to the campaign
+// directory.
 std::string task_log(std::size_t index, const std::string& job_id);
 
 }  // namespace iwb::campaign

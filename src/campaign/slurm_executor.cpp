@@ -25,7 +25,6 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-
 struct Captured {
   int exit_code = -1;
   std::string text;
@@ -57,14 +56,18 @@ std::string trimmed(std::string s) {
 struct TaskKey {
   std::string job_id;
   std::size_t index = 0;
-  bool operator<(const TaskKey& o) const { return std::tie(job_id, index) < std::tie(o.job_id, o.index); }
+  bool operator<(const TaskKey& o) const {
+    return std::tie(job_id, index) < std::tie(o.job_id, o.index);
+  }
 };
 
 // The user's queued and running array tasks with their states (PENDING, RUNNING, COMPLETING, ...).
 // A task that has ended is not listed (squeue shows only live jobs by default).
 std::map<TaskKey, std::string> live_tasks() {
   const auto q = capture({"squeue", "--noheader", "--array", "--me", "--format=%F %K %T"}, ".");
-  if (q.exit_code != 0) throw std::runtime_error(fmt::format("squeue failed (exit {}): {}", q.exit_code, trimmed(q.text)));
+  if (q.exit_code != 0)
+    throw std::runtime_error(
+        fmt::format("squeue failed (exit {}): {}", q.exit_code, trimmed(q.text)));
   std::map<TaskKey, std::string> out;
   std::istringstream lines(q.text);
   for (std::string id, index, state; lines >> id >> index >> state;) {
@@ -86,9 +89,10 @@ void check_slurm_submission(const std::vector<Job>& jobs, const SlurmOptions& op
   check_slurm_options(options);
   for (const char* program : {"sbatch", "squeue"})
     if (!on_path(program))
-      throw InputError(fmt::format("--executor slurm: no {} on this machine's PATH (Slurm's client commands are "
-                                   "needed where iwb runs); nothing was submitted",
-                                   program));
+      throw InputError(
+          fmt::format("--executor slurm: no {} on this machine's PATH (Slurm's client commands are "
+                      "needed where iwb runs); nothing was submitted",
+                      program));
   // the cluster's own judgement of the script (partition, account, time limit), nothing queued
   const fs::path dir = fs::temp_directory_path() / fmt::format("iwb-slurm-test-{}", ::getpid());
   fs::create_directories(dir);
@@ -96,9 +100,10 @@ void check_slurm_submission(const std::vector<Job>& jobs, const SlurmOptions& op
   const auto test = capture({"sbatch", "--test-only", "sweep.slurm"}, dir);
   fs::remove_all(dir);
   if (test.exit_code != 0)
-    throw InputError(fmt::format("--executor slurm: sbatch --test-only refuses the campaign's script: {}; nothing "
-                                 "was submitted",
-                                 trimmed(test.text)));
+    throw InputError(fmt::format(
+        "--executor slurm: sbatch --test-only refuses the campaign's script: {}; nothing "
+        "was submitted",
+        trimmed(test.text)));
 }
 
 namespace {
@@ -106,7 +111,9 @@ namespace {
 class SlurmWatch {
  public:
   SlurmWatch(const SweepSpec& spec, const std::vector<Job>& jobs, const SlurmExecutorOptions& opt)
-      : jobs_(jobs), opt_(opt), record_(initial_record(spec, jobs, opt.out, opt.command_line, executor_record(opt))) {}
+      : jobs_(jobs),
+        opt_(opt),
+        record_(initial_record(spec, jobs, opt.out, opt.command_line, executor_record(opt))) {}
 
   json run() {
     const auto previous = previous_tasks();
@@ -133,8 +140,12 @@ class SlurmWatch {
     return {{"executor", "slurm"},
             {"processes_per_job", o.slurm.processes},
             {"slurm",
-             {{"time", o.slurm.time}, {"partition", o.slurm.partition}, {"account", o.slurm.account},
-              {"mem", o.slurm.memory}, {"prologue", o.slurm.prologue}, {"submissions", json::array()}}}};
+             {{"time", o.slurm.time},
+              {"partition", o.slurm.partition},
+              {"account", o.slurm.account},
+              {"mem", o.slurm.memory},
+              {"prologue", o.slurm.prologue},
+              {"submissions", json::array()}}}};
   }
 
   fs::path run_dir(std::size_t i) const { return opt_.out / run_path(jobs_[i]); }
@@ -166,9 +177,12 @@ class SlurmWatch {
   // --resume for a run of the same scene that stopped part-way, --force for another scene's run.
   std::string start_flag(std::size_t i) const {
     switch (how_to_start(run_dir(i), record_["jobs"][i]["scene_sha256"])) {
-      case JobStart::kResume: return "--resume";
-      case JobStart::kFresh: return fs::exists(run_dir(i)) ? "--force" : "";
-      case JobStart::kSkip: break;
+      case JobStart::kResume:
+        return "--resume";
+      case JobStart::kFresh:
+        return fs::exists(run_dir(i)) ? "--force" : "";
+      case JobStart::kSkip:
+        break;
     }
     return "";
   }
@@ -178,10 +192,15 @@ class SlurmWatch {
     for (auto i : indices) flags[i] = start_flag(i);
     fs::create_directories(opt_.out / "logs");  // Slurm does not create the --output folder
     io::write_atomically(opt_.out / "sweep.slurm", slurm_script(jobs_, opt_.slurm, flags));
-    const auto s = capture({"sbatch", "--parsable", "--array=" + index_list(indices), "sweep.slurm"}, opt_.out);
-    if (s.exit_code != 0) throw std::runtime_error(fmt::format("sbatch failed (exit {}): {}", s.exit_code, trimmed(s.text)));
-    const std::string id = trimmed(s.text).substr(0, trimmed(s.text).find(';'));  // "ID" or "ID;cluster"
-    record_["slurm"]["submissions"].push_back({{"job", id}, {"array", index_list(indices)}, {"at", io::utc_timestamp()}});
+    const auto s = capture(
+        {"sbatch", "--parsable", "--array=" + index_list(indices), "sweep.slurm"}, opt_.out);
+    if (s.exit_code != 0)
+      throw std::runtime_error(
+          fmt::format("sbatch failed (exit {}): {}", s.exit_code, trimmed(s.text)));
+    const std::string id =
+        trimmed(s.text).substr(0, trimmed(s.text).find(';'));  // "ID" or "ID;cluster"
+    record_["slurm"]["submissions"].push_back(
+        {{"job", id}, {"array", index_list(indices)}, {"at", io::utc_timestamp()}});
     for (auto i : indices) {
       ++attempts_[i];
       track(i, id, flags[i] == "--resume" ? "resumed" : "fresh");
@@ -194,8 +213,9 @@ class SlurmWatch {
     tracked_.erase(i);
     auto& j = record_["jobs"][i];
     const fs::path manifest = run_dir(i) / "manifest.json";
-    const std::string status =
-        fs::exists(manifest) ? io::read_json_file(manifest).value("status", "unknown") : "no run directory written";
+    const std::string status = fs::exists(manifest)
+                                   ? io::read_json_file(manifest).value("status", "unknown")
+                                   : "no run directory written";
     if (status == "complete") {
       j["status"] = "complete";
       j["wall_seconds"] = recorded_seconds(run_dir(i));
@@ -206,13 +226,14 @@ class SlurmWatch {
     }
     if (attempts_[i] <= opt_.resubmits) {
       resubmit.push_back(i);
-      report(fmt::format("{}: its task ended with the run '{}' (log {}); resubmitting it", jobs_[i].name, status,
-                         j.value("log", "")));
+      report(fmt::format("{}: its task ended with the run '{}' (log {}); resubmitting it",
+                         jobs_[i].name, status, j.value("log", "")));
       return;
     }
     j["status"] = status.rfind("failed", 0) == 0 ? status : "failed: " + status;
     j["finished"] = io::utc_timestamp();
-    report(fmt::format("{}: {} (log {})", jobs_[i].name, j["status"].get<std::string>(), j.value("log", "")));
+    report(fmt::format("{}: {} (log {})", jobs_[i].name, j["status"].get<std::string>(),
+                       j.value("log", "")));
   }
 
   void watch(std::vector<std::size_t> to_submit) {
@@ -228,8 +249,10 @@ class SlurmWatch {
       for (auto it = tracked_.begin(); it != tracked_.end();) {
         const auto [i, id] = *it++;  // settle() erases i
         const auto state = live.find({id, i});
-        if (state == live.end()) settle(i, to_submit);
-        else record_["jobs"][i]["status"] = state->second == "PENDING" ? "queued" : "running";
+        if (state == live.end())
+          settle(i, to_submit);
+        else
+          record_["jobs"][i]["status"] = state->second == "PENDING" ? "queued" : "running";
       }
       write_record(record_, opt_.out);
       if (tracked_.empty() && to_submit.empty()) break;
@@ -238,8 +261,10 @@ class SlurmWatch {
     }
     record_["status"] = overall_status(record_, stopped);
     if (stopped && !tracked_.empty())
-      record_["note"] = "the watch was stopped; the tasks still queued or running stay in Slurm (their job IDs are in "
-                        "jobs[].slurm_job); the same command again watches them, scancel stops them";
+      record_["note"] =
+          "the watch was stopped; the tasks still queued or running stay in Slurm (their job IDs "
+          "are in "
+          "jobs[].slurm_job); the same command again watches them, scancel stops them";
     record_["finished"] = io::utc_timestamp();
     write_record(record_, opt_.out);
     report();
@@ -251,7 +276,9 @@ class SlurmWatch {
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
 
-  static double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+  static double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  }
 
   // The jobs left, at the mean time of those complete so far and as many at once as run now.
   std::string eta(const JobCounts& c) const {
@@ -266,10 +293,11 @@ class SlurmWatch {
     last_progress_ = Clock::now();
     if (!opt_.progress) return;
     const JobCounts c = count_jobs(record_);
-    opt_.progress(fmt::format("{}slurm: {}/{} complete ({} reused), {} queued or running, {} failed, {} to submit, "
-                              "{:.0f} s, {}",
-                              event.empty() ? "" : event + "; ", c.complete, jobs_.size(), c.reused, c.running,
-                              c.failed, c.pending, seconds_since(started_), eta(c)));
+    opt_.progress(fmt::format(
+        "{}slurm: {}/{} complete ({} reused), {} queued or running, {} failed, {} to submit, "
+        "{:.0f} s, {}",
+        event.empty() ? "" : event + "; ", c.complete, jobs_.size(), c.reused, c.running, c.failed,
+        c.pending, seconds_since(started_), eta(c)));
   }
 
   const std::vector<Job>& jobs_;
@@ -283,7 +311,8 @@ class SlurmWatch {
 
 }  // namespace
 
-json run_jobs_on_slurm(const SweepSpec& spec, const std::vector<Job>& jobs, const SlurmExecutorOptions& opt) {
+json run_jobs_on_slurm(const SweepSpec& spec, const std::vector<Job>& jobs,
+                       const SlurmExecutorOptions& opt) {
   fs::create_directories(opt.out);
   return SlurmWatch(spec, jobs, opt).run();
 }

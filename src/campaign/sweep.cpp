@@ -1,7 +1,8 @@
 #include "campaign/sweep.hpp"
 
-#include <algorithm>
 #include <fmt/core.h>
+
+#include <algorithm>
 
 #include "campaign/jobs.hpp"
 #include "campaign/pool.hpp"
@@ -14,7 +15,9 @@ namespace iwb::campaign {
 
 namespace fs = std::filesystem;
 
-fs::path default_out(const fs::path& sweep_file) { return fs::path("runs") / ("sweep-" + sweep_file.stem().string()); }
+fs::path default_out(const fs::path& sweep_file) {
+  return fs::path("runs") / ("sweep-" + sweep_file.stem().string());
+}
 
 namespace {
 
@@ -26,7 +29,8 @@ void write_scenes(const std::vector<Job>& jobs, const fs::path& out) {
 // The hypothesis checks over the runs that completed; failed runs are left out, not compared.
 comparison::RunSetOutcome compare_complete_runs(const Comparison& c, const nlohmann::json& record,
                                                 const SweepOptions& opt, const fs::path& out) {
-  comparison::RunSetOptions set{{}, c.model, c.params.string(), out / "compare", false, true, opt.command_line};
+  comparison::RunSetOptions set{{},    c.model, c.params.string(), out / "compare",
+                                false, true,    opt.command_line};
   // force: DIR/compare belongs to the campaign; a re-run job's comparison is stale, not precious.
   for (const auto& j : record["jobs"])
     if (j["status"] == "complete") set.dem_dirs.push_back(out / j["run"].get<std::string>());
@@ -44,13 +48,16 @@ SlurmOptions slurm_options(const SweepOptions& opt, const SweepSpec& spec) {
   return s;
 }
 
-nlohmann::json run_jobs_somewhere(const SweepSpec& spec, const std::vector<Job>& jobs, const SlurmOptions& slurm,
-                                  const SweepOptions& opt, const fs::path& out) {
+nlohmann::json run_jobs_somewhere(const SweepSpec& spec, const std::vector<Job>& jobs,
+                                  const SlurmOptions& slurm, const SweepOptions& opt,
+                                  const fs::path& out) {
   if (!opt.on_slurm)
-    return run_jobs(spec, jobs, {out, opt.jobs, opt.processes, opt.stop_after, opt.command_line, opt.interrupt,
-                                 opt.progress});
+    return run_jobs(spec, jobs,
+                    {out, opt.jobs, opt.processes, opt.stop_after, opt.command_line, opt.interrupt,
+                     opt.progress});
   return run_jobs_on_slurm(spec, jobs,
-                           {fs::absolute(out), slurm, opt.poll_seconds, 1, opt.command_line, opt.interrupt, opt.progress});
+                           {fs::absolute(out), slurm, opt.poll_seconds, 1, opt.command_line,
+                            opt.interrupt, opt.progress});
 }
 
 }  // namespace
@@ -60,9 +67,11 @@ SweepOutcome run_sweep(const SweepOptions& opt) {
   const std::vector<Job> jobs = expand_jobs(spec);  // refuses the sweep before anything is written
   const SlurmOptions slurm = slurm_options(opt, spec);
   if (opt.emit_slurm) check_slurm_options(slurm);
-  if (opt.on_slurm) check_slurm_submission(jobs, slurm);  // the cluster's judgement too, nothing queued
+  if (opt.on_slurm)
+    check_slurm_submission(jobs, slurm);  // the cluster's judgement too, nothing queued
   SweepOutcome outcome{opt.out.empty() ? default_out(opt.sweep_file) : opt.out, {}, std::nullopt};
-  const auto lock = io::DirectoryLock::take(outcome.out, opt.command_line);  // each job locks its own run
+  const auto lock =
+      io::DirectoryLock::take(outcome.out, opt.command_line);  // each job locks its own run
   write_scenes(jobs, outcome.out);
   if (opt.emit_slurm) {
     fs::create_directories(outcome.out / "logs");  // Slurm does not create the --output folder
@@ -71,13 +80,16 @@ SweepOutcome run_sweep(const SweepOptions& opt) {
   }
   outcome.record = run_jobs_somewhere(spec, jobs, slurm, opt, outcome.out);
   const bool stopped = outcome.record["status"] == "interrupted";
-  const bool any_complete = std::any_of(outcome.record["jobs"].begin(), outcome.record["jobs"].end(),
-                                        [](const auto& j) { return j["status"] == "complete"; });
+  const bool any_complete =
+      std::any_of(outcome.record["jobs"].begin(), outcome.record["jobs"].end(),
+                  [](const auto& j) { return j["status"] == "complete"; });
   if (spec.compare && !stopped && any_complete) {
-    if (opt.progress) opt.progress(fmt::format("comparing the complete runs with {} -> {}", spec.compare->model,
-                                               (outcome.out / "compare").string()));
+    if (opt.progress)
+      opt.progress(fmt::format("comparing the complete runs with {} -> {}", spec.compare->model,
+                               (outcome.out / "compare").string()));
     outcome.comparison = compare_complete_runs(*spec.compare, outcome.record, opt, outcome.out);
-    outcome.record["compare"] = {{"dir", "compare"}, {"model", spec.compare->model},
+    outcome.record["compare"] = {{"dir", "compare"},
+                                 {"model", spec.compare->model},
                                  {"params", spec.compare->params.string()}};
     io::write_atomically(outcome.out / "sweep.json", outcome.record.dump(2) + "\n");
   }

@@ -22,9 +22,9 @@ struct SweepOptions {
   int jobs = 1;
   int processes = 1;
   bool emit_slurm = false;
-  bool on_slurm = false;        // --executor slurm
-  SlurmOptions slurm;           // partition, account, memory, prologue; time empty: the sweep file's
-  double poll_seconds = 10.0;   // --executor slurm: how often squeue is asked
+  bool on_slurm = false;       // --executor slurm
+  SlurmOptions slurm;          // partition, account, memory, prologue; time empty: the sweep file's
+  double poll_seconds = 10.0;  // --executor slurm: how often squeue is asked
   int stop_after = 0;
   std::string command_line;
   const std::atomic<bool>* interrupt = nullptr;

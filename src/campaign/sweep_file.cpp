@@ -1,11 +1,12 @@
 #include "campaign/sweep_file.hpp"
-#include "campaign/slurm.hpp"
+
+#include <fmt/core.h>
 
 #include <algorithm>
-#include <fmt/core.h>
 #include <map>
 #include <tuple>
 
+#include "campaign/slurm.hpp"
 #include "common/errors.hpp"
 #include "dem/engines.hpp"
 #include "io/run_directory.hpp"
@@ -20,11 +21,16 @@ std::string default_label(const std::string& key) {
   // The axes of issue 7. wall.height_d50 is R_n for the shipped sawtooth walls (pitch 2 d50: the
   // whole tooth fits a d50 gauge window); each manifest records the R_n actually computed.
   static const std::map<std::string, std::string> labels = {
-      {"wall.height_d50", "rn"},         {"particles.d50_mm", "d"},
-      {"boundary.sigma_n_kPa", "sn"},    {"boundary.type", ""},
-      {"boundary.K_kPa_per_mm", "k"},    {"specimen.consolidation_friction", "cf"},
-      {"seed", "s"},                     {"wall.profile", ""},
-      {"particles.friction", "mu"},      {"specimen.height_d50", "h"},
+      {"wall.height_d50", "rn"},
+      {"particles.d50_mm", "d"},
+      {"boundary.sigma_n_kPa", "sn"},
+      {"boundary.type", ""},
+      {"boundary.K_kPa_per_mm", "k"},
+      {"specimen.consolidation_friction", "cf"},
+      {"seed", "s"},
+      {"wall.profile", ""},
+      {"particles.friction", "mu"},
+      {"specimen.height_d50", "h"},
       {"boundary", ""}};
   if (auto it = labels.find(key); it != labels.end()) return it->second;
   return key.substr(key.rfind('.') + 1) + "-";  // pitch_d50-2: the dash keeps key and value apart
@@ -50,8 +56,10 @@ void collect_settings(const toml::table& table, const std::string& prefix, const
                       std::vector<Setting>& out) {
   for (const auto& [k, node] : as_written(table)) {
     const std::string key = prefix.empty() ? k : prefix + "." + k;
-    if (const auto* sub = node->as_table()) collect_settings(*sub, key, where, out);
-    else out.emplace_back(key, io::scalar_of(*node, fmt::format("{} {}", where, key)));
+    if (const auto* sub = node->as_table())
+      collect_settings(*sub, key, where, out);
+    else
+      out.emplace_back(key, io::scalar_of(*node, fmt::format("{} {}", where, key)));
   }
 }
 
@@ -61,12 +69,15 @@ std::vector<std::string> read_engines(io::TableReader& top) {
   if (n == nullptr) return {"liggghts"};
   const auto* list = n->as_array();
   if (list == nullptr || list->empty())
-    throw InputError(fmt::format("{} = {}: a list of engine names, e.g. [\"liggghts\"]", top.where("engines"),
-                                 io::describe(*n)));
+    throw InputError(fmt::format("{} = {}: a list of engine names, e.g. [\"liggghts\"]",
+                                 top.where("engines"), io::describe(*n)));
   for (const auto& e : *list) {
     const auto name = e.value<std::string>();
-    if (!name) throw InputError(fmt::format("{}: {} is not an engine name", top.where("engines"), io::describe(e)));
-    dem::make_engine(*name, top.where("engines"));  // unknown engines are refused with the known ones
+    if (!name)
+      throw InputError(
+          fmt::format("{}: {} is not an engine name", top.where("engines"), io::describe(e)));
+    dem::make_engine(*name,
+                     top.where("engines"));  // unknown engines are refused with the known ones
     engines.push_back(*name);
   }
   return engines;
@@ -82,9 +93,12 @@ Axis read_axis(io::TableReader& t) {
     throw InputError(fmt::format("{}: a non-empty list of values is needed", t.where("values")));
   for (const auto& v : *list) {
     AxisValue value;
-    if (const auto* table = v.as_table()) collect_settings(*table, a.key, t.where("values") + ":", value);
-    else value.emplace_back(a.key, io::scalar_of(v, t.where("values")));
-    if (value.empty()) throw InputError(fmt::format("{}: an empty table sets nothing", t.where("values")));
+    if (const auto* table = v.as_table())
+      collect_settings(*table, a.key, t.where("values") + ":", value);
+    else
+      value.emplace_back(a.key, io::scalar_of(v, t.where("values")));
+    if (value.empty())
+      throw InputError(fmt::format("{}: an empty table sets nothing", t.where("values")));
     a.values.push_back(std::move(value));
   }
   t.finish();
@@ -97,8 +111,8 @@ std::optional<Comparison> read_comparison(io::TableReader& top, const fs::path& 
   Comparison c{t->optional_text("model").value_or("hvwe"), folder / t->text("params")};
   models::find_model(c.model);  // refused now, not after hours of DEM
   if (!fs::exists(c.params))
-    throw InputError(fmt::format("{} = \"{}\": no such file ({})", t->where("params"), t->text("params"),
-                                 c.params.string()));
+    throw InputError(fmt::format("{} = \"{}\": no such file ({})", t->where("params"),
+                                 t->text("params"), c.params.string()));
   t->finish();
   return c;
 }
@@ -115,12 +129,13 @@ SweepSpec parse_sweep(const std::string& text, const fs::path& file) {
   const fs::path folder = file.parent_path();
   s.scene_file = folder / top.text("scene");
   if (!fs::exists(s.scene_file))
-    throw InputError(fmt::format("{} = \"{}\": no such scene file ({})", top.where("scene"), top.text("scene"),
-                                 s.scene_file.string()));
+    throw InputError(fmt::format("{} = \"{}\": no such scene file ({})", top.where("scene"),
+                                 top.text("scene"), s.scene_file.string()));
   s.scene_text = io::read_file(s.scene_file);
   s.engines = read_engines(top);
   if (const toml::node* set = top.node("set")) {
-    if (!set->is_table()) throw InputError(fmt::format("{}: a table of scene keys is needed", top.where("set")));
+    if (!set->is_table())
+      throw InputError(fmt::format("{}: a table of scene keys is needed", top.where("set")));
     collect_settings(*set->as_table(), "", top.where("set") + ":", s.set);
   }
   for (auto& a : top.array_of_tables("axis")) s.axes.push_back(read_axis(a));
@@ -128,8 +143,10 @@ SweepSpec parse_sweep(const std::string& text, const fs::path& file) {
   if (auto slurm = top.table("slurm")) {
     s.slurm_time = slurm->optional_text("time").value_or(s.slurm_time);
     if (!is_slurm_time(s.slurm_time))
-      throw InputError(fmt::format("{} = \"{}\" is not a Slurm time; allowed MM, MM:SS, HH:MM:SS, D-HH, D-HH:MM "
-                                   "or D-HH:MM:SS", slurm->where("time"), s.slurm_time));
+      throw InputError(
+          fmt::format("{} = \"{}\" is not a Slurm time; allowed MM, MM:SS, HH:MM:SS, D-HH, D-HH:MM "
+                      "or D-HH:MM:SS",
+                      slurm->where("time"), s.slurm_time));
     slurm->finish();
   }
   top.finish();

@@ -13,7 +13,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 std::string job_scene_sha256(const Job& job, const fs::path& out) {
-  return dem::scene_sha256(dem::parse_scene(job.scene_text, (out / scene_path(job)).string()), job.scene_text);
+  return dem::scene_sha256(dem::parse_scene(job.scene_text, (out / scene_path(job)).string()),
+                           job.scene_text);
 }
 
 double recorded_seconds(const fs::path& dir) {
@@ -37,9 +38,13 @@ json initial_record(const SweepSpec& spec, const std::vector<Job>& jobs, const f
   for (const auto& job : jobs) {
     json values = json::object();
     for (const auto& [key, value] : job.values) values[key] = io::to_toml(value);
-    r["jobs"].push_back({{"name", job.name}, {"engine", job.engine}, {"values", values},
-                         {"scene", scene_path(job)}, {"run", run_path(job)},
-                         {"scene_sha256", job_scene_sha256(job, out)}, {"status", "pending"}});
+    r["jobs"].push_back({{"name", job.name},
+                         {"engine", job.engine},
+                         {"values", values},
+                         {"scene", scene_path(job)},
+                         {"run", run_path(job)},
+                         {"scene_sha256", job_scene_sha256(job, out)},
+                         {"status", "pending"}});
   }
   return r;
 }

@@ -14,15 +14,17 @@ namespace iwb::campaign {
 // How often a campaign repeats its progress line while nothing changes.
 inline constexpr double kProgressEverySeconds = 15.0;
 
-// The sha256 that decides reuse of a job's run (dem::scene_sha256: its text and any wall file it names).
+// The sha256 that decides reuse of a job's run (dem::scene_sha256: its text and any wall file it
+// names).
 std::string job_scene_sha256(const Job& job, const std::filesystem::path& out);
 
 // The engine's own time in an earlier run, for reused jobs.
 double recorded_seconds(const std::filesystem::path& run_dir);
 
 // Every job "pending"; `executor` ("local" or "slurm") and its settings.
-nlohmann::json initial_record(const SweepSpec& spec, const std::vector<Job>& jobs, const std::filesystem::path& out,
-                              const std::string& command_line, const nlohmann::json& executor);
+nlohmann::json initial_record(const SweepSpec& spec, const std::vector<Job>& jobs,
+                              const std::filesystem::path& out, const std::string& command_line,
+                              const nlohmann::json& executor);
 
 // A job found complete with the same scene before anything ran.
 void mark_reused(nlohmann::json& job, const std::filesystem::path& run_dir);

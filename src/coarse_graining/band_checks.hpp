@@ -3,7 +3,8 @@
 // (the shear stress uniform across the height and equal to the wall's tau; the normal stress equal
 // to the wall's sigma_n), the mass balance (the solid fraction integrates to the grains' volume),
 // the band's thickness from the coarse-grained velocity against the grains' own velocities binned
-// by centre in the same snapshot, and the band's void ratio snapshot by snapshot. Each check has a tolerance and a verdict.
+// by centre in the same snapshot, and the band's void ratio snapshot by snapshot. Each check has a
+// tolerance and a verdict.
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -29,7 +30,8 @@ struct BandChecks {
   nlohmann::json json;        // summary.json's "coarse_graining"
 };
 
-BandChecks band_checks(const dem::Scene& scene, const dem::Numerics& numerics, const io::CsvTable& timeseries,
-                       const std::vector<SnapshotProfile>& profiles, double width_m);
+BandChecks band_checks(const dem::Scene& scene, const dem::Numerics& numerics,
+                       const io::CsvTable& timeseries, const std::vector<SnapshotProfile>& profiles,
+                       double width_m);
 
 }  // namespace iwb::coarse_graining

@@ -14,7 +14,8 @@ void each_in(const std::vector<double>& z, Span span, F f) {
 }
 
 // The height where `values` crosses `level` between points i and j, linearly.
-double crossing(const std::vector<double>& z, const std::vector<double>& v, std::size_t i, std::size_t j, double level) {
+double crossing(const std::vector<double>& z, const std::vector<double>& v, std::size_t i,
+                std::size_t j, double level) {
   const double t = (level - v[i]) / (v[j] - v[i]);
   return z[i] + t * (z[j] - z[i]);
 }
@@ -29,7 +30,8 @@ double mean_over(const std::vector<double>& z, const std::vector<double>& values
 
 double relative_spread(const std::vector<double>& z, const std::vector<double>& values, Span span) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  each_in(z, span, [&](std::size_t i) { lo = std::min(lo, values[i]), hi = std::max(hi, values[i]); });
+  each_in(z, span,
+          [&](std::size_t i) { lo = std::min(lo, values[i]), hi = std::max(hi, values[i]); });
   return (hi - lo) / std::abs(mean_over(z, values, span));
 }
 
@@ -40,7 +42,8 @@ double integral(const std::vector<double>& values, double h) {
   return sum * h;
 }
 
-double peak_width_at_half_maximum(const std::vector<double>& z, const std::vector<double>& rate, Span search) {
+double peak_width_at_half_maximum(const std::vector<double>& z, const std::vector<double>& rate,
+                                  Span search) {
   std::size_t peak = z.size();
   each_in(z, search, [&](std::size_t i) {
     if (peak == z.size() || rate[i] > rate[peak]) peak = i;
@@ -55,17 +58,21 @@ double peak_width_at_half_maximum(const std::vector<double>& z, const std::vecto
   return z_hi - z_lo;
 }
 
-double velocity_band_width(const std::vector<double>& z, const std::vector<double>& r, double from) {
+double velocity_band_width(const std::vector<double>& z, const std::vector<double>& r,
+                           double from) {
   double z90 = -1.0, z10 = -1.0;
   for (std::size_t i = 1; i < z.size(); ++i) {
     if (z[i] < from) continue;
-    if (z90 < 0.0 && r[i] < 0.9) z90 = r[i - 1] >= 0.9 && z[i - 1] >= from ? crossing(z, r, i - 1, i, 0.9) : z[i];
-    if (z10 < 0.0 && r[i] < 0.1) z10 = r[i - 1] >= 0.1 && z[i - 1] >= from ? crossing(z, r, i - 1, i, 0.1) : z[i];
+    if (z90 < 0.0 && r[i] < 0.9)
+      z90 = r[i - 1] >= 0.9 && z[i - 1] >= from ? crossing(z, r, i - 1, i, 0.9) : z[i];
+    if (z10 < 0.0 && r[i] < 0.1)
+      z10 = r[i - 1] >= 0.1 && z[i - 1] >= from ? crossing(z, r, i - 1, i, 0.1) : z[i];
   }
   return z90 < 0.0 || z10 < 0.0 ? -1.0 : z10 - z90;
 }
 
-BinnedProfile bin_means(const std::vector<double>& z, const std::vector<double>& values, double from, double bin) {
+BinnedProfile bin_means(const std::vector<double>& z, const std::vector<double>& values,
+                        double from, double bin) {
   std::vector<double> sum, count;
   for (std::size_t i = 0; i < z.size(); ++i) {
     if (z[i] < from) continue;
@@ -75,7 +82,8 @@ BinnedProfile bin_means(const std::vector<double>& z, const std::vector<double>&
   }
   BinnedProfile out;
   for (std::size_t k = 0; k < sum.size(); ++k)
-    if (count[k] > 0.0) out.z.push_back(from + (double(k) + 0.5) * bin), out.mean.push_back(sum[k] / count[k]);
+    if (count[k] > 0.0)
+      out.z.push_back(from + (double(k) + 0.5) * bin), out.mean.push_back(sum[k] / count[k]);
   return out;
 }
 

@@ -17,10 +17,12 @@ double relative_spread(const std::vector<double>& z, const std::vector<double>& 
 double integral(const std::vector<double>& values, double h);
 // Full width at half maximum of the largest peak of `rate` within `search` (the wall's band: the
 // lower half of the specimen), interpolated linearly between points; 0 if no peak is positive.
-double peak_width_at_half_maximum(const std::vector<double>& z, const std::vector<double>& rate, Span search);
+double peak_width_at_half_maximum(const std::vector<double>& z, const std::vector<double>& rate,
+                                  Span search);
 // The velocity measure of the run summary (DEM.md): from `from` up, the heights where v / v_wall
 // first falls below 0.9 and below 0.1; their distance, or a negative value if either is missing.
-double velocity_band_width(const std::vector<double>& z, const std::vector<double>& v_over_v_wall, double from);
+double velocity_band_width(const std::vector<double>& z, const std::vector<double>& v_over_v_wall,
+                           double from);
 
 // Means of `values` in bins of width `bin` stacked from `from` up, sorted into them by `z` (grains
 // by their centres, as the engines bin profiles.csv): the kernel-free profile of the same instant
@@ -28,7 +30,8 @@ double velocity_band_width(const std::vector<double>& z, const std::vector<doubl
 struct BinnedProfile {
   std::vector<double> z, mean;
 };
-BinnedProfile bin_means(const std::vector<double>& z, const std::vector<double>& values, double from, double bin);
+BinnedProfile bin_means(const std::vector<double>& z, const std::vector<double>& values,
+                        double from, double bin);
 
 // For a Gaussian shear-rate peak (an erfc velocity profile) the 0.9 -> 0.1 velocity width is
 // 2 x 1.2816 sigma and the FWHM 2 sqrt(2 ln 2) sigma: the ratio 1.0883 turns one into the other.

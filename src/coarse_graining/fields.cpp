@@ -11,9 +11,20 @@ namespace {
 
 // The kernel sums, per grid point. Tensor components are stored as a*3+b.
 enum Sum : std::size_t {
-  kRho, kSolid, kPx, kPy, kPz, kDRhoDx, kDRhoDz, kDPxDx, kDPxDz, kDPzDx, kDPzDz, kSpinY,
-  kContact = kSpinY + 1,            // 9 components
-  kMomentumFlux = kContact + 9,     // 9 components: sum m v_a v_b phi
+  kRho,
+  kSolid,
+  kPx,
+  kPy,
+  kPz,
+  kDRhoDx,
+  kDRhoDz,
+  kDPxDx,
+  kDPxDz,
+  kDPzDx,
+  kDPzDz,
+  kSpinY,
+  kContact = kSpinY + 1,         // 9 components
+  kMomentumFlux = kContact + 9,  // 9 components: sum m v_a v_b phi
   kSumCount = kMomentumFlux + 9
 };
 
@@ -72,8 +83,8 @@ FieldSet derive(const Sums& s) {
   auto& vort = d.add("vorticity_y_1_s", n);
   auto& spin = d.add("grain_spin_y_rad_s", n);
   auto& cosserat = d.add("cosserat_rotation_y_rad_s", n);
-  const char* names[] = {"stress_xx_Pa", "stress_yy_Pa", "stress_zz_Pa", "stress_xz_Pa", "stress_zx_Pa",
-                         "stress_xy_Pa", "stress_yz_Pa"};
+  const char* names[] = {"stress_xx_Pa", "stress_yy_Pa", "stress_zz_Pa", "stress_xz_Pa",
+                         "stress_zx_Pa", "stress_xy_Pa", "stress_yz_Pa"};
   const int comps[][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 2}, {2, 0}, {0, 1}, {1, 2}};
   std::vector<std::vector<double>*> stress;
   for (const char* name : names) stress.push_back(&d.add(name, n));
@@ -82,18 +93,23 @@ FieldSet derive(const Sums& s) {
     const auto& c = s[i];
     rho[i] = c[kRho], nu[i] = c[kSolid];
     const bool material = c[kSolid] >= kMinSolidFraction;
-    const Eigen::Vector3d V = material ? Eigen::Vector3d(Eigen::Vector3d(c[kPx], c[kPy], c[kPz]) / c[kRho])
-                                        : Eigen::Vector3d(Eigen::Vector3d::Zero());
+    const Eigen::Vector3d V =
+        material ? Eigen::Vector3d(Eigen::Vector3d(c[kPx], c[kPy], c[kPz]) / c[kRho])
+                 : Eigen::Vector3d(Eigen::Vector3d::Zero());
     for (std::size_t k = 0; k < std::size(comps); ++k) {
       const int a = comps[k][0], b = comps[k][1];
       const double flux = material ? c[kMomentumFlux + 3 * a + b] - c[kRho] * V[a] * V[b] : 0.0;
       (*stress[k])[i] = c[kContact + 3 * a + b] + flux;
     }
     if (!material) continue;
-    kinetic[i] = (c[kMomentumFlux] + c[kMomentumFlux + 4] + c[kMomentumFlux + 8] - c[kRho] * V.squaredNorm()) / 3.0;
+    kinetic[i] = (c[kMomentumFlux] + c[kMomentumFlux + 4] + c[kMomentumFlux + 8] -
+                  c[kRho] * V.squaredNorm()) /
+                 3.0;
     vx[i] = V.x(), vz[i] = V.z();
-    const double dvx_dx = (c[kDPxDx] - V.x() * c[kDRhoDx]) / c[kRho], dvx_dz = (c[kDPxDz] - V.x() * c[kDRhoDz]) / c[kRho];
-    const double dvz_dx = (c[kDPzDx] - V.z() * c[kDRhoDx]) / c[kRho], dvz_dz = (c[kDPzDz] - V.z() * c[kDRhoDz]) / c[kRho];
+    const double dvx_dx = (c[kDPxDx] - V.x() * c[kDRhoDx]) / c[kRho],
+                 dvx_dz = (c[kDPxDz] - V.x() * c[kDRhoDz]) / c[kRho];
+    const double dvz_dx = (c[kDPzDx] - V.z() * c[kDRhoDx]) / c[kRho],
+                 dvz_dz = (c[kDPzDz] - V.z() * c[kDRhoDz]) / c[kRho];
     gxz[i] = dvx_dz, dxz[i] = 0.5 * (dvx_dz + dvz_dx), dxx[i] = dvx_dx, dzz[i] = dvz_dz;
     vort[i] = dvx_dz - dvz_dx;  // (curl V)_y
     spin[i] = c[kSpinY] / c[kRho];

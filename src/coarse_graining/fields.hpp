@@ -27,7 +27,8 @@ struct Field {
 
 struct FieldSet {
   std::vector<Field> fields;
-  const std::vector<double>& operator[](const std::string& name) const;  // std::out_of_range if absent
+  const std::vector<double>& operator[](
+      const std::string& name) const;  // std::out_of_range if absent
 };
 
 FieldSet coarse_grain(const Snapshot& snapshot, const SamplingGrid& grid);

@@ -9,13 +9,15 @@ namespace iwb::coarse_graining {
 namespace {
 
 int points_up_to(double z_lo, double z_hi, double h) {
-  if (!(h > 0.0) || !(z_hi >= z_lo)) throw std::invalid_argument("coarse-graining grid: spacing or height range invalid");
+  if (!(h > 0.0) || !(z_hi >= z_lo))
+    throw std::invalid_argument("coarse-graining grid: spacing or height range invalid");
   return int(std::floor((z_hi - z_lo) / h + 1e-9)) + 1;
 }
 
 // Index range [first, last] of points z_lo + j h within `reach` of [lo, hi], clipped to [0, n).
 std::pair<int, int> z_range(double lo, double hi, double reach, double z_lo, double h, int n) {
-  return {std::max(0, int(std::ceil((lo - reach - z_lo) / h))), std::min(n - 1, int(std::floor((hi + reach - z_lo) / h)))};
+  return {std::max(0, int(std::ceil((lo - reach - z_lo) / h))),
+          std::min(n - 1, int(std::floor((hi + reach - z_lo) / h)))};
 }
 
 double wrapped(double x, double length) {
@@ -23,12 +25,19 @@ double wrapped(double x, double length) {
   return w < 0.0 ? w + length : w;
 }
 
-std::size_t periodic_index(int k, int n) { return std::size_t(((k % n) + n) % n); }
+std::size_t periodic_index(int k, int n) {
+  return std::size_t(((k % n) + n) % n);
+}
 
 }  // namespace
 
-PlaneGrid::PlaneGrid(const GaussianKernel& kernel, const PeriodicCell& cell, double spacing, double z_lo, double z_hi)
-    : kernel_(kernel), cell_(cell), h_(spacing), z_lo_(z_lo), nz_(points_up_to(z_lo, z_hi, spacing)) {
+PlaneGrid::PlaneGrid(const GaussianKernel& kernel, const PeriodicCell& cell, double spacing,
+                     double z_lo, double z_hi)
+    : kernel_(kernel),
+      cell_(cell),
+      h_(spacing),
+      z_lo_(z_lo),
+      nz_(points_up_to(z_lo, z_hi, spacing)) {
   nx_ = std::max(1, int(std::lround(cell.length_x / spacing)));
   hx_ = cell.length_x / nx_;
 }
@@ -48,11 +57,13 @@ void PlaneGrid::around_point(const Eigen::Vector3d& r, std::vector<CellWeight>& 
     }
 }
 
-void PlaneGrid::along_branch(const Eigen::Vector3d& a, const Eigen::Vector3d& b, std::vector<CellWeight>& out) const {
+void PlaneGrid::along_branch(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                             std::vector<CellWeight>& out) const {
   out.clear();
   const double shift = wrapped(a.x(), cell_.length_x) - a.x(), reach = kernel_.reach();
   const Eigen::Vector2d pa(a.x() + shift, a.z()), pb(b.x() + shift, b.z());
-  const auto [j0, j1] = z_range(std::min(pa.y(), pb.y()), std::max(pa.y(), pb.y()), reach, z_lo_, h_, nz_);
+  const auto [j0, j1] =
+      z_range(std::min(pa.y(), pb.y()), std::max(pa.y(), pb.y()), reach, z_lo_, h_, nz_);
   const int k0 = int(std::ceil((std::min(pa.x(), pb.x()) - reach) / hx_));
   const int k1 = int(std::floor((std::max(pa.x(), pb.x()) + reach) / hx_));
   for (int j = j0; j <= j1; ++j)
@@ -63,9 +74,12 @@ void PlaneGrid::along_branch(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
     }
 }
 
-HeightProfile::HeightProfile(const GaussianKernel& kernel, const PeriodicCell& cell, double spacing, double z_lo,
-                             double z_hi)
-    : kernel_(kernel), area_(cell.length_x * cell.length_y), h_(spacing), z_lo_(z_lo),
+HeightProfile::HeightProfile(const GaussianKernel& kernel, const PeriodicCell& cell, double spacing,
+                             double z_lo, double z_hi)
+    : kernel_(kernel),
+      area_(cell.length_x * cell.length_y),
+      h_(spacing),
+      z_lo_(z_lo),
       n_(points_up_to(z_lo, z_hi, spacing)) {}
 
 void HeightProfile::around_point(const Eigen::Vector3d& r, std::vector<CellWeight>& out) const {
@@ -78,12 +92,15 @@ void HeightProfile::around_point(const Eigen::Vector3d& r, std::vector<CellWeigh
   }
 }
 
-void HeightProfile::along_branch(const Eigen::Vector3d& a, const Eigen::Vector3d& b, std::vector<CellWeight>& out) const {
+void HeightProfile::along_branch(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                 std::vector<CellWeight>& out) const {
   out.clear();
-  const auto [j0, j1] = z_range(std::min(a.z(), b.z()), std::max(a.z(), b.z()), kernel_.reach(), z_lo_, h_, n_);
+  const auto [j0, j1] =
+      z_range(std::min(a.z(), b.z()), std::max(a.z(), b.z()), kernel_.reach(), z_lo_, h_, n_);
   for (int j = j0; j <= j1; ++j) {
     const double zj = z(std::size_t(j));
-    out.push_back({std::size_t(j), {kernel_.vertical_along(a.z() - zj, b.z() - zj) / area_, 0.0, 0.0}});
+    out.push_back(
+        {std::size_t(j), {kernel_.vertical_along(a.z() - zj, b.z() - zj) / area_, 0.0, 0.0}});
   }
 }
 

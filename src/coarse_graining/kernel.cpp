@@ -13,17 +13,20 @@ constexpr double kPointBranch = 1e-9;
 }  // namespace
 
 GaussianKernel::GaussianKernel(double width) : w_(width) {
-  if (!(width > 0.0) || !std::isfinite(width)) throw std::invalid_argument("coarse-graining width must be positive");
+  if (!(width > 0.0) || !std::isfinite(width))
+    throw std::invalid_argument("coarse-graining width must be positive");
 }
 
 KernelValue GaussianKernel::planar(double dx, double dz) const {
-  const double phi = std::exp(-(dx * dx + dz * dz) / (2.0 * w_ * w_)) / (2.0 * std::numbers::pi * w_ * w_);
+  const double phi =
+      std::exp(-(dx * dx + dz * dz) / (2.0 * w_ * w_)) / (2.0 * std::numbers::pi * w_ * w_);
   // d/dx of phi(p - r_i) at the grid point p: -(dx / w^2) phi
   return {phi, -dx / (w_ * w_) * phi, -dz / (w_ * w_) * phi};
 }
 
 KernelValue GaussianKernel::vertical(double dz) const {
-  const double phi = std::exp(-dz * dz / (2.0 * w_ * w_)) / (std::sqrt(2.0 * std::numbers::pi) * w_);
+  const double phi =
+      std::exp(-dz * dz / (2.0 * w_ * w_)) / (std::sqrt(2.0 * std::numbers::pi) * w_);
   return {phi, 0.0, -dz / (w_ * w_) * phi};
 }
 
@@ -41,7 +44,8 @@ double GaussianKernel::planar_along(const Eigen::Vector2d& a, const Eigen::Vecto
   const double t_a = a.dot(e);
   const double d_perp2 = std::max(0.0, a.squaredNorm() - t_a * t_a);
   const double s = std::sqrt(2.0) * w_;
-  const double along = std::sqrt(std::numbers::pi / 2.0) * w_ * (std::erf((t_a + length) / s) - std::erf(t_a / s));
+  const double along =
+      std::sqrt(std::numbers::pi / 2.0) * w_ * (std::erf((t_a + length) / s) - std::erf(t_a / s));
   return std::exp(-d_perp2 / (2.0 * w_ * w_)) / (2.0 * std::numbers::pi * w_ * w_) * along / length;
 }
 

@@ -8,9 +8,10 @@
 namespace iwb::coarse_graining {
 
 struct Grain {
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // wrapped or not: the grids wrap x themselves
+  Eigen::Vector3d position =
+      Eigen::Vector3d::Zero();  // wrapped or not: the grids wrap x themselves
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
-  Eigen::Vector3d spin = Eigen::Vector3d::Zero();      // angular velocity, rad/s
+  Eigen::Vector3d spin = Eigen::Vector3d::Zero();  // angular velocity, rad/s
   double radius = 0.0, mass = 0.0;
 };
 
@@ -19,7 +20,8 @@ struct Grain {
 // the plate or a glued wall sphere, `to` is the contact point, so that the branch ends on the
 // boundary (Weinhart et al. 2012, sec. 3: the boundary's force enters where it acts).
 struct Contact {
-  Eigen::Vector3d from = Eigen::Vector3d::Zero(), to = Eigen::Vector3d::Zero(), force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d from = Eigen::Vector3d::Zero(), to = Eigen::Vector3d::Zero(),
+                  force = Eigen::Vector3d::Zero();
   bool boundary = false;
 };
 

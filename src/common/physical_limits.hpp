@@ -4,8 +4,8 @@
 // command-line option, a scene and a model's declaration refuse the same values.
 namespace iwb {
 
-inline constexpr double kMaxStressKPa = 1e5;   // 100 MPa: far beyond grain crushing
+inline constexpr double kMaxStressKPa = 1e5;  // 100 MPa: far beyond grain crushing
 inline constexpr double kMaxVoidRatio = 10.0;
-inline constexpr double kMaxK0 = 10.0;         // lateral stress ratio sigma_p / sigma_n
+inline constexpr double kMaxK0 = 10.0;  // lateral stress ratio sigma_p / sigma_n
 
 }  // namespace iwb

@@ -4,8 +4,9 @@
 // use it, so a message reads the same wherever the value came from: "must be finite and in
 // (0, 1e+05]". NaN and +-inf are never admitted: a value that is not finite means something went
 // wrong before it reached us (a typo, a units mistake), never a setting.
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -28,14 +29,15 @@ struct Range {
       if (std::isinf(b)) return std::string(b > 0 ? "inf" : "-inf");
       return fmt::format("{:g}", b);
     };
-    return fmt::format("{}{}, {}{}", lower_open || std::isinf(lower) ? "(" : "[", end(lower), end(upper),
-                       upper_open || std::isinf(upper) ? ")" : "]");
+    return fmt::format("{}{}, {}{}", lower_open || std::isinf(lower) ? "(" : "[", end(lower),
+                       end(upper), upper_open || std::isinf(upper) ? ")" : "]");
   }
 
   // "must be finite and > 0", "must be finite and in [4, 100]": what a message says is allowed.
   std::string requirement() const {
     const bool no_upper = std::isinf(upper);
-    if (no_upper && lower == 0.0) return lower_open ? "must be finite and > 0" : "must be finite and >= 0";
+    if (no_upper && lower == 0.0)
+      return lower_open ? "must be finite and > 0" : "must be finite and >= 0";
     if (no_upper && std::isinf(lower)) return "must be finite";
     return "must be finite and in " + text();
   }
@@ -44,8 +46,14 @@ struct Range {
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The usual ranges.
-inline Range positive(double upper = kInf) { return {0.0, upper, true, false}; }
-inline Range non_negative(double upper = kInf) { return {0.0, upper, false, false}; }
-inline Range closed(double lower, double upper) { return {lower, upper, false, false}; }
+inline Range positive(double upper = kInf) {
+  return {0.0, upper, true, false};
+}
+inline Range non_negative(double upper = kInf) {
+  return {0.0, upper, false, false};
+}
+inline Range closed(double lower, double upper) {
+  return {lower, upper, false, false};
+}
 
 }  // namespace iwb

@@ -10,11 +10,19 @@ namespace iwb {
 
 using Dual = Eigen::AutoDiffScalar<Eigen::Matrix<double, 1, 1>>;
 
-inline double value_of(double x) { return x; }
-inline double value_of(const Dual& x) { return x.value(); }
+inline double value_of(double x) {
+  return x;
+}
+inline double value_of(const Dual& x) {
+  return x.value();
+}
 
-inline Dual make_variable(double value) { return Dual(value, Eigen::Matrix<double, 1, 1>(1.0)); }
-inline double derivative_of(const Dual& x) { return x.derivatives()(0); }
+inline Dual make_variable(double value) {
+  return Dual(value, Eigen::Matrix<double, 1, 1>(1.0));
+}
+inline double derivative_of(const Dual& x) {
+  return x.derivatives()(0);
+}
 
 // sqrt with a finite derivative at zero: the norm of a zero stretching contributes nothing.
 template <class S>

@@ -1,13 +1,14 @@
 #include "common/subprocess.hpp"
 
-#include <csignal>
-#include <cstring>
 #include <fcntl.h>
 #include <fmt/core.h>
 #include <poll.h>
-#include <stdexcept>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
+#include <cstring>
+#include <stdexcept>
 
 namespace iwb {
 

@@ -1,6 +1,7 @@
 #include "common/template.hpp"
 
 #include <fmt/core.h>
+
 #include <stdexcept>
 
 namespace iwb {
@@ -14,7 +15,8 @@ std::string render_template(const std::string& text, const TemplateValues& value
     if (open == std::string::npos) break;
     const auto close = text.find("}}", open);
     if (close == std::string::npos)
-      throw std::logic_error(fmt::format("template {}: unclosed placeholder at offset {}", name, open));
+      throw std::logic_error(
+          fmt::format("template {}: unclosed placeholder at offset {}", name, open));
     const std::string key = text.substr(open + 2, close - open - 2);
     const auto it = values.find(key);
     if (it == values.end())

@@ -13,7 +13,8 @@ namespace {
 
 // A cycle counts when the rows end within this many row spacings before its end.
 constexpr double kReachedRowSpacings = 1.5;
-constexpr double kFinalShare = 0.2;  // the post-cyclic "final" friction: its last fifth, as a residual
+constexpr double kFinalShare =
+    0.2;  // the post-cyclic "final" friction: its last fifth, as a residual
 const double kSecantShares[] = {0.1, 0.5};
 
 // A series as a function of the travelled distance s (non-decreasing), linear between rows and
@@ -58,14 +59,14 @@ struct Rows {
 void check(const Path& p, const Program& program) {
   const std::size_t n = p.u_x_mm.size();
   if (n < 2) throw InputError(fmt::format("a cyclic path needs at least 2 rows; it has {}", n));
-  if (p.travel_mm.size() != n || p.u_n_mm.size() != n || p.sigma_n_kPa.size() != n || p.tau_kPa.size() != n ||
-      (!p.e_band.empty() && p.e_band.size() != n))
+  if (p.travel_mm.size() != n || p.u_n_mm.size() != n || p.sigma_n_kPa.size() != n ||
+      p.tau_kPa.size() != n || (!p.e_band.empty() && p.e_band.size() != n))
     throw InputError("the series of a cyclic path differ in length");
   if (!std::is_sorted(p.travel_mm.begin(), p.travel_mm.end()))
     throw InputError("the travel of a cyclic path decreases");
   if (!(program.amplitude_mm > 0.0) || program.cycles < 1)
-    throw InputError(fmt::format("not a cyclic program: amplitude {:g} mm, {} cycles", program.amplitude_mm,
-                                 program.cycles));
+    throw InputError(fmt::format("not a cyclic program: amplitude {:g} mm, {} cycles",
+                                 program.amplitude_mm, program.cycles));
 }
 
 // The integral of tau du_x between travelled distances a and b: the rows inside, closed by the
@@ -159,25 +160,31 @@ CyclicQuantities cyclic_quantities(const Path& path, const Program& program) {
 }
 
 nlohmann::json to_json(const CyclicQuantities& q) {
-  auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+  auto opt = [](const std::optional<double>& v) {
+    return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+  };
   auto rev = [&opt](const Reversal& r) {
-    return nlohmann::json{{"u_x_mm", r.u_x_mm}, {"tau_kPa", r.tau_kPa}, {"secant_10_kPa_per_mm", r.secant_10_kPa_per_mm},
-                          {"secant_50_kPa_per_mm", r.secant_50_kPa_per_mm}, {"e_band", opt(r.e_band)}};
+    return nlohmann::json{{"u_x_mm", r.u_x_mm},
+                          {"tau_kPa", r.tau_kPa},
+                          {"secant_10_kPa_per_mm", r.secant_10_kPa_per_mm},
+                          {"secant_50_kPa_per_mm", r.secant_50_kPa_per_mm},
+                          {"e_band", opt(r.e_band)}};
   };
   nlohmann::json cycles = nlohmann::json::array();
   for (const auto& c : q.cycles)
-    cycles.push_back({{"cycle", c.number},
-                      {"peak_friction", std::max(c.peak_friction_positive, c.peak_friction_negative)},
-                      {"peak_friction_positive", c.peak_friction_positive},
-                      {"peak_friction_negative", c.peak_friction_negative},
-                      {"sigma_n_end_kPa", c.sigma_n_end_kPa},
-                      {"sigma_n_ratio", c.sigma_n_ratio},
-                      {"u_n_end_mm", c.u_n_end_mm},
-                      {"u_n_increment_mm", c.u_n_increment_mm},
-                      {"dissipated_energy_J_m2", c.dissipated_energy_J_m2},
-                      {"e_band_end", opt(c.e_band_end)},
-                      {"reversal_at_plus", rev(c.at_plus)},
-                      {"reversal_at_minus", rev(c.at_minus)}});
+    cycles.push_back(
+        {{"cycle", c.number},
+         {"peak_friction", std::max(c.peak_friction_positive, c.peak_friction_negative)},
+         {"peak_friction_positive", c.peak_friction_positive},
+         {"peak_friction_negative", c.peak_friction_negative},
+         {"sigma_n_end_kPa", c.sigma_n_end_kPa},
+         {"sigma_n_ratio", c.sigma_n_ratio},
+         {"u_n_end_mm", c.u_n_end_mm},
+         {"u_n_increment_mm", c.u_n_increment_mm},
+         {"dissipated_energy_J_m2", c.dissipated_energy_J_m2},
+         {"e_band_end", opt(c.e_band_end)},
+         {"reversal_at_plus", rev(c.at_plus)},
+         {"reversal_at_minus", rev(c.at_minus)}});
   nlohmann::json post = nullptr;
   if (q.post_cyclic)
     post = {{"peak_friction", q.post_cyclic->peak_friction},

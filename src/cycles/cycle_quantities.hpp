@@ -46,8 +46,8 @@ struct Cycle {
   // the largest tau/sigma_n towards +A and the largest -tau/sigma_n towards -A
   double peak_friction_positive = 0.0, peak_friction_negative = 0.0;
   double sigma_n_end_kPa = 0.0;
-  double sigma_n_ratio = 0.0;  // sigma_n at the cycle's end over sigma_n0 (CNS, CV: degradation)
-  double u_n_end_mm = 0.0;     // accumulated u_n (dilation positive)
+  double sigma_n_ratio = 0.0;     // sigma_n at the cycle's end over sigma_n0 (CNS, CV: degradation)
+  double u_n_end_mm = 0.0;        // accumulated u_n (dilation positive)
   double u_n_increment_mm = 0.0;  // over this cycle (ratcheting)
   // the loop's area, the integral of tau du_x over the cycle: the work the wall does on the
   // soil per unit area (kPa mm = J/m^2)

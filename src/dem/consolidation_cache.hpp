@@ -36,7 +36,8 @@ std::string consolidation_key(const Engine& engine, const Scene& scene);
 // reused "consolidated_in" and "consolidation_wall_seconds"; "rebuilt_because" when a cached one
 // was stale or corrupt}.
 StageResult consolidate_through_cache(const Engine& engine, const StageContext& ctx,
-                                      const std::filesystem::path& cache_dir, const std::string& command,
-                                      nlohmann::json& entry, const std::function<StageResult()>& consolidate_here);
+                                      const std::filesystem::path& cache_dir,
+                                      const std::string& command, nlohmann::json& entry,
+                                      const std::function<StageResult()>& consolidate_here);
 
 }  // namespace iwb::dem

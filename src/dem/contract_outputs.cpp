@@ -1,9 +1,10 @@
 #include "dem/contract_outputs.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fmt/core.h>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -19,7 +20,8 @@ std::vector<std::vector<double>> numeric_lines(const fs::path& path) {
   if (!in) throw std::runtime_error(fmt::format("{}: missing engine output", path.string()));
   std::vector<std::vector<double>> rows;
   for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#' || std::isalpha(static_cast<unsigned char>(line[0]))) continue;
+    if (line.empty() || line[0] == '#' || std::isalpha(static_cast<unsigned char>(line[0])))
+      continue;
     std::istringstream is(line);
     std::vector<double> row;
     for (double x; is >> x;) row.push_back(x);
@@ -31,14 +33,14 @@ std::vector<std::vector<double>> numeric_lines(const fs::path& path) {
 io::CsvTable timeseries_table(const Scene& s, const Numerics& n, const fs::path& raw, double z0) {
   const double area = s.area_m2();
   io::CsvTable t;
-  t.columns = {"t_s", "u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa", "e_specimen", "e_band",
-               "coordination", "sigma_plate_kPa", "particles"};
+  t.columns = {"t_s",        "u_x_mm", "u_n_mm",       "sigma_n_kPa",     "tau_kPa",
+               "e_specimen", "e_band", "coordination", "sigma_plate_kPa", "particles"};
   for (const auto& r : numeric_lines(raw)) {
     if (r.size() < 11) continue;
     const double height = (r[2] - s.plate.mean_height_m()) - s.wall.mean_height_m();
     t.rows.push_back({r[0], r[1] * 1e3, (r[2] - z0) * 1e3, r[3] / 1e3, r[4] / 1e3,
-                      area * height / r[6] - 1.0, area * (n.band_zhi - n.band_zlo) / r[7] - 1.0, r[8],
-                      r[5] / 1e3, r[9]});
+                      area * height / r[6] - 1.0, area * (n.band_zhi - n.band_zlo) / r[7] - 1.0,
+                      r[8], r[5] / 1e3, r[9]});
   }
   return t;
 }
@@ -66,9 +68,11 @@ std::vector<ProfileBin> smoothed(const std::vector<ProfileBin>& bins, double win
 
 }  // namespace
 
-io::CsvTable profile_table(const Scene& s, const Numerics& n, const ProfileBlocks& blocks, long step0) {
+io::CsvTable profile_table(const Scene& s, const Numerics& n, const ProfileBlocks& blocks,
+                           long step0) {
   io::CsvTable t;
-  t.columns = {"u_x_mm_window", "z_over_d50", "vx_over_vwall", "porosity", "sigma_zz_kPa", "tau_zx_kPa"};
+  t.columns = {"u_x_mm_window", "z_over_d50",   "vx_over_vwall",
+               "porosity",      "sigma_zz_kPa", "tau_zx_kPa"};
   for (const auto& [step, bins] : blocks) {
     if (step <= step0) continue;
     const double time = double(step - step0) * n.dt;
@@ -85,7 +89,8 @@ nlohmann::json plate_facts(const Scene& s, const io::CsvTable& timeseries) {
   const double target0 = s.boundary.sigma_n_Pa / 1e3, K = s.boundary.K_Pa_per_m * 1e-3 / 1e3;
   double worst = 0.0, plate_move = 0.0;
   for (const auto& r : timeseries.rows) {
-    const double target = target0 + (s.boundary.kind == driver::BoundaryKind::kCNS ? K * r[2] : 0.0);
+    const double target =
+        target0 + (s.boundary.kind == driver::BoundaryKind::kCNS ? K * r[2] : 0.0);
     worst = std::max(worst, std::abs(r[8] / target - 1.0));
     plate_move = std::max(plate_move, std::abs(r[2]));
   }

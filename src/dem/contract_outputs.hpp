@@ -19,7 +19,8 @@ std::vector<std::vector<double>> numeric_lines(const std::filesystem::path& path
 
 // timeseries.raw columns: t ux zplate sigma_wall tau_wall sigma_plate vsolid vband coordination
 // atoms ke (SI). z0 is the plate height when shear starts.
-io::CsvTable timeseries_table(const Scene& s, const Numerics& n, const std::filesystem::path& raw, double z0);
+io::CsvTable timeseries_table(const Scene& s, const Numerics& n, const std::filesystem::path& raw,
+                              double z0);
 
 // One height bin of one profile window, SI, stresses compression positive and per bin volume.
 struct ProfileBin {
@@ -28,7 +29,8 @@ struct ProfileBin {
 };
 using ProfileBlocks = std::map<long, std::vector<ProfileBin>>;  // by engine step
 
-io::CsvTable profile_table(const Scene& s, const Numerics& n, const ProfileBlocks& blocks, long step0);
+io::CsvTable profile_table(const Scene& s, const Numerics& n, const ProfileBlocks& blocks,
+                           long step0);
 
 // How well the plate did what the boundary condition asks, from the time series.
 nlohmann::json plate_facts(const Scene& s, const io::CsvTable& timeseries);

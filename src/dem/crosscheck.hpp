@@ -38,9 +38,9 @@ struct Scatter {
 Scatter scatter_of(const std::vector<double>& values);
 
 // Whether two engines agree on a quantity within their seed scatter: the difference of the means
-// against the standard error of that difference, sqrt(sd_a^2 / n_a + sd_b^2 / n_b) (Welch), agreeing
-// within kAgreementStandardErrors of it. With fewer than two seeds in either engine there is no
-// scatter to judge by: not judged.
+// against the standard error of that difference, sqrt(sd_a^2 / n_a + sd_b^2 / n_b) (Welch),
+// agreeing within kAgreementStandardErrors of it. With fewer than two seeds in either engine there
+// is no scatter to judge by: not judged.
 inline constexpr double kAgreementStandardErrors = 2.0;
 struct Agreement {
   double difference = 0.0, standard_error = 0.0;
@@ -51,8 +51,8 @@ Agreement agreement_of(const Scatter& a, const Scatter& b);
 // Whether the complete run in dir can stand for scene_text (its parsed scene) in engine: the same
 // scene, and the same mapping of it onto the engine (its numerics: timestep, contact law, servo),
 // so that a corrected mapping makes older runs stale.
-bool reusable_seed_run(const std::filesystem::path& dir, const Scene& scene, const std::string& scene_text,
-                       const Engine& engine);
+bool reusable_seed_run(const std::filesystem::path& dir, const Scene& scene,
+                       const std::string& scene_text, const Engine& engine);
 
 // Runs (or reuses) every engine x seed, writes crosscheck.json and crosscheck.md into out and
 // returns the JSON.

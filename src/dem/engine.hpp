@@ -26,8 +26,8 @@ struct StageContext {
 struct StageResult {
   bool ok = false;
   bool interrupted = false;
-  std::string failure;          // why, when !ok
-  nlohmann::json facts;         // what the stage measured (particle count, plate position, ...)
+  std::string failure;   // why, when !ok
+  nlohmann::json facts;  // what the stage measured (particle count, plate position, ...)
 };
 
 // The contract's tables, in contract units (kPa, mm).

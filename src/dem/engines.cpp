@@ -9,12 +9,15 @@
 
 namespace iwb::dem {
 
-std::vector<std::string> engine_names() { return {"liggghts", "yade"}; }
+std::vector<std::string> engine_names() {
+  return {"liggghts", "yade"};
+}
 
 std::unique_ptr<Engine> make_engine(const std::string& name, const std::string& option) {
   if (name == "liggghts") return std::make_unique<LiggghtsEngine>();
   if (name == "yade") return std::make_unique<YadeEngine>();
-  throw InputError(fmt::format("{} {}: available engines: {}", option, name, fmt::join(engine_names(), ", ")));
+  throw InputError(
+      fmt::format("{} {}: available engines: {}", option, name, fmt::join(engine_names(), ", ")));
 }
 
 }  // namespace iwb::dem

@@ -11,6 +11,7 @@ namespace iwb::dem {
 std::vector<std::string> engine_names();  // "liggghts", "yade"
 
 // Throws InputError naming the option and the engines available.
-std::unique_ptr<Engine> make_engine(const std::string& name, const std::string& option = "--engine");
+std::unique_ptr<Engine> make_engine(const std::string& name,
+                                    const std::string& option = "--engine");
 
 }  // namespace iwb::dem

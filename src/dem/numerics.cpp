@@ -40,15 +40,16 @@ Numerics derive(const Scene& s) {
   n.shear_steps = long(std::ceil(s.shear.duration_s() / n.dt));
   n.ts_every = std::max(1L, long(std::lround(s.outputs.timeseries_every_m / step_u)));
   n.progress_every = std::max(1L, n.shear_steps / 50);
-  n.profile_every = std::max(long(kProfileEvery),
-                             (n.shear_steps / s.outputs.profile_windows) / kProfileEvery * kProfileEvery);
+  n.profile_every = std::max(long(kProfileEvery), (n.shear_steps / s.outputs.profile_windows) /
+                                                      kProfileEvery * kProfileEvery);
   n.profile_repeat = std::max(1L, std::min(100L, n.profile_every / kProfileEvery / 2));
   n.vtk_every = std::max(1L, long(std::lround(s.outputs.vtk_every_m / step_u)));
   n.relax_steps = 2L * s.consolidation.window_steps;
   n.settle_steps = s.consolidation.window_steps;
   // the whole initial gap at the servo's top speed, twice over, plus slack for the slow-down
   const double approach_s = (n.plate_z - n.wall_top) / s.servo.vel_max_m_s;
-  n.approach_windows = 10 + long(std::ceil(2.0 * approach_s / (double(s.consolidation.window_steps) * n.dt)));
+  n.approach_windows =
+      10 + long(std::ceil(2.0 * approach_s / (double(s.consolidation.window_steps) * n.dt)));
   return n;
 }
 

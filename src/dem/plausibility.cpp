@@ -1,8 +1,9 @@
 #include "dem/plausibility.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 
 namespace iwb::dem {
 
@@ -12,8 +13,11 @@ using Series = std::vector<double>;
 
 PlausibilityCheck check(std::string name, double value, std::string comparison, double limit,
                         std::string measures) {
-  const bool passed = comparison == "<=" ? value <= limit : comparison == ">=" ? value >= limit : value > limit;
-  return {std::move(name), value, std::move(comparison), limit, passed && !std::isnan(value), std::move(measures)};
+  const bool passed = comparison == "<="   ? value <= limit
+                      : comparison == ">=" ? value >= limit
+                                           : value > limit;
+  return {std::move(name),    value, std::move(comparison), limit, passed && !std::isnan(value),
+          std::move(measures)};
 }
 
 double mean(const Series& x) {
@@ -39,7 +43,9 @@ double non_finite_cells(const io::CsvTable& t) {
   return n;
 }
 
-double min_of(const Series& x) { return x.empty() ? NAN : *std::min_element(x.begin(), x.end()); }
+double min_of(const Series& x) {
+  return x.empty() ? NAN : *std::min_element(x.begin(), x.end());
+}
 
 // CNL and CNS: the wall's sigma_n against sigma_n0 + K u_n (K = 0 under CNL), the mean deviation
 // over the shear stage relative to sigma_n0. The mean, not the largest excursion: the servo
@@ -50,7 +56,8 @@ PlausibilityCheck normal_stress_held(const Asked& a, const Series& un, const Ser
   Series deviation;
   for (std::size_t i = 0; i < sigma.size(); ++i)
     deviation.push_back(sigma[i] - (a.sigma_n0_kPa + (cns ? a.K_kPa_per_mm * un[i] : 0.0)));
-  auto c = check("normal_stress_held", std::abs(mean(deviation)) / a.sigma_n0_kPa, "<=", kNormalStressHeld,
+  auto c = check("normal_stress_held", std::abs(mean(deviation)) / a.sigma_n0_kPa,
+                 "<=", kNormalStressHeld,
                  cns ? "|mean of sigma_n - (sigma_n0 + K u_n)| over the shear stage / sigma_n0"
                      : "|mean of sigma_n - sigma_n0| over the shear stage / sigma_n0");
   c.warning_limit = kNormalStressWarning;
@@ -68,22 +75,28 @@ PlausibilityCheck normal_displacement_held(const Asked& a, const Series& un) {
 }  // namespace
 
 Asked asked_by(const Scene& s) {
-  return {s.shear.travel_m() * 1e3,    s.outputs.timeseries_every_m * 1e3, 2 * s.shear.cycles, s.boundary.kind,
-          s.boundary.sigma_n_Pa / 1e3, s.boundary.K_Pa_per_m * 1e-6,       s.particles.d50_m * 1e3};
+  return {s.shear.travel_m() * 1e3,    s.outputs.timeseries_every_m * 1e3,
+          2 * s.shear.cycles,          s.boundary.kind,
+          s.boundary.sigma_n_Pa / 1e3, s.boundary.K_Pa_per_m * 1e-6,
+          s.particles.d50_m * 1e3};
 }
 
 std::vector<PlausibilityCheck> plausibility_checks(const Asked& a, const io::CsvTable& ts) {
   const Series ux = ts.values("u_x_mm"), un = ts.values("u_n_mm"), sigma = ts.values("sigma_n_kPa");
   const double travel = travelled(ux), slack = (kTravelRows + a.reversals) * a.row_every_mm;
   std::vector<PlausibilityCheck> checks = {
-      check("finite_values", non_finite_cells(ts), "<=", 0.0, "cells of timeseries.csv that are not finite numbers"),
-      check("rows", double(ts.rows.size()), ">=", std::max(double(kMinRows), kMinRowShare * a.travel_mm / a.row_every_mm),
-            fmt::format("rows of timeseries.csv (one every {:g} mm of {:g} mm)", a.row_every_mm, a.travel_mm)),
+      check("finite_values", non_finite_cells(ts), "<=", 0.0,
+            "cells of timeseries.csv that are not finite numbers"),
+      check("rows", double(ts.rows.size()),
+            ">=", std::max(double(kMinRows), kMinRowShare * a.travel_mm / a.row_every_mm),
+            fmt::format("rows of timeseries.csv (one every {:g} mm of {:g} mm)", a.row_every_mm,
+                        a.travel_mm)),
       check("displacement_reached", travel, ">=", a.travel_mm - slack,
             fmt::format("wall displacement along the rows (mm; asked {:g})", a.travel_mm)),
       check("displacement_not_overshot", travel, "<=", a.travel_mm + slack,
             fmt::format("wall displacement along the rows (mm; asked {:g})", a.travel_mm)),
-      check("contact_stress_positive", min_of(sigma), ">", 0.0, "smallest sigma_n on the wall (kPa)")};
+      check("contact_stress_positive", min_of(sigma), ">", 0.0,
+            "smallest sigma_n on the wall (kPa)")};
   checks.push_back(a.boundary == driver::BoundaryKind::kCV ? normal_displacement_held(a, un)
                                                            : normal_stress_held(a, un, sigma));
   return checks;
@@ -93,8 +106,8 @@ std::optional<std::string> failure_reason(const std::vector<PlausibilityCheck>& 
   std::string reason;
   for (const auto& c : checks)
     if (!c.passed)
-      reason += fmt::format("{}{} = {:.6g}, must be {} {:.6g} ({})", reason.empty() ? "" : "; ", c.name, c.value,
-                            c.comparison, c.limit, c.measures);
+      reason += fmt::format("{}{} = {:.6g}, must be {} {:.6g} ({})", reason.empty() ? "" : "; ",
+                            c.name, c.value, c.comparison, c.limit, c.measures);
   return reason.empty() ? std::nullopt : std::optional<std::string>(reason);
 }
 
@@ -102,17 +115,18 @@ std::vector<std::string> plausibility_warnings(const std::vector<PlausibilityChe
   std::vector<std::string> out;
   for (const auto& c : checks)
     if (c.passed && c.value > c.warning_limit)  // false for a NaN warning level
-      out.push_back(fmt::format("plausibility: {} = {:.3g} is within the limit {:g} but above {:g}: the boundary "
-                                "condition held only loosely ({})",
-                                c.name, c.value, c.limit, c.warning_limit, c.measures));
+      out.push_back(fmt::format(
+          "plausibility: {} = {:.3g} is within the limit {:g} but above {:g}: the boundary "
+          "condition held only loosely ({})",
+          c.name, c.value, c.limit, c.warning_limit, c.measures));
   return out;
 }
 
 nlohmann::json to_json(const std::vector<PlausibilityCheck>& checks) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& c : checks) {
-    nlohmann::json j = {{"name", c.name}, {"value", c.value}, {"comparison", c.comparison}, {"limit", c.limit},
-                        {"passed", c.passed}, {"measures", c.measures}};
+    nlohmann::json j = {{"name", c.name},   {"value", c.value},   {"comparison", c.comparison},
+                        {"limit", c.limit}, {"passed", c.passed}, {"measures", c.measures}};
     if (!std::isnan(c.warning_limit)) j["warning_limit"] = c.warning_limit;
     out.push_back(j);
   }

@@ -42,10 +42,10 @@ struct PlausibilityCheck {
 };
 
 // Tolerances (why each value: src/dem/README.md, "Plausibility"):
-inline constexpr double kMinRowShare = 0.9;        // rows against travel / cadence
-inline constexpr int kMinRows = 2;                 // and never fewer: a start and an end
-inline constexpr double kTravelRows = 2.0;         // the last row may precede the end by a row,
-                                                   // and each reversal's rows miss up to one more
+inline constexpr double kMinRowShare = 0.9;  // rows against travel / cadence
+inline constexpr int kMinRows = 2;           // and never fewer: a start and an end
+inline constexpr double kTravelRows = 2.0;   // the last row may precede the end by a row,
+                                             // and each reversal's rows miss up to one more
 // |mean sigma_n / target - 1| over the shear stage. With the servo's gain from its loop number
 // (dem/scene.hpp) the convergence runs hold 1-7 % (the grains' weight adds ~1.2 % at 20 d50; the
 // rest is the servo trailing the dilation, ~ plate speed / (vel_max kp): 5.6 % at I 1e-3 and E
@@ -54,7 +54,8 @@ inline constexpr double kNormalStressHeld = 0.2;
 inline constexpr double kNormalStressWarning = 0.05;
 inline constexpr double kNormalDisplacementHeldD50 = 0.01;  // CV: max |u_n| in d50
 
-std::vector<PlausibilityCheck> plausibility_checks(const Asked& asked, const io::CsvTable& timeseries);
+std::vector<PlausibilityCheck> plausibility_checks(const Asked& asked,
+                                                   const io::CsvTable& timeseries);
 
 // "name = value, must be <= limit (what it measures)" of every failed check, joined by "; ";
 // nothing when all passed.

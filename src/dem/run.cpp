@@ -1,14 +1,15 @@
 #include "dem/run.hpp"
-#include "dem/scene_roughness.hpp"
+
+#include <fmt/core.h>
 
 #include <algorithm>
 #include <chrono>
-#include <fmt/core.h>
 
 #include "coarse_graining/run_fields.hpp"
 #include "common/errors.hpp"
 #include "dem/consolidation_cache.hpp"
 #include "dem/plausibility.hpp"
+#include "dem/scene_roughness.hpp"
 #include "dem/summary.hpp"
 #include "io/checksum_record.hpp"
 #include "io/json_file.hpp"
@@ -22,35 +23,45 @@ namespace {
 
 nlohmann::json fresh_manifest(const Scene& scene, const std::string& text, Engine& engine,
                               const RunOptions& opt) {
-  return {{"kind", "dem-run"},
-          {"workbench", {{"name", "iwb"}, {"version", IWB_VERSION}}},
-          {"engine", {{"name", engine.name()}, {"version", engine.version()}, {"processes", opt.processes}}},
-          {"command_line", opt.command_line},
-          {"scene", {{"source", scene.source}, {"sha256", scene_sha256(scene, text)}, {"text", text},
-                     {"resolved", scene.resolved}}},
-          {"seed", scene.seed},
-          {"numerics", engine.numerics(scene)},
-          {"R_n", scene.wall.normalized_roughness(scene.particles.d50_m)},
-          {"roughness", scene_roughness(scene)},
-          {"stiffness_level", scene.stiffness_level()},
-          {"inertial_number", scene.shear.inertial_number},
-          {"conventions", {{"signs", "compression positive; u_n > 0 is dilation; tau has the sign of the wall displacement"},
-                           {"units", "kPa, mm, s in the contract files; SI inside the engine"}}},
-          {"warnings", scene.warnings},
-          {"stages", nlohmann::json::object()},
-          {"files", nlohmann::json::array()},  // set when they are written: never a file that is not there
-          {"started", io::utc_timestamp()},
-          {"status", "running"}};
+  return {
+      {"kind", "dem-run"},
+      {"workbench", {{"name", "iwb"}, {"version", IWB_VERSION}}},
+      {"engine",
+       {{"name", engine.name()}, {"version", engine.version()}, {"processes", opt.processes}}},
+      {"command_line", opt.command_line},
+      {"scene",
+       {{"source", scene.source},
+        {"sha256", scene_sha256(scene, text)},
+        {"text", text},
+        {"resolved", scene.resolved}}},
+      {"seed", scene.seed},
+      {"numerics", engine.numerics(scene)},
+      {"R_n", scene.wall.normalized_roughness(scene.particles.d50_m)},
+      {"roughness", scene_roughness(scene)},
+      {"stiffness_level", scene.stiffness_level()},
+      {"inertial_number", scene.shear.inertial_number},
+      {"conventions",
+       {{"signs",
+         "compression positive; u_n > 0 is dilation; tau has the sign of the wall displacement"},
+        {"units", "kPa, mm, s in the contract files; SI inside the engine"}}},
+      {"warnings", scene.warnings},
+      {"stages", nlohmann::json::object()},
+      {"files",
+       nlohmann::json::array()},  // set when they are written: never a file that is not there
+      {"started", io::utc_timestamp()},
+      {"status", "running"}};
 }
 
 // The manifest of an earlier run of the same scene, for --resume; `key` points at the hash of the
 // scene text the engine ran.
-nlohmann::json earlier_manifest(const fs::path& dir, const std::string& sha, const nlohmann::json::json_pointer& key) {
+nlohmann::json earlier_manifest(const fs::path& dir, const std::string& sha,
+                                const nlohmann::json::json_pointer& key) {
   auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
   if (m.value(key, std::string()) != sha)
-    throw InputError(fmt::format("{}: the earlier run used a different scene (sha256 {}); "
-                                 "--resume needs the same scene file", dir.string(),
-                                 m.value(key, std::string("?"))));
+    throw InputError(
+        fmt::format("{}: the earlier run used a different scene (sha256 {}); "
+                    "--resume needs the same scene file",
+                    dir.string(), m.value(key, std::string("?"))));
   return m;
 }
 
@@ -67,8 +78,8 @@ struct Start {
   std::string rebuilt_because;  // empty: nothing is run again
 };
 
-Start where_to_start(const nlohmann::json& m, const std::vector<std::string>& stages, const Engine& engine,
-                     const fs::path& work) {
+Start where_to_start(const nlohmann::json& m, const std::vector<std::string>& stages,
+                     const Engine& engine, const fs::path& work) {
   Start s;
   while (s.stage < stages.size() && is_done(m, stages[s.stage])) ++s.stage;
   if (s.stage == stages.size()) return s;  // nothing left that would start from a restart
@@ -94,12 +105,15 @@ StageResult run_recorded_stage(Engine& engine, const std::string& stage, const S
       record = io::write_checksum_record(ctx.work_dir / restart);
     } else {
       r.ok = false;
-      r.failure = fmt::format("the engine ended the stage without writing {}", (ctx.work_dir / restart).string());
+      r.failure = fmt::format("the engine ended the stage without writing {}",
+                              (ctx.work_dir / restart).string());
     }
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   entry = {{"status", r.ok ? "done" : (r.interrupted ? "interrupted" : "failed")},
-           {"wall_seconds", seconds}, {"facts", r.facts}};
+           {"wall_seconds", seconds},
+           {"facts", r.facts}};
   if (!record.is_null()) entry["restart"] = record;
   return r;
 }
@@ -111,18 +125,20 @@ void coarse_grain_fields(const RunOptions& opt, nlohmann::json& m) {
     coarse_graining::coarse_grain_run(opt.out, {std::nullopt, false, opt.progress});
     m["files"].push_back("fields/fields.pvd");
   } catch (const std::exception& e) {
-    m["warnings"].push_back(fmt::format("coarse-graining failed ({}); `iwb dem fields {}` retries", e.what(), opt.out.string()));
+    m["warnings"].push_back(fmt::format("coarse-graining failed ({}); `iwb dem fields {}` retries",
+                                        e.what(), opt.out.string()));
   }
 }
 
 }  // namespace
 
 std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text, Engine& engine,
-                                   const RunOptions& opt, const nlohmann::json& fresh, RunOutcome& out,
-                                   const std::string& sha_key) {
+                                    const RunOptions& opt, const nlohmann::json& fresh,
+                                    RunOutcome& out, const std::string& sha_key) {
   auto& m = out.manifest;
   const std::string sha = scene_sha256(scene, text);
-  if (opt.resume && !fs::exists(opt.out / "manifest.json"))  // refused before the lock creates anything
+  if (opt.resume &&
+      !fs::exists(opt.out / "manifest.json"))  // refused before the lock creates anything
     throw InputError(fmt::format("{}: nothing to resume (no manifest.json)", opt.out.string()));
   auto lock = io::DirectoryLock::take(opt.out, opt.command_line);
   if (lock.stale() && opt.progress) opt.progress(lock.stale_message());
@@ -130,7 +146,8 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
     m = earlier_manifest(opt.out, sha, nlohmann::json::json_pointer(sha_key));
     if (m.value("status", "") == "complete") {
       out.status = "complete";
-      return StagedRun{StageContext{scene, opt.out, opt.out / engine.name(), opt.processes, opt.interrupt, opt.progress},
+      return StagedRun{StageContext{scene, opt.out, opt.out / engine.name(), opt.processes,
+                                    opt.interrupt, opt.progress},
                        nlohmann::json::object(), std::move(lock), true};
     }
     m["status"] = "running";
@@ -149,20 +166,23 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
   StagedRun run{StageContext{scene, opt.out, work, opt.processes, opt.interrupt, opt.progress},
                 nlohmann::json::object(), std::move(lock)};
   auto& facts = run.facts;
-  for (const auto& [name, stage] : m["stages"].items()) facts[name] = stage.value("facts", nlohmann::json::object());
+  for (const auto& [name, stage] : m["stages"].items())
+    facts[name] = stage.value("facts", nlohmann::json::object());
   const std::vector<std::string> stages = engine.stages();
   const Start start = where_to_start(m, stages, engine, work);
   if (!start.rebuilt_because.empty() && opt.progress)
-    opt.progress(fmt::format("{}: stage {} is run again", start.rebuilt_because, stages[start.stage]));
+    opt.progress(
+        fmt::format("{}: stage {} is run again", start.rebuilt_because, stages[start.stage]));
   for (std::size_t i = start.stage; i < stages.size(); ++i) {
     const std::string& stage = stages[i];
     nlohmann::json& entry = m["stages"][stage];
     const auto here = [&] { return run_recorded_stage(engine, stage, run.ctx, facts, entry); };
     const StageResult r = opt.consolidation_cache.empty() || stage != kConsolidationStage
                               ? here()
-                              : consolidate_through_cache(engine, run.ctx, opt.consolidation_cache, opt.command_line,
-                                                          entry, here);
-    if (i == start.stage && !start.rebuilt_because.empty()) m["stages"][stage]["rebuilt_because"] = start.rebuilt_because;
+                              : consolidate_through_cache(engine, run.ctx, opt.consolidation_cache,
+                                                          opt.command_line, entry, here);
+    if (i == start.stage && !start.rebuilt_because.empty())
+      m["stages"][stage]["rebuilt_because"] = start.rebuilt_because;
     facts[stage] = r.facts;
     if (!r.ok) {
       out.status = r.interrupted ? fmt::format("interrupted at stage {}", stage)
@@ -182,7 +202,8 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
   if (const auto why = engine.unsupported(scene); !why.empty())
     throw InputError(fmt::format("{}: {} (engine {})", scene.source, why, engine.name()));
   RunOutcome out;
-  const auto run = run_stages(scene, text, engine, opt, fresh_manifest(scene, text, engine, opt), out);
+  const auto run =
+      run_stages(scene, text, engine, opt, fresh_manifest(scene, text, engine, opt), out);
   if (!run || run->complete_before) return out;
   auto& m = out.manifest;
   const auto& ctx = run->ctx;
@@ -195,14 +216,16 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
   const Summary summary = summarize(scene, io::read_csv_table(opt.out / "timeseries.csv"),
                                     io::read_csv_table(opt.out / "profiles.csv"));
   io::write_atomically(opt.out / "summary.json", to_json(summary).dump(2) + "\n");
-  m["files"] = {"timeseries.csv", "profiles.csv", "summary.json", "vtk/particles.pvd", "vtk/contacts.pvd", "vtk/walls.pvd"};
+  m["files"] = {"timeseries.csv",    "profiles.csv",     "summary.json",
+                "vtk/particles.pvd", "vtk/contacts.pvd", "vtk/walls.pvd"};
   m["engine_facts"] = tables.facts;
   m["particle_count"] = facts.value("/consolidate/particles"_json_pointer, 0);
   // complete only if the run did what the scene asked; the files stay for a look at why not
   const auto checks = plausibility_checks(asked_by(scene), tables.timeseries);
   m["plausibility"] = to_json(checks);
   for (const auto& w : plausibility_warnings(checks))  // once, though --resume assembles again
-    if (std::find(m["warnings"].begin(), m["warnings"].end(), w) == m["warnings"].end()) m["warnings"].push_back(w);
+    if (std::find(m["warnings"].begin(), m["warnings"].end(), w) == m["warnings"].end())
+      m["warnings"].push_back(w);
   m["finished"] = io::utc_timestamp();
   const auto failure = failure_reason(checks);
   out.status = failure ? "failed: implausible: " + *failure : "complete";
@@ -220,17 +243,21 @@ nlohmann::json resummarize(const fs::path& dir) {
   const auto m = io::read_json_file(manifest);
   const auto status = io::json_field<std::string>(m, "/status", manifest);
   if (status != "complete")
-    throw InputError(fmt::format("{}: run status is '{}'; only complete runs are summarised", manifest.string(), status));
+    throw InputError(fmt::format("{}: run status is '{}'; only complete runs are summarised",
+                                 manifest.string(), status));
   const Scene scene = parse_scene(io::json_field<std::string>(m, "/scene/text", manifest),
                                   io::json_field<std::string>(m, "/scene/source", manifest));
   const auto ts = io::read_csv_table(timeseries);
   for (const char* column : {"u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa"})
-    if (ts.column(column) < 0) throw InputError(fmt::format("{}: no column '{}'", timeseries.string(), column));
-  // never a worse summary over a good one: files that no longer show what the scene asked are refused
+    if (ts.column(column) < 0)
+      throw InputError(fmt::format("{}: no column '{}'", timeseries.string(), column));
+  // never a worse summary over a good one: files that no longer show what the scene asked are
+  // refused
   if (const auto why = failure_reason(plausibility_checks(asked_by(scene), ts)))
     throw InputError(fmt::format("{}: {}; summary.json left as it was", timeseries.string(), *why));
   auto summary = to_json(summarize(scene, ts, io::read_csv_table(dir / "profiles.csv")));
-  const fs::path earlier = dir / "summary.json";  // the coarse-grained checks are not derived here: kept
+  const fs::path earlier =
+      dir / "summary.json";  // the coarse-grained checks are not derived here: kept
   if (fs::exists(earlier)) {
     const auto before = io::read_json_file(earlier);
     if (before.contains("coarse_graining")) summary["coarse_graining"] = before["coarse_graining"];

@@ -50,9 +50,10 @@ struct StagedRun {
   std::optional<io::DirectoryLock> lock;
   bool complete_before = false;
 };
-std::optional<StagedRun> run_stages(const Scene& scene, const std::string& scene_text, Engine& engine,
-                                   const RunOptions& options, const nlohmann::json& fresh, RunOutcome& out,
-                                   const std::string& sha_key = "/scene/sha256");
+std::optional<StagedRun> run_stages(const Scene& scene, const std::string& scene_text,
+                                    Engine& engine, const RunOptions& options,
+                                    const nlohmann::json& fresh, RunOutcome& out,
+                                    const std::string& sha_key = "/scene/sha256");
 
 RunOutcome run_scene(const Scene& scene, const std::string& scene_text, Engine& engine,
                      const RunOptions& options);

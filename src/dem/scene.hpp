@@ -3,8 +3,8 @@
 // test (bottom, sheared in +x) and a loading plate (top, servo-controlled or held), periodic in x
 // and y. Read from TOML (schema: data/scenes/README.md), SI inside, validated before any engine
 // starts: every error names the file, the key and the value.
-#include <nlohmann/json.hpp>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -56,7 +56,7 @@ struct Boundary {
 };
 
 struct Shear {
-  double velocity_m_s = 0.0;  // wall velocity (given, or from the inertial number)
+  double velocity_m_s = 0.0;     // wall velocity (given, or from the inertial number)
   double inertial_number = 0.0;  // target I = gamma_dot d50 sqrt(rho/sigma_n), gamma_dot ~ v/H
   double displacement_m = 0.0;   // monotonic: total displacement
   double amplitude_m = 0.0;      // cyclic: 0 -> +A -> -A -> 0, `cycles` times
@@ -85,10 +85,10 @@ struct Shear {
 };
 
 struct Consolidation {
-  double friction;          // particle friction while consolidating (low: dense)
-  double sigma_tolerance;   // relative
+  double friction;             // particle friction while consolidating (low: dense)
+  double sigma_tolerance;      // relative
   double plate_tolerance_d50;  // plate movement per window, in d50
-  double kinetic_energy_J;  // largest kinetic energy of an accepted window
+  double kinetic_energy_J;     // largest kinetic energy of an accepted window
   int windows_required;
   int max_windows;
   int window_steps;
@@ -159,9 +159,10 @@ struct Scene {
   Outputs outputs;
   CoarseGraining coarse_graining;
   Servo servo;
-  double dt_fraction = 0.15;  // [numerics]: timestep as a fraction of the smallest grain's Rayleigh time
+  double dt_fraction =
+      0.15;  // [numerics]: timestep as a fraction of the smallest grain's Rayleigh time
   Requirements requirements;  // [requirements]: empty when the scene states none
-  nlohmann::json resolved;  // every value after defaults and conversions, for the manifest
+  nlohmann::json resolved;    // every value after defaults and conversions, for the manifest
   std::vector<std::string> warnings;
 
   double area_m2() const { return length_m * width_m; }

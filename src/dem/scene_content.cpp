@@ -1,9 +1,9 @@
 #include "dem/scene_content.hpp"
 
-#include <filesystem>
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <filesystem>
 
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
@@ -38,10 +38,12 @@ json to_json(const toml::node& node) {
 }
 
 std::string shown(const json* value, const char* where) {
-  return value == nullptr ? fmt::format("absent {}", where) : fmt::format("= {} {}", value->dump(), where);
+  return value == nullptr ? fmt::format("absent {}", where)
+                          : fmt::format("= {} {}", value->dump(), where);
 }
 
-void differences(const json* mine, const json* theirs, const std::string& key, std::vector<std::string>& out) {
+void differences(const json* mine, const json* theirs, const std::string& key,
+                 std::vector<std::string>& out) {
   if (mine != nullptr && theirs != nullptr && mine->is_object() && theirs->is_object()) {
     json keys = json::object();  // the union of both key sets, sorted
     for (const auto& [k, v] : mine->items()) keys[k] = true;
@@ -67,7 +69,8 @@ json scene_content(const std::string& text, const std::string& source) {
     auto* t = content.contains(table) && content[table].is_object() ? &content[table] : nullptr;
     if (t == nullptr || !t->contains("file") || !(*t)["file"].is_string()) continue;
     const auto path = std::filesystem::path(source).parent_path() / (*t)["file"].get<std::string>();
-    if (std::filesystem::is_regular_file(path)) (*t)["file"] = "sha256:" + io::sha256_hex(io::read_file(path));
+    if (std::filesystem::is_regular_file(path))
+      (*t)["file"] = "sha256:" + io::sha256_hex(io::read_file(path));
   }
   return content;
 }

@@ -16,7 +16,8 @@ nlohmann::json scene_content(const std::string& text, const std::string& source)
 
 // Each dotted key in which `mine` and `theirs` differ, as "key 'particles.friction' = 0.6 here,
 // = 0.5 there" (or "absent here", "absent there"), in key order; empty when they are equal.
-std::vector<std::string> content_differences(const nlohmann::json& mine, const nlohmann::json& theirs);
+std::vector<std::string> content_differences(const nlohmann::json& mine,
+                                             const nlohmann::json& theirs);
 
 // The differences for a message: the first few joined by "; ", then how many more.
 std::string differences_text(const std::vector<std::string>& differences);

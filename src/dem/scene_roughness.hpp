@@ -8,7 +8,7 @@
 
 namespace iwb::dem {
 
-nlohmann::json scene_roughness(const Scene& scene);       // {"wall": {...}, "plate": {...}}
+nlohmann::json scene_roughness(const Scene& scene);  // {"wall": {...}, "plate": {...}}
 std::string scene_roughness_text(const Scene& scene);
 
 }  // namespace iwb::dem

@@ -26,13 +26,15 @@ struct DumpNames {
 };
 
 struct SnapshotFrame {
-  Eigen::Vector3d shift = Eigen::Vector3d::Zero();  // engine frame + shift = scene frame (z from the wall's base)
-  long step0 = 0;                                    // the start of shear
+  Eigen::Vector3d shift =
+      Eigen::Vector3d::Zero();  // engine frame + shift = scene frame (z from the wall's base)
+  long step0 = 0;               // the start of shear
   double dt = 0.0;
 };
 
 // Returns the number of snapshots in the series.
-int write_snapshot_series(const Scene& scene, const std::filesystem::path& dumps, const DumpNames& names,
-                          const SnapshotFrame& frame, const std::filesystem::path& vtk_dir);
+int write_snapshot_series(const Scene& scene, const std::filesystem::path& dumps,
+                          const DumpNames& names, const SnapshotFrame& frame,
+                          const std::filesystem::path& vtk_dir);
 
 }  // namespace iwb::dem

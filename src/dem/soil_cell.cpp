@@ -8,8 +8,8 @@
 #include "common/errors.hpp"
 #include "dem/engines.hpp"
 #include "dem/liggghts/liggghts_engine.hpp"
-#include "dem/yade/yade_engine.hpp"
 #include "dem/summary.hpp"
+#include "dem/yade/yade_engine.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_override.hpp"
 #include "io/toml_reader.hpp"
@@ -35,9 +35,12 @@ bool oedometer(const SoilCellSpec& c) {
 
 double preparation_friction(SoilDensity d, const Scene& scene) {
   switch (d) {
-    case SoilDensity::kDense: return kDenseConsolidationFriction;
-    case SoilDensity::kLoose: return kLooseConsolidationFriction;
-    case SoilDensity::kAsScene: return scene.consolidation.friction;
+    case SoilDensity::kDense:
+      return kDenseConsolidationFriction;
+    case SoilDensity::kLoose:
+      return kLooseConsolidationFriction;
+    case SoilDensity::kAsScene:
+      return scene.consolidation.friction;
   }
   return scene.consolidation.friction;
 }
@@ -100,8 +103,8 @@ TemplateValues liggghts_oedometer(const Scene& cell, const SoilCellSpec& c) {
   // a gain chosen at the first level (the consolidation's) fell 6 % short of 160 kPa on the smoke
   // cell. The low levels' faster loop may chatter; their rows average over half a window.
   const double top_Pa = *std::max_element(levels.begin(), levels.end()) * 1e3;
-  const double kp = std::max(cell.servo.kp, default_consolidation_servo_gain(
-                                                servo_loop_number(cell.particles.youngs_modulus_Pa, top_Pa)));
+  const double kp = std::max(cell.servo.kp, default_consolidation_servo_gain(servo_loop_number(
+                                                cell.particles.youngs_modulus_Pa, top_Pa)));
   return {{"oedometer_levels", program},
           {"servo_kp_oedometer", fmt::format("{:g}", kp)},
           {"ramp_steps", std::to_string(steps)},
@@ -255,9 +258,12 @@ SoilDensity parse_soil_density(const std::string& text, const std::string& where
 
 const char* to_string(SoilDensity d) {
   switch (d) {
-    case SoilDensity::kDense: return "dense";
-    case SoilDensity::kLoose: return "loose";
-    case SoilDensity::kAsScene: return "as-scene";
+    case SoilDensity::kDense:
+      return "dense";
+    case SoilDensity::kLoose:
+      return "loose";
+    case SoilDensity::kAsScene:
+      return "as-scene";
   }
   return "?";
 }
@@ -344,7 +350,8 @@ RunOutcome run_soil_test(const std::string& text, const std::string& source, con
       m["cell_summary"] = summary;
       m["engine_facts"] = tables.facts;
       m["gamma_reached"] = t.control.back();
-      m["files"] = {"timeseries.csv", "profiles.csv", "vtk/particles.pvd", "vtk/contacts.pvd", "vtk/walls.pvd"};
+      m["files"] = {"timeseries.csv", "profiles.csv", "vtk/particles.pvd", "vtk/contacts.pvd",
+                    "vtk/walls.pvd"};
     }
     t.name = opt.out.string();
     t.source = "dem:" + engine.name();

@@ -1,7 +1,8 @@
 #include "dem/stage_follower.hpp"
 
-#include <chrono>
 #include <fmt/core.h>
+
+#include <chrono>
 #include <fstream>
 #include <sstream>
 
@@ -47,19 +48,23 @@ struct Follower {
     }
     if (w[0] == "IWB_PARTICLES" && w.size() >= 4) particles(std::stol(w[1]), std::stol(w[3]));
     if (w[0] == "IWB_APPROACH" && w.size() >= 4 && ctx.progress)
-      ctx.progress(fmt::format("consolidating: the plate approaches the grains, window {}, sigma {:.2f} kPa", w[1],
-                               std::stod(w[3]) / 1e3));
+      ctx.progress(
+          fmt::format("consolidating: the plate approaches the grains, window {}, sigma {:.2f} kPa",
+                      w[1], std::stod(w[3]) / 1e3));
     if (w[0] == "IWB_WINDOW" && w.size() >= 10 && ctx.progress)
-      ctx.progress(fmt::format("consolidating: window {}, sigma {:.1f} kPa, {} of {} windows accepted",
-                               w[1], std::stod(w[3]) / 1e3, w[9], ctx.scene.consolidation.windows_required));
+      ctx.progress(
+          fmt::format("consolidating: window {}, sigma {:.1f} kPa, {} of {} windows accepted", w[1],
+                      std::stod(w[3]) / 1e3, w[9], ctx.scene.consolidation.windows_required));
     if (w[0] == "IWB_SHEAR_START" && w.size() >= 5) {
       result.facts["step0"] = std::stol(w[2]);
       result.facts["z0_m"] = std::stod(w[4]);
     }
-    if (w[0] == "IWB_PROGRESS" && w.size() >= 3 && ctx.progress) progress(std::stod(w[1]), std::stod(w[2]));
+    if (w[0] == "IWB_PROGRESS" && w.size() >= 3 && ctx.progress)
+      progress(std::stod(w[1]), std::stod(w[2]));
     if (w[0] == "IWB_FACT" && w.size() >= 3) result.facts[w[1]] = std::stod(w[2]);
     if (w[0] == "IWB_ROW" && w.size() >= 3) row(w);
-    if (w[0] == "IWB_LEVEL" && w.size() >= 4 && ctx.progress) level(std::stol(w[1]), std::stol(w[2]), std::stod(w[3]));
+    if (w[0] == "IWB_LEVEL" && w.size() >= 4 && ctx.progress)
+      level(std::stol(w[1]), std::stol(w[2]), std::stod(w[3]));
     if (w[0] == "IWB_STAGE_DONE" && w.size() >= 2) {
       if (w.size() >= 6 && w[1] == "consolidate") {
         result.facts["zplate_m"] = std::stod(w[3]);
@@ -77,9 +82,10 @@ struct Follower {
       // The region is sized for a loose solid fraction (dem/numerics.cpp) with every grain wholly
       // inside it, so a narrow or short box, whose margins of one grain weigh more, fills it
       // nearly to jamming: seen with the truth halved to 12 x 4 x 10 d50 (639 of 640).
-      result.failure = fmt::format("particle count short: {} of {} inserted (random insertion jammed in "
-                                   "its region; fewer specimen.particles, or a wider or longer box)",
-                                   got, want);
+      result.failure = fmt::format(
+          "particle count short: {} of {} inserted (random insertion jammed in "
+          "its region; fewer specimen.particles, or a wider or longer box)",
+          got, want);
   }
 
   // "IWB_ROW table v1 v2 ...": a row of numbers the stage measured (a soil cell's states), kept
@@ -93,14 +99,16 @@ struct Follower {
   // A soil cell's stress level (oedometer): level i of n, its target stress.
   void level(long i, long n, double sigma_Pa) {
     const double f = double(i - 1) / double(n);
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double t =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ctx.progress(fmt::format("oedometer: level {} of {}, sigma_v -> {:.1f} kPa, ETA {:.0f} s", i, n,
                              sigma_Pa / 1e3, f > 0.01 ? t * (1 - f) / f : 0.0));
   }
 
   void progress(double u, double total) {
     const double f = u / total;
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double t =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ctx.progress(fmt::format("shearing: u_x {:.2f} of {:.2f} mm ({:.0f} %), ETA {:.0f} s", u * 1e3,
                              total * 1e3, 100 * f, f > 0.01 ? t * (1 - f) / f : 0.0));
   }
@@ -111,12 +119,13 @@ struct Follower {
 StageResult run_followed_stage(const std::vector<std::string>& command, const std::string& stage,
                                const StageContext& ctx, const ExtraLineReader& extra) {
   Follower f{ctx, extra, std::ofstream(ctx.work_dir / (stage + ".out")), {}, stage, false, {}};
-  const ProcessResult p = run_process(command, ctx.work_dir,
-                                      [&f](const std::string& l) {
-                                        const bool go_on = f.line(l);
-                                        return go_on && f.result.failure.rfind("particle count short", 0) != 0;
-                                      },
-                                      ctx.interrupt);
+  const ProcessResult p = run_process(
+      command, ctx.work_dir,
+      [&f](const std::string& l) {
+        const bool go_on = f.line(l);
+        return go_on && f.result.failure.rfind("particle count short", 0) != 0;
+      },
+      ctx.interrupt);
   StageResult r = f.result;
   r.facts["engine_loop_seconds"] = f.cost.loop_seconds;
   r.facts["particle_steps"] = f.cost.particle_steps;
@@ -129,7 +138,8 @@ StageResult run_followed_stage(const std::vector<std::string>& command, const st
                     : fmt::format("engine stopped before the end of stage {}", stage);
   }
   r.ok = r.failure.empty() && !r.interrupted;
-  if (!r.ok && !r.interrupted) r.failure += fmt::format(" [log: {}]", (ctx.work_dir / (stage + ".out")).string());
+  if (!r.ok && !r.interrupted)
+    r.failure += fmt::format(" [log: {}]", (ctx.work_dir / (stage + ".out")).string());
   return r;
 }
 

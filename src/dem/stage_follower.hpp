@@ -18,7 +18,8 @@ struct EngineCost {
 };
 
 // Reads an engine-specific line (e.g. LIGGGHTS's "Loop time of ..."); may add to the cost.
-using ExtraLineReader = std::function<void(const std::vector<std::string>& words, EngineCost& cost)>;
+using ExtraLineReader =
+    std::function<void(const std::vector<std::string>& words, EngineCost& cost)>;
 
 StageResult run_followed_stage(const std::vector<std::string>& command, const std::string& stage,
                                const StageContext& ctx, const ExtraLineReader& extra = {});

@@ -8,9 +8,9 @@ namespace iwb::dem {
 
 namespace {
 
-constexpr double kLastFraction = 0.2;            // "residual" window: the last fifth of u_x
-constexpr double kFirstLayerD50 = 1.0;           // the first grain layer above the wall surface
-constexpr double kDistributedR2 = 0.95;          // a linear velocity profile this good: no band
+constexpr double kLastFraction = 0.2;    // "residual" window: the last fifth of u_x
+constexpr double kFirstLayerD50 = 1.0;   // the first grain layer above the wall surface
+constexpr double kDistributedR2 = 0.95;  // a linear velocity profile this good: no band
 constexpr double kDefaultBandD50 = 10.0;
 // Bin heights are read to 1e-6 d50 (rounded as round(z 1e6) / 1e6, which lands on the decimal
 // value itself): the profile's bins sit on a grid of bin centres, and the middle third's bounds
@@ -18,7 +18,7 @@ constexpr double kDefaultBandD50 = 10.0;
 // in memory and 14 in the 10-digit profiles.csv would take a bin in or out and move the far-field
 // median (by 0.02 of v_wall, the band by 0.5 d50, in a truth run at R_n 0.1).
 constexpr double kHeightStepsPerD50 = 1e6;
-constexpr double kLocalisedFarField = 0.25;      // far field below this: the wall takes >= 75 %
+constexpr double kLocalisedFarField = 0.25;  // far field below this: the wall takes >= 75 %
 
 struct Fit {
   double slope, intercept, r2;
@@ -47,7 +47,8 @@ double erfc_width(const std::vector<double>& z, const std::vector<double>& r, do
     double bz = 0, bw = 0;
     for (int i = 0; i <= 40; ++i)
       for (int j = 0; j <= 40; ++j) {
-        const double zc = zc_lo + (zc_hi - zc_lo) * i / 40.0, w = w_lo * std::pow(w_hi / w_lo, j / 40.0);
+        const double zc = zc_lo + (zc_hi - zc_lo) * i / 40.0,
+                     w = w_lo * std::pow(w_hi / w_lo, j / 40.0);
         double sse = 0;
         for (std::size_t k = 0; k < z.size(); ++k) {
           const double d = 0.5 * std::erfc((z[k] - zc) / w) - r[k];
@@ -71,8 +72,10 @@ void shear_band(const io::CsvTable& profiles, Summary& s) {
   const double last = *std::max_element(window.begin(), window.end());
   std::vector<double> z, v, porosity;
   for (const auto& row : profiles.rows)
-    if (row[profiles.column("u_x_mm_window")] == last && row[profiles.column("z_over_d50")] >= 0.0) {
-      z.push_back(std::round(row[profiles.column("z_over_d50")] * kHeightStepsPerD50) / kHeightStepsPerD50);
+    if (row[profiles.column("u_x_mm_window")] == last &&
+        row[profiles.column("z_over_d50")] >= 0.0) {
+      z.push_back(std::round(row[profiles.column("z_over_d50")] * kHeightStepsPerD50) /
+                  kHeightStepsPerD50);
       v.push_back(row[profiles.column("vx_over_vwall")]);
       porosity.push_back(row[profiles.column("porosity")]);
     }
@@ -108,7 +111,7 @@ void shear_band(const io::CsvTable& profiles, Summary& s) {
   if (lin.r2 > kDistributedR2) {
     s.shear_mode = "distributed shear";
   } else {
-    s.shear_mode = far < kLocalisedFarField       ? "localised at the wall"
+    s.shear_mode = far < kLocalisedFarField         ? "localised at the wall"
                    : far > 1.0 - kLocalisedFarField ? "localised at the plate"
                                                     : "split between wall and plate";
     // the wall band: from the wall until r is within 10 % of its drop from the far field (only
@@ -126,11 +129,13 @@ void shear_band(const io::CsvTable& profiles, Summary& s) {
         if (far > kLocalisedFarField) s.plate_band_d50 = height - z[i];
         break;
       }
-    if (far < kLocalisedFarField && !std::isnan(z90) && !std::isnan(z10)) s.band_thickness_d50 = z10 - z90;
+    if (far < kLocalisedFarField && !std::isnan(z90) && !std::isnan(z10))
+      s.band_thickness_d50 = z10 - z90;
     std::vector<double> zl, ql;  // the wall band normalised to [0, 1], lower half of the specimen
     for (std::size_t i = 0; i < z.size(); ++i)
       if (z[i] <= 0.5 * height) zl.push_back(z[i]), ql.push_back((r[i] - far) / (1.0 - far));
-    if (zl.size() >= 4 && far < 1.0 - kLocalisedFarField) s.band_thickness_erf_d50 = erfc_width(zl, ql, 0.5 * height);
+    if (zl.size() >= 4 && far < 1.0 - kLocalisedFarField)
+      s.band_thickness_erf_d50 = erfc_width(zl, ql, 0.5 * height);
   }
   double n = 0;
   int count = 0;
@@ -161,10 +166,15 @@ Summary summarize(const Scene& scene, const io::CsvTable& ts, const io::CsvTable
   const double u_end = travel.back(), u_from = (1.0 - kLastFraction) * u_end;
   std::vector<double> xs, fs, ns;
   for (std::size_t i = 0; i < ux.size(); ++i)
-    if (travel[i] >= u_from) xs.push_back(travel[i]), fs.push_back(friction[i]), ns.push_back(un[i]);
+    if (travel[i] >= u_from)
+      xs.push_back(travel[i]), fs.push_back(friction[i]), ns.push_back(un[i]);
   if (scene.shear.cyclic()) {
     // the wall moves at v throughout (no ramp with cycles): its travel is v t
-    cycles::Path path{cycles::travel_at_speed(ts.values("t_s"), scene.shear.velocity_m_s * 1e3), ux, un, sigma, tau,
+    cycles::Path path{cycles::travel_at_speed(ts.values("t_s"), scene.shear.velocity_m_s * 1e3),
+                      ux,
+                      un,
+                      sigma,
+                      tau,
                       ts.column("e_band") >= 0 ? ts.values("e_band") : std::vector<double>{}};
     s.cyclic = cycles::cyclic_quantities(
         path, {scene.shear.amplitude_m * 1e3, scene.shear.cycles, scene.shear.post_cyclic_m * 1e3});
@@ -177,39 +187,47 @@ Summary summarize(const Scene& scene, const io::CsvTable& ts, const io::CsvTable
   s.dilatancy_angle_deg = std::atan(linear_fit(xs, ns).slope) * 180.0 / M_PI;
   const double target = scene.boundary.sigma_n_Pa / 1e3;
   s.sigma_n_mean_kPa = std::accumulate(sigma.begin(), sigma.end(), 0.0) / double(sigma.size());
-  for (double x : sigma) s.sigma_n_max_deviation = std::max(s.sigma_n_max_deviation, std::abs(x / target - 1.0));
+  for (double x : sigma)
+    s.sigma_n_max_deviation = std::max(s.sigma_n_max_deviation, std::abs(x / target - 1.0));
   shear_band(profiles, s);
   return s;
 }
 
 nlohmann::json to_json(const Summary& s) {
-  auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
-  return {{"peak_friction", s.peak_friction},
-          {"u_x_at_peak_mm", s.u_x_at_peak_mm},
-          {"residual_friction", s.residual_friction},
-          {"residual_drift_over_last_fifth", s.residual_drift},
-          {"residual_is", s.steady ? "steady" : "not steady"},
-          {"dilation_mm", s.dilation_mm},
-          {"dilatancy_angle_deg", s.dilatancy_angle_deg},
-          {"sigma_n_mean_kPa", s.sigma_n_mean_kPa},
-          {"sigma_n_max_relative_deviation", s.sigma_n_max_deviation},
-          {"shear_mode", s.shear_mode},
-          {"far_field_speed", s.far_field_speed},
-          {"wall_share_of_velocity_drop", s.wall_share},
-          {"wall_band_d50", opt(s.wall_band_d50)},
-          {"plate_band_d50", opt(s.plate_band_d50)},
-          {"band_thickness_d50", opt(s.band_thickness_d50)},
-          {"band_thickness_erfc_fit_d50", opt(s.band_thickness_erf_d50)},
-          {"wall_slip", s.wall_slip},
-          {"e_band", opt(s.e_band)},
-          {"cyclic", s.cyclic ? cycles::to_json(*s.cyclic) : nlohmann::json(nullptr)},
-          {"definitions", {{"friction", "tau/sigma_n, both on the tested wall"},
-                           {"residual", "mean of the last fifth of u_x; 'not steady' if it drifts by more than 0.02"},
-                           {"far_field_speed", "median vx over the middle third of the specimen, relative to the first grain layer"},
-                           {"wall_band", "from the wall until vx is within 10 % of its drop to the far field"},
-                           {"plate_band", "from the top of the specimen down until vx reaches 90 % of the far field"},
-                           {"band", "where vx falls from 0.9 to 0.1 of the first grain layer's speed; only when the far field is at rest (< 0.25); 'distributed shear' when the profile is linear (R^2 > 0.95)"},
-                           {"e_band", "porosity of the band (or the lowest 10 d50) as void ratio"}}}};
+  auto opt = [](const std::optional<double>& v) {
+    return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+  };
+  return {
+      {"peak_friction", s.peak_friction},
+      {"u_x_at_peak_mm", s.u_x_at_peak_mm},
+      {"residual_friction", s.residual_friction},
+      {"residual_drift_over_last_fifth", s.residual_drift},
+      {"residual_is", s.steady ? "steady" : "not steady"},
+      {"dilation_mm", s.dilation_mm},
+      {"dilatancy_angle_deg", s.dilatancy_angle_deg},
+      {"sigma_n_mean_kPa", s.sigma_n_mean_kPa},
+      {"sigma_n_max_relative_deviation", s.sigma_n_max_deviation},
+      {"shear_mode", s.shear_mode},
+      {"far_field_speed", s.far_field_speed},
+      {"wall_share_of_velocity_drop", s.wall_share},
+      {"wall_band_d50", opt(s.wall_band_d50)},
+      {"plate_band_d50", opt(s.plate_band_d50)},
+      {"band_thickness_d50", opt(s.band_thickness_d50)},
+      {"band_thickness_erfc_fit_d50", opt(s.band_thickness_erf_d50)},
+      {"wall_slip", s.wall_slip},
+      {"e_band", opt(s.e_band)},
+      {"cyclic", s.cyclic ? cycles::to_json(*s.cyclic) : nlohmann::json(nullptr)},
+      {"definitions",
+       {{"friction", "tau/sigma_n, both on the tested wall"},
+        {"residual", "mean of the last fifth of u_x; 'not steady' if it drifts by more than 0.02"},
+        {"far_field_speed",
+         "median vx over the middle third of the specimen, relative to the first grain layer"},
+        {"wall_band", "from the wall until vx is within 10 % of its drop to the far field"},
+        {"plate_band", "from the top of the specimen down until vx reaches 90 % of the far field"},
+        {"band",
+         "where vx falls from 0.9 to 0.1 of the first grain layer's speed; only when the far field "
+         "is at rest (< 0.25); 'distributed shear' when the profile is linear (R^2 > 0.95)"},
+        {"e_band", "porosity of the band (or the lowest 10 d50) as void ratio"}}}};
 }
 
 }  // namespace iwb::dem

@@ -13,27 +13,27 @@
 namespace iwb::dem {
 
 struct Summary {
-  double peak_friction = 0.0;         // max tau/sigma_n (sigma_n on the tested wall)
+  double peak_friction = 0.0;  // max tau/sigma_n (sigma_n on the tested wall)
   double u_x_at_peak_mm = 0.0;
-  double residual_friction = 0.0;     // mean over the last fifth of the displacement
-  double residual_drift = 0.0;        // change of tau/sigma_n over that window (linear fit)
-  bool steady = false;                // |drift| below kSteadyDrift: only then is it "residual"
-  double dilation_mm = 0.0;           // u_n at the end
-  double dilatancy_angle_deg = 0.0;   // atan(du_n/du_x) over the last fifth
-  double sigma_n_mean_kPa = 0.0;      // during shear, on the wall
-  double sigma_n_max_deviation = 0.0; // max |sigma_n / target - 1| during shear (CNL)
+  double residual_friction = 0.0;      // mean over the last fifth of the displacement
+  double residual_drift = 0.0;         // change of tau/sigma_n over that window (linear fit)
+  bool steady = false;                 // |drift| below kSteadyDrift: only then is it "residual"
+  double dilation_mm = 0.0;            // u_n at the end
+  double dilatancy_angle_deg = 0.0;    // atan(du_n/du_x) over the last fifth
+  double sigma_n_mean_kPa = 0.0;       // during shear, on the wall
+  double sigma_n_max_deviation = 0.0;  // max |sigma_n / target - 1| during shear (CNL)
   // "localised at the wall", "split between wall and plate", "localised at the plate",
   // "distributed shear" or "no profile"
   std::string shear_mode;
-  double far_field_speed = 0.0;       // median vx/v(first layer) over the middle third
-  double wall_share = 0.0;            // share of the velocity drop taken next to the wall
-  std::optional<double> wall_band_d50;           // from the wall to within 10 % of the far field
-  std::optional<double> plate_band_d50;          // from the plate down to within 10 % of it
-  std::optional<double> band_thickness_d50;      // 0.9 -> 0.1 of the first layer's speed, only
-                                                 // when the far field is at rest (DEM.md)
+  double far_field_speed = 0.0;              // median vx/v(first layer) over the middle third
+  double wall_share = 0.0;                   // share of the velocity drop taken next to the wall
+  std::optional<double> wall_band_d50;       // from the wall to within 10 % of the far field
+  std::optional<double> plate_band_d50;      // from the plate down to within 10 % of it
+  std::optional<double> band_thickness_d50;  // 0.9 -> 0.1 of the first layer's speed, only
+                                             // when the far field is at rest (DEM.md)
   std::optional<double> band_thickness_erf_d50;  // erfc fit of the wall band
-  double wall_slip = 0.0;             // 1 - v(first layer)/v(wall)
-  std::optional<double> e_band;       // void ratio in the band (or the lowest 10 d50)
+  double wall_slip = 0.0;                        // 1 - v(first layer)/v(wall)
+  std::optional<double> e_band;                  // void ratio in the band (or the lowest 10 d50)
 
   std::optional<cycles::CyclicQuantities> cyclic;  // cyclic shear only: per cycle, and after them
 };

@@ -1,8 +1,9 @@
 #include "dem/wall_geometry.hpp"
 
+#include <fmt/core.h>
+
 #include <Eigen/Geometry>
 #include <cmath>
-#include <fmt/core.h>
 
 #include "io/run_directory.hpp"
 
@@ -25,7 +26,7 @@ std::vector<std::pair<double, double>> one_pitch(const RoughnessProfile& p) {
       return pts;
     }
     case ProfileKind::kFlat:
-    case ProfileKind::kGlued:  // the mesh is the flat base; the spheres are engine particles
+    case ProfileKind::kGlued:   // the mesh is the flat base; the spheres are engine particles
     case ProfileKind::kRandom:  // areal: meshed from the map
     case ProfileKind::kFile:
       return {{0.0, 0.0}};
@@ -50,12 +51,14 @@ void push_cell(std::vector<Triangle>& out, const Eigen::Vector3d& p00, const Eig
 std::vector<Triangle> areal_surface(const walls::HeightMap& map, double z_base, bool facing_down) {
   const double sign = facing_down ? -1.0 : 1.0;
   auto point = [&](int i, int j) {
-    return Eigen::Vector3d(map.length() * i / map.nx(), map.width() * j / map.ny(), z_base + sign * map.node(i, j));
+    return Eigen::Vector3d(map.length() * i / map.nx(), map.width() * j / map.ny(),
+                           z_base + sign * map.node(i, j));
   };
   std::vector<Triangle> out;
   for (int j = 0; j < map.ny(); ++j)
     for (int i = 0; i < map.nx(); ++i)
-      push_cell(out, point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1), facing_down);
+      push_cell(out, point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1),
+                facing_down);
   return out;
 }
 
@@ -83,7 +86,8 @@ std::vector<Triangle> profile_surface(const RoughnessProfile& profile, double le
   std::vector<Triangle> out;
   for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
     for (int j = 0; j < ny; ++j) {
-      push_cell(out, point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1), facing_down);
+      push_cell(out, point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1),
+                facing_down);
     }
   }
   return out;

@@ -1,8 +1,9 @@
 #include "driver/control.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cctype>
-#include <fmt/core.h>
 
 #include "common/errors.hpp"
 
@@ -31,20 +32,25 @@ std::string BoundaryCondition::describe() const {
 
 const char* to_string(BoundaryKind k) {
   switch (k) {
-    case BoundaryKind::kCNL: return "CNL";
-    case BoundaryKind::kCNS: return "CNS";
-    case BoundaryKind::kCV: return "CV";
+    case BoundaryKind::kCNL:
+      return "CNL";
+    case BoundaryKind::kCNS:
+      return "CNS";
+    case BoundaryKind::kCV:
+      return "CV";
   }
   return "?";
 }
 
 BoundaryKind parse_boundary_kind(const std::string& text, const std::string& where) {
   std::string up = text;
-  std::transform(up.begin(), up.end(), up.begin(), [](unsigned char ch) { return std::toupper(ch); });
+  std::transform(up.begin(), up.end(), up.begin(),
+                 [](unsigned char ch) { return std::toupper(ch); });
   if (up == "CNL") return BoundaryKind::kCNL;
   if (up == "CNS") return BoundaryKind::kCNS;
   if (up == "CV") return BoundaryKind::kCV;
-  throw InputError(fmt::format("{}: '{}' is not a boundary condition; use CNL, CNS or CV", where, text));
+  throw InputError(
+      fmt::format("{}: '{}' is not a boundary condition; use CNL, CNS or CV", where, text));
 }
 
 }  // namespace iwb::driver

@@ -19,8 +19,9 @@ double ShearZone::u_of(double gamma) const {
 }
 
 std::string ShearZone::describe() const {
-  return fmt::format("d_s = {:g} mm, {}", d_s_mm,
-                     measure == ShearStrainMeasure::kLinear ? "gamma = u/d_s" : "tan(gamma) = u/d_s");
+  return fmt::format(
+      "d_s = {:g} mm, {}", d_s_mm,
+      measure == ShearStrainMeasure::kLinear ? "gamma = u/d_s" : "tan(gamma) = u/d_s");
 }
 
 namespace {
@@ -68,8 +69,7 @@ struct Walker {
   void segment(int index, const PathSegment& seg) {
     const double gx = seg.gamma_x / seg.increments, gy = seg.gamma_y / seg.increments;
     const HistoryRow at_start = current;
-    const bool continues =
-        aimed && aimed->first.a == seg.row.a && aimed->first.b == seg.row.b;
+    const bool continues = aimed && aimed->first.a == seg.row.a && aimed->first.b == seg.row.b;
     const double row_start = continues ? aimed->second : row_value(seg.row, at_start);
     aimed = {seg.row, row_start + seg.increments * seg.row.c};
     double last = 0.0;
@@ -81,7 +81,8 @@ struct Walker {
       NormalControlRow row = seg.row;
       row.c = row_start + (k + 1) * seg.row.c - row_value(seg.row, current);
       IncrementRequest rq{gx, gy, row, guess(row, gx, gy, k, last)};
-      for (std::size_t i = 0; i < rq.external.size(); ++i) rq.external[i] = seg.external[i] / seg.increments;
+      for (std::size_t i = 0; i < rq.external.size(); ++i)
+        rq.external[i] = seg.external[i] / seg.increments;
       IncrementSolution sol;
       try {
         sol = solve_increment(model, current.state, rq, set.integrator, set.mixed, first_step);
@@ -116,7 +117,8 @@ struct Walker {
     c.tau_max_kPa = std::max(c.tau_max_kPa, tau);
     c.tau_min_kPa = std::min(c.tau_min_kPa, tau);
     if (segment_end && seg.ends_at_reversal)
-      (seg.gamma_x + seg.gamma_y > 0.0 ? c.sigma_n_at_plus_kPa : c.sigma_n_at_minus_kPa) = st.sigma_n;
+      (seg.gamma_x + seg.gamma_y > 0.0 ? c.sigma_n_at_plus_kPa : c.sigma_n_at_minus_kPa) =
+          st.sigma_n;
     c.eps_n_end = current.eps_n;
     c.sigma_n_end_kPa = st.sigma_n;
     c.e_end = model.void_ratio(current.state);
@@ -143,14 +145,18 @@ struct Walker {
 }  // namespace
 
 void check_path(const models::Model& model, const Path& path) {
-  static const char* const kExternalNames[models::kExternalSlots] = {"temperature", "suction", "time"};
+  static const char* const kExternalNames[models::kExternalSlots] = {"temperature", "suction",
+                                                                     "time"};
   for (const auto& seg : path) {
     if ((seg.gamma_y != 0.0) && !model.has_second_shear_direction())
-      throw InputError(fmt::format("model {} has one shear direction; use direction = \"x\"", model.name()));
+      throw InputError(
+          fmt::format("model {} has one shear direction; use direction = \"x\"", model.name()));
     for (int i = 0; i < models::kExternalSlots; ++i)
       if (seg.external[std::size_t(i)] != 0.0 && !model.reads_external(models::External(i)))
-        throw InputError(fmt::format("stage '{}' changes the {}, which model {} does not read (`iwb models {}` "
-                                     "lists what it reads)", seg.label, kExternalNames[i], model.name(), model.name()));
+        throw InputError(
+            fmt::format("stage '{}' changes the {}, which model {} does not read (`iwb models {}` "
+                        "lists what it reads)",
+                        seg.label, kExternalNames[i], model.name(), model.name()));
   }
 }
 

@@ -32,7 +32,7 @@ struct ShearZone {
 
 struct HistoryRow {
   long increment = 0;
-  int segment = -1;  // -1: the initial state
+  int segment = -1;                                  // -1: the initial state
   double gamma_x = 0.0, gamma_y = 0.0, eps_n = 0.0;  // accumulated
   models::StateVector state;
   int newton_iterations = 0;
@@ -54,10 +54,10 @@ struct RunSettings {
 // from the start of the test.
 struct CycleSummary {
   int cycle = 0;
-  double tau_max_kPa = -INFINITY;            // largest tau in the cycle (peak towards +A)
-  double tau_min_kPa = INFINITY;             // smallest tau (peak towards -A)
-  double sigma_n_at_plus_kPa = NAN;          // at the reversal at +A
-  double sigma_n_at_minus_kPa = NAN;         // at the reversal at -A
+  double tau_max_kPa = -INFINITY;             // largest tau in the cycle (peak towards +A)
+  double tau_min_kPa = INFINITY;              // smallest tau (peak towards -A)
+  double sigma_n_at_plus_kPa = NAN;           // at the reversal at +A
+  double sigma_n_at_minus_kPa = NAN;          // at the reversal at -A
   double eps_n_start = NAN, eps_n_end = NAN;  // normal strain (opening positive)
   double sigma_n_end_kPa = NAN;
   double e_end = NAN;
@@ -67,7 +67,7 @@ struct CycleSummary {
 struct ElementTestResult {
   std::vector<HistoryRow> rows;
   std::vector<CycleSummary> cycles;  // empty for paths without cycles
-  std::string status = "complete";  // "complete", "failed: ...", "interrupted at ..."
+  std::string status = "complete";   // "complete", "failed: ...", "interrupted at ..."
   integration::IntegrationCounters counters;
   long increments = 0;
   long newton_iterations = 0;

@@ -1,9 +1,10 @@
 #include "driver/mixed_control.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <fmt/core.h>
 
 #include "common/errors.hpp"
 
@@ -71,7 +72,8 @@ IncrementSolution newton(const models::Model& m, const StateVector& committed,
     // A new step sequence makes the residual a slightly different function of x.
     const bool new_plan = !plan.replay;
     try {
-      trial = integration::integrate_increment<Dual>(m, start, d, is, out.counters, first_step, &plan);
+      trial =
+          integration::integrate_increment<Dual>(m, start, d, is, out.counters, first_step, &plan);
     } catch (const DomainError& e) {
       last_domain_error = e.what();
       // A replayed plan cannot cut back: let the adaptive scheme choose new substeps at this x.
@@ -99,16 +101,20 @@ IncrementSolution newton(const models::Model& m, const StateVector& committed,
       continue;
     }
     if (!std::isfinite(slope))
-      throw ConvergenceError(fmt::format("mixed control: the normal row's derivative is not finite "
-                                         "at eps_n = {:g} (the model's rate is not differentiable "
-                                         "at this state, e.g. e at e_d)", x));
+      throw ConvergenceError(
+          fmt::format("mixed control: the normal row's derivative is not finite "
+                      "at eps_n = {:g} (the model's rate is not differentiable "
+                      "at this state, e.g. e at e_d)",
+                      x));
     if (!(std::abs(slope) > 0.0))
-      throw ConvergenceError(fmt::format("mixed control: normal row has slope 0 at eps_n = {:g}", x));
+      throw ConvergenceError(
+          fmt::format("mixed control: normal row has slope 0 at eps_n = {:g}", x));
     x = newton_step;
   }
-  const std::string msg = fmt::format("mixed control: Newton did not reach {:g} in {} iterations "
-                                      "(last residual {:.3g})", ms.tolerance, ms.max_iterations,
-                                      out.residuals.empty() ? INFINITY : out.residuals.back());
+  const std::string msg = fmt::format(
+      "mixed control: Newton did not reach {:g} in {} iterations "
+      "(last residual {:.3g})",
+      ms.tolerance, ms.max_iterations, out.residuals.empty() ? INFINITY : out.residuals.back());
   // Iterates that left the domain mean the root lies at its edge: that is the cause to report.
   if (!last_domain_error.empty())
     throw DomainError(fmt::format("{}; iterates left the domain: {}", msg, last_domain_error));
@@ -122,12 +128,15 @@ void check_closed_form_root(const NormalControlRow& row, double x, const StateVe
   const double d_sigma = models::normal_stress(rate);
   const double residual = row.a * d_sigma + row.b * x - row.c;
   // Measured against the whole stress rate: under CNL the normal row's own terms are all ~0.
-  const double scale = std::abs(row.a) * rate.cwiseAbs().maxCoeff() + std::abs(row.b * x) + std::abs(row.c);
+  const double scale =
+      std::abs(row.a) * rate.cwiseAbs().maxCoeff() + std::abs(row.b * x) + std::abs(row.c);
   if (!(std::abs(residual) <= kClosedFormRootTolerance * std::max(scale, 1e-300)))
     throw ConvergenceError(fmt::format(
-        "mixed control: the closed form (appendix C) root misses the normal row by {:.3g} relative; "
+        "mixed control: the closed form (appendix C) root misses the normal row by {:.3g} "
+        "relative; "
         "the model's rate is not of the form L:D + N||D|| (e.g. intergranular strain): use "
-        "mixed_control = \"newton\"", std::abs(residual) / std::max(scale, 1e-300)));
+        "mixed_control = \"newton\"",
+        std::abs(residual) / std::max(scale, 1e-300)));
 }
 
 // Row of appendix C: per explicit Euler substep, the closed form gives x.
@@ -138,7 +147,8 @@ IncrementSolution closed_form(const models::Model& m, const StateVector& committ
   const NormalControlRow sub{rq.row.a, rq.row.b, rq.row.c / n};
   StateVector y = committed;
   for (int k = 0; k < substeps; ++k) {
-    const double x = closed_form_normal_strain(m, y, rq.gamma_x / n, rq.gamma_y / n, sub, out.counters);
+    const double x =
+        closed_form_normal_strain(m, y, rq.gamma_x / n, rq.gamma_y / n, sub, out.counters);
     StateVector r;
     m.rate(y, {x, rq.gamma_x / n, rq.gamma_y / n}, r);
     ++out.counters.rate_evaluations;
@@ -156,8 +166,8 @@ IncrementSolution closed_form(const models::Model& m, const StateVector& committ
 
 }  // namespace
 
-double closed_form_normal_strain(const models::Model& m, const StateVector& y, double gx,
-                                 double gy, const NormalControlRow& row,
+double closed_form_normal_strain(const models::Model& m, const StateVector& y, double gx, double gy,
+                                 const NormalControlRow& row,
                                  integration::IntegrationCounters& counters) {
   if (row.a == 0.0) return row.c / row.b;
   auto sigma_rate = [&](double en, double sx, double sy) {
@@ -197,10 +207,12 @@ double closed_form_normal_strain(const models::Model& m, const StateVector& y, d
   double best = 0.0, best_res = INFINITY;
   for (double x : roots)
     if (std::abs(unsquared(x)) < best_res) best = x, best_res = std::abs(unsquared(x));
-  const double scale = std::abs(A * best) + std::abs(B) + std::abs(Q) * std::hypot(best * nu_e, nu_s);
+  const double scale =
+      std::abs(A * best) + std::abs(B) + std::abs(Q) * std::hypot(best * nu_e, nu_s);
   if (!(best_res <= 1e-8 * std::max(scale, 1e-300)))
-    throw ConvergenceError("mixed control: no root of the closed form (appendix C) satisfies the "
-                           "unsquared normal row");
+    throw ConvergenceError(
+        "mixed control: no root of the closed form (appendix C) satisfies the "
+        "unsquared normal row");
   return best;
 }
 
@@ -214,14 +226,17 @@ IncrementSolution solve_increment(const models::Model& m, const StateVector& com
     // appendix C reads L and N off rate evaluations in D alone: a temperature or suction rate
     // adds terms it does not know
     if (rq.has_external())
-      throw InputError("mixed_control = \"closed-form\" (appendix C) covers strain paths only; this path changes "
-                       "temperature or suction: use mixed_control = \"newton\"");
+      throw InputError(
+          "mixed_control = \"closed-form\" (appendix C) covers strain paths only; this path "
+          "changes "
+          "temperature or suction: use mixed_control = \"newton\"");
     return closed_form(m, committed, rq, is.substeps);
   }
   if (rq.row.a == 0.0) {  // normal strain prescribed: no unknown, plain integration
     IncrementSolution out;
     out.eps_n = rq.row.c / rq.row.b;
-    out.state = integration::integrate_increment<double>(m, committed, rq.strain(out.eps_n), is, out.counters, first_step);
+    out.state = integration::integrate_increment<double>(m, committed, rq.strain(out.eps_n), is,
+                                                         out.counters, first_step);
     return out;
   }
   return newton(m, committed, rq, is, ms, first_step);

@@ -36,7 +36,8 @@ struct IncrementRequest {
   template <class S>
   models::InterfaceStrainT<S> strain(const S& eps_n) const {
     models::InterfaceStrainT<S> d{eps_n, S(gamma_x), S(gamma_y)};
-    for (int i = 0; i < models::kExternalSlots; ++i) d.external[std::size_t(i)] = S(external[std::size_t(i)]);
+    for (int i = 0; i < models::kExternalSlots; ++i)
+      d.external[std::size_t(i)] = S(external[std::size_t(i)]);
     return d;
   }
 };

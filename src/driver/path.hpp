@@ -46,8 +46,8 @@ Path cyclic_path(const BoundaryCondition& bc, double amplitude, int cycles, Shea
 // The same under CNL from sigma_n0 with the normal stress staged between cycles: before each
 // stage's cycle, a ramp of `step_increments` pure normal-stress increments at zero shear.
 Path staged_cyclic_path(double sigma_n0, double amplitude, int cycles,
-                        const std::vector<CyclicStage>& stages, ShearDirection dir,
-                        int per_quarter, int step_increments);
+                        const std::vector<CyclicStage>& stages, ShearDirection dir, int per_quarter,
+                        int step_increments);
 // CNL shear to `gamma` with sigma_n stepped to new values at given strains; each step is a
 // ramp of `step_increments` pure normal-stress increments at fixed shear.
 Path staged_path(double sigma_n0, double gamma, const std::vector<StagedStep>& steps,
@@ -78,7 +78,8 @@ struct Stage {
 };
 
 // The segments of `stages`. A stage that cycles an external variable becomes 4 x cycles segments
-// of increments / (4 x cycles) each (InputError unless that divides); one that does not becomes one.
+// of increments / (4 x cycles) each (InputError unless that divides); one that does not becomes
+// one.
 Path stage_path(const std::vector<Stage>& stages, ShearDirection dir);
 
 }  // namespace iwb::driver

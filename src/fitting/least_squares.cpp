@@ -175,9 +175,9 @@ LeastSquaresResult fit_least_squares(const LeastSquaresProblem& problem,
   if (settings.polish_iterations > 0) {
     const auto lm = polish(problem, settings.polish_iterations, out.x, out.evaluations);
     out.converged = lm.converged;
-    out.stop_reason += fmt::format(", then Levenberg-Marquardt: {} after {} iteration(s)",
-                                   lm.converged ? "converged, " + lm.reason : "NOT CONVERGED, " + lm.reason,
-                                   lm.iterations);
+    out.stop_reason += fmt::format(
+        ", then Levenberg-Marquardt: {} after {} iteration(s)",
+        lm.converged ? "converged, " + lm.reason : "NOT CONVERGED, " + lm.reason, lm.iterations);
   }
   gauss_newton_covariance(problem, out);
   return out;

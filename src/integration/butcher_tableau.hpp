@@ -17,7 +17,7 @@ struct ButcherTableau {
 
 const ButcherTableau& explicit_euler();
 const ButcherTableau& bogacki_shampine_32();  // 3rd order, embedded 2nd, FSAL
-const ButcherTableau& dormand_prince_54();     // 5th order, embedded 4th, FSAL
+const ButcherTableau& dormand_prince_54();    // 5th order, embedded 4th, FSAL
 
 // "rk32" or "rk54"; InputError otherwise.
 const ButcherTableau& embedded_pair(const std::string& name);

@@ -10,9 +10,10 @@
 // and a DomainError for fixed-step Euler. Runs on doubles and on dual numbers; step sizes and
 // error control use the values only, so the derivative carried by a Dual is the exact derivative
 // of the discrete scheme (the consistent derivative the Newton solve needs).
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 #include <string>
 #include <vector>
 
@@ -26,11 +27,11 @@ enum class Scheme { kExplicitEuler, kAdaptive };
 
 struct IntegratorSettings {
   Scheme scheme = Scheme::kAdaptive;
-  int substeps = 1;             // explicit Euler: equal substeps per increment
-  double rtol = 1e-6;           // adaptive: relative error tolerance per substep
-  std::string pair = "rk32";    // adaptive: embedded pair (rk32, rk54)
-  int max_substeps = 100000;    // adaptive: per increment
-  double min_step = 1e-12;      // adaptive: smallest substep, fraction of the increment
+  int substeps = 1;           // explicit Euler: equal substeps per increment
+  double rtol = 1e-6;         // adaptive: relative error tolerance per substep
+  std::string pair = "rk32";  // adaptive: embedded pair (rk32, rk54)
+  int max_substeps = 100000;  // adaptive: per increment
+  double min_step = 1e-12;    // adaptive: smallest substep, fraction of the increment
 
   std::string describe() const;
 };
@@ -109,7 +110,8 @@ inline std::string describe_state(const models::Model& m, const models::StateVec
 
 // Fixed-step explicit Euler.
 template <class S>
-models::StateVectorT<S> integrate_euler(const models::Model& m, const models::StateVectorT<S>& start,
+models::StateVectorT<S> integrate_euler(const models::Model& m,
+                                        const models::StateVectorT<S>& start,
                                         const models::InterfaceStrainT<S>& increment, int substeps,
                                         IntegrationCounters& count) {
   const double h = 1.0 / substeps;
@@ -159,7 +161,8 @@ models::StateVectorT<S> replay_plan(const models::Model& m, const models::StateV
     ++count.accepted_substeps;
     if (error_norm(err, scale, set.rtol) > kReplayErrorAllowance) plan.needs_refresh = true;
     if (const auto why = m.domain_violation(values_of<S>(y)); !why.empty())
-      throw DomainError(fmt::format("replayed substep: {} [{}]", why, describe_state(m, values_of<S>(y))));
+      throw DomainError(
+          fmt::format("replayed substep: {} [{}]", why, describe_state(m, values_of<S>(y))));
     k0 = tab.first_same_as_last ? st.k.back() : st.rate(y);
   }
   return y;
@@ -173,8 +176,9 @@ template <class S>
 models::StateVectorT<S> integrate_adaptive(const models::Model& m,
                                            const models::StateVectorT<S>& start,
                                            const models::InterfaceStrainT<S>& increment,
-                                           const IntegratorSettings& set, IntegrationCounters& count,
-                                           double& first_step, StepPlan* plan = nullptr) {
+                                           const IntegratorSettings& set,
+                                           IntegrationCounters& count, double& first_step,
+                                           StepPlan* plan = nullptr) {
   if (plan != nullptr && plan->replay)
     return detail::replay_plan<S>(m, start, increment, set, count, *plan);
   if (plan != nullptr) {
@@ -194,8 +198,10 @@ models::StateVectorT<S> integrate_adaptive(const models::Model& m,
   bool last_rejection_left_domain = false;
   for (int n = 0; t < 1.0; ++n) {
     if (n >= set.max_substeps) {
-      const std::string msg = fmt::format("adaptive integration needed more than {} substeps "
-                                          "(last rejection: {})", set.max_substeps, last_rejection);
+      const std::string msg = fmt::format(
+          "adaptive integration needed more than {} substeps "
+          "(last rejection: {})",
+          set.max_substeps, last_rejection);
       // Creeping along the domain's edge (e towards e_d) is the domain's limit, not the error
       // controller's: classify it as the domain error it approaches.
       if (last_rejection_left_domain) throw DomainError(msg);
@@ -237,9 +243,9 @@ models::StateVectorT<S> integrate_adaptive(const models::Model& m,
     }
     h *= factor;
     if (h < set.min_step && t < 1.0)
-      throw DomainError(fmt::format("substep below {:g} of the increment at fraction {:.6g}: {} [{}]",
-                                    set.min_step, t, last_rejection,
-                                    detail::describe_state(m, values_of<S>(y))));
+      throw DomainError(
+          fmt::format("substep below {:g} of the increment at fraction {:.6g}: {} [{}]",
+                      set.min_step, t, last_rejection, detail::describe_state(m, values_of<S>(y))));
   }
   first_step = std::max(last_accepted, h);
   return y;

@@ -8,7 +8,9 @@ namespace iwb::io {
 
 namespace fs = std::filesystem;
 
-fs::path checksum_record_path(const fs::path& file) { return file.string() + ".checksum.json"; }
+fs::path checksum_record_path(const fs::path& file) {
+  return file.string() + ".checksum.json";
+}
 
 nlohmann::json write_checksum_record(const fs::path& file) {
   const std::string bytes = read_file(file);
@@ -23,13 +25,15 @@ nlohmann::json write_checksum_record(const fs::path& file) {
 std::optional<std::string> checksum_problem(const fs::path& file) {
   const fs::path record_file = checksum_record_path(file);
   if (!fs::exists(file)) return fmt::format("{} is missing", file.string());
-  if (!fs::exists(record_file)) return fmt::format("{} has no size and hash record ({})", file.string(),
-                                                   record_file.filename().string());
+  if (!fs::exists(record_file))
+    return fmt::format("{} has no size and hash record ({})", file.string(),
+                       record_file.filename().string());
   nlohmann::json record;
   try {
     record = nlohmann::json::parse(read_file(record_file));
   } catch (const nlohmann::json::exception&) {
-    return fmt::format("{}: its record {} is not readable", file.string(), record_file.filename().string());
+    return fmt::format("{}: its record {} is not readable", file.string(),
+                       record_file.filename().string());
   }
   const auto size = fs::file_size(file);
   if (size != record.value("size_bytes", std::uintmax_t(0)))

@@ -1,7 +1,8 @@
 #include "io/csv_table.hpp"
 
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -40,7 +41,8 @@ std::string CsvTable::to_csv(int digits) const {
   for (std::size_t i = 0; i < columns.size(); ++i) s += (i ? "," : "") + columns[i];
   s += "\n";
   for (const auto& r : rows) {
-    for (std::size_t i = 0; i < r.size(); ++i) s += fmt::format("{}{:.{}g}", i ? "," : "", r[i], digits);
+    for (std::size_t i = 0; i < r.size(); ++i)
+      s += fmt::format("{}{:.{}g}", i ? "," : "", r[i], digits);
     s += "\n";
   }
   return s;

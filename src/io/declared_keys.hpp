@@ -18,13 +18,13 @@
 namespace iwb::io {
 
 enum class KeyKind {
-  kNumber,      // finite, within `range`
-  kWholeNumber, // an integer in [1, 1e8]
-  kText,        // one of `choices` (any text when `choices` is empty)
-  kFlag,        // true or false
-  kNumberList,  // an array of finite numbers
-  kTolerance,   // a relative tolerance in (0, 1], or "not needed" (io::read_tolerance)
-  kPath,        // a file, relative to the file that names it
+  kNumber,       // finite, within `range`
+  kWholeNumber,  // an integer in [1, 1e8]
+  kText,         // one of `choices` (any text when `choices` is empty)
+  kFlag,         // true or false
+  kNumberList,   // an array of finite numbers
+  kTolerance,    // a relative tolerance in (0, 1], or "not needed" (io::read_tolerance)
+  kPath,         // a file, relative to the file that names it
 };
 
 // When a key must be given.
@@ -41,14 +41,14 @@ struct KeyDeclaration {
   std::string key = {};
   KeyKind kind = KeyKind::kNumber;
   std::string unit = {};  // "mm", "kPa"; empty for a ratio or a name
-  Range range = {};  // numbers: the allowed values (whole numbers: [1, 1e8])
+  Range range = {};       // numbers: the allowed values (whole numbers: [1, 1e8])
   std::vector<std::string> choices = {};
   Need need = Need::kOptional;
-  DefaultValue value = {};   // the default when the key is absent (monostate: none)
+  DefaultValue value = {};        // the default when the key is absent (monostate: none)
   std::string default_note = {};  // a default derived from other keys, said in words
   std::string when = {};          // kConditional: "CNS", "one of displacement_mm, amplitude_mm"
-  std::string limit = {};         // a bound set by other keys, checked by the reader where it is known
-  std::string meaning = {};       // one line
+  std::string limit = {};    // a bound set by other keys, checked by the reader where it is known
+  std::string meaning = {};  // one line
 
   std::string dotted() const { return table.empty() ? key : table + "." + key; }
   std::string allowed() const;       // "(0, 100] mm", "\"cdt\", \"epsd2\"", "true or false"
@@ -58,15 +58,17 @@ struct KeyDeclaration {
 using KeyDeclarations = std::vector<KeyDeclaration>;
 
 // The declared row of table.key; std::logic_error when the code asks for a key it never declared.
-const KeyDeclaration& declared(const KeyDeclarations& rows, const std::string& table, const std::string& key);
+const KeyDeclaration& declared(const KeyDeclarations& rows, const std::string& table,
+                               const std::string& key);
 
-// The dotted keys of the rows that name files (a campaign rewrites them when it moves a file's text).
+// The dotted keys of the rows that name files (a campaign rewrites them when it moves a file's
+// text).
 std::vector<std::string> path_keys(const KeyDeclarations& rows);
 
 // The rows as a Markdown table (key | allowed | default | meaning), in declaration order.
 std::string markdown_table(const KeyDeclarations& rows);
-// The rows as JSON: one object per key (table, key, allowed, default, need, meaning, and the range's
-// bounds and the choices where they apply), for tools that write scene files.
+// The rows as JSON: one object per key (table, key, allowed, default, need, meaning, and the
+// range's bounds and the choices where they apply), for tools that write scene files.
 nlohmann::json to_json(const KeyDeclarations& rows);
 
 // A TableReader that takes each key's range, choices and default from its declaration. Messages

@@ -1,16 +1,17 @@
 #include "io/directory_lock.hpp"
 
+#include <fcntl.h>
+#include <fmt/core.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstring>
-#include <fcntl.h>
-#include <fmt/core.h>
 #include <nlohmann/json.hpp>
-#include <sys/file.h>
-#include <sys/stat.h>
 #include <thread>
-#include <unistd.h>
 #include <variant>
 
 #include "common/errors.hpp"
@@ -58,17 +59,22 @@ std::optional<LockHolder> holder_in(const std::string& text) {
 }
 
 bool same_file(int fd, const fs::path& path) {
-  struct stat open_file{}, at_path{};
+  struct stat open_file {
+  }, at_path{};
   if (::fstat(fd, &open_file) != 0 || ::stat(path.c_str(), &at_path) != 0) return false;
   return open_file.st_dev == at_path.st_dev && open_file.st_ino == at_path.st_ino;
 }
 
 void write_holder(int fd, const fs::path& file, const std::string& command) {
-  const std::string text = nlohmann::json{{"pid", long(::getpid())}, {"host", this_host()},
-                                          {"since", utc_timestamp()}, {"command", command}}
-                               .dump(2) + "\n";
+  const std::string text = nlohmann::json{{"pid", long(::getpid())},
+                                          {"host", this_host()},
+                                          {"since", utc_timestamp()},
+                                          {"command", command}}
+                               .dump(2) +
+                           "\n";
   if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, text.data(), text.size(), 0) != ssize_t(text.size()))
-    throw std::runtime_error(fmt::format("{}: cannot write the lock file: {}", file.string(), std::strerror(errno)));
+    throw std::runtime_error(
+        fmt::format("{}: cannot write the lock file: {}", file.string(), std::strerror(errno)));
 }
 
 struct Busy {
@@ -82,7 +88,8 @@ std::variant<int, Busy> try_lock(const fs::path& file) {
     // Not O_CLOEXEC: the engines inherit the lock (see the header).
     const int fd = ::open(file.c_str(), O_RDWR | O_CREAT, 0644);
     if (fd < 0)
-      throw std::runtime_error(fmt::format("{}: cannot open the lock file: {}", file.string(), std::strerror(errno)));
+      throw std::runtime_error(
+          fmt::format("{}: cannot open the lock file: {}", file.string(), std::strerror(errno)));
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       const int error = errno;
       Busy busy{holder_in(read_fd(fd))};
@@ -108,12 +115,14 @@ DirectoryLock DirectoryLock::take(const fs::path& dir, const std::string& comman
   const fs::path file = dir / kLockFileName;
   auto attempt = try_lock(file);
   if (auto* busy = std::get_if<Busy>(&attempt)) {
-    std::string who = busy->holder ? busy->holder->describe() : "a process that has not yet said who it is";
+    std::string who =
+        busy->holder ? busy->holder->describe() : "a process that has not yet said who it is";
     if (busy->holder && busy->holder->host == this_host() && busy->holder->pid > 0 &&
         ::kill(pid_t(busy->holder->pid), 0) != 0 && errno == ESRCH)
       who += "; that process has ended, an engine it started still works there";
-    throw InputError(fmt::format("{}: in use by another iwb, {}; wait for it to end or choose another directory",
-                                 dir.string(), who));
+    throw InputError(
+        fmt::format("{}: in use by another iwb, {}; wait for it to end or choose another directory",
+                    dir.string(), who));
   }
   const int fd = std::get<int>(attempt);
   std::optional<LockHolder> stale = holder_in(read_fd(fd));
@@ -149,7 +158,9 @@ DirectoryLock& DirectoryLock::operator=(DirectoryLock&& other) noexcept {
   return *this;
 }
 
-DirectoryLock::~DirectoryLock() { release(); }
+DirectoryLock::~DirectoryLock() {
+  release();
+}
 
 void DirectoryLock::release() {
   if (fd_ < 0) return;
@@ -160,8 +171,8 @@ void DirectoryLock::release() {
 
 std::string DirectoryLock::stale_message() const {
   if (!stale_) return "";
-  return fmt::format("{}: stale lock of {} (that process is gone): taken over", file_.parent_path().string(),
-                     stale_->describe());
+  return fmt::format("{}: stale lock of {} (that process is gone): taken over",
+                     file_.parent_path().string(), stale_->describe());
 }
 
 }  // namespace iwb::io

@@ -27,7 +27,8 @@ class DirectoryLock {
   static DirectoryLock take(const std::filesystem::path& dir, const std::string& command);
   // Waits until the lock of `dir` is free (another process is working in it); nothing when
   // *interrupt is set first.
-  static std::optional<DirectoryLock> wait(const std::filesystem::path& dir, const std::string& command,
+  static std::optional<DirectoryLock> wait(const std::filesystem::path& dir,
+                                           const std::string& command,
                                            const std::atomic<bool>* interrupt);
 
   DirectoryLock(DirectoryLock&& other) noexcept;

@@ -1,7 +1,8 @@
 #include "io/element_run.hpp"
 
-#include <chrono>
 #include <fmt/core.h>
+
+#include <chrono>
 
 #include "common/errors.hpp"
 #include "io/directory_lock.hpp"
@@ -26,13 +27,14 @@ nlohmann::json counters_json(const driver::ElementTestResult& r) {
 ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
                                            const ElementRunOptions& opt) {
   const auto model = models::find_model(spec.model).make(spec.inputs);
-  const auto initial = [&] {  // not admissible: an InputError naming the file and its table (issue 37)
-    try {
-      return model->initial_state(spec.initial);
-    } catch (const InputError& e) {
-      throw InputError(fmt::format("{}: table [initial]: {}", spec.source, e.what()));
-    }
-  }();
+  const auto initial =
+      [&] {  // not admissible: an InputError naming the file and its table (issue 37)
+        try {
+          return model->initial_state(spec.initial);
+        } catch (const InputError& e) {
+          throw InputError(fmt::format("{}: table [initial]: {}", spec.source, e.what()));
+        }
+      }();
   try {  // bad input is refused before the run directory is touched
     driver::check_path(*model, spec.path);
   } catch (const InputError& e) {
@@ -44,8 +46,10 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
   m["kind"] = "element-test";
   m["workbench"] = {{"name", "iwb"}, {"version", IWB_VERSION}};
   m["command_line"] = opt.command_line;
-  m["conventions"] = {{"signs", "compression positive; u_n > 0 is dilation; tau has the sign of the shear displacement"},
-                      {"units", "kPa, mm, degrees; strains dimensionless"}};
+  m["conventions"] = {
+      {"signs",
+       "compression positive; u_n > 0 is dilation; tau has the sign of the shear displacement"},
+      {"units", "kPa, mm, degrees; strains dimensionless"}};
   m["inputs"] = {{"test", {{"source", spec.source}, {"sha256", sha256_hex(opt.input_text)}}}};
   if (spec.parameter_source != "inline")
     m["inputs"]["parameters"] = {{"source", spec.parameter_source},
@@ -53,7 +57,8 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
   m["test"] = spec.resolved;
   m["warnings"] = spec.warnings;
   m["state_variables"] = model->state_names();
-  m["files"] = nlohmann::json::array();  // each file as it is written, so the list never names a missing one
+  m["files"] =
+      nlohmann::json::array();  // each file as it is written, so the list never names a missing one
   m["started"] = utc_timestamp();
   m["status"] = "running";
   const auto lock = DirectoryLock::take(opt.out, opt.command_line);  // until the run is written
@@ -71,7 +76,8 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
     write_manifest(opt.out, m);
     throw;
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   write_atomically(opt.out / "history.csv", history_csv(*model, spec.zone, outcome.result.rows));
   m["files"].push_back("history.csv");

@@ -1,16 +1,17 @@
 #include "io/element_test_file.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 #include <map>
 
 #include "common/errors.hpp"
 #include "common/physical_limits.hpp"
 #include "io/parameter_file.hpp"
+#include "io/toml_reader.hpp"
 #include "models/hypoplastic/intergranular_strain.hpp"
 #include "models/registry.hpp"
-#include "io/toml_reader.hpp"
 
 namespace iwb::io {
 
@@ -23,10 +24,10 @@ constexpr double kDegree = M_PI / 180.0;
 // Physical ranges of element-test values (beyond them a value is a typo or a units mistake; the
 // model's own domain checks, e.g. e0 in (e_d, e_i), come on top).
 // (kMaxStressKPa, kMaxVoidRatio, kMaxK0: common/physical_limits.hpp)
-constexpr double kMaxShearStrain = 10.0;   // 1000 % shear strain
-constexpr double kMaxLengthMm = 1e4;       // shear-zone thickness, grain size
-constexpr double kMaxRoughness = 100.0;    // R_n = R_max / d50
-constexpr double kMaxIncrements = 1e8;     // a path longer than this would run for hours
+constexpr double kMaxShearStrain = 10.0;  // 1000 % shear strain
+constexpr double kMaxLengthMm = 1e4;      // shear-zone thickness, grain size
+constexpr double kMaxRoughness = 100.0;   // R_n = R_max / d50
+constexpr double kMaxIncrements = 1e8;    // a path longer than this would run for hours
 const Range kRelativeTolerance{0.0, 0.1, true, false};  // rtol, Newton tolerance
 
 void read_model(TableReader model, ElementTestSpec& spec, const std::filesystem::path& base) {
@@ -37,7 +38,9 @@ void read_model(TableReader model, ElementTestSpec& spec, const std::filesystem:
     throw InputError(model.where("name") + ": " + e.what());  // the file and the key (issue 37)
   }
   const toml::node* params = model.node("parameters");
-  if (params == nullptr) throw InputError(model.where("parameters") + " is missing (a parameter file path or inline tables)");
+  if (params == nullptr)
+    throw InputError(model.where("parameters") +
+                     " is missing (a parameter file path or inline tables)");
   if (const auto file = params->value<std::string>()) {
     const auto path = (base / *file).lexically_normal().string();
     spec.inputs.tables = load_parameter_file(path);
@@ -48,8 +51,8 @@ void read_model(TableReader model, ElementTestSpec& spec, const std::filesystem:
     spec.inputs.source = model.where("parameters");
     spec.parameter_source = "inline";
   } else {
-    throw InputError(fmt::format("{} = {} should be a file path or a table", model.where("parameters"),
-                                 describe(*params)));
+    throw InputError(fmt::format("{} = {} should be a file path or a table",
+                                 model.where("parameters"), describe(*params)));
   }
   model.finish();
 }
@@ -57,30 +60,40 @@ void read_model(TableReader model, ElementTestSpec& spec, const std::filesystem:
 void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
   const auto& model = models::find_model(spec.model);
   const auto& support = model.declaration.roughness;
-  json out = {{"scheme", models::to_string(support.default_scheme)}, {"kappa_r", 1.0}, {"origin", "default (fully rough)"}};
+  json out = {{"scheme", models::to_string(support.default_scheme)},
+              {"kappa_r", 1.0},
+              {"origin", "default (fully rough)"}};
   spec.inputs.roughness.scheme = support.default_scheme;
   if (!r) {
     spec.resolved["roughness"] = model.uses_roughness ? out : json(nullptr);
     return;
   }
   if (!model.uses_roughness)
-    throw InputError(fmt::format("{}: model '{}' is a continuum model and takes no wall roughness; "
-                                 "remove the table", r->where(), spec.model));
-  const std::string scheme = r->optional_text("scheme").value_or(models::to_string(support.default_scheme));
+    throw InputError(
+        fmt::format("{}: model '{}' is a continuum model and takes no wall roughness; "
+                    "remove the table",
+                    r->where(), spec.model));
+  const std::string scheme =
+      r->optional_text("scheme").value_or(models::to_string(support.default_scheme));
   const auto named = support.scheme_named(scheme);
   if (!named)
-    throw InputError(fmt::format("{} = \"{}\"; allowed {}", r->where("scheme"), scheme, support.scheme_names(" or ")));
+    throw InputError(fmt::format("{} = \"{}\"; allowed {}", r->where("scheme"), scheme,
+                                 support.scheme_names(" or ")));
   spec.inputs.roughness.scheme = *named;
   // ERRATA 9: the reading of Arnold & Herle's f_c (eq. 5.40), for their sand scheme only
   const auto f_c = r->optional_text("f_c");
   if (f_c && !support.reads_arnold_herle_factor(*named))
-    throw InputError(fmt::format("{}: f_c is the rate factor of Arnold & Herle's sand scheme (eq. 5.40); "
-                                 "give scheme = \"arnold-herle\" with a sand model, or drop it", r->where("f_c")));
+    throw InputError(
+        fmt::format("{}: f_c is the rate factor of Arnold & Herle's sand scheme (eq. 5.40); "
+                    "give scheme = \"arnold-herle\" with a sand model, or drop it",
+                    r->where("f_c")));
   if (f_c) spec.inputs.roughness.f_c = models::parse_arnold_herle_factor(*f_c, r->where("f_c"));
   const std::string source = r->one_of({"kappa_r", "R_n", "delta_deg"});
   if (source == "R_n" && !support.from_normalized_roughness)
-    throw InputError(fmt::format("{}: model '{}' takes no R_n (eq. 5.35 is Gutjahr's for sand); give kappa_r or "
-                                 "delta_deg", r->where("R_n"), spec.model));
+    throw InputError(
+        fmt::format("{}: model '{}' takes no R_n (eq. 5.35 is Gutjahr's for sand); give kappa_r or "
+                    "delta_deg",
+                    r->where("R_n"), spec.model));
   models::KappaR k{1.0, {}};
   std::string origin;
   if (source == "kappa_r") {
@@ -107,7 +120,8 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
 }
 
 bool has_intergranular_strain(const std::string& model) {
-  return models::find_initial_input(models::find_model(model).declaration.initial, "delta") != nullptr;
+  return models::find_initial_input(models::find_model(model).declaration.initial, "delta") !=
+         nullptr;
 }
 
 // Beyond this multiple of R an initial intergranular strain is taken as a units mistake (e.g. a
@@ -137,9 +151,10 @@ void read_delta(TableReader& t, ElementTestSpec& spec) {
   const toml::node* node = t.node("delta");
   if (!has_intergranular_strain(spec.model)) {
     if (node != nullptr)
-      throw InputError(fmt::format("{} = {}: model '{}' has no intergranular strain (use '{}-igs' or "
-                                   "remove the key)", t.where("delta"), written(*node), spec.model,
-                                   spec.model));
+      throw InputError(
+          fmt::format("{} = {}: model '{}' has no intergranular strain (use '{}-igs' or "
+                      "remove the key)",
+                      t.where("delta"), written(*node), spec.model, spec.model));
     return;
   }
   const double R = spec.inputs.tables.at("intergranular_strain").at("R");  // validated by make()
@@ -151,28 +166,34 @@ void read_delta(TableReader& t, ElementTestSpec& spec) {
   } else {
     const auto* arr = node->as_array();
     if (arr == nullptr || arr->size() != 3 || !all_numbers(*arr))
-      throw InputError(fmt::format("{} = {} should be \"seed\" or three numbers [delta_n, delta_x, "
-                                   "delta_y]", t.where("delta"), written(*node)));
+      throw InputError(
+          fmt::format("{} = {} should be \"seed\" or three numbers [delta_n, delta_x, "
+                      "delta_y]",
+                      t.where("delta"), written(*node)));
     for (int i = 0; i < 3; ++i) d[i] = arr->get(i)->value<double>().value();
     const double rho = std::sqrt(d[0] * d[0] + 2.0 * (d[1] * d[1] + d[2] * d[2])) / R;
     if (!(rho <= kMaxInitialRho))
-      throw InputError(fmt::format("{} = {}: ||delta|| = {:g} R is out of range; allowed [0, {:g}] R "
-                                   "(R = {:g})", t.where("delta"), written(*node), rho, kMaxInitialRho, R));
+      throw InputError(
+          fmt::format("{} = {}: ||delta|| = {:g} R is out of range; allowed [0, {:g}] R "
+                      "(R = {:g})",
+                      t.where("delta"), written(*node), rho, kMaxInitialRho, R));
   }
   spec.initial.delta = d;
-  spec.resolved["initial"]["delta"] = {{"delta_n", d[0]}, {"delta_x", d[1]}, {"delta_y", d[2]},
-                                       {"origin", origin}};
+  spec.resolved["initial"]["delta"] = {
+      {"delta_n", d[0]}, {"delta_x", d[1]}, {"delta_y", d[2]}, {"origin", origin}};
 }
 
 // One declared number of [initial]: its range, its default when absent (K0 = 1 - sin phi_c, the
 // oedometric start of CONVENTIONS.md), a fixed value kept with a warning when a file gives another.
-void read_initial_number(TableReader& t, const models::InitialInputSpec& in, ElementTestSpec& spec) {
+void read_initial_number(TableReader& t, const models::InitialInputSpec& in,
+                         ElementTestSpec& spec) {
   using Need = models::InitialInputSpec::Need;
   std::optional<double> v = in.need == Need::kRequired ? t.number_in(in.key, in.range)
-                                                        : t.optional_number_in(in.key, in.range);
+                                                       : t.optional_number_in(in.key, in.range);
   if (in.need == Need::kOneOf && !v) return;  // the group's check says whether one was given
   if (in.need == Need::kFixed && v && *v != in.default_value(spec.inputs))
-    spec.warnings.push_back(fmt::format("{} = {:g} is ignored: {} ({})", t.where(in.key), *v, in.doc, spec.model));
+    spec.warnings.push_back(
+        fmt::format("{} = {:g} is ignored: {} ({})", t.where(in.key), *v, in.doc, spec.model));
   if (in.need == Need::kFixed || (!v && in.default_value)) v = in.default_value(spec.inputs);
   if (!v) return;  // optional without a default: not given
   models::set_initial_input(spec.initial, in.key, *v);
@@ -180,7 +201,8 @@ void read_initial_number(TableReader& t, const models::InitialInputSpec& in, Ele
 }
 
 // Of each group of alternative inputs (a clay's e0 | OCR) exactly one is given.
-void require_one_of_each_group(const TableReader& t, const std::vector<models::InitialInputSpec>& declared) {
+void require_one_of_each_group(const TableReader& t,
+                               const std::vector<models::InitialInputSpec>& declared) {
   std::map<std::string, std::vector<std::string>> groups;
   for (const auto& in : declared)
     if (in.need == models::InitialInputSpec::Need::kOneOf) groups[in.group].push_back(in.key);
@@ -190,7 +212,8 @@ void require_one_of_each_group(const TableReader& t, const std::vector<models::I
       names += (names.empty() ? "" : " or ") + k;
       if (t.has(k)) given += (given.empty() ? "" : " and ") + k;
     }
-    if (given.empty()) throw InputError(fmt::format("{}: give the {} as {}", t.where(), group, names));
+    if (given.empty())
+      throw InputError(fmt::format("{}: give the {} as {}", t.where(), group, names));
     if (given.find(" and ") != std::string::npos)
       throw InputError(fmt::format("{}: {} both set the {}; give one", t.where(), given, group));
   }
@@ -207,8 +230,9 @@ void read_initial(TableReader t, ElementTestSpec& spec) {
   if (models::find_initial_input(declared, "K0") != nullptr)
     spec.resolved["initial"]["sigma_p_kPa"] = spec.initial.K0 * spec.initial.sigma_n;
   else if (t.has("K0"))
-    spec.warnings.push_back(fmt::format("{} = {:g} is ignored: {} has no in-plane stress", t.where("K0"),
-                                        t.number_in("K0", positive(kMaxK0)), spec.model));
+    spec.warnings.push_back(fmt::format("{} = {:g} is ignored: {} has no in-plane stress",
+                                        t.where("K0"), t.number_in("K0", positive(kMaxK0)),
+                                        spec.model));
   read_delta(t, spec);
   t.finish();
 }
@@ -218,15 +242,21 @@ void read_zone(std::optional<TableReader> t, ElementTestSpec& spec) {
     if (t->has("d_s_mm")) {
       spec.zone.d_s_mm = t->positive("d_s_mm", kMaxLengthMm);
     } else {
-      spec.zone.d_s_mm = t->positive("d50_mm", kMaxLengthMm) * t->positive("d_s_over_d50", kMaxLengthMm);
+      spec.zone.d_s_mm =
+          t->positive("d50_mm", kMaxLengthMm) * t->positive("d_s_over_d50", kMaxLengthMm);
     }
     const std::string m = t->optional_text("strain_measure").value_or("linear");
-    if (m == "linear") spec.zone.measure = driver::ShearStrainMeasure::kLinear;
-    else if (m == "tangent") spec.zone.measure = driver::ShearStrainMeasure::kTangent;
-    else throw InputError(fmt::format("{} = \"{}\"; allowed \"linear\" or \"tangent\"", t->where("strain_measure"), m));
+    if (m == "linear")
+      spec.zone.measure = driver::ShearStrainMeasure::kLinear;
+    else if (m == "tangent")
+      spec.zone.measure = driver::ShearStrainMeasure::kTangent;
+    else
+      throw InputError(fmt::format("{} = \"{}\"; allowed \"linear\" or \"tangent\"",
+                                   t->where("strain_measure"), m));
     t->finish();
   }
-  spec.resolved["shear_zone"] = {{"d_s_mm", spec.zone.d_s_mm}, {"strain_measure", spec.zone.describe()}};
+  spec.resolved["shear_zone"] = {{"d_s_mm", spec.zone.d_s_mm},
+                                 {"strain_measure", spec.zone.describe()}};
 }
 
 void read_boundary(TableReader t, ElementTestSpec& spec) {
@@ -234,8 +264,9 @@ void read_boundary(TableReader t, ElementTestSpec& spec) {
   if (spec.boundary.kind == driver::BoundaryKind::kCNS) {
     const std::string key = t.one_of({"K_kPa_per_mm", "K_kPa"});
     const double k = t.positive(key, kInf);
-    spec.boundary = key == "K_kPa" ? driver::BoundaryCondition{spec.boundary.kind, k}
-                                   : driver::with_stiffness_per_mm(spec.boundary.kind, k, spec.zone.d_s_mm);
+    spec.boundary = key == "K_kPa"
+                        ? driver::BoundaryCondition{spec.boundary.kind, k}
+                        : driver::with_stiffness_per_mm(spec.boundary.kind, k, spec.zone.d_s_mm);
   }
   t.finish();
   spec.resolved["boundary"] = {{"type", driver::to_string(spec.boundary.kind)},
@@ -250,15 +281,18 @@ double strain(TableReader& t, const std::string& gamma_key, const std::string& u
   const double u = t.positive(u_key, kMaxLengthMm);
   const double gamma = zone.gamma_of(u);
   if (!(gamma <= kMaxShearStrain))
-    throw InputError(fmt::format("{} = {:g} is a shear strain of {:g} over d_s = {:g} mm; allowed up to {:g}",
-                                 t.where(u_key), u, gamma, zone.d_s_mm, kMaxShearStrain));
+    throw InputError(
+        fmt::format("{} = {:g} is a shear strain of {:g} over d_s = {:g} mm; allowed up to {:g}",
+                    t.where(u_key), u, gamma, zone.d_s_mm, kMaxShearStrain));
   return gamma;
 }
 
 void check_length(const TableReader& t, double increments) {
   if (increments > kMaxIncrements)
-    throw InputError(fmt::format("{}: the path has {:g} increments; allowed up to {:g} (fewer cycles or "
-                                 "increments)", t.where(), increments, kMaxIncrements));
+    throw InputError(
+        fmt::format("{}: the path has {:g} increments; allowed up to {:g} (fewer cycles or "
+                    "increments)",
+                    t.where(), increments, kMaxIncrements));
 }
 
 // Limits of the external variables' paths: beyond them a value is a units mistake.
@@ -276,14 +310,16 @@ struct ExternalKey {
   double offset;
   const Range* range;
 };
-const ExternalKey kExternalKeys[] = {{models::External::kTemperature, "T_K", 0.0, &kTemperatureK},
-                                     {models::External::kTemperature, "T_C", kKelvinOffset, &kTemperatureK},
-                                     {models::External::kSuction, "s_kPa", 0.0, &kSuctionKPa},
-                                     {models::External::kTime, "t_s", 0.0, &kTimeS}};
+const ExternalKey kExternalKeys[] = {
+    {models::External::kTemperature, "T_K", 0.0, &kTemperatureK},
+    {models::External::kTemperature, "T_C", kKelvinOffset, &kTemperatureK},
+    {models::External::kSuction, "s_kPa", 0.0, &kSuctionKPa},
+    {models::External::kTime, "t_s", 0.0, &kTimeS}};
 
-// `{ to = V }` (ramp to a value), `{ by = dV }` (ramp by a change) or `{ amplitude = A, cycles = n }`
-// (cycle about the value at the stage's start); `current` (state units) follows the path.
-driver::ExternalPath read_external_path(TableReader t, const ExternalKey& k, double& current, json& out) {
+// `{ to = V }` (ramp to a value), `{ by = dV }` (ramp by a change) or `{ amplitude = A, cycles = n
+// }` (cycle about the value at the stage's start); `current` (state units) follows the path.
+driver::ExternalPath read_external_path(TableReader t, const ExternalKey& k, double& current,
+                                        json& out) {
   driver::ExternalPath x;
   // the range in the key's own unit (deg C for T_C), for the values and the messages alike
   const Range in_unit{k.range->lower - k.offset, k.range->upper - k.offset, false, false};
@@ -296,8 +332,8 @@ driver::ExternalPath read_external_path(TableReader t, const ExternalKey& k, dou
   } else if (how == "by") {
     const double by = t.number_in("by", closed(-k.range->upper, k.range->upper));
     if (!k.range->admits(current + by))
-      throw InputError(fmt::format("{} = {:g} takes {} to {:g}, outside {}", t.where("by"), by, k.key,
-                                   current + by - k.offset, in_unit.text()));
+      throw InputError(fmt::format("{} = {:g} takes {} to {:g}, outside {}", t.where("by"), by,
+                                   k.key, current + by - k.offset, in_unit.text()));
     x = {driver::ExternalPath::Kind::kRamp, by};
     current += by;
     out[k.key] = {{"by", by}};
@@ -305,8 +341,9 @@ driver::ExternalPath read_external_path(TableReader t, const ExternalKey& k, dou
     const double a = t.positive("amplitude", k.range->upper);
     const int cycles = t.count("cycles");
     if (cycles > kMaxStageCycles || !k.range->admits(current + a) || !k.range->admits(current - a))
-      throw InputError(fmt::format("{}: {} cycles of +-{:g} about {:g}; allowed up to {} cycles within {}", t.where(),
-                                   cycles, a, current - k.offset, kMaxStageCycles, in_unit.text()));
+      throw InputError(
+          fmt::format("{}: {} cycles of +-{:g} about {:g}; allowed up to {} cycles within {}",
+                      t.where(), cycles, a, current - k.offset, kMaxStageCycles, in_unit.text()));
     x = {driver::ExternalPath::Kind::kCycle, 0.0, a, cycles};
     out[k.key] = {{"amplitude", a}, {"cycles", cycles}};
   }
@@ -323,19 +360,24 @@ driver::Stage read_stage(TableReader t, int index, ElementTestSpec& spec, double
   st.label = t.optional_text("label").value_or(fmt::format("stage {}", index + 1));
   st.increments = t.count("increments");
   out = {{"label", st.label}, {"increments", st.increments}};
-  if (t.has("gamma")) st.gamma = t.number_in("gamma", closed(-kMaxShearStrain, kMaxShearStrain));
-  else if (t.has("u_mm")) st.gamma = spec.zone.gamma_of(t.number_in("u_mm", closed(-kMaxLengthMm, kMaxLengthMm)));
+  if (t.has("gamma"))
+    st.gamma = t.number_in("gamma", closed(-kMaxShearStrain, kMaxShearStrain));
+  else if (t.has("u_mm"))
+    st.gamma = spec.zone.gamma_of(t.number_in("u_mm", closed(-kMaxLengthMm, kMaxLengthMm)));
   out["gamma"] = st.gamma;
   st.bc = spec.boundary;
   if (const auto normal = t.optional_text("normal")) {
     st.bc.kind = driver::parse_boundary_kind(*normal, t.where("normal"));
-    if (st.bc.kind == driver::BoundaryKind::kCNS && spec.boundary.kind != driver::BoundaryKind::kCNS)
-      throw InputError(fmt::format("{} = \"CNS\" needs the stiffness of a [boundary] of type CNS", t.where("normal")));
+    if (st.bc.kind == driver::BoundaryKind::kCNS &&
+        spec.boundary.kind != driver::BoundaryKind::kCNS)
+      throw InputError(fmt::format("{} = \"CNS\" needs the stiffness of a [boundary] of type CNS",
+                                   t.where("normal")));
   }
   out["normal"] = driver::to_string(st.bc.kind);
   if (auto ramp = t.table("sigma_n_kPa")) {
     if (st.bc.kind != driver::BoundaryKind::kCNL)
-      throw InputError(fmt::format("{}: a ramp of sigma_n needs normal = \"CNL\"", t.where("sigma_n_kPa")));
+      throw InputError(
+          fmt::format("{}: a ramp of sigma_n needs normal = \"CNL\"", t.where("sigma_n_kPa")));
     const double to = ramp->positive("to", kMaxStressKPa);
     ramp->finish();
     st.d_sigma_n = to - sigma_n;
@@ -346,10 +388,12 @@ driver::Stage read_stage(TableReader t, int index, ElementTestSpec& spec, double
   for (const auto& k : kExternalKeys) {
     auto path = t.table(k.key);
     if (!path) continue;
-    const bool read = std::any_of(declared.begin(), declared.end(), [&](const auto& x) { return x.which == k.slot; });
+    const bool read = std::any_of(declared.begin(), declared.end(),
+                                  [&](const auto& x) { return x.which == k.slot; });
     if (!read)
-      throw InputError(fmt::format("{}: model {} does not read {} (`iwb models` lists what each model reads)",
-                                   t.where(k.key), spec.model, k.key));
+      throw InputError(
+          fmt::format("{}: model {} does not read {} (`iwb models` lists what each model reads)",
+                      t.where(k.key), spec.model, k.key));
     const auto slot = std::size_t(k.slot);
     if (st.external[slot].kind != driver::ExternalPath::Kind::kHold)
       throw InputError(fmt::format("{}: the stage gives this variable twice", t.where(k.key)));
@@ -364,11 +408,14 @@ void read_stages(TableReader& t, driver::ShearDirection dir, ElementTestSpec& sp
   double sigma_n = spec.initial.sigma_n;
   std::array<double, models::kExternalSlots> current{};
   for (const auto& k : kExternalKeys)
-    if (const auto v = spec.initial.named.find(models::external_key(k.slot)); v != spec.initial.named.end())
+    if (const auto v = spec.initial.named.find(models::external_key(k.slot));
+        v != spec.initial.named.end())
       current[std::size_t(k.slot)] = v->second;
   std::vector<driver::Stage> stages;
   auto tables = t.array_of_tables("stage");
-  if (tables.empty()) throw InputError(fmt::format("{}: kind = \"stages\" needs at least one [[path.stage]]", t.where()));
+  if (tables.empty())
+    throw InputError(
+        fmt::format("{}: kind = \"stages\" needs at least one [[path.stage]]", t.where()));
   out["stages"] = json::array();
   for (std::size_t i = 0; i < tables.size(); ++i) {
     json o;
@@ -402,11 +449,12 @@ void read_path(TableReader t, ElementTestSpec& spec) {
       for (auto& s : t.array_of_tables("steps")) {
         stages.push_back({s.count("from_cycle"), s.positive("sigma_n_kPa", kMaxStressKPa)});
         s.finish();
-        out["steps"].push_back({{"from_cycle", stages.back().from_cycle},
-                                {"sigma_n_kPa", stages.back().sigma_n_kPa}});
+        out["steps"].push_back(
+            {{"from_cycle", stages.back().from_cycle}, {"sigma_n_kPa", stages.back().sigma_n_kPa}});
       }
-      spec.path = driver::staged_cyclic_path(spec.initial.sigma_n, a, cycles, stages, d, per_quarter,
-                                             t.optional_count("step_increments").value_or(50));
+      spec.path =
+          driver::staged_cyclic_path(spec.initial.sigma_n, a, cycles, stages, d, per_quarter,
+                                     t.optional_count("step_increments").value_or(50));
     } else {
       spec.path = driver::cyclic_path(spec.boundary, a, cycles, d, per_quarter);
     }
@@ -434,8 +482,10 @@ void read_path(TableReader t, ElementTestSpec& spec) {
     spec.path = driver::oedometric_path(spec.initial.sigma_n, to, t.count("increments"));
     out["sigma_n_end_kPa"] = to;
   } else {
-    throw InputError(fmt::format("{} = \"{}\"; allowed \"monotonic\", \"cyclic\", \"staged\", "
-                                 "\"oedometric\", \"stages\"", t.where("kind"), kind));
+    throw InputError(
+        fmt::format("{} = \"{}\"; allowed \"monotonic\", \"cyclic\", \"staged\", "
+                    "\"oedometric\", \"stages\"",
+                    t.where("kind"), kind));
   }
   t.finish();
   long n = 0;
@@ -459,20 +509,26 @@ void read_integration(std::optional<TableReader> t, ElementTestSpec& spec) {
       integration::embedded_pair(is.pair);  // validates the name
       is.rtol = t->optional_number_in("rtol", kRelativeTolerance).value_or(is.rtol);
     } else {
-      throw InputError(fmt::format("{} = \"{}\"; allowed \"adaptive\" or \"euler\"", t->where("scheme"), scheme));
+      throw InputError(fmt::format("{} = \"{}\"; allowed \"adaptive\" or \"euler\"",
+                                   t->where("scheme"), scheme));
     }
     const std::string method = t->optional_text("mixed_control").value_or("newton");
-    if (method == "closed-form") mc.method = driver::MixedControlMethod::kClosedForm;
+    if (method == "closed-form")
+      mc.method = driver::MixedControlMethod::kClosedForm;
     else if (method != "newton")
-      throw InputError(fmt::format("{} = \"{}\"; allowed \"newton\" or \"closed-form\"", t->where("mixed_control"), method));
+      throw InputError(fmt::format("{} = \"{}\"; allowed \"newton\" or \"closed-form\"",
+                                   t->where("mixed_control"), method));
     mc.tolerance = t->optional_number_in("tolerance", kRelativeTolerance).value_or(mc.tolerance);
     t->finish();
   }
-  if (mc.method == driver::MixedControlMethod::kClosedForm && is.scheme != integration::Scheme::kExplicitEuler)
-    throw InputError(fmt::format("{}: mixed_control = \"closed-form\" (appendix C) needs scheme = \"euler\"", spec.source));
+  if (mc.method == driver::MixedControlMethod::kClosedForm &&
+      is.scheme != integration::Scheme::kExplicitEuler)
+    throw InputError(fmt::format(
+        "{}: mixed_control = \"closed-form\" (appendix C) needs scheme = \"euler\"", spec.source));
   spec.resolved["integration"] = {
       {"scheme", is.describe()},
-      {"mixed_control", mc.method == driver::MixedControlMethod::kNewton ? "newton" : "closed-form"},
+      {"mixed_control",
+       mc.method == driver::MixedControlMethod::kNewton ? "newton" : "closed-form"},
       {"tolerance", mc.tolerance}};
 }
 
@@ -488,7 +544,8 @@ ElementTestSpec parse_element_test(const toml::table& root, const std::string& s
   models::find_model(spec.model).make(spec.inputs);  // parameters validated before anything runs
   for (const auto* table : models::find_model(spec.model).tables)
     if (const auto it = spec.inputs.tables.find(table->name); it != spec.inputs.tables.end())
-      for (auto& w : models::implausible_values(*table, it->second, spec.parameter_source + " [" + table->name + "]"))
+      for (auto& w : models::implausible_values(*table, it->second,
+                                                spec.parameter_source + " [" + table->name + "]"))
         spec.warnings.push_back(std::move(w));
   read_initial(top.required_table("initial"), spec);
   read_zone(top.table("shear_zone"), spec);
@@ -503,13 +560,14 @@ ElementTestSpec parse_element_test(const toml::table& root, const std::string& s
   const std::string description = top.optional_text("description").value_or("");
   top.finish();
   spec.resolved["description"] = description;
-  spec.resolved["model"] = {{"name", spec.model}, {"parameters", spec.parameter_source},
-                            {"values", spec.inputs.tables}};
+  spec.resolved["model"] = {
+      {"name", spec.model}, {"parameters", spec.parameter_source}, {"values", spec.inputs.tables}};
   spec.resolved["output_every"] = spec.settings.output_every;
   return spec;
 }
 
-integration::IntegratorSettings parse_integrator_settings(const toml::table& integration, const std::string& source) {
+integration::IntegratorSettings parse_integrator_settings(const toml::table& integration,
+                                                          const std::string& source) {
   ElementTestSpec spec;
   spec.source = source;
   read_integration(TableReader(integration, source), spec);
@@ -517,7 +575,8 @@ integration::IntegratorSettings parse_integrator_settings(const toml::table& int
 }
 
 models::InitialState parse_initial_state(const toml::table& initial, const std::string& model,
-                                         const models::ModelInputs& inputs, const std::string& source) {
+                                         const models::ModelInputs& inputs,
+                                         const std::string& source) {
   ElementTestSpec spec;
   spec.model = model;
   spec.inputs = inputs;
@@ -526,8 +585,7 @@ models::InitialState parse_initial_state(const toml::table& initial, const std::
 }
 
 ElementTestSpec load_element_test(const std::string& path) {
-  return parse_element_test(parse_toml_file(path), path,
-                            std::filesystem::path(path).parent_path());
+  return parse_element_test(parse_toml_file(path), path, std::filesystem::path(path).parent_path());
 }
 
 }  // namespace iwb::io

@@ -14,6 +14,7 @@ std::string history_csv(const models::Model& model, const driver::ShearZone& zon
 
 // cycles.csv: one row per cycle of a cyclic path (peak tau each way, sigma_n at the reversals,
 // accumulated and per-cycle u_n, e at the cycle's end). Incomplete cycles are marked.
-std::string cycles_csv(const driver::ShearZone& zone, const std::vector<driver::CycleSummary>& cycles);
+std::string cycles_csv(const driver::ShearZone& zone,
+                       const std::vector<driver::CycleSummary>& cycles);
 
 }  // namespace iwb::io

@@ -16,14 +16,15 @@ nlohmann::json read_json_file(const std::filesystem::path& path) {
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(fmt::format(
-        "{}: not valid JSON (truncated or edited?): parsing stopped at byte {} of {}",
-        path.string(), std::min(e.byte, text.size()), text.size()));
+    throw InputError(
+        fmt::format("{}: not valid JSON (truncated or edited?): parsing stopped at byte {} of {}",
+                    path.string(), std::min(e.byte, text.size()), text.size()));
   }
 }
 
 template <class T>
-T json_field(const nlohmann::json& j, const std::string& pointer, const std::filesystem::path& file) {
+T json_field(const nlohmann::json& j, const std::string& pointer,
+             const std::filesystem::path& file) {
   try {
     return j.at(nlohmann::json::json_pointer(pointer)).get<T>();
   } catch (const nlohmann::json::exception&) {
@@ -35,6 +36,7 @@ template std::string json_field<std::string>(const nlohmann::json&, const std::s
                                              const std::filesystem::path&);
 template double json_field<double>(const nlohmann::json&, const std::string&,
                                    const std::filesystem::path&);
-template int json_field<int>(const nlohmann::json&, const std::string&, const std::filesystem::path&);
+template int json_field<int>(const nlohmann::json&, const std::string&,
+                             const std::filesystem::path&);
 
 }  // namespace iwb::io

@@ -14,6 +14,7 @@ nlohmann::json read_json_file(const std::filesystem::path& path);
 // The value at `pointer` (e.g. "/scene/text") as T; InputError naming the file and the key when
 // it is missing or of another type.
 template <class T>
-T json_field(const nlohmann::json& j, const std::string& pointer, const std::filesystem::path& file);
+T json_field(const nlohmann::json& j, const std::string& pointer,
+             const std::filesystem::path& file);
 
 }  // namespace iwb::io

@@ -11,10 +11,12 @@ namespace fs = std::filesystem;
 
 void require_file_destination(const fs::path& file, const std::string& option) {
   if (fs::is_directory(file))
-    throw InputError(fmt::format("{} {}: is a directory; give the name of the file to write", option, file.string()));
+    throw InputError(fmt::format("{} {}: is a directory; give the name of the file to write",
+                                 option, file.string()));
   for (fs::path p = file.parent_path(); !p.empty() && p != p.parent_path(); p = p.parent_path())
     if (fs::exists(p) && !fs::is_directory(p))
-      throw InputError(fmt::format("{} {}: {} is a file, not a directory", option, file.string(), p.string()));
+      throw InputError(
+          fmt::format("{} {}: {} is a file, not a directory", option, file.string(), p.string()));
 }
 
 StagedDirectory::StagedDirectory(fs::path final)

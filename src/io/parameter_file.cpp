@@ -1,7 +1,8 @@
 #include "io/parameter_file.hpp"
 
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
 
 #include "common/errors.hpp"
 #include "io/toml_reader.hpp"
@@ -13,8 +14,10 @@ ParameterTables read_parameter_tables(const toml::table& root, const std::string
   for (const auto& [name, node] : root) {
     const auto* table = node.as_table();
     if (table == nullptr)
-      throw InputError(fmt::format("{}: key '{}' = {} should be a table of parameters such as "
-                                   "[hypoplastic]", file, name.str(), describe(node)));
+      throw InputError(
+          fmt::format("{}: key '{}' = {} should be a table of parameters such as "
+                      "[hypoplastic]",
+                      file, name.str(), describe(node)));
     auto& values = out[std::string(name.str())];
     for (const auto& [key, v] : *table) {
       const auto number = v.value<double>();
@@ -22,8 +25,8 @@ ParameterTables read_parameter_tables(const toml::table& root, const std::string
         throw InputError(fmt::format("{}: key '{}.{}' = {} is not a number", file, name.str(),
                                      key.str(), describe(v)));
       if (!std::isfinite(*number))  // TOML admits inf and nan
-        throw InputError(fmt::format("{}: key '{}.{}' = {} is not a finite number", file, name.str(),
-                                     key.str(), describe(v)));
+        throw InputError(fmt::format("{}: key '{}.{}' = {} is not a finite number", file,
+                                     name.str(), key.str(), describe(v)));
       values[std::string(key.str())] = *number;
     }
   }

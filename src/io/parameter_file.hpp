@@ -2,9 +2,10 @@
 // Parameter files (CONVENTIONS.md "Parameter sets"): TOML, one table per model family, numbers
 // only, units in the keys. Which keys a table must hold is the model's business (its
 // ParameterTable); this only reads numbers and names the file and key when something is not one.
+#include <toml++/toml.h>
+
 #include <map>
 #include <string>
-#include <toml++/toml.h>
 
 #include "models/parameters.hpp"
 

@@ -1,7 +1,8 @@
 #include "io/parameter_sets.hpp"
 
-#include <algorithm>
 #include <fmt/core.h>
+
+#include <algorithm>
 
 #include "common/errors.hpp"
 #include "io/run_directory.hpp"
@@ -21,12 +22,15 @@ ParameterSet read_set(std::string name, std::string origin, std::string text) {
 
 std::vector<ParameterSet> sets_in_directory(const fs::path& dir) {
   if (!fs::is_directory(dir))
-    throw InputError(fmt::format("--params-dir {}: not a directory (without --params-dir the sets built into "
-                                 "iwb are used)", dir.string()));
+    throw InputError(
+        fmt::format("--params-dir {}: not a directory (without --params-dir the sets built into "
+                    "iwb are used)",
+                    dir.string()));
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".toml" && e.is_regular_file()) files.push_back(e.path());
-  if (files.empty()) throw InputError(fmt::format("--params-dir {}: holds no parameter set (*.toml)", dir.string()));
+  if (files.empty())
+    throw InputError(fmt::format("--params-dir {}: holds no parameter set (*.toml)", dir.string()));
   std::sort(files.begin(), files.end());
   std::vector<ParameterSet> out;
   for (const auto& f : files) out.push_back(read_parameter_set(f));
@@ -36,7 +40,8 @@ std::vector<ParameterSet> sets_in_directory(const fs::path& dir) {
 }  // namespace
 
 ParameterSet read_parameter_set(const fs::path& file) {
-  if (!fs::is_regular_file(file)) throw InputError(fmt::format("{}: no such parameter file", file.string()));
+  if (!fs::is_regular_file(file))
+    throw InputError(fmt::format("{}: no such parameter file", file.string()));
   return read_set(file.filename().string(), file.string(), read_file(file));
 }
 
@@ -58,7 +63,8 @@ fs::path parameter_set_file(const ParameterSet& set, const fs::path& dir) {
 models::ModelInputs shipped_inputs(const std::string& name) {
   for (const auto& set : parameter_sets({}))
     if (set.name == name) return {set.tables, set.origin, {}};
-  throw std::logic_error(fmt::format("{} is not among the parameter sets built into iwb (data/params/)", name));
+  throw std::logic_error(
+      fmt::format("{} is not among the parameter sets built into iwb (data/params/)", name));
 }
 
 }  // namespace iwb::io

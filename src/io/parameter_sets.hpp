@@ -14,8 +14,9 @@
 namespace iwb::io {
 
 struct ParameterSet {
-  std::string name;    // file name: "dem_default_grains.toml"
-  std::string origin;  // where it was read: the file's path, or "<embedded:dem_default_grains.toml>"
+  std::string name;  // file name: "dem_default_grains.toml"
+  std::string
+      origin;  // where it was read: the file's path, or "<embedded:dem_default_grains.toml>"
   std::string text;
   ParameterTables tables;
   bool embedded() const { return origin.rfind("<embedded:", 0) == 0; }
@@ -34,7 +35,8 @@ std::vector<ParameterSet> parameter_sets(const std::filesystem::path& dir);
 // example); std::logic_error if the binary was built without it.
 models::ModelInputs shipped_inputs(const std::string& name);
 
-// One parameter file as a set; InputError naming the file when it is missing or not a parameter file.
+// One parameter file as a set; InputError naming the file when it is missing or not a parameter
+// file.
 ParameterSet read_parameter_set(const std::filesystem::path& file);
 
 // The set as a file a run directory can name: its own path, or (embedded) a copy written

@@ -1,13 +1,13 @@
 #include "io/run_directory.hpp"
 
-#include <openssl/evp.h>
-
-#include <chrono>
 #include <fmt/chrono.h>
 #include <fmt/core.h>
+#include <openssl/evp.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "common/errors.hpp"
 #include "io/directory_lock.hpp"
@@ -29,8 +29,10 @@ void write_atomically(const fs::path& path, const std::string& content) {
   std::error_code error;  // no temporary file is left behind: a full disk, a directory in the way
   if (written) fs::rename(tmp, path, error);
   if (!written || error) fs::remove(tmp);
-  if (!written) throw std::runtime_error(fmt::format("{}: write failed (disk full?)", tmp.string()));
-  if (error) throw fs::filesystem_error(fmt::format("{}: cannot replace", path.string()), tmp, path, error);
+  if (!written)
+    throw std::runtime_error(fmt::format("{}: write failed (disk full?)", tmp.string()));
+  if (error)
+    throw fs::filesystem_error(fmt::format("{}: cannot replace", path.string()), tmp, path, error);
 }
 
 std::string read_file(const fs::path& path) {
@@ -57,8 +59,10 @@ std::string utc_timestamp() {
 void prepare_run_directory(const fs::path& dir, bool force) {
   if (fs::exists(dir / "manifest.json")) {
     if (!force)
-      throw InputError(fmt::format("{}: holds an earlier run (manifest.json); choose another --out "
-                                   "or pass --force to replace it", dir.string()));
+      throw InputError(
+          fmt::format("{}: holds an earlier run (manifest.json); choose another --out "
+                      "or pass --force to replace it",
+                      dir.string()));
     // Replaced, not overwritten: files the new run does not write again (a snapshot at a step
     // it never reaches) would otherwise pass for its own. Only a directory with a manifest, that
     // is a run of ours, is emptied; its lock (directory_lock.hpp), held by the caller, stays.

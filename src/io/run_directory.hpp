@@ -16,7 +16,8 @@ std::string utc_timestamp();  // ISO 8601, seconds
 
 // Prepares `dir` for a new run: creates it; refuses (InputError) to overwrite a directory that
 // holds a manifest unless `force`; with `force` such a directory is emptied first, so that no file
-// of the earlier run passes for the new one's (but its lock file, DirectoryLock, held by the caller).
+// of the earlier run passes for the new one's (but its lock file, DirectoryLock, held by the
+// caller).
 void prepare_run_directory(const std::filesystem::path& dir, bool force);
 
 void write_manifest(const std::filesystem::path& dir, const nlohmann::json& manifest);

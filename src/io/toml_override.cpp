@@ -1,6 +1,7 @@
 #include "io/toml_override.hpp"
 
 #include <fmt/core.h>
+
 #include <sstream>
 
 #include "common/errors.hpp"
@@ -13,7 +14,8 @@ TomlScalar scalar_of(const toml::node& node, const std::string& where) {
   if (auto v = node.as_floating_point()) return v->get();
   if (auto v = node.as_boolean()) return v->get();
   if (auto v = node.as_string()) return v->get();
-  throw InputError(fmt::format("{} = {}: a number, a boolean or a string is needed", where, describe(node)));
+  throw InputError(
+      fmt::format("{} = {}: a number, a boolean or a string is needed", where, describe(node)));
 }
 
 std::string to_toml(const TomlScalar& value) {
@@ -21,9 +23,12 @@ std::string to_toml(const TomlScalar& value) {
   std::visit(
       [&os](const auto& v) {
         using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, std::string>) os << toml::value<std::string>(v);
-        else if constexpr (std::is_same_v<T, bool>) os << (v ? "true" : "false");
-        else os << toml::value<T>(v);
+        if constexpr (std::is_same_v<T, std::string>)
+          os << toml::value<std::string>(v);
+        else if constexpr (std::is_same_v<T, bool>)
+          os << (v ? "true" : "false");
+        else
+          os << toml::value<T>(v);
       },
       value);
   return os.str();
@@ -46,14 +51,16 @@ void set_dotted(toml::table& root, const std::string& dotted_key, const TomlScal
     if (!table->contains(part)) table->insert(part, toml::table{});
     table = (*table)[part].as_table();
     if (table == nullptr)
-      throw InputError(fmt::format("{}: cannot set '{}': '{}' is a value, not a table", source, dotted_key, path));
+      throw InputError(fmt::format("{}: cannot set '{}': '{}' is a value, not a table", source,
+                                   dotted_key, path));
   }
   const std::string leaf = dotted_key.substr(start);
   if (leaf.empty() || dotted_key.front() == '.')
-    throw InputError(fmt::format("{}: '{}' is not a dotted key (e.g. wall.height_d50)", source, dotted_key));
+    throw InputError(
+        fmt::format("{}: '{}' is not a dotted key (e.g. wall.height_d50)", source, dotted_key));
   if (auto* existing = table->get(leaf); existing && (existing->is_table() || existing->is_array()))
-    throw InputError(fmt::format("{}: cannot set '{}' = {}: it holds {} in the base", source, dotted_key,
-                                 to_toml(value), describe(*existing)));
+    throw InputError(fmt::format("{}: cannot set '{}' = {}: it holds {} in the base", source,
+                                 dotted_key, to_toml(value), describe(*existing)));
   insert_scalar(*table, leaf, value);
 }
 

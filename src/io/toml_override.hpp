@@ -3,9 +3,10 @@
 // scene. The text is parsed and re-serialised by toml++, so the key lands in its own table
 // whatever the base file's layout (a regex on lines cannot tell [wall] height_d50 from
 // [plate] height_d50). Comments of the base are not kept; callers add a header saying what changed.
+#include <toml++/toml.h>
+
 #include <cstdint>
 #include <string>
-#include <toml++/toml.h>
 #include <variant>
 
 namespace iwb::io {

@@ -1,9 +1,10 @@
 #include "io/toml_reader.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fmt/core.h>
 #include <sstream>
 
 #include "common/errors.hpp"
@@ -26,14 +27,17 @@ std::string describe(const toml::node& node) {
   if (auto s = node.as_string()) return fmt::format("\"{}\"", s->get());
   if (node.is_table()) return "a table";
   if (node.is_array()) return "an array";
-  if (const auto* f = node.as_floating_point()) return fmt::format("{}", f->get());  // 0.1, not 0.1000...01
+  if (const auto* f = node.as_floating_point())
+    return fmt::format("{}", f->get());  // 0.1, not 0.1000...01
   node.visit([&os](const auto& v) {
     if constexpr (toml::is_value<decltype(v)>) os << v;
   });
   return os.str();
 }
 
-bool TableReader::has(const std::string& key) const { return table_->contains(key); }
+bool TableReader::has(const std::string& key) const {
+  return table_->contains(key);
+}
 
 const toml::node* TableReader::node(const std::string& key) {
   read_.insert(key);
@@ -88,7 +92,8 @@ double TableReader::number(const std::string& key) {
 std::optional<double> TableReader::optional_number_in(const std::string& key, const Range& range) {
   auto v = optional_number(key);
   if (v && !range.admits(*v))
-    throw InputError(fmt::format("{} = {:g} is out of range; allowed {}", where(key), *v, range.text()));
+    throw InputError(
+        fmt::format("{} = {:g} is out of range; allowed {}", where(key), *v, range.text()));
   return v;
 }
 
@@ -110,7 +115,8 @@ std::optional<int> TableReader::optional_count(const std::string& key) {
   if (n == nullptr) return std::nullopt;
   const auto v = n->value_exact<int64_t>();
   if (!v || *v < 1 || *v > 100000000)
-    throw InputError(fmt::format("{} = {} must be a whole number in [1, 1e8]", where(key), describe(*n)));
+    throw InputError(
+        fmt::format("{} = {} must be a whole number in [1, 1e8]", where(key), describe(*n)));
   return int(*v);
 }
 
@@ -148,8 +154,8 @@ std::optional<TableReader> TableReader::table(const std::string& key) {
 
 TableReader TableReader::required_table(const std::string& key) {
   if (auto t = table(key)) return *t;
-  throw InputError(fmt::format("{}: table [{}{}] is missing", file_,
-                               prefix_.empty() ? "" : prefix_ + ".", key));
+  throw InputError(
+      fmt::format("{}: table [{}{}] is missing", file_, prefix_.empty() ? "" : prefix_ + ".", key));
 }
 
 std::vector<TableReader> TableReader::array_of_tables(const std::string& key) {
@@ -161,9 +167,9 @@ std::vector<TableReader> TableReader::array_of_tables(const std::string& key) {
     throw InputError(fmt::format("{} = {} should be an array of tables", where(key), describe(*n)));
   for (std::size_t i = 0; i < arr->size(); ++i) {
     const auto* t = arr->get(i)->as_table();
-    if (t == nullptr)
-      throw InputError(fmt::format("{}[{}] should be a table", where(key), i));
-    out.emplace_back(*t, file_, fmt::format("{}{}[{}]", prefix_.empty() ? "" : prefix_ + ".", key, i));
+    if (t == nullptr) throw InputError(fmt::format("{}[{}] should be a table", where(key), i));
+    out.emplace_back(*t, file_,
+                     fmt::format("{}{}[{}]", prefix_.empty() ? "" : prefix_ + ".", key, i));
   }
   return out;
 }
@@ -218,8 +224,9 @@ std::optional<std::optional<double>> read_tolerance(TableReader& t, const std::s
   const auto v = n->value<double>();
   if (s && *s == "not needed") return std::optional<double>();
   if (!s && v && *v > 0.0 && *v <= 1.0) return std::optional<double>(*v);
-  throw InputError(fmt::format("{} = {}: a tolerance is a number in (0, 1] (0.05 = 5 %) or \"not needed\"",
-                               t.where(key), describe(*n)));
+  throw InputError(
+      fmt::format("{} = {}: a tolerance is a number in (0, 1] (0.05 = 5 %) or \"not needed\"",
+                  t.where(key), describe(*n)));
 }
 
 }  // namespace iwb::io

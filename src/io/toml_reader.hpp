@@ -1,10 +1,11 @@
 #pragma once
 // Reading a TOML table with every error naming the file, the dotted key and the value, and with
 // unknown keys refused (a typo must not silently fall back to a default).
+#include <toml++/toml.h>
+
 #include <optional>
 #include <set>
 #include <string>
-#include <toml++/toml.h>
 #include <vector>
 
 #include "common/range.hpp"

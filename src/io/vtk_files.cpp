@@ -44,8 +44,10 @@ const VtkFunctions& load_module() {
     }
     tried += fmt::format("; {}", dlerror());
   }
-  throw std::runtime_error(fmt::format("VTK files need iwb's module {}, which did not load{} (reinstall iwb, or "
-                                       "rebuild it)", IWB_VTK_MODULE_NAME, tried));
+  throw std::runtime_error(
+      fmt::format("VTK files need iwb's module {}, which did not load{} (reinstall iwb, or "
+                  "rebuild it)",
+                  IWB_VTK_MODULE_NAME, tried));
 }
 
 const VtkFunctions& vtk() {
@@ -55,23 +57,42 @@ const VtkFunctions& vtk() {
 
 }  // namespace
 
-const VtkArray* PointCloud::find(const std::string& name) const { return find_in(arrays, name); }
-const VtkArray* Segments::find(const std::string& name) const { return find_in(arrays, name); }
+const VtkArray* PointCloud::find(const std::string& name) const {
+  return find_in(arrays, name);
+}
+const VtkArray* Segments::find(const std::string& name) const {
+  return find_in(arrays, name);
+}
 
-PointCloud read_points(const fs::path& path) { return vtk().read_points(path); }
-void write_points(const fs::path& vtp, const PointCloud& cloud) { vtk().write_points(vtp, cloud); }
-Segments read_segments(const fs::path& vtp) { return vtk().read_segments(vtp); }
-void write_segments(const fs::path& vtp, const Segments& segments) { vtk().write_segments(vtp, segments); }
-void convert_to_polydata(const fs::path& legacy, const fs::path& vtp, const Eigen::Vector3d& shift) {
+PointCloud read_points(const fs::path& path) {
+  return vtk().read_points(path);
+}
+void write_points(const fs::path& vtp, const PointCloud& cloud) {
+  vtk().write_points(vtp, cloud);
+}
+Segments read_segments(const fs::path& vtp) {
+  return vtk().read_segments(vtp);
+}
+void write_segments(const fs::path& vtp, const Segments& segments) {
+  vtk().write_segments(vtp, segments);
+}
+void convert_to_polydata(const fs::path& legacy, const fs::path& vtp,
+                         const Eigen::Vector3d& shift) {
   vtk().convert_to_polydata(legacy, vtp, shift);
 }
-void write_image(const fs::path& vti, const ImageGrid& image) { vtk().write_image(vti, image); }
-ImageGrid read_image(const fs::path& vti) { return vtk().read_image(vti); }
+void write_image(const fs::path& vti, const ImageGrid& image) {
+  vtk().write_image(vti, image);
+}
+ImageGrid read_image(const fs::path& vti) {
+  return vtk().read_image(vti);
+}
 
 // ParaView's collection is plain XML: no VTK needed.
 void write_collection(const fs::path& pvd, const std::vector<TimedFile>& files) {
-  std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  for (const auto& f : files) xml += fmt::format("  <DataSet timestep=\"{:.10g}\" file=\"{}\"/>\n", f.time, f.file);
+  std::string xml =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (const auto& f : files)
+    xml += fmt::format("  <DataSet timestep=\"{:.10g}\" file=\"{}\"/>\n", f.time, f.file);
   xml += "</Collection>\n</VTKFile>\n";
   write_atomically(pvd, xml);
 }

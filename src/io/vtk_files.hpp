@@ -20,7 +20,7 @@ struct VtkArray {
 
 struct PointCloud {
   std::vector<Eigen::Vector3d> points;
-  std::vector<VtkArray> arrays;  // per point
+  std::vector<VtkArray> arrays;                         // per point
   const VtkArray* find(const std::string& name) const;  // nullptr if absent
 };
 

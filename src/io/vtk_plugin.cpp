@@ -63,7 +63,8 @@ void write_through(Writer* writer, const fs::path& path) {
   writer->SetDataModeToAppended();
   writer->SetCompressorTypeToZLib();
   writer->WriteToOutputStringOn();
-  if (writer->Write() != 1) throw std::runtime_error(fmt::format("{}: VTK could not write the dataset", path.string()));
+  if (writer->Write() != 1)
+    throw std::runtime_error(fmt::format("{}: VTK could not write the dataset", path.string()));
   write_atomically(path, writer->GetOutputString());
 }
 
@@ -73,7 +74,8 @@ vtkSmartPointer<vtkDataObject> read_any(const fs::path& path) {
     vtkNew<vtkXMLPolyDataReader> r;
     r->SetFileName(path.c_str());
     r->Update();
-    if (r->GetErrorCode() != 0 || !r->GetOutput()) throw InputError(fmt::format("{}: not a VTK XML polydata file", path.string()));
+    if (r->GetErrorCode() != 0 || !r->GetOutput())
+      throw InputError(fmt::format("{}: not a VTK XML polydata file", path.string()));
     return r->GetOutput();
   }
   vtkNew<vtkGenericDataObjectReader> r;
@@ -83,7 +85,8 @@ vtkSmartPointer<vtkDataObject> read_any(const fs::path& path) {
   r->ReadAllVectorsOn();
   r->ReadAllFieldsOn();
   r->Update();
-  if (r->GetErrorCode() != 0 || !r->GetOutput()) throw InputError(fmt::format("{}: not a legacy VTK file VTK can read", path.string()));
+  if (r->GetErrorCode() != 0 || !r->GetOutput())
+    throw InputError(fmt::format("{}: not a legacy VTK file VTK can read", path.string()));
   return r->GetOutput();
 }
 
@@ -92,7 +95,8 @@ vtkSmartPointer<vtkDataObject> read_any(const fs::path& path) {
 PointCloud read_points(const fs::path& path) {
   auto data = read_any(path);
   auto* set = vtkPointSet::SafeDownCast(data);
-  if (!set || !set->GetPoints()) throw InputError(fmt::format("{}: holds no points", path.string()));
+  if (!set || !set->GetPoints())
+    throw InputError(fmt::format("{}: holds no points", path.string()));
   PointCloud cloud;
   for (vtkIdType i = 0; i < set->GetNumberOfPoints(); ++i) {
     double p[3];
@@ -130,7 +134,8 @@ Segments read_segments(const fs::path& vtp) {
   lines->InitTraversal();
   vtkNew<vtkIdList> ids;
   while (lines->GetNextCell(ids)) {
-    if (ids->GetNumberOfIds() != 2) throw InputError(fmt::format("{}: a line that is not a segment", vtp.string()));
+    if (ids->GetNumberOfIds() != 2)
+      throw InputError(fmt::format("{}: a line that is not a segment", vtp.string()));
     double a[3], b[3];
     poly->GetPoint(ids->GetId(0), a);
     poly->GetPoint(ids->GetId(1), b);
@@ -146,7 +151,8 @@ void write_segments(const fs::path& vtp, const Segments& segments) {
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
   for (std::size_t i = 0; i < segments.from.size(); ++i) {
-    const vtkIdType ids[2] = {points->InsertNextPoint(segments.from[i].data()), points->InsertNextPoint(segments.to[i].data())};
+    const vtkIdType ids[2] = {points->InsertNextPoint(segments.from[i].data()),
+                              points->InsertNextPoint(segments.to[i].data())};
     lines->InsertNextCell(2, ids);
   }
   vtkNew<vtkPolyData> poly;
@@ -158,7 +164,8 @@ void write_segments(const fs::path& vtp, const Segments& segments) {
   write_through(w.GetPointer(), vtp);
 }
 
-void convert_to_polydata(const fs::path& legacy, const fs::path& vtp, const Eigen::Vector3d& shift) {
+void convert_to_polydata(const fs::path& legacy, const fs::path& vtp,
+                         const Eigen::Vector3d& shift) {
   auto data = read_any(legacy);
   vtkNew<vtkGeometryFilter> surface;
   surface->SetInputData(data);
@@ -189,7 +196,8 @@ ImageGrid read_image(const fs::path& vti) {
   r->SetFileName(vti.c_str());
   r->Update();
   vtkImageData* grid = r->GetOutput();
-  if (r->GetErrorCode() != 0 || !grid) throw InputError(fmt::format("{}: not a VTK XML image data file", vti.string()));
+  if (r->GetErrorCode() != 0 || !grid)
+    throw InputError(fmt::format("{}: not a VTK XML image data file", vti.string()));
   ImageGrid im;
   int dims[3];
   grid->GetDimensions(dims);
@@ -201,10 +209,11 @@ ImageGrid read_image(const fs::path& vti) {
 }
 
 const VtkFunctions kFunctions{read_points,         write_points, read_segments, write_segments,
-                             convert_to_polydata, write_image,  read_image};
+                              convert_to_polydata, write_image,  read_image};
 
 }  // namespace
 }  // namespace iwb::io
 
-extern "C" __attribute__((visibility("default"))) const iwb::io::VtkFunctions* iwb_vtk_functions() { return &iwb::io::kFunctions; }
-
+extern "C" __attribute__((visibility("default"))) const iwb::io::VtkFunctions* iwb_vtk_functions() {
+  return &iwb::io::kFunctions;
+}

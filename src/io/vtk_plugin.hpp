@@ -10,7 +10,8 @@ struct VtkFunctions {
   void (*write_points)(const std::filesystem::path&, const PointCloud&);
   Segments (*read_segments)(const std::filesystem::path&);
   void (*write_segments)(const std::filesystem::path&, const Segments&);
-  void (*convert_to_polydata)(const std::filesystem::path&, const std::filesystem::path&, const Eigen::Vector3d&);
+  void (*convert_to_polydata)(const std::filesystem::path&, const std::filesystem::path&,
+                              const Eigen::Vector3d&);
   void (*write_image)(const std::filesystem::path&, const ImageGrid&);
   ImageGrid (*read_image)(const std::filesystem::path&);
 };

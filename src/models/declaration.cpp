@@ -19,11 +19,13 @@ std::optional<RoughnessScheme> RoughnessSupport::scheme_named(const std::string&
 
 std::string RoughnessSupport::scheme_names(const std::string& separator) const {
   std::string out;
-  for (const auto s : schemes) out += fmt::format("{}\"{}\"", out.empty() ? "" : separator, to_string(s));
+  for (const auto s : schemes)
+    out += fmt::format("{}\"{}\"", out.empty() ? "" : separator, to_string(s));
   return out;
 }
 
-const InitialInputSpec* find_initial_input(const std::vector<InitialInputSpec>& inputs, const std::string& key) {
+const InitialInputSpec* find_initial_input(const std::vector<InitialInputSpec>& inputs,
+                                           const std::string& key) {
   for (const auto& in : inputs)
     if (in.key == key) return &in;
   return nullptr;

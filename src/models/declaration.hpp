@@ -27,7 +27,8 @@ struct ModelSpec;
 enum class ComponentKind { kStress, kVoidRatio, kHardening, kIntergranularStrain, kExternal };
 
 struct StateComponent {
-  std::string name;  // as manifest.json "state_variables" and messages name it: "T_n", "e", "delta_x"
+  std::string
+      name;  // as manifest.json "state_variables" and messages name it: "T_n", "e", "delta_x"
   std::string unit;  // "kPa", "-", "K"
   ComponentKind kind;
 };
@@ -47,15 +48,15 @@ struct StateLayout {
 // One input of the initial state as a test file's [initial] table names it.
 struct InitialInputSpec {
   enum class Kind { kNumber, kVector3, kKeywordOrVector3, kChoice };
-  // kFixed: the model's kinematics fix the value (AH's K0 = 1, eq. 5.16); a value given in a file is
-  // ignored with a warning, the default is what the manifest records.
+  // kFixed: the model's kinematics fix the value (AH's K0 = 1, eq. 5.16); a value given in a file
+  // is ignored with a warning, the default is what the manifest records.
   enum class Need { kRequired, kOptional, kOneOf, kFixed };
   std::string key;  // "sigma_n_kPa", "K0", "e0", "OCR", "T_K", "s_kPa", "delta"
   std::string unit;
   std::string doc;
   Kind kind = Kind::kNumber;
   Need need = Need::kRequired;
-  std::string group = {};  // Need::kOneOf: the inputs of which exactly one is given ("density")
+  std::string group = {};    // Need::kOneOf: the inputs of which exactly one is given ("density")
   Range range = positive();  // beyond it a value is a typo or a units mistake (common/range.hpp)
   std::vector<std::string> choices = {};  // kChoice and keywords: "seed"
   // The value when absent, from the model's parameters (K0 = 1 - sin phi_c); empty: no default.
@@ -63,7 +64,8 @@ struct InitialInputSpec {
 };
 
 // The declared input `key` of a declaration, or nullptr.
-const InitialInputSpec* find_initial_input(const std::vector<InitialInputSpec>& inputs, const std::string& key);
+const InitialInputSpec* find_initial_input(const std::vector<InitialInputSpec>& inputs,
+                                           const std::string& key);
 
 // ---- 2.4 External variables ----
 
@@ -116,13 +118,15 @@ struct RoughnessSupport {
   }
 };
 
-// What a prediction may use of a DEM run: a plain struct, so models/ does not depend on comparison/.
+// What a prediction may use of a DEM run: a plain struct, so models/ does not depend on
+// comparison/.
 struct WallDescription {
   double R_n = 0.0;  // normalized roughness, 0 for a flat wall
   double d50_mm = 0.0;
 };
 
-// A quantity `iwb compare` fits to a DEM run, where it goes, its box and its prediction without a fit.
+// A quantity `iwb compare` fits to a DEM run, where it goes, its box and its prediction without a
+// fit.
 struct FitParameter {
   enum class Target { kRoughness, kShearZone, kParameter };
   std::string name;  // compare.json key: "kappa_r", "d_s_mm"
@@ -159,7 +163,7 @@ struct ModelDeclaration {
   // the element's strains back into displacements: its (u, tau, u_n) response does not depend on
   // d_s, which a fit to interface runs therefore leaves alone (Clough & Duncan, Mortara).
   bool displacement_based = false;
-  std::string example_parameters;      // a file of data/params/: bench, stability, gold, tests
+  std::string example_parameters;  // a file of data/params/: bench, stability, gold, tests
   std::map<std::string, double> example_start;  // {sigma_n_kPa: 100, e0: 0.8} for the bench
   // The interface models for granular scenes that `iwb plan` and the league of `iwb assess
   // --reference` consider, simplest first: 1, 2, ...; 0: not a candidate. Not the listing order,

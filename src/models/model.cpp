@@ -10,7 +10,8 @@ namespace iwb::models {
 void Model::update(const StateVector&, const InterfaceStrain&, StateVector&) const {
   throw std::logic_error(std::string(name()) + " has no closed-form increment");
 }
-void Model::update(const StateVectorT<Dual>&, const InterfaceStrainT<Dual>&, StateVectorT<Dual>&) const {
+void Model::update(const StateVectorT<Dual>&, const InterfaceStrainT<Dual>&,
+                   StateVectorT<Dual>&) const {
   throw std::logic_error(std::string(name()) + " has no closed-form increment");
 }
 

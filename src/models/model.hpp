@@ -125,7 +125,8 @@ class Model {
   // of integrating rate. On Dual numbers it carries the increment's consistent derivative.
   virtual bool updates_by_increment() const { return false; }
   virtual void update(const StateVector& s, const InterfaceStrain& d, StateVector& out) const;
-  virtual void update(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d, StateVectorT<Dual>& out) const;
+  virtual void update(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d,
+                      StateVectorT<Dual>& out) const;
 
   virtual InterfaceStress stress(const StateVector& s) const = 0;
   virtual double void_ratio(const StateVector& s) const = 0;

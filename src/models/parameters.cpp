@@ -1,7 +1,8 @@
 #include "models/parameters.hpp"
 
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
 
 #include "common/errors.hpp"
 
@@ -15,7 +16,9 @@ bool ParameterSpec::admits(double v) const {
 }
 
 std::string ParameterSpec::range() const {
-  const auto end = [](double b) { return std::isinf(b) ? std::string("inf") : fmt::format("{:g}", b); };
+  const auto end = [](double b) {
+    return std::isinf(b) ? std::string("inf") : fmt::format("{:g}", b);
+  };
   return fmt::format("{}{}, {}{}{}", lower.open ? "(" : "[", end(lower.value), end(upper.value),
                      upper.open ? ")" : "]", unit == "-" ? "" : " " + unit);
 }
@@ -26,7 +29,8 @@ const ParameterSpec* ParameterTable::find(const std::string& key) const {
   return nullptr;
 }
 
-std::vector<std::string> implausible_values(const ParameterTable& table, const ParameterValues& values,
+std::vector<std::string> implausible_values(const ParameterTable& table,
+                                            const ParameterValues& values,
                                             const std::string& source) {
   std::vector<std::string> warnings;
   for (const auto& [key, value] : values) {
@@ -34,9 +38,10 @@ std::vector<std::string> implausible_values(const ParameterTable& table, const P
     if (spec == nullptr || !spec->calibration) continue;
     const auto& box = *spec->calibration;
     if (value < box.lower || value > box.upper)
-      warnings.push_back(fmt::format("{}: {} = {:g}{} lies outside [{:g}, {:g}], the range calibrated soils span; "
-                                     "a units slip?", source, key, value, spec->unit == "-" ? "" : " " + spec->unit,
-                                     box.lower, box.upper));
+      warnings.push_back(fmt::format(
+          "{}: {} = {:g}{} lies outside [{:g}, {:g}], the range calibrated soils span; "
+          "a units slip?",
+          source, key, value, spec->unit == "-" ? "" : " " + spec->unit, box.lower, box.upper));
   }
   return warnings;
 }
@@ -62,11 +67,11 @@ void validate(const ParameterTable& table, const ParameterValues& values,
   }
 }
 
-void require_below(const ParameterValues& values, const std::string& lower, const std::string& upper,
-                   const std::string& source, const std::string& why) {
+void require_below(const ParameterValues& values, const std::string& lower,
+                   const std::string& upper, const std::string& source, const std::string& why) {
   if (!(values.at(lower) < values.at(upper)))
-    throw InputError(fmt::format("{}: {} = {:g} must be below {} = {:g} ({})", source, lower, values.at(lower), upper,
-                                 values.at(upper), why));
+    throw InputError(fmt::format("{}: {} = {:g} must be below {} = {:g} ({})", source, lower,
+                                 values.at(lower), upper, values.at(upper), why));
 }
 
 }  // namespace iwb::models

@@ -64,12 +64,13 @@ void validate(const ParameterTable& table, const ParameterValues& values,
 // Warnings for values inside their bounds but outside their calibration box, the range the
 // declared soils span (MOOSE's plausibility warning: phi_c_deg = 0.4887, 28 degrees written in
 // radians, is admissible and runs to tau/sigma_n = 0.003). Empty when every value is plausible.
-std::vector<std::string> implausible_values(const ParameterTable& table, const ParameterValues& values,
+std::vector<std::string> implausible_values(const ParameterTable& table,
+                                            const ParameterValues& values,
                                             const std::string& source);
 
 // Throws InputError naming `source` unless values[lower] < values[upper]; `why` says what the order
 // means ("unloading is stiffer than normal compression").
-void require_below(const ParameterValues& values, const std::string& lower, const std::string& upper,
-                   const std::string& source, const std::string& why);
+void require_below(const ParameterValues& values, const std::string& lower,
+                   const std::string& upper, const std::string& source, const std::string& why);
 
 }  // namespace iwb::models

@@ -1,8 +1,9 @@
 #include "models/registry.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 #include <stdexcept>
 
 #include "common/errors.hpp"
@@ -13,7 +14,8 @@ namespace {
 
 std::string layout_problem(const StateLayout& l) {
   if (l.size() > kMaxStateSize)
-    return fmt::format("{} state components, more than kMaxStateSize = {}", l.size(), kMaxStateSize);
+    return fmt::format("{} state components, more than kMaxStateSize = {}", l.size(),
+                       kMaxStateSize);
   if (l.size() == 0 || l.components[0].kind != ComponentKind::kStress)
     return "state component 0 must be the normal stress (the driver reads sigma_n there)";
   const auto names = l.names();
@@ -21,12 +23,14 @@ std::string layout_problem(const StateLayout& l) {
     for (std::size_t j = i + 1; j < names.size(); ++j)
       if (names[i] == names[j]) return fmt::format("state component '{}' declared twice", names[i]);
   if (l.void_ratio >= l.size() ||
-      (l.void_ratio >= 0 && l.components[std::size_t(l.void_ratio)].kind != ComponentKind::kVoidRatio))
+      (l.void_ratio >= 0 &&
+       l.components[std::size_t(l.void_ratio)].kind != ComponentKind::kVoidRatio))
     return fmt::format("void_ratio index {} is not a void-ratio component", l.void_ratio);
   for (int slot = 0; slot < kExternalSlots; ++slot) {
     const int i = l.external[std::size_t(slot)];
     if (i >= l.size() || (i >= 0 && l.components[std::size_t(i)].kind != ComponentKind::kExternal))
-      return fmt::format("external variable slot {} points at {}, not an external component", slot, i);
+      return fmt::format("external variable slot {} points at {}, not an external component", slot,
+                         i);
   }
   return {};
 }
@@ -35,7 +39,8 @@ template <class Named>
 std::string duplicate_name(const std::vector<Named>& items, const char* what) {
   for (std::size_t i = 0; i < items.size(); ++i)
     for (std::size_t j = i + 1; j < items.size(); ++j)
-      if (items[i].name == items[j].name) return fmt::format("{} '{}' declared twice", what, items[i].name);
+      if (items[i].name == items[j].name)
+        return fmt::format("{} '{}' declared twice", what, items[i].name);
   return {};
 }
 
@@ -58,7 +63,8 @@ std::string declaration_problem(const ModelSpec& spec) {
   if (auto why = duplicate_name(d.fit, "fit parameter"); !why.empty()) return why;
   if (spec.uses_roughness == d.roughness.schemes.empty())
     return "uses_roughness disagrees with the declared roughness schemes";
-  if (!spec.uses_roughness && !d.fit.empty()) return "fit parameters declared for a model without roughness";
+  if (!spec.uses_roughness && !d.fit.empty())
+    return "fit parameters declared for a model without roughness";
   for (std::size_t i = 0; i < spec.tables.size(); ++i)
     for (std::size_t j = i + 1; j < spec.tables.size(); ++j)
       if (spec.tables[i]->name == spec.tables[j]->name)
@@ -85,14 +91,17 @@ std::vector<ModelSpec>& registry_storage() {
 
 }  // namespace
 
-const std::vector<ModelSpec>& model_registry() { return registry_storage(); }
+const std::vector<ModelSpec>& model_registry() {
+  return registry_storage();
+}
 
 void add_runtime_model(ModelSpec spec) {
   auto& specs = registry_storage();
   if (const auto why = declaration_problem(spec); !why.empty())
     throw InputError(fmt::format("model '{}' is declared inconsistently: {}", spec.name, why));
   for (const auto& s : specs)
-    if (s.name == spec.name) throw InputError(fmt::format("model '{}' exists already: choose another name", spec.name));
+    if (s.name == spec.name)
+      throw InputError(fmt::format("model '{}' exists already: choose another name", spec.name));
   if (specs.size() == specs.capacity())
     throw InputError(fmt::format("at most {} models may be added at run time", kRuntimeModels));
   specs.push_back(std::move(spec));
@@ -126,15 +135,20 @@ const ModelSpec& find_model(const std::string& name) {
 double critical_friction_angle(const ModelSpec& spec, const ModelInputs& inputs) {
   for (const auto* table : spec.tables)
     for (const auto& p : table->entries)
-      if (p.role == ParameterRole::kCriticalFrictionAngle) return require_table(inputs, table->name).at(p.key) * M_PI / 180.0;
+      if (p.role == ParameterRole::kCriticalFrictionAngle)
+        return require_table(inputs, table->name).at(p.key) * M_PI / 180.0;
   return NAN;
 }
 
 void set_initial_input(InitialState& s, const std::string& key, double value) {
-  if (key == "sigma_n_kPa") s.sigma_n = value;
-  else if (key == "K0") s.K0 = value;
-  else if (key == "e0") s.e0 = value;
-  else s.named[key] = value;
+  if (key == "sigma_n_kPa")
+    s.sigma_n = value;
+  else if (key == "K0")
+    s.K0 = value;
+  else if (key == "e0")
+    s.e0 = value;
+  else
+    s.named[key] = value;
 }
 
 InitialState offer(const ModelSpec& spec, const ModelInputs& inputs,
@@ -145,7 +159,8 @@ InitialState offer(const ModelSpec& spec, const ModelInputs& inputs,
     std::optional<double> v;
     for (const auto& [key, value] : values)
       if (key == input.key) v = value;
-    if (input.need == InitialInputSpec::Need::kFixed || (!v && input.default_value)) v = input.default_value(inputs);
+    if (input.need == InitialInputSpec::Need::kFixed || (!v && input.default_value))
+      v = input.default_value(inputs);
     if (v) set_initial_input(s, input.key, *v);
   }
   return s;

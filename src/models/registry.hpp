@@ -60,8 +60,8 @@ void register_all_models(ModelRegistry& registry);
 // In a model folder's register.cpp, the one registration of its models:
 //   IWB_REGISTER_MODELS(hvwe, hvwe_spec(), hvwe_igs_spec())
 // defines register_hvwe(); the first argument is the folder's name as a C identifier.
-#define IWB_REGISTER_MODELS(folder, ...)                              \
-  void register_##folder(ModelRegistry& registry) {                   \
+#define IWB_REGISTER_MODELS(folder, ...)                                                  \
+  void register_##folder(ModelRegistry& registry) {                                       \
     for (auto& spec : std::vector<ModelSpec>{__VA_ARGS__}) registry.add(std::move(spec)); \
   }
 

@@ -1,8 +1,8 @@
 #include "pile/load_transfer.hpp"
 
-#include <Eigen/Dense>
 #include <fmt/core.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 
 #include "common/errors.hpp"
@@ -43,7 +43,8 @@ LoadTransfer::Assembly LoadTransfer::assemble(const Eigen::VectorXd& w) const {
     // the shaft at the element's middle: w_m = (w_e + w_e+1)/2, its force halved to the nodes
     const double dw = 0.5 * (w(e) + w(e + 1) - w_(e) - w_(e + 1));
     a.shaft.push_back(points_[e].trial(dw));
-    const double F = a.shaft.back().tau_kPa * shaft_area_m2_, k = a.shaft.back().stiffness * shaft_area_m2_ / 4.0;
+    const double F = a.shaft.back().tau_kPa * shaft_area_m2_,
+                 k = a.shaft.back().stiffness * shaft_area_m2_ / 4.0;
     a.force(e) += 0.5 * F, a.force(e + 1) += 0.5 * F;
     a.stiffness.block(e, e, 2, 2).array() += k;
   }
@@ -68,13 +69,15 @@ PileSnapshot LoadTransfer::solve(bool head_load_given, double head_value) {
       commit(w, a);
       return snapshot();
     }
-    const Eigen::VectorXd dw = a.stiffness.bottomRightCorner(n + 1 - first, n + 1 - first).partialPivLu().solve(-r);
+    const Eigen::VectorXd dw =
+        a.stiffness.bottomRightCorner(n + 1 - first, n + 1 - first).partialPivLu().solve(-r);
     if (!dw.allFinite()) break;
     w.tail(n + 1 - first) += dw;
   }
-  throw ConvergenceError(fmt::format("pile: no equilibrium in {} Newton iterations at head {} {:.6g} {} (beyond the capacity?)",
-                                     kNewtonIterations, head_load_given ? "load" : "settlement", head_value,
-                                     head_load_given ? "kN" : "mm"));
+  throw ConvergenceError(fmt::format(
+      "pile: no equilibrium in {} Newton iterations at head {} {:.6g} {} (beyond the capacity?)",
+      kNewtonIterations, head_load_given ? "load" : "settlement", head_value,
+      head_load_given ? "kN" : "mm"));
 }
 
 void LoadTransfer::commit(const Eigen::VectorXd& w, const Assembly& a) {
@@ -82,8 +85,12 @@ void LoadTransfer::commit(const Eigen::VectorXd& w, const Assembly& a) {
   for (std::size_t e = 0; e < points_.size(); ++e) points_[e].commit(a.shaft[e]);
 }
 
-PileSnapshot LoadTransfer::settle_to(double w_mm) { return solve(false, w_mm); }
-PileSnapshot LoadTransfer::load_to(double P_kN) { return solve(true, P_kN); }
+PileSnapshot LoadTransfer::settle_to(double w_mm) {
+  return solve(false, w_mm);
+}
+PileSnapshot LoadTransfer::load_to(double P_kN) {
+  return solve(true, P_kN);
+}
 
 PileSnapshot LoadTransfer::snapshot() const {
   const int n = int(points_.size());
@@ -91,7 +98,8 @@ PileSnapshot LoadTransfer::snapshot() const {
   s.head_settlement_mm = w_(0), s.tip_settlement_mm = w_(n);
   s.base_load_kN = base_kN_per_mm_ * w_(n);
   for (const auto& p : points_) s.shaft_load_kN += p.committed().tau_kPa * shaft_area_m2_;
-  s.head_load_kN = bar_kN_per_mm_ * (w_(0) - w_(1)) + 0.5 * points_[0].committed().tau_kPa * shaft_area_m2_;
+  s.head_load_kN =
+      bar_kN_per_mm_ * (w_(0) - w_(1)) + 0.5 * points_[0].committed().tau_kPa * shaft_area_m2_;
   s.newton_iterations = last_iterations_;
   return s;
 }
@@ -100,8 +108,8 @@ std::vector<ProfileRow> LoadTransfer::profile() const {
   std::vector<ProfileRow> rows;
   for (std::size_t e = 0; e < points_.size(); ++e) {
     const auto& c = points_[e].committed();
-    rows.push_back({(double(e) + 0.5) * h_m_, 0.5 * (w_(e) + w_(e + 1)), bar_kN_per_mm_ * (w_(e) - w_(e + 1)), c.tau_kPa,
-                    c.sigma_n_kPa});
+    rows.push_back({(double(e) + 0.5) * h_m_, 0.5 * (w_(e) + w_(e + 1)),
+                    bar_kN_per_mm_ * (w_(e) - w_(e + 1)), c.tau_kPa, c.sigma_n_kPa});
   }
   return rows;
 }

@@ -41,7 +41,7 @@ class LoadTransfer {
 
  private:
   struct Assembly {
-    Eigen::VectorXd force;  // internal nodal forces, kN
+    Eigen::VectorXd force;      // internal nodal forces, kN
     Eigen::MatrixXd stiffness;  // kN / mm
     std::vector<ShaftResponse> shaft;
   };

@@ -1,10 +1,10 @@
 #include "pile/pile_run.hpp"
 
 #include <fmt/core.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
 #include "comparison/figure.hpp"
@@ -61,8 +61,8 @@ struct Analysis {
   std::string status = "complete";
 };
 
-Analysis analyse(const PileSpec& spec, const ShaftMaterial& material, int elements, const PileRunOptions& opt,
-                 long& done, long total) {
+Analysis analyse(const PileSpec& spec, const ShaftMaterial& material, int elements,
+                 const PileRunOptions& opt, long& done, long total) {
   Analysis a;
   LoadTransfer pile(spec, material, elements);
   a.curve.push_back(pile.snapshot());
@@ -92,30 +92,38 @@ Analysis analyse(const PileSpec& spec, const ShaftMaterial& material, int elemen
 }
 
 std::string curve_csv(const std::vector<PileSnapshot>& c) {
-  std::string out = "step,head_settlement_mm,head_load_kN,shaft_load_kN,base_load_kN,tip_settlement_mm,newton_iterations\n";
+  std::string out =
+      "step,head_settlement_mm,head_load_kN,shaft_load_kN,base_load_kN,tip_settlement_mm,newton_"
+      "iterations\n";
   for (std::size_t k = 0; k < c.size(); ++k)
-    out += fmt::format("{},{},{},{},{},{},{}\n", k, c[k].head_settlement_mm, c[k].head_load_kN, c[k].shaft_load_kN,
-                       c[k].base_load_kN, c[k].tip_settlement_mm, c[k].newton_iterations);
+    out += fmt::format("{},{},{},{},{},{},{}\n", k, c[k].head_settlement_mm, c[k].head_load_kN,
+                       c[k].shaft_load_kN, c[k].base_load_kN, c[k].tip_settlement_mm,
+                       c[k].newton_iterations);
   return out;
 }
 
 std::string profiles_csv(const Analysis& a) {
   std::string out = "head_load_kN,z_m,w_mm,axial_kN,tau_kPa,sigma_n_kPa\n";
   for (const auto& [load, rows] : a.profiles)
-    for (const auto& r : rows) out += fmt::format("{},{},{},{},{},{}\n", load, r.z_m, r.w_mm, r.axial_kN, r.tau_kPa, r.sigma_n_kPa);
+    for (const auto& r : rows)
+      out += fmt::format("{},{},{},{},{},{}\n", load, r.z_m, r.w_mm, r.axial_kN, r.tau_kPa,
+                         r.sigma_n_kPa);
   return out;
 }
 
 // The quantity mesh convergence is judged on: the head load at the last settlement, or the head
 // settlement at the last load.
 double end_value(const PileSpec& spec, const Analysis& a) {
-  return spec.loading.kind == LoadingKind::kSettlement ? a.curve.back().head_load_kN : a.curve.back().head_settlement_mm;
+  return spec.loading.kind == LoadingKind::kSettlement ? a.curve.back().head_load_kN
+                                                       : a.curve.back().head_settlement_mm;
 }
 
-json mesh_convergence(const PileSpec& spec, const std::vector<std::pair<int, const Analysis*>>& runs) {
+json mesh_convergence(const PileSpec& spec,
+                      const std::vector<std::pair<int, const Analysis*>>& runs) {
   json j;
-  j["quantity"] = spec.loading.kind == LoadingKind::kSettlement ? "head load at the last settlement, kN"
-                                                                 : "head settlement at the end of the last cycle, mm";
+  j["quantity"] = spec.loading.kind == LoadingKind::kSettlement
+                      ? "head load at the last settlement, kN"
+                      : "head settlement at the end of the last cycle, mm";
   std::vector<double> v;
   for (const auto& [n, a] : runs) {
     j["elements"].push_back(n);
@@ -144,9 +152,10 @@ std::vector<fs::path> draw_figures(const PileSpec& spec, const Analysis& a, cons
   }
   std::vector<fs::path> svgs;
   const std::string model = spec.interface.model;
-  svgs.push_back(comparison::draw(comparison::curves_figure("load_settlement", "Load-settlement (" + model + ")",
-                                                            "head settlement (mm)", "load (kN)", {head, shaft, base}),
-                                  staged.path()));
+  svgs.push_back(comparison::draw(
+      comparison::curves_figure("load_settlement", "Load-settlement (" + model + ")",
+                                "head settlement (mm)", "load (kN)", {head, shaft, base}),
+      staged.path()));
   for (const auto& [name, label, column] :
        std::vector<std::tuple<std::string, std::string, double ProfileRow::*>>{
            {"profile_tau", "shaft friction tau (kPa)", &ProfileRow::tau_kPa},
@@ -158,9 +167,10 @@ std::vector<fs::path> draw_figures(const PileSpec& spec, const Analysis& a, cons
       for (const auto& r : rows) c.x.push_back(r.*column), c.y.push_back(-r.z_m);
       curves.push_back(c);
     }
-    svgs.push_back(comparison::draw(comparison::curves_figure(name, label + " along the shaft (" + model + ")", label,
-                                                              "depth below the head (m, negative)", curves),
-                                    staged.path()));
+    svgs.push_back(comparison::draw(
+        comparison::curves_figure(name, label + " along the shaft (" + model + ")", label,
+                                  "depth below the head (m, negative)", curves),
+        staged.path()));
   }
   staged.commit();
   return svgs;
@@ -174,16 +184,24 @@ json summary_of(const PileSpec& spec, const Analysis& a, const json& convergence
           {"model", spec.interface.model},
           {"elements", spec.pile.elements},
           {"largest_head_load_kN", capacity},
-          {"end", {{"head_settlement_mm", end.head_settlement_mm}, {"head_load_kN", end.head_load_kN},
-                   {"shaft_load_kN", end.shaft_load_kN}, {"base_load_kN", end.base_load_kN}}},
+          {"end",
+           {{"head_settlement_mm", end.head_settlement_mm},
+            {"head_load_kN", end.head_load_kN},
+            {"shaft_load_kN", end.shaft_load_kN},
+            {"base_load_kN", end.base_load_kN}}},
           {"mesh_convergence", convergence}};
 }
 
 }  // namespace
 
 int run_pile(const PileSpec& spec, const PileRunOptions& opt) {
-  json m{{"kind", "pile"}, {"status", "running"}, {"source", spec.source}, {"description", spec.description},
-         {"command_line", opt.command_line}, {"started", io::utc_timestamp()}, {"interface_library", iwb_version()}};
+  json m{{"kind", "pile"},
+         {"status", "running"},
+         {"source", spec.source},
+         {"description", spec.description},
+         {"command_line", opt.command_line},
+         {"started", io::utc_timestamp()},
+         {"interface_library", iwb_version()}};
   const auto lock = io::DirectoryLock::take(opt.out, opt.command_line);
   io::prepare_run_directory(opt.out, opt.force);
   io::write_manifest(opt.out, m);
@@ -194,9 +212,11 @@ int run_pile(const PileSpec& spec, const PileRunOptions& opt) {
   const std::vector<int> meshes{std::max(1, n / 2), n, 2 * n};
   long done = 0;
   std::vector<Analysis> runs;
-  for (int elements : meshes) runs.push_back(analyse(spec, material, elements, opt, done, steps * 3));
+  for (int elements : meshes)
+    runs.push_back(analyse(spec, material, elements, opt, done, steps * 3));
   const Analysis& main = runs[1];
-  const json convergence = mesh_convergence(spec, {{meshes[0], &runs[0]}, {meshes[1], &runs[1]}, {meshes[2], &runs[2]}});
+  const json convergence =
+      mesh_convergence(spec, {{meshes[0], &runs[0]}, {meshes[1], &runs[1]}, {meshes[2], &runs[2]}});
   io::write_atomically(opt.out / "load_settlement.csv", curve_csv(main.curve));
   io::write_atomically(opt.out / "profiles.csv", profiles_csv(main));
   std::string mc = "elements,status,value\n";
@@ -205,7 +225,8 @@ int run_pile(const PileSpec& spec, const PileRunOptions& opt) {
                       runs[i].status == "complete" ? end_value(spec, runs[i]) : NAN);
   io::write_atomically(opt.out / "mesh_convergence.csv", mc);
   if (main.curve.size() > 1) draw_figures(spec, main, opt.out);
-  io::write_atomically(opt.out / "summary.json", summary_of(spec, main, convergence).dump(2) + "\n");
+  io::write_atomically(opt.out / "summary.json",
+                       summary_of(spec, main, convergence).dump(2) + "\n");
   m["status"] = main.status;
   m["finished"] = io::utc_timestamp();
   io::write_manifest(opt.out, m);

@@ -1,10 +1,11 @@
 #pragma once
 // A pile load-transfer analysis (`iwb pile`, README.md here) as data: the pile, the soil around it,
 // the base, the interface model at the shaft and the head's loading, read from a TOML file.
+#include <toml++/toml.h>
+
 #include <filesystem>
 #include <map>
 #include <string>
-#include <toml++/toml.h>
 #include <vector>
 
 namespace iwb::pile {
@@ -26,7 +27,7 @@ struct InterfaceSpec {
   std::string model;
   std::filesystem::path parameters;
   double kappa_r = 1.0;
-  double d_s_mm = 0.0;                   // the virtual thickness d_s^v (seed 7.1)
+  double d_s_mm = 0.0;                    // the virtual thickness d_s^v (seed 7.1)
   std::map<std::string, double> initial;  // the model's other [initial] inputs (e0, OCR, delta...)
 };
 
@@ -53,6 +54,7 @@ struct PileSpec {
 
 // InputError naming the file, the key and the value for anything missing, unknown or out of range.
 PileSpec load_pile_spec(const std::filesystem::path& file);
-PileSpec parse_pile_spec(const toml::table& root, const std::string& source, const std::filesystem::path& base_dir);
+PileSpec parse_pile_spec(const toml::table& root, const std::string& source,
+                         const std::filesystem::path& base_dir);
 
 }  // namespace iwb::pile

@@ -37,8 +37,8 @@ class ShaftMaterial {
 struct ShaftResponse {
   std::vector<double> state;
   double tau_kPa = 0.0, sigma_n_kPa = 0.0;
-  double u_n_mm = 0.0;         // the normal displacement increment (opening positive)
-  double stiffness = 0.0;      // d tau / d w at the spring's K, kPa per mm (condensed tangent)
+  double u_n_mm = 0.0;     // the normal displacement increment (opening positive)
+  double stiffness = 0.0;  // d tau / d w at the spring's K, kPa per mm (condensed tangent)
 };
 
 class ShaftPoint {

@@ -1,11 +1,10 @@
 #pragma once
 // The element tests of the clay studies (seed 6.4, chapter 8) as data: which model, set, boundary,
-// stress, density, roughness and path, written out as the element-test TOML that `iwb element` reads.
-#include <nlohmann/json.hpp>
-
+// stress, density, roughness and path, written out as the element-test TOML that `iwb element`
+// reads.
 #include <cmath>
-
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -17,14 +16,15 @@ struct ClayCase {
   std::string parameters;  // a shipped set (data/params/)
   std::string boundary;    // CNL, CNS, CV
   double sigma_n_kPa = 100.0;
-  double OCR = 1.0;         // the seed's tests start normally consolidated (ERRATA 15: N at p = 1 kPa)
-  double K_kPa = 0.0;       // CNS: per unit normal strain (the seed's "K of 100 kPa", d_s = 1 mm)
-  double kappa_r = 1.0;     // interface models only
+  double OCR = 1.0;      // the seed's tests start normally consolidated (ERRATA 15: N at p = 1 kPa)
+  double K_kPa = 0.0;    // CNS: per unit normal strain (the seed's "K of 100 kPa", d_s = 1 mm)
+  double kappa_r = 1.0;  // interface models only
   std::string scheme = {};  // empty: the model's own
   bool cyclic = false;      // cycles of +-kCyclicAmplitude instead of monotonic shear
-  double e0 = NAN;          // given instead of OCR where the study needs one void ratio for every model
-  double K0 = NAN;          // NaN: the model's default
-  double gamma = 0.2;       // monotonic paths: the shear strain reached, in kIncrementsPerUnitGamma steps per unit
+  double e0 = NAN;  // given instead of OCR where the study needs one void ratio for every model
+  double K0 = NAN;  // NaN: the model's default
+  double gamma =
+      0.2;  // monotonic paths: the shear strain reached, in kIncrementsPerUnitGamma steps per unit
   // Further [initial] inputs the model declares (hcthm's T_K, s_kPa), and keys of the parameter set
   // changed for this case ("thermo_hydro.n_t"): the run reads a copy of the set with them.
   std::map<std::string, double> initial_inputs = {};
@@ -34,9 +34,10 @@ struct ClayCase {
 // The name of the parameter file a case runs with: its set, or the set with its changes.
 std::string parameter_file_name(const ClayCase& c);
 
-// Monotonic shear to gamma (0.2 by default) in increments of 1e-4 (data/tests/hce_cv_table_6_1.toml); cyclic paths
-// of 10 cycles of +-0.001 in 50 increments a quarter: Table 6.4 gives no amplitude; 10 R keeps the
-// cycles in the intergranular strain's range, steps of R/5 resolve it.
+// Monotonic shear to gamma (0.2 by default) in increments of 1e-4
+// (data/tests/hce_cv_table_6_1.toml); cyclic paths of 10 cycles of +-0.001 in 50 increments a
+// quarter: Table 6.4 gives no amplitude; 10 R keeps the cycles in the intergranular strain's range,
+// steps of R/5 resolve it.
 inline constexpr int kIncrementsPerUnitGamma = 10000;
 inline constexpr double kCyclicAmplitude = 0.001;
 inline constexpr int kCycles = 10;

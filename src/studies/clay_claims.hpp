@@ -1,9 +1,8 @@
 #pragma once
 // What seed 6.4 says of the clay interface models, each claim put to the study's runs: the numbers
 // and whether the claim holds for these models as implemented.
-#include <nlohmann/json.hpp>
-
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
-// `iwb run --study clay`: the seed's section 6.4 comparisons of the clay interface models, which the
-// granular DEM cannot check, reproduced as element tests with figures, a table of the seed's
+// `iwb run --study clay`: the seed's section 6.4 comparisons of the clay interface models, which
+// the granular DEM cannot check, reproduced as element tests with figures, a table of the seed's
 // claims against what the models do, and one HTML page (README.md in this folder).
 #include "studies/study.hpp"
 

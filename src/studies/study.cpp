@@ -1,11 +1,11 @@
 #include "studies/study.hpp"
 
 #include <fmt/core.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
 #include "io/element_run.hpp"
@@ -23,13 +23,16 @@ namespace {
 // The shipped sets the cases name, written into OUT/parameters/ for the run directories to name,
 // and a copy with its changes for every case that changes keys of its set (keyed by
 // parameter_file_name).
-std::map<std::string, fs::path> study_parameters(const std::vector<ClayCase>& cases, const fs::path& out) {
+std::map<std::string, fs::path> study_parameters(const std::vector<ClayCase>& cases,
+                                                 const fs::path& out) {
   std::map<std::string, fs::path> files;
   for (const auto& c : cases) files[c.parameters];
   for (const auto& set : io::parameter_sets({}))
     if (files.count(set.name)) files[set.name] = io::parameter_set_file(set, out / "parameters");
   for (const auto& [name, path] : files)
-    if (path.empty()) throw std::logic_error(fmt::format("{} is not among the parameter sets built into iwb", name));
+    if (path.empty())
+      throw std::logic_error(
+          fmt::format("{} is not among the parameter sets built into iwb", name));
   for (const auto& c : cases) {
     if (c.parameter_changes.empty()) continue;
     auto root = io::parse_toml_text(io::read_file(files.at(c.parameters)), c.parameters);
@@ -58,7 +61,8 @@ ClayCurve curve_of(const io::ElementRunOutcome& o, const models::Model& m) {
   return c;
 }
 
-ClayCurve run_case(const std::string& study, const ClayCase& c, const fs::path& parameters, const StudyOptions& opt) {
+ClayCurve run_case(const std::string& study, const ClayCase& c, const fs::path& parameters,
+                   const StudyOptions& opt) {
   const std::string text = element_test_text(c, parameters.string());
   const std::string name = fmt::format("<study:{} {}>", study, c.name);
   const auto spec = io::parse_element_test(io::parse_toml_text(text, name), name, ".");
@@ -68,23 +72,31 @@ ClayCurve run_case(const std::string& study, const ClayCase& c, const fs::path& 
 }
 
 std::string markdown(const StudyDefinition& study, const std::vector<ClayClaim>& claims) {
-  std::string md = fmt::format("# {} (iwb run --study {})\n\n{} Figures: {}.html.\n\n| seed | claim | measured | verdict |\n|---|---|---|---|\n",
-                               study.title, study.name, study.setting, study.name);
+  std::string md = fmt::format(
+      "# {} (iwb run --study {})\n\n{} Figures: {}.html.\n\n| seed | claim | measured | verdict "
+      "|\n|---|---|---|---|\n",
+      study.title, study.name, study.setting, study.name);
   for (const auto& c : claims)
-    md += fmt::format("| {} | {} | {} | {} |\n", c.section, c.claim, c.measured, c.holds ? "holds" : "does not hold");
+    md += fmt::format("| {} | {} | {} | {} |\n", c.section, c.claim, c.measured,
+                      c.holds ? "holds" : "does not hold");
   return md;
 }
 
-nlohmann::json summary_json(const std::vector<ClayCase>& cases, const std::map<std::string, ClayCurve>& curves,
+nlohmann::json summary_json(const std::vector<ClayCase>& cases,
+                            const std::map<std::string, ClayCurve>& curves,
                             const std::vector<ClayClaim>& claims) {
   nlohmann::json j;
   for (const auto& c : cases) {
     const auto& k = curves.at(c.name);
-    j["cases"][c.name] = {{"model", c.model}, {"parameters", c.parameters}, {"boundary", c.boundary},
-                          {"sigma_n0_kPa", c.sigma_n_kPa}, {"status", k.status}, {"end", k.end_values()}};
+    j["cases"][c.name] = {{"model", c.model},       {"parameters", c.parameters},
+                          {"boundary", c.boundary}, {"sigma_n0_kPa", c.sigma_n_kPa},
+                          {"status", k.status},     {"end", k.end_values()}};
   }
   for (const auto& c : claims)
-    j["claims"].push_back({{"section", c.section}, {"claim", c.claim}, {"measured", c.measured}, {"holds", c.holds},
+    j["claims"].push_back({{"section", c.section},
+                           {"claim", c.claim},
+                           {"measured", c.measured},
+                           {"holds", c.holds},
                            {"values", c.values}});
   return j;
 }
@@ -96,8 +108,10 @@ void refuse_earlier_study(const std::vector<ClayCase>& cases, const StudyOptions
   for (const auto& c : cases) earlier.push_back(opt.out / c.name / "manifest.json");
   for (const auto& f : earlier)
     if (fs::exists(f))
-      throw InputError(fmt::format("{}: holds an earlier study ({}); choose another --out or pass --force to "
-                                   "replace it", opt.out.string(), fs::relative(f, opt.out).string()));
+      throw InputError(
+          fmt::format("{}: holds an earlier study ({}); choose another --out or pass --force to "
+                      "replace it",
+                      opt.out.string(), fs::relative(f, opt.out).string()));
 }
 
 }  // namespace
@@ -110,9 +124,12 @@ int run_study(const StudyDefinition& study, const StudyOptions& opt) {
   bool complete = true;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const auto& c = cases[i];
-    curves[c.name] = run_case(study.name, c, parameters.at(c.parameter_changes.empty() ? c.parameters : parameter_file_name(c)), opt);
+    curves[c.name] = run_case(
+        study.name, c,
+        parameters.at(c.parameter_changes.empty() ? c.parameters : parameter_file_name(c)), opt);
     complete = complete && curves[c.name].status == "complete";
-    fmt::print(stderr, "  case {}/{}: {} ({}) {}\n", i + 1, cases.size(), c.name, c.model, curves[c.name].status);
+    fmt::print(stderr, "  case {}/{}: {} ({}) {}\n", i + 1, cases.size(), c.name, c.model,
+               curves[c.name].status);
     if (opt.interrupt && opt.interrupt->load()) return 1;
   }
   const auto claims = study.claims(curves);
@@ -121,8 +138,10 @@ int run_study(const StudyDefinition& study, const StudyOptions& opt) {
   const std::string md = markdown(study, claims);
   io::write_atomically(opt.out / "study.md", md);
   const auto page = opt.out / (study.name + ".html");
-  io::write_atomically(page, study_page(study.title, "iwb run --study " + study.name, study.setting, claims, figures, opt.out));
-  fmt::print("{}\n-> {} ({} figures), {}\n", md, page.string(), figures.size(), (opt.out / "study.json").string());
+  io::write_atomically(page, study_page(study.title, "iwb run --study " + study.name, study.setting,
+                                        claims, figures, opt.out));
+  fmt::print("{}\n-> {} ({} figures), {}\n", md, page.string(), figures.size(),
+             (opt.out / "study.json").string());
   return complete ? 0 : 1;
 }
 

@@ -15,25 +15,34 @@ namespace {
 
 const std::vector<double>& values(const ClayCurve& c, Axis a) {
   switch (a) {
-    case Axis::kGamma: return c.gamma;
-    case Axis::kEpsN: return c.eps_n;
-    case Axis::kTau: return c.tau;
-    case Axis::kSigmaN: return c.sigma_n;
+    case Axis::kGamma:
+      return c.gamma;
+    case Axis::kEpsN:
+      return c.eps_n;
+    case Axis::kTau:
+      return c.tau;
+    case Axis::kSigmaN:
+      return c.sigma_n;
   }
   return c.tau;
 }
 
 const char* label(Axis a) {
   switch (a) {
-    case Axis::kGamma: return "shear strain gamma_x";
-    case Axis::kEpsN: return "normal strain eps_n (opening positive)";
-    case Axis::kTau: return "shear stress tau_x (kPa)";
-    case Axis::kSigmaN: return "normal stress sigma_n (kPa)";
+    case Axis::kGamma:
+      return "shear strain gamma_x";
+    case Axis::kEpsN:
+      return "normal strain eps_n (opening positive)";
+    case Axis::kTau:
+      return "shear stress tau_x (kPa)";
+    case Axis::kSigmaN:
+      return "normal stress sigma_n (kPa)";
   }
   return "";
 }
 
-comparison::Figure figure_of(const FigureSpec& spec, const std::map<std::string, ClayCurve>& curves) {
+comparison::Figure figure_of(const FigureSpec& spec,
+                             const std::map<std::string, ClayCurve>& curves) {
   std::vector<comparison::PlotCurve> plotted;
   for (const auto& [name, title] : spec.curves) {
     const auto& c = curves.at(name);
@@ -49,7 +58,8 @@ comparison::Figure figure_of(const FigureSpec& spec, const std::map<std::string,
 
 }  // namespace
 
-std::vector<StudyFigure> draw_figures(const std::vector<FigureSpec>& specs, const std::map<std::string, ClayCurve>& curves,
+std::vector<StudyFigure> draw_figures(const std::vector<FigureSpec>& specs,
+                                      const std::map<std::string, ClayCurve>& curves,
                                       const fs::path& out) {
   io::StagedDirectory staged(out / "figures");
   std::vector<StudyFigure> figures;
@@ -61,23 +71,29 @@ std::vector<StudyFigure> draw_figures(const std::vector<FigureSpec>& specs, cons
   return figures;
 }
 
-std::string study_page(const std::string& title, const std::string& command, const std::string& setting,
-                       const std::vector<ClayClaim>& claims, const std::vector<StudyFigure>& figures, const fs::path& out) {
+std::string study_page(const std::string& title, const std::string& command,
+                       const std::string& setting, const std::vector<ClayClaim>& claims,
+                       const std::vector<StudyFigure>& figures, const fs::path& out) {
   using comparison::escape_html;
   std::string body = fmt::format(
-      "<p>Generated {} by iwb {} (<code>{}</code>). {} Compression positive, kPa. Each case is an element run "
-      "directory beside this page; each figure is also an SVG and PNG with its CSV and gnuplot script in figures/.</p>\n"
-      "<section><h2>The seed's claims</h2>\n<table><tr><th>seed</th><th>claim</th><th>measured</th><th>verdict</th></tr>\n",
+      "<p>Generated {} by iwb {} (<code>{}</code>). {} Compression positive, kPa. Each case is an "
+      "element run "
+      "directory beside this page; each figure is also an SVG and PNG with its CSV and gnuplot "
+      "script in figures/.</p>\n"
+      "<section><h2>The seed's "
+      "claims</h2>\n<table><tr><th>seed</th><th>claim</th><th>measured</th><th>verdict</th></tr>\n",
       io::utc_timestamp(), IWB_VERSION, escape_html(command), escape_html(setting));
   for (const auto& c : claims)
-    body += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"{}\">{}</td></tr>\n", escape_html(c.section),
-                        escape_html(c.claim), escape_html(c.measured), c.holds ? "holds" : "breaks",
-                        c.holds ? "holds" : "does not hold");
+    body += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"{}\">{}</td></tr>\n",
+                        escape_html(c.section), escape_html(c.claim), escape_html(c.measured),
+                        c.holds ? "holds" : "breaks", c.holds ? "holds" : "does not hold");
   body += "</table></section>\n<section><h2>Figures</h2>\n";
   for (const auto& f : figures)
-    body += fmt::format("<figure>{}<figcaption>{} (data: {})</figcaption></figure>\n", comparison::inline_svg(f.svg),
-                        escape_html(f.caption),
-                        escape_html(fs::relative(f.svg.parent_path() / (f.svg.stem().string() + ".csv"), out).string()));
+    body += fmt::format(
+        "<figure>{}<figcaption>{} (data: {})</figcaption></figure>\n",
+        comparison::inline_svg(f.svg), escape_html(f.caption),
+        escape_html(
+            fs::relative(f.svg.parent_path() / (f.svg.stem().string() + ".csv"), out).string()));
   return comparison::html_page(title, body + "</section>\n");
 }
 

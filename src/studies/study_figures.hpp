@@ -19,7 +19,7 @@ struct FigureSpec {
   std::string name, title;
   Axis x, y;
   std::vector<std::pair<std::string, std::string>> curves;  // case, title
-  double gamma_limit = 1.0;                                 // rows beyond this shear strain are left out
+  double gamma_limit = 1.0;  // rows beyond this shear strain are left out
 };
 
 struct StudyFigure {
@@ -28,12 +28,13 @@ struct StudyFigure {
 };
 
 // Draws every figure into OUT/figures/ (staged: all or none).
-std::vector<StudyFigure> draw_figures(const std::vector<FigureSpec>& specs, const std::map<std::string, ClayCurve>& curves,
+std::vector<StudyFigure> draw_figures(const std::vector<FigureSpec>& specs,
+                                      const std::map<std::string, ClayCurve>& curves,
                                       const std::filesystem::path& out);
 
 // The HTML page: `setting`, the claims table first, then the figures inline.
-std::string study_page(const std::string& title, const std::string& command, const std::string& setting,
-                       const std::vector<ClayClaim>& claims, const std::vector<StudyFigure>& figures,
-                       const std::filesystem::path& out);
+std::string study_page(const std::string& title, const std::string& command,
+                       const std::string& setting, const std::vector<ClayClaim>& claims,
+                       const std::vector<StudyFigure>& figures, const std::filesystem::path& out);
 
 }  // namespace iwb::studies

@@ -15,7 +15,6 @@ namespace {
 
 const std::vector<double> kTolerances = {0.05, 0.01};
 
-
 std::optional<double> qoi(const json& row, const std::string& key) {
   const auto it = row.find("qoi");
   if (it == row.end() || !it->contains(key) || (*it)[key].is_null()) return std::nullopt;

@@ -91,7 +91,8 @@ std::vector<campaign::Setting> box_settings(const dem::Scene& s, const std::stri
   const double length = s.length_m / d50, height = s.height_m / d50;
   // the plate's clamp is part of the height: it scales with it, keeping the free share
   std::vector<campaign::Setting> clamp;
-  if (s.plate_clamp_m > 0.0) clamp.push_back({"plate.clamp_d50", rounded(s.plate_clamp_m / d50 * f)});
+  if (s.plate_clamp_m > 0.0)
+    clamp.push_back({"plate.clamp_d50", rounded(s.plate_clamp_m / d50 * f)});
   std::vector<campaign::Setting> out = {
       {"specimen.length_d50", rounded(length * f)},
       {"specimen.height_d50", rounded(height * f)},
@@ -101,8 +102,9 @@ std::vector<campaign::Setting> box_settings(const dem::Scene& s, const std::stri
   for (const auto& [key, value] : out) io::set_dotted(root, key, value, "base");
   if (valid_scene(io::serialise(root))) return out;
   // The length is at a limit of the scene rules: scale the height alone.
-  std::vector<campaign::Setting> taller = {{"specimen.height_d50", rounded(height * f)},
-                                           {"specimen.particles", std::int64_t(std::lround(s.particle_count * f))}};
+  std::vector<campaign::Setting> taller = {
+      {"specimen.height_d50", rounded(height * f)},
+      {"specimen.particles", std::int64_t(std::lround(s.particle_count * f))}};
   taller.insert(taller.end(), clamp.begin(), clamp.end());
   return taller;
 }

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/errors.hpp"
 #include "assessment/distribution_file.hpp"
+#include "common/errors.hpp"
 #include "comparison/compare.hpp"
 #include "comparison/fit.hpp"
 #include "comparison/metrics.hpp"
@@ -24,7 +24,9 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 // intergranular strain matters only where the path reverses
-std::vector<std::string> model_ladder(bool cyclic) { return models::ranked_interface_models(cyclic); }
+std::vector<std::string> model_ladder(bool cyclic) {
+  return models::ranked_interface_models(cyclic);
+}
 
 namespace {
 
@@ -113,11 +115,12 @@ namespace {
 // The parameter samples' CV that goes with a quantity of interest (league_quantities(): peak and
 // residual tau, the normal quantity's end and rate); 0 for one the samples do not measure.
 double parameter_cv(const assessment::LeagueEntry& e, const std::string& qoi) {
-  static const std::map<std::string, std::string> sampled = {{"peak_friction", "peak_tau_kPa"},
-                                                             {"residual_friction", "residual_tau_kPa"},
-                                                             {"total_dilation", "normal_end"},
-                                                             {"sigma_n_change", "normal_end"},
-                                                             {"dilation_rate", "normal_rate"}};
+  static const std::map<std::string, std::string> sampled = {
+      {"peak_friction", "peak_tau_kPa"},
+      {"residual_friction", "residual_tau_kPa"},
+      {"total_dilation", "normal_end"},
+      {"sigma_n_change", "normal_end"},
+      {"dilation_rate", "normal_rate"}};
   const auto s = sampled.find(qoi);
   if (s == sampled.end()) return 0.0;
   for (const auto& q : e.parameter_uncertainty.quantities)
@@ -128,7 +131,8 @@ double parameter_cv(const assessment::LeagueEntry& e, const std::string& qoi) {
 }  // namespace
 
 ModelErrors evaluate_model(const assessment::SceneReference& reference, const std::string& model,
-                           const models::ModelInputs& inputs, const assessment::LeagueOptions& options) {
+                           const models::ModelInputs& inputs,
+                           const assessment::LeagueOptions& options) {
   ModelErrors r{model, {}, ""};
   try {
     const auto e = assessment::assess_model(reference, model, inputs, options);
@@ -139,13 +143,16 @@ ModelErrors evaluate_model(const assessment::SceneReference& reference, const st
       // parameters' uncertainty gives it, in quadrature (seed eq. 4.4 with ERRATA 16)
       const double cv = parameter_cv(e, v.key);
       r.error[v.key] = std::sqrt(*v.error * *v.error + cv * cv);
-      parts += fmt::format("{}{} {:.1f} % (model {:.1f} %, parameters {:.1f} %)", parts.empty() ? "" : ", ", v.key,
-                           100 * *r.error[v.key], 100 * std::abs(*v.error), 100 * cv);
+      parts += fmt::format("{}{} {:.1f} % (model {:.1f} %, parameters {:.1f} %)",
+                           parts.empty() ? "" : ", ", v.key, 100 * *r.error[v.key],
+                           100 * std::abs(*v.error), 100 * cv);
     }
     std::string fitted;
-    for (const auto& v : e.fit.values) fitted += fmt::format("{}{} = {:.4g}", fitted.empty() ? "" : ", ", v.name, v.value);
-    r.note = fmt::format("calibrated to the base seeds ({}); global uncertainty per quantity: {}; {}", fitted, parts,
-                         e.status);
+    for (const auto& v : e.fit.values)
+      fitted += fmt::format("{}{} = {:.4g}", fitted.empty() ? "" : ", ", v.name, v.value);
+    r.note =
+        fmt::format("calibrated to the base seeds ({}); global uncertainty per quantity: {}; {}",
+                    fitted, parts, e.status);
   } catch (const std::exception& ex) {
     r.note = fmt::format("could not be evaluated: {}", ex.what());
   }
@@ -164,8 +171,10 @@ void require_same_scene(const json& t, const fs::path& file, const PlanOptions& 
   const std::string text = io::read_file(opt.scene_file), scene = opt.scene_file.string();
   const std::string ran = t.value("scene", "?");
   const auto refuse = [&](const std::string& what) {
-    return InputError(fmt::format("{}: not the scene the tradeoff {} was run on ({}): {}; run `iwb tradeoff {}` "
-                                  "for this scene", scene, file.string(), ran, what, scene));
+    return InputError(
+        fmt::format("{}: not the scene the tradeoff {} was run on ({}): {}; run `iwb tradeoff {}` "
+                    "for this scene",
+                    scene, file.string(), ran, what, scene));
   };
   if (t.contains("dem_scene")) {
     const auto diff = dem::content_differences(dem::scene_content(text, scene), t["dem_scene"]);
@@ -174,13 +183,15 @@ void require_same_scene(const json& t, const fs::path& file, const PlanOptions& 
   }
   // A tradeoff.json from before the content was recorded: its hash, under the name it ran as.
   if (t.value("dem_scene_sha256", "") != dem_scene_sha256(text, fs::path(ran).filename().string()))
-    throw refuse("its DEM settings differ (this tradeoff.json records only their sha256, not which key)");
+    throw refuse(
+        "its DEM settings differ (this tradeoff.json records only their sha256, not which key)");
 }
 
 std::vector<std::string> complete_base_seeds(const json& t) {
   std::vector<std::string> names;
   for (const auto& r : t["runs"])
-    if (r["kind"] == "base" && r["status"] == "complete") names.push_back(r["name"].get<std::string>());
+    if (r["kind"] == "base" && r["status"] == "complete")
+      names.push_back(r["name"].get<std::string>());
   return names;
 }
 
@@ -204,11 +215,12 @@ void require_run_directories(const json& t, const fs::path& file, const PlanOpti
     if (!fs::is_regular_file(file.parent_path() / "runs" / n / "manifest.json"))
       missing += (missing.empty() ? "" : ", ") + (fs::path("runs") / n).string();
   if (!missing.empty())
-    throw InputError(fmt::format("{}: the tradeoff's run directories {} are missing (plan replays its base runs: "
-                                 "their manifest, summary and time series are enough, as data/tradeoff/*/runs/ "
-                                 "keep them); run `iwb tradeoff {} -o {}` to make them (complete runs there are "
-                                 "reused)", file.string(), missing, opt.scene_file.string(),
-                                 file.parent_path().string()));
+    throw InputError(fmt::format(
+        "{}: the tradeoff's run directories {} are missing (plan replays its base runs: "
+        "their manifest, summary and time series are enough, as data/tradeoff/*/runs/ "
+        "keep them); run `iwb tradeoff {} -o {}` to make them (complete runs there are "
+        "reused)",
+        file.string(), missing, opt.scene_file.string(), file.parent_path().string()));
 }
 
 json load_tradeoff(const PlanOptions& opt) {
@@ -247,7 +259,8 @@ std::vector<fs::path> base_runs(const PlanOptions& opt, const json& t) {
 // else the model's own example, where its calibration to the runs starts.
 models::ModelInputs candidate_inputs(const PlanOptions& opt, const std::string& model) {
   const auto& spec = models::find_model(model);
-  if (spec.declaration.calibration_recipe.empty()) return io::shipped_inputs(spec.declaration.example_parameters);
+  if (spec.declaration.calibration_recipe.empty())
+    return io::shipped_inputs(spec.declaration.example_parameters);
   models::ModelInputs in;
   in.tables = opt.params.tables;
   in.source = opt.params.origin;
@@ -264,7 +277,8 @@ dem::Scene load_scene_to_plan(const fs::path& scene_file) {
   dem::Scene scene = dem::load_scene(scene_file.string());
   if (scene.requirements.empty())
     throw InputError(fmt::format(
-        "{}: the scene states no [requirements] (data/scenes/README.md); nothing to plan", scene_file.string()));
+        "{}: the scene states no [requirements] (data/scenes/README.md); nothing to plan",
+        scene_file.string()));
   return scene;
 }
 
@@ -274,8 +288,10 @@ json run_plan(const PlanOptions& opt) {
   const fs::path ref = reference_run(opt);
   const auto judged_on = base_runs(opt, t);
   if (judged_on.empty())
-    throw InputError(fmt::format("{}: no complete base seed in the tradeoff; run `iwb tradeoff` "
-                                 "again to continue it", ref.parent_path().parent_path().string()));
+    throw InputError(
+        fmt::format("{}: no complete base seed in the tradeoff; run `iwb tradeoff` "
+                    "again to continue it",
+                    ref.parent_path().parent_path().string()));
   std::vector<comparison::DemRun> runs;
   for (const auto& r : judged_on) runs.push_back(comparison::load_dem_run(r));
   const auto reference = assessment::scene_reference(runs);  // the base seeds' mean and scatter
@@ -300,7 +316,8 @@ json run_plan(const PlanOptions& opt) {
                {"continuum", choose_model(models, scene.requirements, t["noise_floor"])},
                {"continuum_judged_on", judged},
                {"params", opt.params.origin},
-               {"parameter_uncertainty", opt.spread == assessment::ParameterSpread::kFitSigmas ? "fit" : "seed"},
+               {"parameter_uncertainty",
+                opt.spread == assessment::ParameterSpread::kFitSigmas ? "fit" : "seed"},
                {"parameter_samples", opt.samples},
                {"params_why", opt.params_why},
                {"command_line", opt.command_line}};
@@ -365,9 +382,10 @@ std::string plan_text(const json& p) {
   std::string judged;
   for (const auto& r : p["continuum_judged_on"])
     judged += (judged.empty() ? "" : ", ") + r.get<std::string>();
-  s += fmt::format("\ncontinuum models, simplest first (mean error over the scene's own runs {}, "
-                   "parameters {}):\n",
-                   judged, p["params"].get<std::string>());
+  s += fmt::format(
+      "\ncontinuum models, simplest first (mean error over the scene's own runs {}, "
+      "parameters {}):\n",
+      judged, p["params"].get<std::string>());
   for (const auto& c : p["continuum"]["candidates"])
     s += fmt::format("  {:<9} {}\n            ({})\n", c["name"].get<std::string>(),
                      verdict(c, p["requirements"]), c["note"].get<std::string>());

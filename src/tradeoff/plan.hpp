@@ -52,13 +52,14 @@ struct PlanOptions {
   std::filesystem::path out;           // plan.json goes here; empty: the tradeoff directory
   std::string command_line;
   assessment::ParameterSpread spread = assessment::ParameterSpread::kFitSigmas;
-  int samples = 200;                   // parameter samples per candidate
+  int samples = 200;  // parameter samples per candidate
 };
 
 // `model` calibrated to the reference (the base seeds' mean) and judged: its global uncertainty
 // in each quantity it replays; a model that cannot be evaluated says why in its note.
 ModelErrors evaluate_model(const assessment::SceneReference& reference, const std::string& model,
-                           const models::ModelInputs& inputs, const assessment::LeagueOptions& options);
+                           const models::ModelInputs& inputs,
+                           const assessment::LeagueOptions& options);
 
 // The scene file's scene; InputError when it is not valid or states no [requirements] (nothing to
 // plan), checked before any tradeoff is read.

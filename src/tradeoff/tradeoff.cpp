@@ -8,8 +8,8 @@
 #include "dem/numerics.hpp"
 #include "dem/requirements.hpp"
 #include "dem/scene_content.hpp"
-#include "io/json_file.hpp"
 #include "io/directory_lock.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 #include "tradeoff/knobs.hpp"
 #include "tradeoff/tradeoff_output.hpp"
@@ -158,7 +158,8 @@ json row_of(const Variant& v, const fs::path& dir) {
 json run_tradeoff(const TradeoffOptions& opt) {
   const auto variants = expand_variants(opt);  // refuses a bad variant before anything runs
   const fs::path out = opt.out.empty() ? default_out(opt.scene_file) : opt.out;
-  const auto lock = io::DirectoryLock::take(out, opt.command_line);  // each variant's run locks its own
+  const auto lock =
+      io::DirectoryLock::take(out, opt.command_line);  // each variant's run locks its own
   std::vector<campaign::Job> jobs;
   fs::create_directories(out / "scenes");
   for (const auto& v : variants) {

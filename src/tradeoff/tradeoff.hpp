@@ -57,7 +57,9 @@ std::vector<Variant> expand_variants(const TradeoffOptions& options);
 nlohmann::json run_tradeoff(const TradeoffOptions& options);
 
 // Whether a run row or a setting of tradeoff.json completed (its "status").
-inline bool completed(const nlohmann::json& row) { return row.value("status", "") == "complete"; }
+inline bool completed(const nlohmann::json& row) {
+  return row.value("status", "") == "complete";
+}
 
 // The analysis over run rows (each {name, kind, knob, factor, seed, status, cost, qoi}): the
 // reference, the noise floor, every setting's relative errors and which tolerances it meets, and

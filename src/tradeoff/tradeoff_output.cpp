@@ -63,7 +63,8 @@ std::string noise_table(const json& t) {
     // a tradeoff stopped before any base seed completed has no floor yet: blank cells, n=0
     const json n = t.value("noise_floor", json::object()).value(q.key, json::object());
     md += fmt::format("| {} | {} | {} (n={}) | {} |\n", q.label, number(n.value("mean", json())),
-                      number(n.value("sd", json())), n.value("n", 0), percent(n.value("relative", json())));
+                      number(n.value("sd", json())), n.value("n", 0),
+                      percent(n.value("relative", json())));
   }
   return md;
 }
@@ -155,8 +156,9 @@ std::string tradeoff_markdown(const json& t) {
   std::string md = fmt::format("# DEM speed against accuracy: {}\n\nstatus: {}\n\n",
                                t.value("scene", ""), t.value("status", "?"));
   if (t["reference"].is_null()) {
-    md += fmt::format("No reference: the {} has not completed; errors are not measured yet.\n\n",
-                      t.value("reference_mode", "refined") == "base" ? "base setting (no seed)" : "refined run");
+    md += fmt::format(
+        "No reference: the {} has not completed; errors are not measured yet.\n\n",
+        t.value("reference_mode", "refined") == "base" ? "base setting (no seed)" : "refined run");
   } else {
     md += fmt::format(
         "Reference: `{}` ({}): {}.\nError = |QoI - QoI_ref| / |QoI_ref|; a setting meets a "

@@ -1,9 +1,10 @@
 #include "walls/descriptors.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <fmt/core.h>
 #include <unsupported/Eigen/FFT>
 
 #include "walls/gauge_windows.hpp"
@@ -13,9 +14,9 @@ namespace iwb::walls {
 namespace {
 
 constexpr double kMetresPerMm = 1e-3;
-constexpr int kLineSamplesPerD50 = 50;    // a sawtooth's apex falls within 2 % of a d50 window
+constexpr int kLineSamplesPerD50 = 50;  // a sawtooth's apex falls within 2 % of a d50 window
 constexpr int kBinsPerDecade = 5;
-constexpr double kSelfAffineR2 = 0.9;     // below, the spectrum is not one power law
+constexpr double kSelfAffineR2 = 0.9;  // below, the spectrum is not one power law
 constexpr int kMinFitBins = 4;
 
 // The surface on rows along x: an areal map at its own nodes (between them it is bilinear and
@@ -113,11 +114,13 @@ void fit_hurst(RoughnessDescriptors& r, double d50) {
   double top = 0.0;
   for (const auto& b : r.spectrum) top = std::max(top, b.psd_m3);
   for (const auto& b : r.spectrum)
-    if (b.wavelength_m >= 4.0 * r.sample_spacing_m && b.wavelength_m <= r.correlation_length_m && b.psd_m3 > 1e-12 * top)
+    if (b.wavelength_m >= 4.0 * r.sample_spacing_m && b.wavelength_m <= r.correlation_length_m &&
+        b.psd_m3 > 1e-12 * top)
       x.push_back(std::log(1.0 / b.wavelength_m)), y.push_back(std::log(b.psd_m3));
   if (int(x.size()) < kMinFitBins) {
-    r.hurst_note = fmt::format("{} spectrum bins between 4 samples ({:.3g} d50) and lambda_c ({:.3g} d50); a fit needs {}",
-                               x.size(), 4.0 * r.sample_spacing_m / d50, r.correlation_length_m / d50, kMinFitBins);
+    r.hurst_note = fmt::format(
+        "{} spectrum bins between 4 samples ({:.3g} d50) and lambda_c ({:.3g} d50); a fit needs {}",
+        x.size(), 4.0 * r.sample_spacing_m / d50, r.correlation_length_m / d50, kMinFitBins);
     return;
   }
   const double n = double(x.size());
@@ -125,15 +128,17 @@ void fit_hurst(RoughnessDescriptors& r, double d50) {
   for (std::size_t i = 0; i < x.size(); ++i) mx += x[i] / n, my += y[i] / n;
   double sxx = 0, sxy = 0, syy = 0;
   for (std::size_t i = 0; i < x.size(); ++i)
-    sxx += (x[i] - mx) * (x[i] - mx), sxy += (x[i] - mx) * (y[i] - my), syy += (y[i] - my) * (y[i] - my);
+    sxx += (x[i] - mx) * (x[i] - mx), sxy += (x[i] - mx) * (y[i] - my),
+        syy += (y[i] - my) * (y[i] - my);
   const double slope = sxy / sxx;
   const double H = 0.5 * (-slope - 1.0);
   r.hurst_fit_r2 = syy > 0.0 ? sxy * sxy / (sxx * syy) : 0.0;
-  const std::string range = fmt::format("over wavelengths {:.3g}-{:.3g} d50, {} bins", 4.0 * r.sample_spacing_m / d50,
-                                        r.correlation_length_m / d50, x.size());
+  const std::string range =
+      fmt::format("over wavelengths {:.3g}-{:.3g} d50, {} bins", 4.0 * r.sample_spacing_m / d50,
+                  r.correlation_length_m / d50, x.size());
   if (r.hurst_fit_r2 < kSelfAffineR2 || !(H > 0.0 && H <= 1.0)) {
-    r.hurst_note = fmt::format("not self-affine: PSD ~ f^{:.3g} (H would be {:.3g}, R^2 {:.3f}) {}", slope, H,
-                               r.hurst_fit_r2, range);
+    r.hurst_note = fmt::format("not self-affine: PSD ~ f^{:.3g} (H would be {:.3g}, R^2 {:.3f}) {}",
+                               slope, H, r.hurst_fit_r2, range);
     return;
   }
   r.hurst = H;
@@ -142,7 +147,8 @@ void fit_hurst(RoughnessDescriptors& r, double d50) {
 
 }  // namespace
 
-RoughnessDescriptors describe_roughness(const RoughnessProfile& profile, double length, double width, double d50) {
+RoughnessDescriptors describe_roughness(const RoughnessProfile& profile, double length,
+                                        double width, double d50) {
   RoughnessDescriptors r;
   const Samples s = sample(profile, length, width, d50);
   r.sample_spacing_m = s.h;
@@ -176,7 +182,8 @@ RoughnessDescriptors describe_roughness(const RoughnessProfile& profile, double 
 nlohmann::json to_json(const RoughnessDescriptors& r, double d50) {
   nlohmann::json spectrum = nlohmann::json::array();
   for (const auto& b : r.spectrum)
-    spectrum.push_back({{"wavelength_d50", b.wavelength_m / d50}, {"psd_mm3", b.psd_m3 / (kMetresPerMm * kMetresPerMm * kMetresPerMm)},
+    spectrum.push_back({{"wavelength_d50", b.wavelength_m / d50},
+                        {"psd_mm3", b.psd_m3 / (kMetresPerMm * kMetresPerMm * kMetresPerMm)},
                         {"variance_mm2", b.variance_m2 / (kMetresPerMm * kMetresPerMm)}});
   return {{"R_n", r.R_n},
           {"R_n_mean", r.R_n_mean},
@@ -203,16 +210,17 @@ std::string to_text(const RoughnessDescriptors& r, double d50) {
       "  Hurst exponent        {} ({})\n"
       "  sampled               every {:.3g} d50 on {} row(s) along x\n",
       r.R_n, r.R_n_mean, r.R_max_m / d50, r.R_a_m / d50, r.R_q_m / d50, r.mean_abs_slope,
-      r.correlation_length_m / d50, r.hurst ? fmt::format("{:.3g}", *r.hurst) : std::string("none"), r.hurst_note,
-      r.sample_spacing_m / d50, r.rows);
+      r.correlation_length_m / d50, r.hurst ? fmt::format("{:.3g}", *r.hurst) : std::string("none"),
+      r.hurst_note, r.sample_spacing_m / d50, r.rows);
   if (!r.spectrum.empty()) {
     s += "  spectrum along x      wavelength (d50)   PSD (mm^3)   share of R_q^2\n";
     double total = 0.0;
     for (const auto& b : r.spectrum) total += b.variance_m2;
     for (const auto& b : r.spectrum)
       if (b.variance_m2 > 1e-4 * total)
-        s += fmt::format("                        {:>10.4g}   {:>12.4g}   {:>8.1f} %\n", b.wavelength_m / d50,
-                         b.psd_m3 / (kMetresPerMm * kMetresPerMm * kMetresPerMm), 100.0 * b.variance_m2 / total);
+        s += fmt::format(
+            "                        {:>10.4g}   {:>12.4g}   {:>8.1f} %\n", b.wavelength_m / d50,
+            b.psd_m3 / (kMetresPerMm * kMetresPerMm * kMetresPerMm), 100.0 * b.variance_m2 / total);
   }
   return s;
 }

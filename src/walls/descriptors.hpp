@@ -10,7 +10,8 @@
 //   spectrum  the one-sided power spectral density along x, averaged over rows, log-binned;
 //   lambda_c  the correlation length: the lag where the autocorrelation along x falls to 1/e;
 //   H         the Hurst exponent from the spectrum's slope between 4 samples and lambda_c, where
-//             the profile is self-affine (a line scan of a self-affine surface has PSD ~ f^-(1+2H)).
+//             the profile is self-affine (a line scan of a self-affine surface has PSD ~
+//             f^-(1+2H)).
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -41,7 +42,8 @@ struct RoughnessDescriptors {
 };
 
 // The descriptors of `profile` over one box length x width (the surface repeats with the box).
-RoughnessDescriptors describe_roughness(const RoughnessProfile& profile, double length, double width, double d50);
+RoughnessDescriptors describe_roughness(const RoughnessProfile& profile, double length,
+                                        double width, double d50);
 
 // In d50 where a length scales with the grains, and in mm.
 nlohmann::json to_json(const RoughnessDescriptors& r, double d50);

@@ -24,12 +24,18 @@ double HeightMap::at(double x, double y) const {
   const double i0 = std::floor(u), j0 = std::floor(v);
   const double fu = u - i0, fv = v - j0;
   const int i = int(i0), j = int(j0);
-  return (1 - fu) * (1 - fv) * node(i, j) + fu * (1 - fv) * node(i + 1, j) + (1 - fu) * fv * node(i, j + 1) +
-         fu * fv * node(i + 1, j + 1);
+  return (1 - fu) * (1 - fv) * node(i, j) + fu * (1 - fv) * node(i + 1, j) +
+         (1 - fu) * fv * node(i, j + 1) + fu * fv * node(i + 1, j + 1);
 }
 
-double HeightMap::mean() const { return std::accumulate(z_.begin(), z_.end(), 0.0) / double(z_.size()); }
-double HeightMap::max() const { return *std::max_element(z_.begin(), z_.end()); }
-double HeightMap::min() const { return *std::min_element(z_.begin(), z_.end()); }
+double HeightMap::mean() const {
+  return std::accumulate(z_.begin(), z_.end(), 0.0) / double(z_.size());
+}
+double HeightMap::max() const {
+  return *std::max_element(z_.begin(), z_.end());
+}
+double HeightMap::min() const {
+  return *std::min_element(z_.begin(), z_.end());
+}
 
 }  // namespace iwb::walls

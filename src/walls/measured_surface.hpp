@@ -30,13 +30,14 @@ struct MeasuredSurfaceSpec {
 
 struct MeasuredSurface {
   HeightMap map;
-  double window_r_max_m;      // the largest R_max over d50 windows that do not cross the seam
+  double window_r_max_m;  // the largest R_max over d50 windows that do not cross the seam
   std::vector<std::string> warnings;
 };
 
 // InputError naming the file and the row for a file that cannot be used: missing, a non-number,
 // NaN or inf, x not increasing, rows of unequal length, a measurement smaller than the box, or
 // coarser than d50/4 (R_max over d50 needs at least four samples).
-MeasuredSurface measured_surface(const MeasuredSurfaceSpec& spec, double length, double width, double d50);
+MeasuredSurface measured_surface(const MeasuredSurfaceSpec& spec, double length, double width,
+                                 double d50);
 
 }  // namespace iwb::walls

@@ -1,8 +1,9 @@
 #include "walls/profile.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 #include <vector>
 
 #include "walls/gauge_windows.hpp"
@@ -16,7 +17,8 @@ constexpr double kMm = 1e-3;
 // R_max over a sliding gauge window of length d50 along x on the surface sampled `samples` times
 // over one period, the largest over `rows` lines along x (Uesugi & Kishida's definition on a trace,
 // applied to every trace).
-double sampled_r_max(const RoughnessProfile& p, double period, int samples, double width, int rows, double d50) {
+double sampled_r_max(const RoughnessProfile& p, double period, int samples, double width, int rows,
+                     double d50) {
   const double dx = period / samples;
   const int window = std::max(1, int(std::lround(d50 / dx)));
   GaugeRanges r;
@@ -87,22 +89,32 @@ double RoughnessProfile::max_height_m() const {
 std::string RoughnessProfile::describe() const {
   if (kind == ProfileKind::kFlat) return "flat";
   if (kind == ProfileKind::kGlued)
-    return fmt::format("glued spheres of {:g} mm at {:g} mm spacing", height_m / kMm, pitch_m / kMm);
+    return fmt::format("glued spheres of {:g} mm at {:g} mm spacing", height_m / kMm,
+                       pitch_m / kMm);
   if (kind == ProfileKind::kRandom)
-    return fmt::format("random self-affine, R_max {:.4g} mm over a {} x {} grid", height_m / kMm, map->nx(), map->ny());
+    return fmt::format("random self-affine, R_max {:.4g} mm over a {} x {} grid", height_m / kMm,
+                       map->nx(), map->ny());
   if (kind == ProfileKind::kFile)
-    return fmt::format("measured ({}), R_max {:.4g} mm over a {} x {} grid", file, height_m / kMm, map->nx(), map->ny());
-  return fmt::format("{} pitch {:g} mm, R_max {:g} mm", to_string(kind), pitch_m / kMm, height_m / kMm);
+    return fmt::format("measured ({}), R_max {:.4g} mm over a {} x {} grid", file, height_m / kMm,
+                       map->nx(), map->ny());
+  return fmt::format("{} pitch {:g} mm, R_max {:g} mm", to_string(kind), pitch_m / kMm,
+                     height_m / kMm);
 }
 
 const char* to_string(ProfileKind k) {
   switch (k) {
-    case ProfileKind::kFlat: return "flat";
-    case ProfileKind::kSawtooth: return "sawtooth";
-    case ProfileKind::kSinusoid: return "sinusoid";
-    case ProfileKind::kGlued: return "glued";
-    case ProfileKind::kRandom: return "random";
-    case ProfileKind::kFile: return "file";
+    case ProfileKind::kFlat:
+      return "flat";
+    case ProfileKind::kSawtooth:
+      return "sawtooth";
+    case ProfileKind::kSinusoid:
+      return "sinusoid";
+    case ProfileKind::kGlued:
+      return "glued";
+    case ProfileKind::kRandom:
+      return "random";
+    case ProfileKind::kFile:
+      return "file";
   }
   return "?";
 }

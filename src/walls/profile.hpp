@@ -16,7 +16,7 @@ struct RoughnessProfile {
   double pitch_m = 0.0;
   double height_m = 0.0;
   std::shared_ptr<const HeightMap> map = nullptr;  // kRandom, kFile: the surface, its minimum at 0
-  std::string file = {};  // kFile: where it was read
+  std::string file = {};                           // kFile: where it was read
   std::string file_sha256 = {};  // kFile: its content's, when it was read (the scene's identity)
   double untiled_r_max_m = 0.0;  // kFile: the measurement's largest R_max over d50 before tiling
 

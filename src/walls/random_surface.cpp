@@ -17,12 +17,16 @@ double density(double q, const RandomSurfaceSpec& s) {
 }
 
 // The signed wavenumber index of FFT slot k of n (0, 1, .., n/2, -(n/2 - 1), .., -1).
-int signed_index(int k, int n) { return k <= n / 2 ? k : k - n; }
+int signed_index(int k, int n) {
+  return k <= n / 2 ? k : k - n;
+}
 
 }  // namespace
 
-HeightMap random_surface(const RandomSurfaceSpec& spec, double length, double width, double spacing) {
-  const int nx = std::max(4, int(std::ceil(length / spacing))), ny = std::max(4, int(std::ceil(width / spacing)));
+HeightMap random_surface(const RandomSurfaceSpec& spec, double length, double width,
+                         double spacing) {
+  const int nx = std::max(4, int(std::ceil(length / spacing))),
+            ny = std::max(4, int(std::ceil(width / spacing)));
   std::mt19937_64 rng(spec.seed);
   std::uniform_real_distribution<double> phase(0.0, 2.0 * M_PI);
   // Random phases over the whole plane; the real part of the inverse transform is a sum of
@@ -30,7 +34,8 @@ HeightMap random_surface(const RandomSurfaceSpec& spec, double length, double wi
   std::vector<std::vector<std::complex<double>>> rows(ny, std::vector<std::complex<double>>(nx));
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
-      const double qx = 2.0 * M_PI * signed_index(i, nx) / length, qy = 2.0 * M_PI * signed_index(j, ny) / width;
+      const double qx = 2.0 * M_PI * signed_index(i, nx) / length,
+                   qy = 2.0 * M_PI * signed_index(j, ny) / width;
       const double a = (i == 0 && j == 0) ? 0.0 : std::sqrt(density(std::hypot(qx, qy), spec));
       rows[j][i] = std::polar(a, phase(rng));
     }

@@ -19,6 +19,7 @@ struct RandomSurfaceSpec {
 // Sampled on a grid of spacing at most `spacing` (rounded so that whole cells fill the box); the
 // lowest point is at 0 (the base plane) and the RMS exactly the spec's; modes down to the Nyquist
 // wavelength, 2 spacings.
-HeightMap random_surface(const RandomSurfaceSpec& spec, double length, double width, double spacing);
+HeightMap random_surface(const RandomSurfaceSpec& spec, double length, double width,
+                         double spacing);
 
 }  // namespace iwb::walls

@@ -1,9 +1,9 @@
 // exp over the algebra policies (src/algebra/exponential.hpp): the 3x3 series against the
 // exponential from the eigen-decomposition, exp(a 1) = e^a 1, exp(X) exp(-X) = 1, and the reduced
 // series against the 2x2 block of the embedding when one shear component is zero.
-#include <catch2/catch.hpp>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
@@ -18,7 +18,8 @@ namespace {
 
 Mat3 spectral_exponential(const Mat3& x) {
   Eigen::SelfAdjointEigenSolver<Mat3> es(x);
-  return es.eigenvectors() * es.eigenvalues().array().exp().matrix().asDiagonal() * es.eigenvectors().transpose();
+  return es.eigenvectors() * es.eigenvalues().array().exp().matrix().asDiagonal() *
+         es.eigenvectors().transpose();
 }
 
 Mat3 random_symmetric(std::mt19937& rng, double size) {
@@ -31,7 +32,9 @@ Mat3 random_symmetric(std::mt19937& rng, double size) {
 
 }  // namespace
 
-TEST_CASE("exponential: 3x3 series equals the spectral exponential, exp(a 1) = e^a 1, exp(X) exp(-X) = 1", "[algebra]") {
+TEST_CASE(
+    "exponential: 3x3 series equals the spectral exponential, exp(a 1) = e^a 1, exp(X) exp(-X) = 1",
+    "[algebra]") {
   std::mt19937 rng(8152);
   for (double size : {1e-3, 0.5, 3.0, 12.0}) {
     for (int i = 0; i < 50; ++i) {
@@ -41,13 +44,19 @@ TEST_CASE("exponential: 3x3 series equals the spectral exponential, exp(a 1) = e
       const Mat3 dev = x - x.trace() / 3.0 * Mat3::Identity();
       const double roundoff = 1e-14 * std::exp(dev.norm() + x.trace() / 3.0);
       CHECK((e - spectral_exponential(x)).norm() <= std::max(1e-14 * e.norm(), roundoff));
-      CHECK((e * exponential<Tensor3Ops, double>(Mat3(-x)) - Mat3::Identity()).norm() <= 1e-14 * std::exp(2.0 * dev.norm()));
+      CHECK((e * exponential<Tensor3Ops, double>(Mat3(-x)) - Mat3::Identity()).norm() <=
+            1e-14 * std::exp(2.0 * dev.norm()));
     }
   }
-  CHECK((exponential<Tensor3Ops, double>(Mat3(-0.7 * Mat3::Identity())) - std::exp(-0.7) * Mat3::Identity()).norm() < 1e-15);
+  CHECK((exponential<Tensor3Ops, double>(Mat3(-0.7 * Mat3::Identity())) -
+         std::exp(-0.7) * Mat3::Identity())
+            .norm() < 1e-15);
 }
 
-TEST_CASE("exponential: the reduced series with one shear component is the embedding's 2x2 block exponential", "[algebra]") {
+TEST_CASE(
+    "exponential: the reduced series with one shear component is the embedding's 2x2 block "
+    "exponential",
+    "[algebra]") {
   std::mt19937 rng(8153);
   std::uniform_real_distribution<double> u(-2.0, 2.0);
   for (int i = 0; i < 100; ++i) {

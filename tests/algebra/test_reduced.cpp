@@ -25,7 +25,9 @@ std::vector<Vec4> samples() {
   return out;
 }
 
-double scale(const Vec4& x) { return 1.0 + x.cwiseAbs().maxCoeff(); }
+double scale(const Vec4& x) {
+  return 1.0 + x.cwiseAbs().maxCoeff();
+}
 
 }  // namespace
 
@@ -44,7 +46,8 @@ TEST_CASE("trace, ':', norm and det agree with the embedded 3x3 operations", "[a
     const Mat3 X = reduced::embed(x), Y = reduced::embed(y);
     const double s = scale(x) * scale(y);
     CHECK(reduced::trace(x) == Approx(X.trace()).margin(1e-12 * s));
-    CHECK(reduced::double_contraction(x, y) == Approx(tensor3::double_contraction(X, Y)).margin(1e-12 * s));
+    CHECK(reduced::double_contraction(x, y) ==
+          Approx(tensor3::double_contraction(X, Y)).margin(1e-12 * s));
     CHECK(reduced::norm(x) == Approx(tensor3::norm(X)).margin(1e-12 * scale(x)));
     CHECK(reduced::determinant(x) == Approx(X.determinant()).margin(1e-12 * std::pow(scale(x), 3)));
   }
@@ -55,7 +58,8 @@ TEST_CASE("unit tensors: 1 embeds to the identity, I : X = X, 1 : X = tr X", "[a
   for (const auto& x : samples()) {
     const Vec4 ix = reduced::double_contraction(reduced::unit4<double>(), x);
     CHECK((ix - x).cwiseAbs().maxCoeff() <= 1e-13 * scale(x));
-    CHECK(reduced::double_contraction(reduced::unit<double>(), x) == Approx(reduced::trace(x)).margin(1e-12 * scale(x)));
+    CHECK(reduced::double_contraction(reduced::unit<double>(), x) ==
+          Approx(reduced::trace(x)).margin(1e-12 * scale(x)));
   }
 }
 
@@ -64,7 +68,8 @@ TEST_CASE("outer product: (X (x) Y) : Z = X (Y : Z), as for 3x3 tensors", "[alge
   for (std::size_t i = 0; i + 2 < xs.size(); i += 3) {
     const Vec4 &x = xs[i], &y = xs[i + 1], &z = xs[i + 2];
     const Vec4 lhs = reduced::double_contraction(reduced::outer_product(x, y), z);
-    const Mat3 expected = reduced::embed(x) * tensor3::double_contraction(reduced::embed(y), reduced::embed(z));
+    const Mat3 expected =
+        reduced::embed(x) * tensor3::double_contraction(reduced::embed(y), reduced::embed(z));
     const double s = scale(x) * scale(y) * scale(z);
     CHECK((reduced::embed(lhs) - expected).cwiseAbs().maxCoeff() <= 1e-12 * s);
   }
@@ -73,7 +78,8 @@ TEST_CASE("outer product: (X (x) Y) : Z = X (Y : Z), as for 3x3 tensors", "[alge
 TEST_CASE("deviators embed to the 3x3 deviators (eqs. 5.28-5.30, ERRATA item 1)", "[algebra]") {
   for (const auto& x : samples()) {
     const Mat3 X = reduced::embed(x);
-    CHECK((reduced::embed(reduced::deviator(x)) - tensor3::deviator(X)).cwiseAbs().maxCoeff() <= 1e-12 * scale(x));
+    CHECK((reduced::embed(reduced::deviator(x)) - tensor3::deviator(X)).cwiseAbs().maxCoeff() <=
+          1e-12 * scale(x));
     const double tr = X.trace();
     if (std::abs(tr) < 1e-3 * scale(x)) continue;  // X^ is undefined at tr X = 0
     const Mat3 hat_dev = X / tr - Mat3::Identity() / 3.0;
@@ -83,7 +89,8 @@ TEST_CASE("deviators embed to the 3x3 deviators (eqs. 5.28-5.30, ERRATA item 1)"
   }
 }
 
-TEST_CASE("inner product keeps four entries of the 3x3 product and loses the rest (ERRATA 2)", "[algebra]") {
+TEST_CASE("inner product keeps four entries of the 3x3 product and loses the rest (ERRATA 2)",
+          "[algebra]") {
   const auto xs = samples();
   for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
     const Vec4 &x = xs[i], &y = xs[i + 1];
@@ -100,12 +107,14 @@ TEST_CASE("inner product keeps four entries of the 3x3 product and loses the res
   }
 }
 
-TEST_CASE("tr(X.X.X): reduced minus exact is tr X (X3^2 - X4^2), equal for deviators (ERRATA 2)", "[algebra]") {
+TEST_CASE("tr(X.X.X): reduced minus exact is tr X (X3^2 - X4^2), equal for deviators (ERRATA 2)",
+          "[algebra]") {
   for (const auto& x : samples()) {
     const double reduced_value = reduced::trace_of_cube(x);
     const double exact = tensor3::trace_of_cube(reduced::embed(x));
     const double s = 1e-12 * std::pow(scale(x), 3);
-    CHECK(reduced_value - exact == Approx(reduced::trace(x) * (x(2) * x(2) - x(3) * x(3))).margin(s));
+    CHECK(reduced_value - exact ==
+          Approx(reduced::trace(x) * (x(2) * x(2) - x(3) * x(3))).margin(s));
     const Vec4 d = reduced::deviator(x);
     CHECK(reduced::trace_of_cube(d) == Approx(tensor3::trace_of_cube(reduced::embed(d))).margin(s));
   }

@@ -1,12 +1,13 @@
 // Stability map: every point ends in one outcome of the closed set, nothing is NaN, the physical
 // facts hold (moderate stress and e0 between e_d and e_c complete), impossible starts and spent
 // budgets are classified with a message instead of crashing or hanging.
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fmt/core.h>
 #include <fstream>
 #include <map>
 
@@ -158,7 +159,8 @@ TEST_CASE(
 
 // A clay model has no e_d, e_i: the map places e0 by the declared OCR. At a fixed stress state
 // p_e* is proportional to OCR (Masin's p_e* = OCR x its value on the ASBS) and ln(1+e) = N -
-// lambda* ln p_e* (eq. 6.7), so ln(1+e0) falls by lambda* ln(OCR) from OCR 1: 0.1 ln 8 for Table 6.1.
+// lambda* ln p_e* (eq. 6.7), so ln(1+e0) falls by lambda* ln(OCR) from OCR 1: 0.1 ln 8 for
+// Table 6.1.
 TEST_CASE("stability: clay models are mapped over OCR, e0 following lambda* ln OCR", "[analysis]") {
   for (const std::string name : {"hcc", "hce"}) {
     INFO(name);
@@ -166,18 +168,21 @@ TEST_CASE("stability: clay models are mapped over OCR, e0 following lambda* ln O
     CHECK(analysis::density_axis_of(spec) == analysis::DensityAxis::kOverconsolidationRatio);
     StabilitySweep sweep = StabilitySweep::reduced();
     sweep.d_gamma = {1e-2};
-    const auto results = analysis::run_stability_sweep(spec, test::shipped("table_6_1_evaluation.toml"), sweep);
+    const auto results =
+        analysis::run_stability_sweep(spec, test::shipped("table_6_1_evaluation.toml"), sweep);
     std::map<std::pair<double, double>, double> e0;  // (sigma_n0, OCR) -> e0 of a CNL point
     for (const auto& r : results) {
       INFO(r.message);
       CHECK(r.outcome == Outcome::kComplete);
-      if (r.point.boundary == driver::BoundaryKind::kCNL) e0[{r.point.sigma_n_kPa, r.point.density}] = r.e0;
+      if (r.point.boundary == driver::BoundaryKind::kCNL)
+        e0[{r.point.sigma_n_kPa, r.point.density}] = r.e0;
     }
     for (double s : sweep.sigma_n_kPa)
       CHECK(std::log(1.0 + e0.at({s, 8.0})) - std::log(1.0 + e0.at({s, 1.0})) ==
             Approx(-0.1 * std::log(8.0)).epsilon(1e-12));
   }
-  CHECK(analysis::density_axis_of(models::find_model("hvwe")) == analysis::DensityAxis::kDensityIndex);
+  CHECK(analysis::density_axis_of(models::find_model("hvwe")) ==
+        analysis::DensityAxis::kDensityIndex);
 }
 
 // The full sweep (1575 points for hvwe, 1000-cycle runs; about 40 s here): opt-in.
@@ -199,8 +204,10 @@ TEST_CASE(
 TEST_CASE("stability: a map whose figures cannot be drawn leaves no file behind", "[analysis]") {
   const auto dir = std::filesystem::path(IWB_TEST_RUNS_DIR) / "stability-no-gnuplot";
   std::filesystem::remove_all(dir);
-  const std::string cmd = fmt::format("env PATH=/nonexistent {} stability hvwe data/params/table_5_1_evaluation.toml -o {} > {}.log 2>&1",
-                                      IWB_BINARY, dir.string(), dir.string());
+  const std::string cmd = fmt::format(
+      "env PATH=/nonexistent {} stability hvwe data/params/table_5_1_evaluation.toml -o {} > "
+      "{}.log 2>&1",
+      IWB_BINARY, dir.string(), dir.string());
   CHECK(std::system(cmd.c_str()) != 0);
   CHECK_THAT(iwb::io::read_file(dir.string() + ".log"), Catch::Contains("cannot start gnuplot"));
   CHECK_FALSE(std::filesystem::exists(dir));
@@ -208,15 +215,19 @@ TEST_CASE("stability: a map whose figures cannot be drawn leaves no file behind"
     CHECK(e.path().filename().string().find("stability-no-gnuplot.tmp") == std::string::npos);
 }
 
-TEST_CASE("stability: the reference models (no void ratio: one density level) complete every point, finite") {
+TEST_CASE(
+    "stability: the reference models (no void ratio: one density level) complete every point, "
+    "finite") {
   for (const std::string name : {"mc", "hyperbolic"}) {
     const auto& spec = models::find_model(name);
     CHECK(analysis::density_axis_of(spec) == analysis::DensityAxis::kNone);
-    const auto results = analysis::run_stability_sweep(spec, test::shipped(spec.declaration.example_parameters),
-                                                       StabilitySweep::reduced());
-    CHECK(results.size() == 27);  // 3 BCs x 3 stresses x (2 increment sizes + 1 cyclic), one kappa_r, one density
+    const auto results = analysis::run_stability_sweep(
+        spec, test::shipped(spec.declaration.example_parameters), StabilitySweep::reduced());
+    CHECK(results.size() ==
+          27);  // 3 BCs x 3 stresses x (2 increment sizes + 1 cyclic), one kappa_r, one density
     for (const auto& r : results) {
-      INFO(name << " " << driver::to_string(r.point.boundary) << " " << r.point.sigma_n_kPa << " kPa: " << r.message);
+      INFO(name << " " << driver::to_string(r.point.boundary) << " " << r.point.sigma_n_kPa
+                << " kPa: " << r.message);
       CHECK(r.outcome == Outcome::kComplete);
       CHECK(std::isfinite(r.sigma_n_end_kPa));
       CHECK(std::isfinite(r.tau_end_kPa));

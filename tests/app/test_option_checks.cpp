@@ -12,7 +12,9 @@ namespace fs = std::filesystem;
 
 namespace {
 // The validator's message for `text` ("" when it admits it).
-std::string refusal(const CLI::Validator& v, std::string text) { return v(text); }
+std::string refusal(const CLI::Validator& v, std::string text) {
+  return v(text);
+}
 }  // namespace
 
 TEST_CASE("a number option refuses nan, inf, text and values outside its range", "[app]") {
@@ -29,8 +31,10 @@ TEST_CASE("a number option refuses nan, inf, text and values outside its range",
   CHECK(refusal(sigma, "") == ": not a number; must be finite and in (0, 100000] (kPa)");
   // without an upper bound the message says so plainly, and never prints the largest double
   CHECK(refusal(app::number_in(positive()), "nan") == "nan: must be finite and > 0");
-  CHECK(refusal(app::number_in(closed(4.0, 100.0), "d50"), "3.9") == "3.9: must be finite and in [4, 100] (d50)");
-  CHECK(refusal(app::number_in(closed(1e-6, 1e-1)), "5") == "5: must be finite and in [1e-06, 0.1]");
+  CHECK(refusal(app::number_in(closed(4.0, 100.0), "d50"), "3.9") ==
+        "3.9: must be finite and in [4, 100] (d50)");
+  CHECK(refusal(app::number_in(closed(1e-6, 1e-1)), "5") ==
+        "5: must be finite and in [1e-06, 0.1]");
 }
 
 TEST_CASE("a whole-number option refuses 0, fractions, exponents and text", "[app]") {
@@ -55,13 +59,16 @@ TEST_CASE("file and directory options tell files, directories and missing paths 
   CHECK(refusal(app::input_directory(), missing) == missing + ": no such directory");
   CHECK(refusal(app::input_path(), missing) == missing + ": no such file or directory");
   CHECK(refusal(app::output_file(), missing).empty());
-  CHECK(refusal(app::output_file(), dir.string()) == dir.string() + ": is a directory; give the file to write");
+  CHECK(refusal(app::output_file(), dir.string()) ==
+        dir.string() + ": is a directory; give the file to write");
   CHECK(refusal(app::output_directory(), missing).empty());
   CHECK(refusal(app::output_directory(), dir.string()).empty());
-  CHECK(refusal(app::output_directory(), file) == file + ": is a file; give the directory to write");
+  CHECK(refusal(app::output_directory(), file) ==
+        file + ": is a file; give the directory to write");
 }
 
-TEST_CASE("a range prints its bounds with %g and never admits a value that is not finite", "[app]") {
+TEST_CASE("a range prints its bounds with %g and never admits a value that is not finite",
+          "[app]") {
   CHECK(positive().text() == "(0, inf)");
   CHECK(non_negative(10.0).text() == "[0, 10]");
   CHECK(Range{0.0, 0.5, false, true}.text() == "[0, 0.5)");

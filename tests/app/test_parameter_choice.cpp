@@ -16,8 +16,10 @@ std::string chosen_for(const std::string& scene_text, const std::string& name) {
 }
 }  // namespace
 
-TEST_CASE("parameter choice: each scene's grains get the set calibrated on them, other grains none", "[app]") {
-  for (const char* f : {"data/scenes/default.toml", "data/scenes/smoke.toml", "data/scenes/convergence.toml"})
+TEST_CASE("parameter choice: each scene's grains get the set calibrated on them, other grains none",
+          "[app]") {
+  for (const char* f :
+       {"data/scenes/default.toml", "data/scenes/smoke.toml", "data/scenes/convergence.toml"})
     CHECK(chosen_for(io::read_file(f), f) == "dem_default_grains.toml");  // E 1e8 Pa
   const std::string truth = io::read_file("data/scenes/truth.toml");
   // the truth grains with cdt rolling resistance, as truth_grains.toml was calibrated; with the

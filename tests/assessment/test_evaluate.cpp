@@ -30,8 +30,9 @@ TEST_CASE("progress counts every run once, from several threads", "[assessment]"
   std::vector<std::vector<double>> rows(1000, std::vector<double>{1.0});
   std::set<long> seen;
   long last_total = 0;
-  const auto f = with_progress([](const std::vector<double>& x) { return x; }, long(rows.size()),
-                               [&](long done, long total) { seen.insert(done), last_total = total; });
+  const auto f =
+      with_progress([](const std::vector<double>& x) { return x; }, long(rows.size()),
+                    [&](long done, long total) { seen.insert(done), last_total = total; });
   evaluate_rows(rows, f, 4);
   CHECK(seen.size() == rows.size());
   CHECK(*seen.begin() == 1);

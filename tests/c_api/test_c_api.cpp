@@ -2,9 +2,8 @@
 // against central differences for every family of model, a Newton solve on eps_n under CNS with it
 // converging quadratically and following the driver's path, errors as codes that allocate nothing,
 // and one material used from several threads at once.
-#include <catch2/catch.hpp>
-
 #include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
 #include <thread>
@@ -43,8 +42,8 @@ struct Material {
   iwb_material* m = nullptr;
   explicit Material(const Case& c, const char* integration = nullptr) {
     char message[512];
-    REQUIRE(iwb_material_create(c.model.c_str(), (kParams + c.parameters).c_str(), 1.0, integration, &m, message,
-                                sizeof message) == IWB_OK);
+    REQUIRE(iwb_material_create(c.model.c_str(), (kParams + c.parameters).c_str(), 1.0, integration,
+                                &m, message, sizeof message) == IWB_OK);
   }
   ~Material() { iwb_material_destroy(m); }
   std::vector<double> initial(const Case& c) const {
@@ -54,7 +53,8 @@ struct Material {
     std::vector<double> s(iwb_state_size(m));
     char message[512];
     INFO(c.model);
-    REQUIRE(iwb_initial_state(m, keys.data(), values.data(), int(keys.size()), s.data(), message, sizeof message) == IWB_OK);
+    REQUIRE(iwb_initial_state(m, keys.data(), values.data(), int(keys.size()), s.data(), message,
+                              sizeof message) == IWB_OK);
     return s;
   }
 };
@@ -66,26 +66,31 @@ struct Step {
   iwb_status status = IWB_OK;
 };
 
-Step update(const Material& m, const std::vector<double>& s, std::array<double, 3> du, double thickness = 2.0) {
+Step update(const Material& m, const std::vector<double>& s, std::array<double, 3> du,
+            double thickness = 2.0) {
   Step out{std::vector<double>(s.size())};
   char message[512];
   double factor = 0.0;
-  out.status = iwb_update(m.m, s.data(), du.data(), thickness, 0.0, nullptr, out.state.data(), out.traction.data(),
-                          out.tangent.data(), &factor, message, sizeof message);
+  out.status =
+      iwb_update(m.m, s.data(), du.data(), thickness, 0.0, nullptr, out.state.data(),
+                 out.traction.data(), out.tangent.data(), &factor, message, sizeof message);
   return out;
 }
 
 }  // namespace
 
-TEST_CASE("c_api: the tangent is the derivative of the integrated increment (central differences), every family",
-          "[c_api]") {
+TEST_CASE(
+    "c_api: the tangent is the derivative of the integrated increment (central differences), every "
+    "family",
+    "[c_api]") {
   for (const auto& c : cases()) {
     INFO(c.model);
     const Material m(c, "rtol = 1e-10");
     auto s = m.initial(c);
     // a first increment of shear, so that the state is sheared and (for the returns) on the surface
     s = update(m, s, {-1e-3, 4e-3, 1e-3}).state;
-    for (const std::array<double, 3> du : {std::array<double, 3>{1e-4, 2e-3, 5e-4}, {-2e-4, 1e-3, 0.0}}) {
+    for (const std::array<double, 3> du :
+         {std::array<double, 3>{1e-4, 2e-3, 5e-4}, {-2e-4, 1e-3, 0.0}}) {
       const Step base = update(m, s, du);
       REQUIRE(base.status == IWB_OK);
       for (int j = 0; j < 3; ++j) {
@@ -95,7 +100,8 @@ TEST_CASE("c_api: the tangent is the derivative of the integrated increment (cen
         const Step a = update(m, s, up), b = update(m, s, down);
         for (int i = 0; i < 3; ++i) {
           const double fd = (a.traction[i] - b.traction[i]) / (2.0 * h);
-          const double scale = std::abs(base.tangent[3 * 0 + 0]) + std::abs(base.tangent[3 * 1 + 1]);
+          const double scale =
+              std::abs(base.tangent[3 * 0 + 0]) + std::abs(base.tangent[3 * 1 + 1]);
           CHECK(base.tangent[3 * i + j] == Approx(fd).epsilon(1e-4).margin(1e-6 * scale));
         }
       }
@@ -103,8 +109,10 @@ TEST_CASE("c_api: the tangent is the derivative of the integrated increment (cen
   }
 }
 
-TEST_CASE("c_api: Newton on eps_n under CNS with the tangent converges quadratically and follows the driver's path",
-          "[c_api]") {
+TEST_CASE(
+    "c_api: Newton on eps_n under CNS with the tangent converges quadratically and follows the "
+    "driver's path",
+    "[c_api]") {
   const Case c{"hvwe", "table_5_1_evaluation.toml", {{"sigma_n_kPa", 100}, {"e0", 0.65}}};
   const Material m(c, "rtol = 1e-10");
   auto s = m.initial(c);
@@ -114,7 +122,8 @@ TEST_CASE("c_api: Newton on eps_n under CNS with the tangent converges quadratic
   double sigma0 = 100.0;
   std::vector<double> sigma_path;
   for (int k = 0; k < increments; ++k) {
-    // residual r(x) = sigma_n(x) - (sigma0 + K x): an opening (dilation, x > 0) compresses the spring
+    // residual r(x) = sigma_n(x) - (sigma0 + K x): an opening (dilation, x > 0) compresses the
+    // spring
     double x = 0.0;
     std::vector<double> residuals;
     Step st;
@@ -128,7 +137,8 @@ TEST_CASE("c_api: Newton on eps_n under CNS with the tangent converges quadratic
     }
     // quadratic: each residual below C times the square of the one before, once in the basin
     for (std::size_t i = 2; i < residuals.size(); ++i)
-      if (residuals[i - 1] > 1e-9) CHECK(residuals[i] <= 10.0 * residuals[i - 1] * residuals[i - 1] / sigma0 + 1e-10);
+      if (residuals[i - 1] > 1e-9)
+        CHECK(residuals[i] <= 10.0 * residuals[i - 1] * residuals[i - 1] / sigma0 + 1e-10);
     CHECK(residuals.size() <= 6);
     s = st.state;
     sigma0 = st.traction[0];
@@ -146,25 +156,31 @@ TEST_CASE("c_api: Newton on eps_n under CNS with the tangent converges quadratic
   spec.settings.integrator.rtol = 1e-10;
   const auto r = test::shear(spec);
   REQUIRE(r.result.complete());
-  for (int k = 0; k < increments; k += 7) CHECK(sigma_path[k] == Approx(r.stress(k + 1).sigma_n).epsilon(1e-7));
+  for (int k = 0; k < increments; k += 7)
+    CHECK(sigma_path[k] == Approx(r.stress(k + 1).sigma_n).epsilon(1e-7));
 }
 
-TEST_CASE("c_api: errors are codes with a message, allocate nothing and leave the state to retry from", "[c_api]") {
+TEST_CASE(
+    "c_api: errors are codes with a message, allocate nothing and leave the state to retry from",
+    "[c_api]") {
   char message[512];
   iwb_material* m = reinterpret_cast<iwb_material*>(0x1);
-  CHECK(iwb_material_create("nonesuch", "data/params/table_5_1_evaluation.toml", 1.0, nullptr, &m, message, sizeof message) ==
-        IWB_ERROR_INPUT);
+  CHECK(iwb_material_create("nonesuch", "data/params/table_5_1_evaluation.toml", 1.0, nullptr, &m,
+                            message, sizeof message) == IWB_ERROR_INPUT);
   CHECK(m == nullptr);
   CHECK(std::string(message).find("hvwe") != std::string::npos);  // the known names
-  CHECK(iwb_material_create("hvwe", "data/params/nonesuch.toml", 1.0, nullptr, &m, message, sizeof message) == IWB_ERROR_INPUT);
-  CHECK(iwb_material_create("vw3d", "data/params/table_5_1_evaluation.toml", 0.5, nullptr, &m, message, sizeof message) ==
-        IWB_ERROR_INPUT);
+  CHECK(iwb_material_create("hvwe", "data/params/nonesuch.toml", 1.0, nullptr, &m, message,
+                            sizeof message) == IWB_ERROR_INPUT);
+  CHECK(iwb_material_create("vw3d", "data/params/table_5_1_evaluation.toml", 0.5, nullptr, &m,
+                            message, sizeof message) == IWB_ERROR_INPUT);
   CHECK(std::string(message).find("kappa_r") != std::string::npos);
-  CHECK(iwb_material_create("hvwe", "data/params/table_5_1_evaluation.toml", 1.0, "scheme = \"leapfrog\"", &m, message,
+  CHECK(iwb_material_create("hvwe", "data/params/table_5_1_evaluation.toml", 1.0,
+                            "scheme = \"leapfrog\"", &m, message,
                             sizeof message) == IWB_ERROR_INPUT);
   const char* keys[] = {"hypoplastic.phi_c_deg"};
   const double values[] = {30.0};
-  CHECK(iwb_material_create_from_values("hvwe", keys, values, 1, 1.0, nullptr, &m, message, sizeof message) == IWB_ERROR_INPUT);
+  CHECK(iwb_material_create_from_values("hvwe", keys, values, 1, 1.0, nullptr, &m, message,
+                                        sizeof message) == IWB_ERROR_INPUT);
   CHECK(std::string(message).find("h_s") != std::string::npos);  // the missing key is named
 
   const Case c{"hvwe", "table_5_1_evaluation.toml", {{"sigma_n_kPa", 100}, {"e0", 0.8}}};
@@ -174,19 +190,20 @@ TEST_CASE("c_api: errors are codes with a message, allocate nothing and leave th
   std::vector<double> s(iwb_state_size(mat.m));
   CHECK(iwb_initial_state(mat.m, bad, v, 3, s.data(), message, sizeof message) == IWB_ERROR_INPUT);
   CHECK(std::string(message).find("porosity") != std::string::npos);
-  // an opening of 50 % leaves the model's domain (contact lost): a cut is asked, state_out = state_in
+  // an opening of 50 % leaves the model's domain (contact lost): a cut is asked, state_out =
+  // state_in
   s = mat.initial(c);
   std::vector<double> out(s.size(), -1.0);
   double traction[3], factor = 1.0;
   const double du[3] = {0.5, 0.0, 0.0};
-  const auto status = iwb_update(mat.m, s.data(), du, 1.0, 0.0, nullptr, out.data(), traction, nullptr, &factor, message,
-                                 sizeof message);
+  const auto status = iwb_update(mat.m, s.data(), du, 1.0, 0.0, nullptr, out.data(), traction,
+                                 nullptr, &factor, message, sizeof message);
   CHECK((status == IWB_ERROR_DOMAIN || status == IWB_ERROR_CONVERGENCE));
   CHECK(factor < 1.0);
   CHECK(out == s);
   const double zero[3] = {0.0, 1e-3, 0.0};
-  CHECK(iwb_update(mat.m, s.data(), zero, 0.0, 0.0, nullptr, out.data(), traction, nullptr, &factor, message, sizeof message) ==
-        IWB_ERROR_INPUT);
+  CHECK(iwb_update(mat.m, s.data(), zero, 0.0, 0.0, nullptr, out.data(), traction, nullptr, &factor,
+                   message, sizeof message) == IWB_ERROR_INPUT);
 }
 
 TEST_CASE("c_api: one material from four threads gives the serial results bit for bit", "[c_api]") {

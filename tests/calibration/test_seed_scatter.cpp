@@ -28,7 +28,8 @@ SoilTest cv_test(int seed, double tau_offset, double e_offset, std::string speci
 
 }  // namespace
 
-TEST_CASE("seed scatter: replicates weigh their residuals by the sample SD across their seeds", "[calibration]") {
+TEST_CASE("seed scatter: replicates weigh their residuals by the sample SD across their seeds",
+          "[calibration]") {
   // tau differs by -50/+50 kPa in every row: sample SD sqrt((50^2 + 50^2) / 1) = 70.71 kPa.
   // e differs by 0 / 0.01: SD 0.00707, above the declared 0.002.
   std::vector<SoilTest> tests = {cv_test(1, -50.0, 0.0), cv_test(2, 50.0, 0.01),
@@ -46,7 +47,8 @@ TEST_CASE("seed scatter: replicates weigh their residuals by the sample SD acros
   CHECK(tests[2].scales.tau_kPa == 0.0);
 }
 
-TEST_CASE("seed scatter: a test at another stress or boundary is not a replicate", "[calibration]") {
+TEST_CASE("seed scatter: a test at another stress or boundary is not a replicate",
+          "[calibration]") {
   auto a = cv_test(1, 0.0, 0.0), b = cv_test(2, 10.0, 0.0);
   CHECK(calibration::same_design(a, b));
   b.sigma0_kPa = 50.0;

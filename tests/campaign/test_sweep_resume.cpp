@@ -4,8 +4,8 @@
 #include <filesystem>
 
 #include "campaign/sweep.hpp"
-#include "support/sweep_fixtures.hpp"
 #include "io/run_directory.hpp"
+#include "support/sweep_fixtures.hpp"
 
 using namespace iwb;
 using nlohmann::json;
@@ -23,7 +23,8 @@ json job_record(const json& sweep, const std::string& name) {
 }
 }  // namespace
 
-TEST_CASE("a campaign stopped after its first job and run again re-runs only the unfinished jobs", "[campaign][dem]") {
+TEST_CASE("a campaign stopped after its first job and run again re-runs only the unfinished jobs",
+          "[campaign][dem]") {
   const auto out = test::campaign_dir("resume");
   // data/sweeps/tiny.toml: u0.05 and u10 start together with the same consolidation; u10 then
   // shears 200 times as far (seconds more), so u0.05 ends first and the stop finds u10 shearing
@@ -56,5 +57,6 @@ TEST_CASE("a campaign stopped after its first job and run again re-runs only the
   CHECK(resumed["stages"]["consolidate"] == stopped["stages"]["consolidate"]);  // not run again
   CHECK(manifest(out, "u0.1")["status"] == "complete");
   CHECK(job_record(second.record, "u0.1")["start"] == "fresh");
-  for (const std::string job : {"u0.05", "u10", "u0.1"}) CHECK(fs::exists(out / "runs" / job / "summary.json"));
+  for (const std::string job : {"u0.05", "u10", "u0.1"})
+    CHECK(fs::exists(out / "runs" / job / "summary.json"));
 }

@@ -1,8 +1,9 @@
 // The comparison layer: a run directory of the contract is validated line by line, and replaying
 // a continuum run's own path with the same model and parameters reproduces its curves.
+#include <fmt/core.h>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
-#include <fmt/core.h>
 
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
@@ -42,11 +43,15 @@ std::string rejection(const fs::path& dir, bool allow_partial = false) {
 
 }  // namespace
 
-TEST_CASE("replaying a continuum run's own path reproduces its curves (CNL, CNS, CV)", "[comparison]") {
-  for (const auto& [name, bc, K] : {std::tuple{"cnl", driver::BoundaryCondition{driver::BoundaryKind::kCNL, 0.0}, 0.0},
-                                    std::tuple{"cns", driver::BoundaryCondition{driver::BoundaryKind::kCNS, 2000.0 * kDs}, 2000.0},
-                                    std::tuple{"cv", driver::BoundaryCondition{driver::BoundaryKind::kCV, 0.0}, 0.0}}) {
-    const auto dem = comparison::load_dem_run(synthetic_dem(std::string("fidelity_") + name, bc, K));
+TEST_CASE("replaying a continuum run's own path reproduces its curves (CNL, CNS, CV)",
+          "[comparison]") {
+  for (const auto& [name, bc, K] :
+       {std::tuple{"cnl", driver::BoundaryCondition{driver::BoundaryKind::kCNL, 0.0}, 0.0},
+        std::tuple{"cns", driver::BoundaryCondition{driver::BoundaryKind::kCNS, 2000.0 * kDs},
+                   2000.0},
+        std::tuple{"cv", driver::BoundaryCondition{driver::BoundaryKind::kCV, 0.0}, 0.0}}) {
+    const auto dem =
+        comparison::load_dem_run(synthetic_dem(std::string("fidelity_") + name, bc, K));
     const auto r = comparison::replay(dem, same_model());
     REQUIRE(r.status == "complete");
     REQUIRE(r.u_x_mm.size() == dem.u_x_mm.size());
@@ -64,11 +69,12 @@ TEST_CASE("replaying a continuum run's own path reproduces its curves (CNL, CNS,
 }
 
 TEST_CASE("a different d_s is seen by the metrics", "[comparison]") {
-  const auto dem = comparison::load_dem_run(synthetic_dem("other_ds", {driver::BoundaryKind::kCNL, 0.0}, 0.0));
+  const auto dem =
+      comparison::load_dem_run(synthetic_dem("other_ds", {driver::BoundaryKind::kCNL, 0.0}, 0.0));
   auto v = same_model();
   v.d_s_mm = 2.0 * kDs;
   const auto m = comparison::compare(dem, comparison::replay(dem, v));
-  CHECK(m.rmse_tau_kPa > 1.0);                         // half the strain: a visibly different curve
+  CHECK(m.rmse_tau_kPa > 1.0);  // half the strain: a visibly different curve
   CHECK(m.u_x_at_peak_model_mm > m.u_x_at_peak_dem_mm);  // the peak comes later in u_x
 }
 
@@ -89,23 +95,33 @@ TEST_CASE("malformed run directories are refused with file, line and reason", "[
   CHECK_THAT(rejection(d), Catch::Contains("manifest.json: missing"));
   d = variant("wrong_header");
   test::edit_file(d / "timeseries.csv", "tau_kPa", "tau_Pa");
-  CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:1: missing column 'tau_kPa'") && Catch::Contains("tau_Pa"));
+  CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:1: missing column 'tau_kPa'") &&
+                               Catch::Contains("tau_Pa"));
   d = variant("nan");
   test::edit_file(d / "timeseries.csv", ",4\n", ",nan\n");  // the first data row's coordination
-  CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:2: column 'coordination' = 'nan' is not a finite number"));
+  CHECK_THAT(
+      rejection(d),
+      Catch::Contains("timeseries.csv:2: column 'coordination' = 'nan' is not a finite number"));
   d = variant("truncated");
-  { std::string s = io::read_file(d / "timeseries.csv"); s.resize(s.size() - 12); io::write_atomically(d / "timeseries.csv", s); }
+  {
+    std::string s = io::read_file(d / "timeseries.csv");
+    s.resize(s.size() - 12);
+    io::write_atomically(d / "timeseries.csv", s);
+  }
   CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:") && Catch::Contains("truncated row"));
   d = variant("time_backwards");
   test::edit_file(d / "timeseries.csv", "\n0.02,", "\n0.001,");
-  CHECK_THAT(rejection(d), Catch::Contains("timeseries.csv:4: t_s = 0.001 after 0.01: time must increase"));
+  CHECK_THAT(rejection(d),
+             Catch::Contains("timeseries.csv:4: t_s = 0.001 after 0.01: time must increase"));
   d = variant("failed");
   test::edit_file(d / "manifest.json", "\"complete\"", "\"failed: engine error\"");
-  CHECK_THAT(rejection(d), Catch::Contains("run status is 'failed: engine error'; pass --allow-partial"));
+  CHECK_THAT(rejection(d),
+             Catch::Contains("run status is 'failed: engine error'; pass --allow-partial"));
   CHECK(rejection(d, true) == "(accepted)");
   d = variant("no_boundary");
   test::edit_file(d / "manifest.json", "\"type\"", "\"kind\"");
-  CHECK_THAT(rejection(d), Catch::Contains("missing or malformed field '/scene/resolved/boundary/type'"));
+  CHECK_THAT(rejection(d),
+             Catch::Contains("missing or malformed field '/scene/resolved/boundary/type'"));
 }
 
 TEST_CASE("identifiability: the fit recovers a known kappa_r and d_s within 2 %", "[comparison]") {
@@ -113,11 +129,12 @@ TEST_CASE("identifiability: the fit recovers a known kappa_r and d_s within 2 %"
   const auto dem = comparison::load_dem_run(
       synthetic_dem("identifiability", {driver::BoundaryKind::kCNL, 0.0}, 0.0, 0.7, 2.0));
   const auto fit = comparison::fit_kappa_and_ds(dem, same_model(), comparison::tau_only_targets());
-  INFO("kappa_r " << fit.kappa_r << " +- " << fit.sigma_kappa_r << ", d_s " << fit.d_s_mm << " +- " << fit.sigma_d_s_mm
-                  << " mm, RMSE " << fit.rms_scaled << " kPa, " << fit.evaluations << " evaluations, " << fit.stop_reason);
+  INFO("kappa_r " << fit.kappa_r << " +- " << fit.sigma_kappa_r << ", d_s " << fit.d_s_mm << " +- "
+                  << fit.sigma_d_s_mm << " mm, RMSE " << fit.rms_scaled << " kPa, "
+                  << fit.evaluations << " evaluations, " << fit.stop_reason);
   CHECK(fit.kappa_r == Approx(0.7).epsilon(0.02));
   CHECK(fit.d_s_mm == Approx(2.0).epsilon(0.02));
-  CHECK(fit.rms_scaled < 0.05);         // the generating curve is reachable (tau in kPa: scale 1)
+  CHECK(fit.rms_scaled < 0.05);           // the generating curve is reachable (tau in kPa: scale 1)
   CHECK(fit.sigma_kappa_r < 0.02 * 0.7);  // and the data pin the parameters down
   CHECK(fit.sigma_d_s_mm < 0.02 * 2.0);
 }
@@ -129,7 +146,9 @@ TEST_CASE("identifiability: the fit recovers a known kappa_r and d_s within 2 %"
 // M = 6 sin(1.25 deg)/(3 - sin(1.25 deg)) = 0.044 (eq. 6.22) while the DEM starts at the oedometric
 // q/p = 3(1 - K0)/(1 + 2 K0) = 0.59 (K0 = 1 - sin 25 deg): the ASBS pressure p (M^2 + eta^2)/M^2 is
 // 180 p, so the DEM's e lies far above it.
-TEST_CASE("compare replays a clay model by its declaration, and an inadmissible start is a missed replay", "[comparison]") {
+TEST_CASE(
+    "compare replays a clay model by its declaration, and an inadmissible start is a missed replay",
+    "[comparison]") {
   const auto dem = comparison::load_dem_run("data/reference/truth2_rn/runs/flat_s1_cnl");
   const auto clay = test::shipped("table_6_1_evaluation.toml");
   const auto hcc = comparison::standard_variants(dem, "hcc", clay, 5.0);

@@ -1,8 +1,8 @@
 // Cyclic verdicts on a constructed cyclic run: an elastic-perfectly plastic loop under a sigma_n
 // that decays and a u_n that ratchets, replayed by a "model" that is the run itself, then one
 // whose sigma_n falls faster by a known share, then one that stops early.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 
 #include "comparison/cyclic_verdicts.hpp"
@@ -22,12 +22,18 @@ comparison::DemRun cyclic_run(driver::BoundaryKind bc, double offset = 0.0, doub
   comparison::DemRun d;
   d.boundary = bc;
   d.d50_mm = 2.0;
-  d.scene_but_seed = {{"shear", {{"amplitude_mm", kA}, {"cycles", kCycles}, {"post_cyclic_mm", kPost}, {"velocity_mm_s", kV}}}};
+  d.scene_but_seed = {{"shear",
+                       {{"amplitude_mm", kA},
+                        {"cycles", kCycles},
+                        {"post_cyclic_mm", kPost},
+                        {"velocity_mm_s", kV}}}};
   double tau = 0.0;
   std::vector<double> travel = {0.0};  // every run has its row at the start of shear
-  for (double s = offset > 0.0 ? offset * kRow : kRow; s <= 4 * kA * kCycles + kPost; s += kRow) travel.push_back(s);
+  for (double s = offset > 0.0 ? offset * kRow : kRow; s <= 4 * kA * kCycles + kPost; s += kRow)
+    travel.push_back(s);
   const auto u_at = [](double s) {
-    return s >= 4 * kA * kCycles ? s - 4 * kA * kCycles : kA * (std::abs(std::fmod(s / kA + 3.0, 4.0) - 2.0) - 1.0);
+    return s >= 4 * kA * kCycles ? s - 4 * kA * kCycles
+                                 : kA * (std::abs(std::fmod(s / kA + 3.0, 4.0) - 2.0) - 1.0);
   };
   double s_before = 0.0;
   for (double s : travel) {
@@ -36,7 +42,8 @@ comparison::DemRun cyclic_run(driver::BoundaryKind bc, double offset = 0.0, doub
       tau = std::clamp(tau + 80.0 * (u_at(std::min(s, x + 1e-4)) - u_at(x)), -10.0, 10.0);
     s_before = s;
     d.t_s.push_back(s / kV), d.u_x_mm.push_back(u_at(s)), d.tau_kPa.push_back(tau);
-    d.sigma_n_kPa.push_back(50.0 * std::exp(-s / decay)), d.u_n_mm.push_back(0.01 * s), d.e_band.push_back(0.7);
+    d.sigma_n_kPa.push_back(50.0 * std::exp(-s / decay)), d.u_n_mm.push_back(0.01 * s),
+        d.e_band.push_back(0.7);
   }
   return d;
 }
@@ -47,14 +54,16 @@ comparison::Replay replay_of(const comparison::DemRun& d) {
   return r;
 }
 
-std::vector<comparison::CyclicVerdict> judged(const comparison::DemRun& d, const comparison::Replay& r) {
+std::vector<comparison::CyclicVerdict> judged(const comparison::DemRun& d,
+                                              const comparison::Replay& r) {
   const auto program = comparison::cyclic_program(d);
   REQUIRE(program.has_value());
-  return comparison::judge_cycles(d, {comparison::dem_cycles(d, *program)}, comparison::replay_cycles(d, r, *program));
+  return comparison::judge_cycles(d, {comparison::dem_cycles(d, *program)},
+                                  comparison::replay_cycles(d, r, *program));
 }
 
-const comparison::CyclicVerdict& find(const std::vector<comparison::CyclicVerdict>& v, const std::string& q,
-                                      const std::string& where) {
+const comparison::CyclicVerdict& find(const std::vector<comparison::CyclicVerdict>& v,
+                                      const std::string& q, const std::string& where) {
   for (const auto& x : v)
     if (x.quantity == q && x.where == where) return x;
   FAIL("no verdict " << q << " at " << where);
@@ -63,7 +72,9 @@ const comparison::CyclicVerdict& find(const std::vector<comparison::CyclicVerdic
 
 }  // namespace
 
-TEST_CASE("a replay that is the DEM run holds on every cyclic quantity, at cycles 1, 2 and the last", "[comparison][cyclic]") {
+TEST_CASE(
+    "a replay that is the DEM run holds on every cyclic quantity, at cycles 1, 2 and the last",
+    "[comparison][cyclic]") {
   const auto d = cyclic_run(driver::BoundaryKind::kCNS);
   const auto v = judged(d, replay_of(d));
   // CNS: peaks both ways, sigma_n ratio, u_n, reversal stiffness at cycles 1, 2, 3 (5 is beyond),
@@ -76,12 +87,14 @@ TEST_CASE("a replay that is the DEM run holds on every cyclic quantity, at cycle
   }
 }
 
-TEST_CASE("a model whose sigma_n falls faster breaks the degradation where the miss exceeds 10 %", "[comparison][cyclic]") {
+TEST_CASE("a model whose sigma_n falls faster breaks the degradation where the miss exceeds 10 %",
+          "[comparison][cyclic]") {
   const auto d = cyclic_run(driver::BoundaryKind::kCNS);
   auto r = replay_of(d);
   // sigma_n lower by 20 % of the travel's share of the cycles: the ratio misses by -6.7 %, -13.3 %
   // and -20 % at the ends of cycles 1, 2, 3
-  for (std::size_t i = 0; i < r.sigma_n_kPa.size(); ++i) r.sigma_n_kPa[i] *= 1.0 - 0.2 * std::min(1.0, d.t_s[i] * kV / 12.0);
+  for (std::size_t i = 0; i < r.sigma_n_kPa.size(); ++i)
+    r.sigma_n_kPa[i] *= 1.0 - 0.2 * std::min(1.0, d.t_s[i] * kV / 12.0);
   const auto v = judged(d, r);
   CHECK(find(v, "sigma_n_ratio", "cycle 1").error.value() == Approx(-0.2 / 3).epsilon(1e-3));
   CHECK(find(v, "sigma_n_ratio", "cycle 1").verdict == "holds");
@@ -91,7 +104,8 @@ TEST_CASE("a model whose sigma_n falls faster breaks the degradation where the m
   CHECK(find(v, "u_n_end_mm", "cycle 3").verdict == "holds");  // untouched
 }
 
-TEST_CASE("a replay that stopped in cycle 2 is not reached beyond; the BC decides what is judged", "[comparison][cyclic]") {
+TEST_CASE("a replay that stopped in cycle 2 is not reached beyond; the BC decides what is judged",
+          "[comparison][cyclic]") {
   const auto d = cyclic_run(driver::BoundaryKind::kCNL);
   auto r = replay_of(d);
   const std::size_t keep = std::size_t(6.0 * kA / kRow);  // a cycle and a half
@@ -101,12 +115,14 @@ TEST_CASE("a replay that stopped in cycle 2 is not reached beyond; the BC decide
   CHECK(find(v, "peak_friction_positive", "cycle 2").verdict == "not reached");
   CHECK(find(v, "post_cyclic_peak_friction", "after the cycles").verdict == "not reached");
   for (const auto& x : v) CHECK(x.quantity != "sigma_n_ratio");  // CNL holds sigma_n
-  const auto cv = judged(cyclic_run(driver::BoundaryKind::kCV), replay_of(cyclic_run(driver::BoundaryKind::kCV)));
+  const auto cv = judged(cyclic_run(driver::BoundaryKind::kCV),
+                         replay_of(cyclic_run(driver::BoundaryKind::kCV)));
   for (const auto& x : cv) CHECK(x.quantity.find("u_n") == std::string::npos);  // CV holds u_n
-  CHECK_FALSE(comparison::cyclic_program(comparison::DemRun{}).has_value());  // a monotonic run
+  CHECK_FALSE(comparison::cyclic_program(comparison::DemRun{}).has_value());    // a monotonic run
 }
 
-TEST_CASE("seeds of a cyclic run are aligned by their travel v t, not by summed |du_x|", "[comparison][cyclic]") {
+TEST_CASE("seeds of a cyclic run are aligned by their travel v t, not by summed |du_x|",
+          "[comparison][cyclic]") {
   // the same path sampled 0.4 rows later: summing |du_x| cuts each reversal's corner by a
   // different amount in each (up to a row, 0.007 mm), so that the elastic branches (80 kPa/mm)
   // after each reversal would be compared a little apart
@@ -116,20 +132,24 @@ TEST_CASE("seeds of a cyclic run are aligned by their travel v t, not by summed 
   CHECK(s.tau.rms_sd < 0.01);  // kPa: interpolation alone (0.004); aligned by summed |du_x|: 0.023
 }
 
-TEST_CASE("cyclic verdicts rest on the seeds: their mean, its t-interval, and a miss inside it is DEM scatter",
-          "[comparison][cyclic]") {
+TEST_CASE(
+    "cyclic verdicts rest on the seeds: their mean, its t-interval, and a miss inside it is DEM "
+    "scatter",
+    "[comparison][cyclic]") {
   // three seeds whose sigma_n decays over 15, 20 and 25 mm of travel: after cycle 3 (12 mm) the
   // ratio is exp(-12/L); a model decaying over 12.5 mm misses their mean by 29 %
   std::vector<comparison::DemRun> seeds;
-  for (double decay : {15.0, 20.0, 25.0}) seeds.push_back(cyclic_run(driver::BoundaryKind::kCNS, 0.0, decay));
+  for (double decay : {15.0, 20.0, 25.0})
+    seeds.push_back(cyclic_run(driver::BoundaryKind::kCNS, 0.0, decay));
   const auto program = *comparison::cyclic_program(seeds[0]);
   std::vector<cycles::CyclicQuantities> q;
   for (const auto& s : seeds) q.push_back(comparison::dem_cycles(s, program));
-  const auto model = comparison::replay_cycles(seeds[0], replay_of(cyclic_run(driver::BoundaryKind::kCNS, 0.0, 12.5)),
-                                               program);
+  const auto model = comparison::replay_cycles(
+      seeds[0], replay_of(cyclic_run(driver::BoundaryKind::kCNS, 0.0, 12.5)), program);
   const double r1 = std::exp(-12.0 / 15), r2 = std::exp(-12.0 / 20), r3 = std::exp(-12.0 / 25);
   const double mean = (r1 + r2 + r3) / 3;
-  const double sd = std::sqrt((std::pow(r1 - mean, 2) + std::pow(r2 - mean, 2) + std::pow(r3 - mean, 2)) / 2);
+  const double sd =
+      std::sqrt((std::pow(r1 - mean, 2) + std::pow(r2 - mean, 2) + std::pow(r3 - mean, 2)) / 2);
   const auto all = comparison::judge_cycles(seeds[0], q, model);
   const auto& v = find(all, "sigma_n_ratio", "cycle 3");
   CHECK(v.seeds == 3);

@@ -1,8 +1,8 @@
 // The committed reference campaign (data/reference/, README there): every run passes the
 // comparison layer's ingest of the DEM contract, and what each run records is what its sweep
 // asked for. Reads a few hundred kB of CSV: well under a second.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -87,10 +87,9 @@ bool check_summary_recomputes(const comparison::DemRun& run) {
     if (run.summary[key].is_null())
       CHECK(again[key].is_null());
     else
-      CHECK(again[key].get<double>() ==
-            Approx(run.summary[key].get<double>())
-                .epsilon(relative_precision(run, key))
-                .margin(kCsvPrecision));
+      CHECK(again[key].get<double>() == Approx(run.summary[key].get<double>())
+                                            .epsilon(relative_precision(run, key))
+                                            .margin(kCsvPrecision));
   }
   if (window) CHECK(again["residual_is"] == run.summary["residual_is"]);
   CHECK(again["shear_mode"] == run.summary["shear_mode"]);
@@ -132,14 +131,16 @@ TEST_CASE(
   CHECK(pair_R_n[1] == Approx(pair_R_n[0]));
 }
 
-TEST_CASE("every committed run of the truth reference campaign passes the DEM contract, its summary.json "
-          "recomputes, and it records its wall, grains and shear",
-          "[comparison][reference]") {
+TEST_CASE(
+    "every committed run of the truth reference campaign passes the DEM contract, its summary.json "
+    "recomputes, and it records its wall, grains and shear",
+    "[comparison][reference]") {
   int runs = 0, complete_jobs = 0;
   for (const auto* sweep : {"truth2_rn", "truth2_cns", "truth2_d50", "truth2_stress"}) {
     if (!fs::exists(kReference / sweep / "sweep.json")) continue;  // not run yet
-    const fs::path committed = kReference / sweep / "runs";   // none until a first job completes
-    for (const auto& entry : fs::exists(committed) ? fs::directory_iterator(committed) : fs::directory_iterator()) {
+    const fs::path committed = kReference / sweep / "runs";  // none until a first job completes
+    for (const auto& entry :
+         fs::exists(committed) ? fs::directory_iterator(committed) : fs::directory_iterator()) {
       const std::string job = entry.path().filename().string();
       INFO(entry.path().string());
       const auto run = comparison::load_dem_run(entry.path());
@@ -157,9 +158,10 @@ TEST_CASE("every committed run of the truth reference campaign passes the DEM co
   CHECK(runs >= 24);
 }
 
-TEST_CASE("every committed seed run of the truth's engine crosscheck passes the DEM contract, its "
-          "summary.json recomputes, and its manifest names the engine and seed of its directory",
-          "[comparison][reference]") {
+TEST_CASE(
+    "every committed seed run of the truth's engine crosscheck passes the DEM contract, its "
+    "summary.json recomputes, and its manifest names the engine and seed of its directory",
+    "[comparison][reference]") {
   const auto check_run = [](const fs::path& dir, const std::string& engine, int seed) {
     INFO(dir.string());
     const auto run = comparison::load_dem_run(dir);

@@ -19,9 +19,11 @@ const fs::path kRun = "data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s1";
 const fs::path kParams = "data/params/dem_default_grains.toml";
 
 // A fresh comparison of `run` at kReportWork/name (half a second).
-fs::path fresh_comparison(const std::string& name, const fs::path& run = kRun, bool allow_partial = false) {
+fs::path fresh_comparison(const std::string& name, const fs::path& run = kRun,
+                          bool allow_partial = false) {
   const fs::path out = kReportWork / name;
-  std::vector<std::string> args = {"compare", run.string(), "--params", kParams.string(), "-o", out.string(), "--force"};
+  std::vector<std::string> args = {"compare", run.string(), "--params", kParams.string(),
+                                   "-o",      out.string(), "--force"};
   if (allow_partial) args.push_back("--allow-partial");
   const auto r = test::run_iwb(args);
   INFO(r.output);
@@ -31,7 +33,8 @@ fs::path fresh_comparison(const std::string& name, const fs::path& run = kRun, b
 
 // `iwb report inputs -o out/report.html` must exit 2 with `message`, and `out` must hold what it
 // held before.
-void refused(const std::vector<std::string>& inputs, const fs::path& out, const std::string& message) {
+void refused(const std::vector<std::string>& inputs, const fs::path& out,
+             const std::string& message) {
   const auto before = test::files_under(out);
   std::vector<std::string> args = {"report"};
   args.insert(args.end(), inputs.begin(), inputs.end());
@@ -45,7 +48,8 @@ void refused(const std::vector<std::string>& inputs, const fs::path& out, const 
 
 }  // namespace
 
-TEST_CASE("report: bad inputs exit 2 and write nothing, not even the figures directory", "[comparison]") {
+TEST_CASE("report: bad inputs exit 2 and write nothing, not even the figures directory",
+          "[comparison]") {
   const fs::path out = kReportWork / "bad_out";
   fs::remove_all(out);
   fs::create_directories(kReportWork / "empty");
@@ -53,9 +57,12 @@ TEST_CASE("report: bad inputs exit 2 and write nothing, not even the figures dir
 
   const auto truncated = fresh_comparison("truncated");
   const std::string csv = io::read_file(truncated / "compare.csv");
-  io::write_atomically(truncated / "compare.csv", csv.substr(0, csv.find('\n', csv.size() / 3) + 1));  // whole rows
-  refused({truncated.string()}, out, (truncated / "compare.csv").string() + ": changed since `iwb compare` wrote it");
-  fs::remove(truncated / "manifest.json");  // a comparison of an older iwb, without hashes: the rows tell
+  io::write_atomically(truncated / "compare.csv",
+                       csv.substr(0, csv.find('\n', csv.size() / 3) + 1));  // whole rows
+  refused({truncated.string()}, out,
+          (truncated / "compare.csv").string() + ": changed since `iwb compare` wrote it");
+  fs::remove(truncated /
+             "manifest.json");  // a comparison of an older iwb, without hashes: the rows tell
   io::write_atomically(truncated / "manifest.json", "{\"status\": \"complete\"}");
   refused({truncated.string()}, out, (truncated / "compare.csv").string() + ": variant 1 has");
 
@@ -68,33 +75,40 @@ TEST_CASE("report: bad inputs exit 2 and write nothing, not even the figures dir
   refused({cut.string()}, out, (cut / "manifest.json").string() + ": not valid JSON");
 
   // the good comparison first: its figures must not be drawn before the bad one is found
-  refused({fresh_comparison("good").string(), (kReportWork / "empty").string()}, out, "neither a directory");
+  refused({fresh_comparison("good").string(), (kReportWork / "empty").string()}, out,
+          "neither a directory");
   CHECK_FALSE(fs::exists(out));
 }
 
-TEST_CASE("report: a comparison whose manifest says failed is refused, naming its status", "[comparison]") {
+TEST_CASE("report: a comparison whose manifest says failed is refused, naming its status",
+          "[comparison]") {
   const auto failed = fresh_comparison("failed");
-  test::edit_file(failed / "manifest.json", "\"status\": \"complete\"", "\"status\": \"failed: the replay diverged\"");
+  test::edit_file(failed / "manifest.json", "\"status\": \"complete\"",
+                  "\"status\": \"failed: the replay diverged\"");
   refused({failed.string()}, kReportWork / "failed_out",
-          "the comparison's status is 'failed: the replay diverged'; a report shows finished comparisons only");
+          "the comparison's status is 'failed: the replay diverged'; a report shows finished "
+          "comparisons only");
 }
 
 TEST_CASE("report: -o naming a directory is refused and leaves no temporary file", "[comparison]") {
   const fs::path dir = kReportWork / "o_is_dir";
   fs::remove_all(dir);
   fs::create_directories(dir / "report.html");
-  refused({fresh_comparison("for_dir").string()}, dir, "--out: " + (dir / "report.html").string() + ": is a directory");
+  refused({fresh_comparison("for_dir").string()}, dir,
+          "--out: " + (dir / "report.html").string() + ": is a directory");
   for (const auto& e : fs::recursive_directory_iterator(kReportWork))
     CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
 }
 
-TEST_CASE("report: a new report replaces the old one whole, a refused one leaves it as it was", "[comparison]") {
+TEST_CASE("report: a new report replaces the old one whole, a refused one leaves it as it was",
+          "[comparison]") {
   const fs::path out = kReportWork / "replace";
   fs::remove_all(out);
   const auto good = fresh_comparison("replace_good");
   auto r = test::run_iwb({"report", good.string(), "-o", (out / "report.html").string()});
   REQUIRE(r.exit_code == 0);
-  io::write_atomically(out / "report_files" / "stale.svg", "<svg/>");  // as an earlier report's figure
+  io::write_atomically(out / "report_files" / "stale.svg",
+                       "<svg/>");  // as an earlier report's figure
   r = test::run_iwb({"report", good.string(), "-o", (out / "report.html").string()});
   REQUIRE(r.exit_code == 0);
   CHECK_FALSE(fs::exists(out / "report_files" / "stale.svg"));
@@ -103,25 +117,32 @@ TEST_CASE("report: a new report replaces the old one whole, a refused one leaves
   CHECK(fs::exists(out / "report_files" / "0-replace_good" / "tau_ux.svg"));
 }
 
-TEST_CASE("report: a DEM run that did not complete, compared with --allow-partial, is flagged", "[comparison]") {
+TEST_CASE("report: a DEM run that did not complete, compared with --allow-partial, is flagged",
+          "[comparison]") {
   const fs::path run = kReportWork / "implausible_run";
   test::fresh_copy(kRun, run);
   test::edit_file(run / "manifest.json", "\"status\": \"complete\"",
-       "\"status\": \"failed: implausible: normal_stress_held = 0.6, must be <= 0.5\"");
+                  "\"status\": \"failed: implausible: normal_stress_held = 0.6, must be <= 0.5\"");
   const auto partial = fresh_comparison("partial", run, true);
   const fs::path out = kReportWork / "partial_out";
   const auto r = test::run_iwb({"report", partial.string(), "-o", (out / "report.html").string()});
   REQUIRE(r.exit_code == 0);
   const std::string html = io::read_file(out / "report.html");
-  CHECK_THAT(html, Catch::Contains("Warning: the DEM run " + run.string() + " did not complete (status: failed: implausible"));
-  CHECK_THAT(html, Catch::Contains("<td class=\"breaks\">failed: implausible: normal_stress_held"));  // glance table
+  CHECK_THAT(html, Catch::Contains("Warning: the DEM run " + run.string() +
+                                   " did not complete (status: failed: implausible"));
+  CHECK_THAT(html,
+             Catch::Contains(
+                 "<td class=\"breaks\">failed: implausible: normal_stress_held"));  // glance table
 }
 
-TEST_CASE("report: a DEM run with coarse-grained fields shows its band (maps, profiles, void ratio in d_s)",
-          "[comparison]") {
+TEST_CASE(
+    "report: a DEM run with coarse-grained fields shows its band (maps, profiles, void ratio in "
+    "d_s)",
+    "[comparison]") {
   // the smoke scene in LIGGGHTS (~10 s), coarse-grained when it completes (issue 21)
   const fs::path run = kReportWork / "smoke-with-fields";
-  const auto dem = test::run_iwb({"dem", "run", "data/scenes/smoke.toml", "--out", run.string(), "--force"});
+  const auto dem =
+      test::run_iwb({"dem", "run", "data/scenes/smoke.toml", "--out", run.string(), "--force"});
   INFO(dem.output);
   REQUIRE(dem.exit_code == 0);
   const fs::path out = fresh_comparison("smoke-with-fields-compare", run);
@@ -134,9 +155,11 @@ TEST_CASE("report: a DEM run with coarse-grained fields shows its band (maps, pr
   for (const char* f : {"band_map_1", "band_map_2", "band_profiles", "band_void_ratio"})
     CHECK(fs::exists(figures / (std::string(f) + ".svg")));
   const std::string page = io::read_file(html);
-  CHECK_THAT(page, Catch::Contains("over x-z at u_x = 1.") && Catch::Contains("Void ratio change inside the shear zone"));
+  CHECK_THAT(page, Catch::Contains("over x-z at u_x = 1.") &&
+                       Catch::Contains("Void ratio change inside the shear zone"));
   // the DEM's void ratio change starts at zero in each zone (columns x0 y0: the predicted d_s)
-  // (the figure's CSV pads shorter curves with nan, which read_csv_table refuses: read its first row)
+  // (the figure's CSV pads shorter curves with nan, which read_csv_table refuses: read its first
+  // row)
   const std::string csv = io::read_file(figures / "band_void_ratio.csv");
   const auto first = csv.substr(csv.find('\n') + 1);
   CHECK(first.rfind("x0", 0) != 0);

@@ -11,10 +11,12 @@
 
 namespace fs = std::filesystem;
 
-TEST_CASE("iwb validate on the smoke scene writes a self-contained report with its figures", "[comparison][liggghts]") {
+TEST_CASE("iwb validate on the smoke scene writes a self-contained report with its figures",
+          "[comparison][liggghts]") {
   const fs::path out = fs::path(IWB_TEST_RUNS_DIR) / "validate-smoke";
-  const std::string cmd = std::string(IWB_BINARY) + " validate --scene smoke --np 1 --force --out " + out.string() +
-                          " > " + (out.string() + ".log") + " 2>&1";
+  const std::string cmd = std::string(IWB_BINARY) +
+                          " validate --scene smoke --np 1 --force --out " + out.string() + " > " +
+                          (out.string() + ".log") + " 2>&1";
   fs::create_directories(out.parent_path());
   REQUIRE(std::system(cmd.c_str()) == 0);
   const std::string html = iwb::io::read_file(out / "report.html");
@@ -41,5 +43,7 @@ TEST_CASE("iwb validate on the smoke scene writes a self-contained report with i
     }
   CHECK(pngs == 8);
   // the smoke scene has the default scene's grains: the replay uses the set calibrated on them
-  CHECK(iwb::io::read_file(out / "compare-hvwe" / "manifest.json").find("dem_default_grains.toml") != std::string::npos);
+  CHECK(
+      iwb::io::read_file(out / "compare-hvwe" / "manifest.json").find("dem_default_grains.toml") !=
+      std::string::npos);
 }

@@ -29,12 +29,14 @@ struct KnownCurve {
     for (int i = 0; i < rows; ++i) {
       const double u = u_end * i / (rows - 1);
       const double f = u < 1.0 ? 0.6 * u : u < 2.0 ? 0.6 - 0.1 * (u - 1.0) : 0.5;
-      u_x.push_back(u), sigma.push_back(100.0 + 10.0 * u), tau.push_back(f * sigma.back()), u_n.push_back(0.05 * u);
+      u_x.push_back(u), sigma.push_back(100.0 + 10.0 * u), tau.push_back(f * sigma.back()),
+          u_n.push_back(0.05 * u);
     }
   }
 };
 
-comparison::DemRun dem_of(const KnownCurve& c, driver::BoundaryKind b = driver::BoundaryKind::kCNL) {
+comparison::DemRun dem_of(const KnownCurve& c,
+                          driver::BoundaryKind b = driver::BoundaryKind::kCNL) {
   comparison::DemRun d;
   d.boundary = b;
   d.d50_mm = 0.2;
@@ -60,12 +62,13 @@ const comparison::Verdict& find(const std::vector<comparison::Verdict>& v, const
 TEST_CASE("quantities of a curve known in closed form", "[comparison][verdicts]") {
   const KnownCurve c;
   const auto q = comparison::evaluate_quantities(
-      {c.u_x, c.tau, c.sigma, c.u_n}, {"peak_friction", "u_x_at_peak", "residual_friction", "total_dilation",
-                                       "dilation_rate", "sigma_n_change"});
+      {c.u_x, c.tau, c.sigma, c.u_n}, {"peak_friction", "u_x_at_peak", "residual_friction",
+                                       "total_dilation", "dilation_rate", "sigma_n_change"});
   CHECK(*q.at("peak_friction") == Approx(0.6).epsilon(1e-12));
   CHECK(*q.at("u_x_at_peak") == Approx(1.0).epsilon(1e-12));
-  CHECK(*q.at("residual_friction") == Approx(0.5).epsilon(1e-12));  // the last fifth is on the plateau
-  CHECK(*q.at("total_dilation") == Approx(0.25).epsilon(1e-12));    // 0.05 x 5 mm
+  CHECK(*q.at("residual_friction") ==
+        Approx(0.5).epsilon(1e-12));  // the last fifth is on the plateau
+  CHECK(*q.at("total_dilation") == Approx(0.25).epsilon(1e-12));  // 0.05 x 5 mm
   CHECK(*q.at("dilation_rate") == Approx(0.05).epsilon(1e-9));
   CHECK(*q.at("sigma_n_change") == Approx(50.0).epsilon(1e-12));
 }
@@ -75,7 +78,9 @@ TEST_CASE("each boundary condition judges what it leaves free", "[comparison][ve
   const auto cnl = comparison::judged_quantities(BoundaryKind::kCNL);
   const auto cv = comparison::judged_quantities(BoundaryKind::kCV);
   const auto cns = comparison::judged_quantities(BoundaryKind::kCNS);
-  auto has = [](const std::vector<std::string>& v, const char* k) { return std::find(v.begin(), v.end(), k) != v.end(); };
+  auto has = [](const std::vector<std::string>& v, const char* k) {
+    return std::find(v.begin(), v.end(), k) != v.end();
+  };
   CHECK(has(cnl, "total_dilation"));
   CHECK(has(cnl, "dilation_rate"));
   CHECK_FALSE(has(cnl, "sigma_n_change"));  // CNL prescribes sigma_n
@@ -85,7 +90,8 @@ TEST_CASE("each boundary condition judges what it leaves free", "[comparison][ve
   CHECK(has(cns, "sigma_n_change"));
 }
 
-TEST_CASE("verdict rule: holds within the tolerance, breaks beyond it and the DEM's scatter", "[comparison][verdicts]") {
+TEST_CASE("verdict rule: holds within the tolerance, breaks beyond it and the DEM's scatter",
+          "[comparison][verdicts]") {
   const KnownCurve dem_curve;
   const auto dem = dem_of(dem_curve);
   KnownCurve model = dem_curve;
@@ -101,24 +107,29 @@ TEST_CASE("verdict rule: holds within the tolerance, breaks beyond it and the DE
   // 0.00173 = 0.0075
   comparison::SeedScatter seeds;
   seeds.runs = {"a", "b", "c"};
-  seeds.quantity_mean = {{"dilation_rate", 0.05}, {"total_dilation", 0.25}};  // the DEM's own values
+  seeds.quantity_mean = {{"dilation_rate", 0.05},
+                         {"total_dilation", 0.25}};  // the DEM's own values
   seeds.quantity_sd = {{"dilation_rate", 0.003}, {"total_dilation", 0.01}};
-  CHECK(find(comparison::judge(dem, seeds, replay_of(model), tol), "dilation_rate").verdict == "within DEM scatter");
-  seeds.quantity_sd["dilation_rate"] = 0.0008;  // 4.303 x 0.0008 / sqrt(3) = 0.0020 < 0.0025: breaks
+  CHECK(find(comparison::judge(dem, seeds, replay_of(model), tol), "dilation_rate").verdict ==
+        "within DEM scatter");
+  seeds.quantity_sd["dilation_rate"] =
+      0.0008;  // 4.303 x 0.0008 / sqrt(3) = 0.0020 < 0.0025: breaks
   const auto sharp = find(comparison::judge(dem, seeds, replay_of(model), tol), "dilation_rate");
   CHECK(sharp.verdict == "breaks");
   // what it rests on: the interval, the detection limit (10 % + 0.0020 / 0.05 = 14 %) and the seeds
   // for an interval of half the tolerance (0.0025): t_{n-1} 0.0008 / sqrt(n) <= 0.0025 from n = 4
   // (3.182 x 0.0004 = 0.0013; n = 3: 0.0020 <= 0.0025 already)
   CHECK(sharp.dem_ci.value() == Approx(4.3027 * 0.0008 / std::sqrt(3.0)).epsilon(1e-3));
-  CHECK(sharp.detection_limit.value() == Approx(0.10 + 4.3027 * 0.0008 / std::sqrt(3.0) / 0.05).epsilon(1e-3));
+  CHECK(sharp.detection_limit.value() ==
+        Approx(0.10 + 4.3027 * 0.0008 / std::sqrt(3.0) / 0.05).epsilon(1e-3));
   CHECK(sharp.seeds_needed.value() == 3);
   CHECK(find(v, "dilation_rate").detection_limit.value() == 0.10);  // one run: the tolerance itself
   CHECK_FALSE(find(v, "dilation_rate").seeds_needed.has_value());
 }
 
-TEST_CASE("the DEM's scatter excuses a miss within the t-interval of the seed mean, not the seed SD",
-          "[comparison][verdicts]") {
+TEST_CASE(
+    "the DEM's scatter excuses a miss within the t-interval of the seed mean, not the seed SD",
+    "[comparison][verdicts]") {
   // The model's dilation rate is 15 % above the DEM's 0.05 against a tolerance of 10 %: it misses
   // by 0.0025. The seed mean of n seeds of SD s lies within t_{0.975,n-1} s / sqrt(n) (95 %): the
   // miss is excused only within that, which shrinks with more seeds while the seed SD does not,
@@ -135,8 +146,9 @@ TEST_CASE("the DEM's scatter excuses a miss within the t-interval of the seed me
     return find(comparison::judge(dem_of(dem_curve), s, replay_of(model), tol), "dilation_rate")
         .verdict;
   };
-  CHECK(verdict(0.0008, 3) == "breaks");             // 4.303 x 0.0008 / sqrt(3) = 0.0020
-  CHECK(verdict(0.002, 3) == "within DEM scatter");  // 4.303 x 0.002 / sqrt(3) = 0.0050 (2 SE: 0.0023)
+  CHECK(verdict(0.0008, 3) == "breaks");  // 4.303 x 0.0008 / sqrt(3) = 0.0020
+  CHECK(verdict(0.002, 3) ==
+        "within DEM scatter");  // 4.303 x 0.002 / sqrt(3) = 0.0050 (2 SE: 0.0023)
   CHECK(verdict(0.004, 12) == "within DEM scatter");  // 2.201 x 0.004 / sqrt(12) = 0.00254
   CHECK(verdict(0.004, 20) == "breaks");  // 2.093 x 0.004 / sqrt(20) = 0.0019: a sharper mean
   CHECK(verdict(0.004, 1) == "breaks");   // one run: no seed scatter to excuse it
@@ -162,16 +174,20 @@ TEST_CASE("the dilation rate is the slope of u_n over the last fifth only",
   CHECK(q(slows, "total_dilation") == Approx(0.34).epsilon(1e-12));
 }
 
-TEST_CASE("a model that stops early is not reached on the quantities of the end", "[comparison][verdicts]") {
+TEST_CASE("a model that stops early is not reached on the quantities of the end",
+          "[comparison][verdicts]") {
   const KnownCurve c;
   auto r = replay_of(c);
-  for (auto* s : {&r.u_x_mm, &r.tau_kPa, &r.sigma_n_kPa, &r.u_n_mm}) s->resize(300);  // stopped at 3 mm
-  const auto v = comparison::judge(dem_of(c), {}, r, {{"peak_friction", 0.1}, {"residual_friction", 0.05}});
+  for (auto* s : {&r.u_x_mm, &r.tau_kPa, &r.sigma_n_kPa, &r.u_n_mm})
+    s->resize(300);  // stopped at 3 mm
+  const auto v =
+      comparison::judge(dem_of(c), {}, r, {{"peak_friction", 0.1}, {"residual_friction", 0.05}});
   CHECK(find(v, "peak_friction").verdict == "holds");  // the peak at 1 mm was reached
   CHECK(find(v, "residual_friction").verdict == "not reached");
 }
 
-TEST_CASE("tolerances: defaults, the scene's [requirements], 'not needed', bad values named", "[comparison][verdicts]") {
+TEST_CASE("tolerances: defaults, the scene's [requirements], 'not needed', bad values named",
+          "[comparison][verdicts]") {
   auto dem = dem_of(KnownCurve());
   CHECK(comparison::tolerances_for(dem).at("residual_friction") == 0.05);
   CHECK(comparison::tolerances_for(dem).at("total_dilation") == 0.20);
@@ -185,10 +201,14 @@ TEST_CASE("tolerances: defaults, the scene's [requirements], 'not needed', bad v
                     Catch::Contains("requirements.total_dilation") && Catch::Contains("1.5"));
 }
 
-TEST_CASE("seeds: a run of another scene is refused, seeds of one scene are found", "[comparison][verdicts]") {
-  const auto a = comparison::load_dem_run(test::write_synthetic_dem({.name = "seed_a", .seed = 1, .tau_noise_kPa = 0.5}));
-  const auto b = comparison::load_dem_run(test::write_synthetic_dem({.name = "seed_b", .seed = 2, .tau_noise_kPa = 0.5}));
-  const auto other = comparison::load_dem_run(test::write_synthetic_dem({.name = "seed_other", .kappa_r = 0.5, .seed = 3}));
+TEST_CASE("seeds: a run of another scene is refused, seeds of one scene are found",
+          "[comparison][verdicts]") {
+  const auto a = comparison::load_dem_run(
+      test::write_synthetic_dem({.name = "seed_a", .seed = 1, .tau_noise_kPa = 0.5}));
+  const auto b = comparison::load_dem_run(
+      test::write_synthetic_dem({.name = "seed_b", .seed = 2, .tau_noise_kPa = 0.5}));
+  const auto other = comparison::load_dem_run(
+      test::write_synthetic_dem({.name = "seed_other", .kappa_r = 0.5, .seed = 3}));
   CHECK(comparison::seeds_of(a, {a, b, other}).size() == 1);
   CHECK_THROWS_WITH(comparison::seed_scatter(a, {other}), Catch::Contains("not a seed of"));
   const auto s = comparison::seed_scatter(a, {b});
@@ -198,11 +218,15 @@ TEST_CASE("seeds: a run of another scene is refused, seeds of one scene are foun
   CHECK(s.rows == a.u_x_mm.size());
 }
 
-TEST_CASE("a seed that sheared at the plate is left out of the cell, a drifting residual is counted",
-          "[comparison][verdicts]") {
-  auto a = comparison::load_dem_run(test::write_synthetic_dem({.name = "cell_a", .seed = 1, .tau_noise_kPa = 0.5}));
-  auto b = comparison::load_dem_run(test::write_synthetic_dem({.name = "cell_b", .seed = 2, .tau_noise_kPa = 0.5}));
-  auto c = comparison::load_dem_run(test::write_synthetic_dem({.name = "cell_c", .seed = 3, .tau_noise_kPa = 0.5}));
+TEST_CASE(
+    "a seed that sheared at the plate is left out of the cell, a drifting residual is counted",
+    "[comparison][verdicts]") {
+  auto a = comparison::load_dem_run(
+      test::write_synthetic_dem({.name = "cell_a", .seed = 1, .tau_noise_kPa = 0.5}));
+  auto b = comparison::load_dem_run(
+      test::write_synthetic_dem({.name = "cell_b", .seed = 2, .tau_noise_kPa = 0.5}));
+  auto c = comparison::load_dem_run(
+      test::write_synthetic_dem({.name = "cell_c", .seed = 3, .tau_noise_kPa = 0.5}));
   c.summary["shear_mode"] = "localised at the plate";  // as the summary says of such a run
   b.summary["residual_is"] = "not steady";
   b.summary["shear_mode"] = "split between wall and plate";
@@ -211,10 +235,13 @@ TEST_CASE("a seed that sheared at the plate is left out of the cell, a drifting 
   REQUIRE(s.left_out.size() == 1);
   CHECK(s.left_out[0].first == c.dir.string());
   CHECK(s.not_steady == std::vector<std::string>{b.dir.string()});
-  const auto v = comparison::judge(a, s, replay_of(KnownCurve()), {{"peak_friction", 0.1}, {"residual_friction", 0.05}});
+  const auto v = comparison::judge(a, s, replay_of(KnownCurve()),
+                                   {{"peak_friction", 0.1}, {"residual_friction", 0.05}});
   CHECK(find(v, "peak_friction").seeds == 2);
-  CHECK_THAT(find(v, "peak_friction").notes.at(0), Catch::Contains("1 of 3 runs left out: localised at the plate"));
-  CHECK_THAT(find(v, "peak_friction").notes.at(1), Catch::Contains("1 of 2 runs split between wall and plate"));
+  CHECK_THAT(find(v, "peak_friction").notes.at(0),
+             Catch::Contains("1 of 3 runs left out: localised at the plate"));
+  CHECK_THAT(find(v, "peak_friction").notes.at(1),
+             Catch::Contains("1 of 2 runs split between wall and plate"));
   CHECK(find(v, "peak_friction").notes.size() == 2);  // the peak does not need a steady end
   CHECK_THAT(find(v, "residual_friction").notes.at(2), Catch::Contains("1 of 2 runs not steady"));
   CHECK(s.split == std::vector<std::string>{b.dir.string()});
@@ -225,20 +252,26 @@ TEST_CASE("a seed that sheared at the plate is left out of the cell, a drifting 
   CHECK(plate.only_plate_runs);
 }
 
-TEST_CASE("joint fit recovers a known kappa_r and d_s from noisy seeds of the model itself", "[comparison][verdicts]") {
+TEST_CASE("joint fit recovers a known kappa_r and d_s from noisy seeds of the model itself",
+          "[comparison][verdicts]") {
   // hvwe with kappa_r = 0.7, d_s = 2 mm; three seeds with noise of 1 kPa on tau and 2 um on u_n
   std::vector<comparison::DemRun> runs;
   for (int seed : {1, 2, 3})
-    runs.push_back(comparison::load_dem_run(test::write_synthetic_dem(
-        {.name = fmt::format("joint_s{}", seed), .kappa_r = 0.7, .d_s_mm = 2.0, .seed = seed, .tau_noise_kPa = 1.0,
-         .u_n_noise_mm = 0.002})));
+    runs.push_back(
+        comparison::load_dem_run(test::write_synthetic_dem({.name = fmt::format("joint_s{}", seed),
+                                                            .kappa_r = 0.7,
+                                                            .d_s_mm = 2.0,
+                                                            .seed = seed,
+                                                            .tau_noise_kPa = 1.0,
+                                                            .u_n_noise_mm = 0.002})));
   const auto scatter = comparison::seed_scatter(runs[0], {runs[1], runs[2]});
   const auto targets = comparison::joint_targets(runs[0], scatter);
   CHECK(targets.u_n_scale_mm > 0.0);  // CNL: u_n is fitted with tau
   comparison::Variant start{"start", "hvwe", test::table_5_1(1.0), 1.0};
   const auto fit = comparison::fit_kappa_and_ds(runs[0], start, targets);
-  INFO("kappa_r " << fit.kappa_r << " +- " << fit.sigma_kappa_r << ", d_s " << fit.d_s_mm << " +- " << fit.sigma_d_s_mm
-                  << " mm, scaled RMS " << fit.rms_scaled << ", " << fit.stop_reason);
+  INFO("kappa_r " << fit.kappa_r << " +- " << fit.sigma_kappa_r << ", d_s " << fit.d_s_mm << " +- "
+                  << fit.sigma_d_s_mm << " mm, scaled RMS " << fit.rms_scaled << ", "
+                  << fit.stop_reason);
   CHECK(std::abs(fit.kappa_r - 0.7) < 3.0 * fit.sigma_kappa_r + 0.005);
   CHECK(std::abs(fit.d_s_mm - 2.0) < 3.0 * fit.sigma_d_s_mm + 0.01);
   CHECK(fit.kappa_r == Approx(0.7).epsilon(0.05));
@@ -257,22 +290,31 @@ TEST_CASE("quantities of a committed DEM run equal its summary.json (two codes, 
   for (const auto* name : {"sawtooth-2-0.5_cnl_s1", "flat_cns-50_s2"}) {
     INFO(name);
     const auto dem = comparison::load_dem_run(kRunDir / name);
-    const auto q = comparison::evaluate_quantities({dem.u_x_mm, dem.tau_kPa, dem.sigma_n_kPa, dem.u_n_mm},
-                                                   {"peak_friction", "u_x_at_peak", "residual_friction", "total_dilation"});
-    CHECK(*q.at("peak_friction") == Approx(dem.summary["peak_friction"].get<double>()).epsilon(1e-9));
-    CHECK(*q.at("u_x_at_peak") == Approx(dem.summary["u_x_at_peak_mm"].get<double>()).epsilon(1e-9));
-    CHECK(*q.at("residual_friction") == Approx(dem.summary["residual_friction"].get<double>()).epsilon(1e-6));
-    // the summary's dilation is u_n at the end; the quantity counts from the first row (u_n ~ 1e-5 mm)
+    const auto q = comparison::evaluate_quantities(
+        {dem.u_x_mm, dem.tau_kPa, dem.sigma_n_kPa, dem.u_n_mm},
+        {"peak_friction", "u_x_at_peak", "residual_friction", "total_dilation"});
+    CHECK(*q.at("peak_friction") ==
+          Approx(dem.summary["peak_friction"].get<double>()).epsilon(1e-9));
+    CHECK(*q.at("u_x_at_peak") ==
+          Approx(dem.summary["u_x_at_peak_mm"].get<double>()).epsilon(1e-9));
+    CHECK(*q.at("residual_friction") ==
+          Approx(dem.summary["residual_friction"].get<double>()).epsilon(1e-6));
+    // the summary's dilation is u_n at the end; the quantity counts from the first row (u_n ~ 1e-5
+    // mm)
     CHECK(*q.at("total_dilation") == Approx(dem.summary["dilation_mm"].get<double>()).margin(1e-3));
   }
 }
 
-TEST_CASE("the joint fit trades tau for u_n: never a worse u_n, never a better tau than the fit to tau alone",
-          "[comparison][verdicts][reference]") {
+TEST_CASE(
+    "the joint fit trades tau for u_n: never a worse u_n, never a better tau than the fit to tau "
+    "alone",
+    "[comparison][verdicts][reference]") {
   // At the optimum of J = |r_tau|^2 + |r_un|^2 the tau part is no smaller than at the optimum of
-  // |r_tau|^2 alone, so the u_n part is no larger: a fact of the two objectives, whatever the model.
+  // |r_tau|^2 alone, so the u_n part is no larger: a fact of the two objectives, whatever the
+  // model.
   std::vector<comparison::DemRun> runs;
-  for (int s : {1, 2, 3}) runs.push_back(comparison::load_dem_run(kRunDir / fmt::format("sawtooth-2-0.5_cnl_s{}", s)));
+  for (int s : {1, 2, 3})
+    runs.push_back(comparison::load_dem_run(kRunDir / fmt::format("sawtooth-2-0.5_cnl_s{}", s)));
   const auto scatter = comparison::seed_scatter(runs[0], {runs[1], runs[2]});
   models::ModelInputs params;
   params.tables = io::load_parameter_file("data/params/dem_default_grains.toml");
@@ -288,14 +330,16 @@ TEST_CASE("the joint fit trades tau for u_n: never a worse u_n, never a better t
   };
   const auto tau_fit = comparison::fit_kappa_and_ds(runs[0], start, comparison::tau_only_targets());
   const auto joint_fit = comparison::fit_kappa_and_ds(runs[0], start, joint);
-  INFO("tau alone: kappa_r " << tau_fit.kappa_r << ", d_s " << tau_fit.d_s_mm << "; joint: " << joint_fit.kappa_r << ", "
-                             << joint_fit.d_s_mm);
+  INFO("tau alone: kappa_r " << tau_fit.kappa_r << ", d_s " << tau_fit.d_s_mm
+                             << "; joint: " << joint_fit.kappa_r << ", " << joint_fit.d_s_mm);
   CHECK(rms(joint_fit, true) <= rms(tau_fit, true) * (1 + 1e-6));
-  CHECK(rms(joint_fit, false) >= rms(tau_fit, false) * (1 - 1e-3));  // BOBYQA's optimum, to its tolerance
+  CHECK(rms(joint_fit, false) >=
+        rms(tau_fit, false) * (1 - 1e-3));                 // BOBYQA's optimum, to its tolerance
   CHECK(rms(joint_fit, true) < 0.9 * rms(tau_fit, true));  // and here the trade is visible
 }
 
-TEST_CASE("iwb compare on a committed reference run judges dilation, predicted and fitted", "[comparison][verdicts][reference]") {
+TEST_CASE("iwb compare on a committed reference run judges dilation, predicted and fitted",
+          "[comparison][verdicts][reference]") {
   comparison::CompareOptions opt;
   opt.dem_dir = kRunDir / "sawtooth-2-0.5_cnl_s1";
   opt.seed_dirs = {kRunDir / "sawtooth-2-0.5_cnl_s2", kRunDir / "sawtooth-2-0.5_cnl_s3"};
@@ -311,10 +355,13 @@ TEST_CASE("iwb compare on a committed reference run judges dilation, predicted a
       judged.insert(v["quantity"].get<std::string>());
       CHECK(v["dem_seed_sd"].is_number());
       CHECK(v["relative_error"].is_number());
-      CHECK((v["verdict"] == "holds" || v["verdict"] == "breaks" || v["verdict"] == "within DEM scatter"));
+      CHECK((v["verdict"] == "holds" || v["verdict"] == "breaks" ||
+             v["verdict"] == "within DEM scatter"));
     }
-    CHECK(judged == std::set<std::string>{"peak_friction", "u_x_at_peak", "residual_friction", "total_dilation", "dilation_rate"});
+    CHECK(judged == std::set<std::string>{"peak_friction", "u_x_at_peak", "residual_friction",
+                                          "total_dilation", "dilation_rate"});
   }
   CHECK(fs::exists(opt.out / "seed_band.csv"));
-  CHECK(r["verdicts"]["summary"]["scan"]["points"] == comparison::kScanPoints * comparison::kScanPoints);
+  CHECK(r["verdicts"]["summary"]["scan"]["points"] ==
+        comparison::kScanPoints * comparison::kScanPoints);
 }

@@ -57,26 +57,34 @@ dem::RunOptions reusing(const fs::path& dir) {
   return {dir, 1, false, true, "tests", nullptr, nullptr, dir.parent_path() / "consolidated"};
 }
 
-nlohmann::json manifest_of(const fs::path& dir) { return nlohmann::json::parse(io::read_file(dir / "manifest.json")); }
+nlohmann::json manifest_of(const fs::path& dir) {
+  return nlohmann::json::parse(io::read_file(dir / "manifest.json"));
+}
 
 }  // namespace
 
-TEST_CASE("LIGGGHTS: the consolidation key follows what consolidation reads, not the shear stage", "[dem][liggghts]") {
+TEST_CASE("LIGGGHTS: the consolidation key follows what consolidation reads, not the shear stage",
+          "[dem][liggghts]") {
   key_follows_consolidation("liggghts");
 }
-TEST_CASE("YADE: the consolidation key follows what consolidation reads, not the shear stage", "[dem][yade]") {
+TEST_CASE("YADE: the consolidation key follows what consolidation reads, not the shear stage",
+          "[dem][yade]") {
   key_follows_consolidation("yade");
 }
 
-TEST_CASE("LIGGGHTS: a CNS run after a CNL run of the same scene does not consolidate, with the results of one "
-          "that did, and a corrupt cached specimen is rebuilt", "[dem][liggghts]") {
+TEST_CASE(
+    "LIGGGHTS: a CNS run after a CNL run of the same scene does not consolidate, with the results "
+    "of one "
+    "that did, and a corrupt cached specimen is rebuilt",
+    "[dem][liggghts]") {
   const fs::path root = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "liggghts" / "consolidate_once";
   fs::remove_all(root);
   const auto engine = dem::make_engine("liggghts");
   const auto run = [&](const std::string& file, const std::string& name) {
     // half a millimetre of shear: what is compared is the specimen each run starts from
     const std::string text = test::smoke_sheared_over(file, 0.5);
-    const auto outcome = dem::run_scene(dem::parse_scene(text, file), text, *engine, reusing(root / name));
+    const auto outcome =
+        dem::run_scene(dem::parse_scene(text, file), text, *engine, reusing(root / name));
     REQUIRE(outcome.complete());
     return outcome.manifest["stages"]["consolidate"]["consolidation"];
   };
@@ -90,18 +98,22 @@ TEST_CASE("LIGGGHTS: a CNS run after a CNL run of the same scene does not consol
   CHECK(cns["reused"] == true);
   CHECK(cns["key"] == cnl["key"]);
   CHECK_THAT(cns["consolidated_in"].get<std::string>(), Catch::EndsWith("cnl"));
-  CHECK_FALSE(fs::exists(root / "cns" / "liggghts" / "log.consolidate.liggghts"));  // LIGGGHTS never consolidated here
+  CHECK_FALSE(fs::exists(root / "cns" / "liggghts" /
+                         "log.consolidate.liggghts"));  // LIGGGHTS never consolidated here
   CHECK(manifest_of(root / "cns")["stages"]["consolidate"]["facts"]["particles"] == 400);
 
   // the cached restart cut short: not used; this run consolidates itself and repairs the entry
   fs::resize_file(entry / "consolidated.restart", 1000);
   const auto rebuilt = run("data/scenes/smoke_cns.toml", "cns_rebuilt");
   CHECK(rebuilt["reused"] == false);
-  CHECK_THAT(rebuilt.value("rebuilt_because", ""), Catch::Contains("has 1000 bytes, its record says"));
+  CHECK_THAT(rebuilt.value("rebuilt_because", ""),
+             Catch::Contains("has 1000 bytes, its record says"));
   CHECK(fs::exists(root / "cns_rebuilt" / "liggghts" / "log.consolidate.liggghts"));
   CHECK_FALSE(io::checksum_problem(entry / "consolidated.restart"));
   // one rank: LIGGGHTS is deterministic, so the shear from the reused specimen is the same bytes
   // as the shear of the run that consolidated itself
-  CHECK(io::read_file(root / "cns" / "timeseries.csv") == io::read_file(root / "cns_rebuilt" / "timeseries.csv"));
-  CHECK(io::read_file(root / "cns" / "summary.json") == io::read_file(root / "cns_rebuilt" / "summary.json"));
+  CHECK(io::read_file(root / "cns" / "timeseries.csv") ==
+        io::read_file(root / "cns_rebuilt" / "timeseries.csv"));
+  CHECK(io::read_file(root / "cns" / "summary.json") ==
+        io::read_file(root / "cns_rebuilt" / "summary.json"));
 }

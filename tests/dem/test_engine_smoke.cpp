@@ -32,7 +32,10 @@ struct SmokeRun {
 // Runs the scene `text` (read from `file`, perhaps changed) in test-runs/dem/ENGINE/RUN_NAME.
 SmokeRun run_text(const std::string& file, const std::string& text, const std::string& run_name,
                   const std::string& engine_name, int processes = 1) {
-  SmokeRun r{dem::parse_scene(text, file), fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / run_name, {}, {}};
+  SmokeRun r{dem::parse_scene(text, file),
+             fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / run_name,
+             {},
+             {}};
   const auto engine = dem::make_engine(engine_name);
   // two ranks consolidate themselves: that test counts each rank's grains in every stage
   const auto specimens = processes == 1 ? test::smoke_specimens() : fs::path();
@@ -49,14 +52,17 @@ SmokeRun run(const std::string& name, const std::string& engine_name) {
   return run_text(file, io::read_file(file), name, engine_name);
 }
 
-std::vector<double> column(const SmokeRun& r, const std::string& name) { return r.ts.values(name); }
+std::vector<double> column(const SmokeRun& r, const std::string& name) {
+  return r.ts.values(name);
+}
 
 double slope(const std::vector<double>& x, const std::vector<double>& y) {
   double mx = 0, my = 0, sxy = 0, sxx = 0;
   for (std::size_t i = 0; i < x.size(); ++i) mx += x[i], my += y[i];
   mx /= double(x.size());
   my /= double(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
   return sxy / sxx;
 }
 
@@ -67,8 +73,10 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) {
 // with the wall.
 void coarse_grained_facts(const SmokeRun& r) {
   const auto band = io::read_csv_table(r.dir / "fields" / "band.csv");
-  const auto t = band.values("t_s"), tau = band.values("tau_wall_kPa"), tau_cg = band.values("tau_cg_kPa");
-  const auto sigma = band.values("sigma_n_kPa"), sigma_cg = band.values("sigma_zz_cg_kPa"), mass = band.values("mass_error");
+  const auto t = band.values("t_s"), tau = band.values("tau_wall_kPa"),
+             tau_cg = band.values("tau_cg_kPa");
+  const auto sigma = band.values("sigma_n_kPa"), sigma_cg = band.values("sigma_zz_cg_kPa"),
+             mass = band.values("mass_error");
   REQUIRE(t.size() >= 2);
   for (std::size_t i = 0; i < t.size(); ++i) {
     CHECK(mass[i] < 1e-6);
@@ -78,7 +86,8 @@ void coarse_grained_facts(const SmokeRun& r) {
   const std::regex entry(R"re(file="(particles_[0-9]+\.vtp)")re");
   const std::string pvd = io::read_file(r.dir / "vtk" / "particles.pvd");
   std::vector<std::string> files;
-  for (std::sregex_iterator it(pvd.begin(), pvd.end(), entry), end; it != end; ++it) files.push_back((*it)[1]);
+  for (std::sregex_iterator it(pvd.begin(), pvd.end(), entry), end; it != end; ++it)
+    files.push_back((*it)[1]);
   REQUIRE(files.size() >= 2);
   const auto first = io::read_points(r.dir / "vtk" / files.front());
   for (double d : first.find("displacement_m")->values) CHECK(d == 0.0);
@@ -88,7 +97,9 @@ void coarse_grained_facts(const SmokeRun& r) {
   int jumped = 0;  // a grain that crossed the periodic cell is not a cell length behind the others
   for (std::size_t i = 0; i < last.points.size(); ++i) {
     by_height.emplace_back(last.points[i].z(), d[3 * i]);
-    if (std::abs(d[3 * i]) > 0.5 * r.scene.length_m || std::abs(d[3 * i + 1]) > 0.5 * r.scene.width_m) ++jumped;
+    if (std::abs(d[3 * i]) > 0.5 * r.scene.length_m ||
+        std::abs(d[3 * i + 1]) > 0.5 * r.scene.width_m)
+      ++jumped;
   }
   CHECK(jumped == 0);
   std::sort(by_height.begin(), by_height.end());
@@ -100,11 +111,12 @@ void coarse_grained_facts(const SmokeRun& r) {
 // Facts every run must show, whatever the boundary condition.
 void common_facts(const SmokeRun& r) {
   // the contract: columns with units, finite numbers (read_csv_table refuses anything else)
-  CHECK(r.ts.columns == std::vector<std::string>{"t_s", "u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa", "e_specimen",
-                                                 "e_band", "coordination", "sigma_plate_kPa", "particles"});
+  CHECK(r.ts.columns == std::vector<std::string>{"t_s", "u_x_mm", "u_n_mm", "sigma_n_kPa",
+                                                 "tau_kPa", "e_specimen", "e_band", "coordination",
+                                                 "sigma_plate_kPa", "particles"});
   const auto prof = io::read_csv_table(r.dir / "profiles.csv");
-  CHECK(prof.columns == std::vector<std::string>{"u_x_mm_window", "z_over_d50", "vx_over_vwall", "porosity",
-                                                 "sigma_zz_kPa", "tau_zx_kPa"});
+  CHECK(prof.columns == std::vector<std::string>{"u_x_mm_window", "z_over_d50", "vx_over_vwall",
+                                                 "porosity", "sigma_zz_kPa", "tau_zx_kPa"});
   CHECK_FALSE(prof.rows.empty());
   const auto manifest = nlohmann::json::parse(io::read_file(r.dir / "manifest.json"));
   CHECK(manifest["status"] == "complete");
@@ -114,7 +126,8 @@ void common_facts(const SmokeRun& r) {
   // moved every atom (grains and, for a glued wall, its spheres)
   double atoms = r.scene.particle_count;
   if (r.scene.wall.kind == dem::ProfileKind::kGlued)
-    atoms += std::round(r.scene.length_m / r.scene.wall.pitch_m) * std::round(r.scene.width_m / r.scene.wall.pitch_m);
+    atoms += std::round(r.scene.length_m / r.scene.wall.pitch_m) *
+             std::round(r.scene.width_m / r.scene.wall.pitch_m);
   for (const char* stage : {"consolidate", "shear"}) {
     const auto& f = manifest["stages"][stage]["facts"];
     CHECK(f["engine_loop_seconds"].get<double>() > 0.0);
@@ -131,7 +144,9 @@ void common_facts(const SmokeRun& r) {
   const auto t = column(r, "t_s"), ux = column(r, "u_x_mm");
   double travel = 0.0;
   for (std::size_t i = 0; i < t.size(); ++i) {
-    CHECK(ux[i] == Approx(r.scene.shear.displacement_at(t[i]) * 1e3).epsilon(1e-6).margin(1e-6));  // printed to ~10 digits
+    CHECK(ux[i] == Approx(r.scene.shear.displacement_at(t[i]) * 1e3)
+                       .epsilon(1e-6)
+                       .margin(1e-6));  // printed to ~10 digits
     if (i > 0) travel += std::abs(ux[i] - ux[i - 1]);
   }
   // sampling every `timeseries_every` cuts each turning point by up to two intervals
@@ -143,7 +158,8 @@ void common_facts(const SmokeRun& r) {
   const std::regex entry(R"re(timestep="([0-9.eE+-]+)" file="([^"]+\.vtp)")re");
   const std::string pvd = io::read_file(r.dir / "vtk" / "walls.pvd");
   // a reversal happens at a step boundary: the wall may be one step's travel off per reversal
-  const double step_travel = r.scene.shear.velocity_m_s * manifest["engine_facts"]["timestep_s"].get<double>();
+  const double step_travel =
+      r.scene.shear.velocity_m_s * manifest["engine_facts"]["timestep_s"].get<double>();
   const double tolerance = 1e-6 * r.scene.length_m + 2.0 * (2 * r.scene.shear.cycles) * step_travel;
   int snapshots = 0;
   for (std::sregex_iterator it(pvd.begin(), pvd.end(), entry), end; it != end; ++it, ++snapshots) {
@@ -184,10 +200,10 @@ void check_cns(const std::string& engine) {
   const auto r = run_text(file, test::smoke_sheared_over(file, 1.5), "smoke_cns", engine);
   common_facts(r);
   const auto un = column(r, "u_n_mm");
-  REQUIRE(un.back() - un.front() > 0.1);  // enough dilation to measure a slope
+  REQUIRE(un.back() - un.front() > 0.1);                      // enough dilation to measure a slope
   const double K = r.scene.boundary.K_Pa_per_m * 1e-3 / 1e3;  // kPa/mm
-  INFO("K = " << K << " kPa/mm; wall slope " << slope(un, column(r, "sigma_n_kPa")) << ", plate slope "
-              << slope(un, column(r, "sigma_plate_kPa")));
+  INFO("K = " << K << " kPa/mm; wall slope " << slope(un, column(r, "sigma_n_kPa"))
+              << ", plate slope " << slope(un, column(r, "sigma_plate_kPa")));
   CHECK(slope(un, column(r, "sigma_n_kPa")) == Approx(K).epsilon(0.10));
   CHECK(slope(un, column(r, "sigma_plate_kPa")) == Approx(K).epsilon(0.10));
 }
@@ -213,11 +229,13 @@ void check_cyclic(const std::string& engine) {
   REQUIRE(moving > 10);
   CHECK(agree > 0.9 * moving);
   // the post-cyclic shear: from 0 after the last cycle, monotonic, to +post_cyclic_mm
-  const double post = r.scene.shear.post_cyclic_m * 1e3, every = r.scene.outputs.timeseries_every_m * 1e3;
+  const double post = r.scene.shear.post_cyclic_m * 1e3,
+               every = r.scene.outputs.timeseries_every_m * 1e3;
   REQUIRE(post > 0.0);
   CHECK(ux.back() == Approx(post).margin(every));
   // the wall's travel is v t (summing |du_x| over rows would cut the reversals' corners)
-  const double cycles_travel = r.scene.shear.cycles_travel_m() * 1e3, v = r.scene.shear.velocity_m_s * 1e3;
+  const double cycles_travel = r.scene.shear.cycles_travel_m() * 1e3,
+               v = r.scene.shear.velocity_m_s * 1e3;
   const auto t = column(r, "t_s");
   int after = 0;
   for (std::size_t i = 0; i < ux.size(); ++i)
@@ -258,7 +276,9 @@ SmokeRun check_areal_wall(const std::string& scene, const std::string& engine) {
   CHECK(std::abs(mean / (r.scene.boundary.sigma_n_Pa / 1e3) - 1.0) < 0.05);
   const std::string stl = io::read_file(r.dir / engine / "wall.stl");
   std::size_t facets = 0;
-  for (auto p = stl.find("facet normal"); p != std::string::npos; p = stl.find("facet normal", p + 1)) ++facets;
+  for (auto p = stl.find("facet normal"); p != std::string::npos;
+       p = stl.find("facet normal", p + 1))
+    ++facets;
   CHECK(facets == 2u * std::size_t(r.scene.wall.map->nx() * r.scene.wall.map->ny()));
   return r;
 }
@@ -278,8 +298,10 @@ void check_file(const std::string& engine) {
   const auto r = check_areal_wall("smoke_file", engine);
   const auto manifest = nlohmann::json::parse(io::read_file(r.dir / "manifest.json"));
   const auto& record = manifest["scene"]["resolved"]["wall_file"];
-  CHECK(record["sha256"].get<std::string>() == io::sha256_hex(io::read_file("data/walls/sandblasted_like.csv")));
-  CHECK(record["R_n_untiled"].get<double>() == Approx(record["R_n_tiled"].get<double>()).epsilon(0.05));
+  CHECK(record["sha256"].get<std::string>() ==
+        io::sha256_hex(io::read_file("data/walls/sandblasted_like.csv")));
+  CHECK(record["R_n_untiled"].get<double>() ==
+        Approx(record["R_n_tiled"].get<double>()).epsilon(0.05));
 }
 
 void check_cv(const std::string& engine) {
@@ -301,8 +323,9 @@ constexpr double kStartRowMm = 0.002;
 // tangent stiffness falls so low that three intervals rise by less than kPlateauSpanKPa (they do
 // at ~0.2 mm on this scene).
 constexpr double kStartWindowMm = 0.1;
-constexpr int kPlateauSamples = 4;       // consecutive samples ...
-constexpr double kPlateauSpanKPa = 0.3;  // ... spanning less than this are a plateau (noise ~0.05-0.1 kPa)
+constexpr int kPlateauSamples = 4;  // consecutive samples ...
+constexpr double kPlateauSpanKPa =
+    0.3;  // ... spanning less than this are a plateau (noise ~0.05-0.1 kPa)
 constexpr int kRisingSamples = 5;        // tau at 0, du, ..., 5 du must increase
 constexpr double kStartStepShare = 0.5;  // of rho c_s v: the largest rise over the first du
 
@@ -342,20 +365,22 @@ StartOfShear start_of_shear(const SmokeRun& r) {
   const auto tau = tau_every(r, kStartRowMm, kStartWindowMm);
   StartOfShear s;
   for (std::size_t k = 1; k + kPlateauSamples <= tau.size() && std::isnan(s.plateau_at_mm); ++k) {
-    const auto [lo, hi] = std::minmax_element(tau.begin() + long(k), tau.begin() + long(k + kPlateauSamples));
+    const auto [lo, hi] =
+        std::minmax_element(tau.begin() + long(k), tau.begin() + long(k + kPlateauSamples));
     if (*hi - *lo < kPlateauSpanKPa) s.plateau_at_mm = double(k) * kStartRowMm;
   }
-  for (int k = 1; k <= kRisingSamples; ++k) s.rising += tau[std::size_t(k)] > tau[std::size_t(k - 1)];
+  for (int k = 1; k <= kRisingSamples; ++k)
+    s.rising += tau[std::size_t(k)] > tau[std::size_t(k - 1)];
   s.first_rise_kPa = tau[1] - tau[0];
   const auto& sc = r.scene;
-  s.wave_stress_kPa = sc.solid_fraction_estimate * sc.particles.density_kg_m3 * sc.shear.shear_wave_speed_m_s *
-                      sc.shear.velocity_m_s / 1e3;
+  s.wave_stress_kPa = sc.solid_fraction_estimate * sc.particles.density_kg_m3 *
+                      sc.shear.shear_wave_speed_m_s * sc.shear.velocity_m_s / 1e3;
   std::ostringstream samples;
   for (double x : tau) samples << x << " ";
   UNSCOPED_INFO("tau every " << kStartRowMm << " mm from u_x = 0: " << samples.str());
   UNSCOPED_INFO("plateau at " << s.plateau_at_mm << " mm, " << s.rising << " of " << kRisingSamples
-                << " first intervals rise, first rise " << s.first_rise_kPa << " kPa, rho c_s v "
-                << s.wave_stress_kPa << " kPa");
+                              << " first intervals rise, first rise " << s.first_rise_kPa
+                              << " kPa, rho c_s v " << s.wave_stress_kPa << " kPa");
   return s;
 }
 
@@ -373,7 +398,8 @@ void check_rest_row(const SmokeRun& r) {
 }
 
 void check_ramped_start(const std::string& engine) {
-  const auto r = run_text("data/scenes/smoke.toml", start_scene("# default ramp"), "smoke_start_ramp", engine);
+  const auto r =
+      run_text("data/scenes/smoke.toml", start_scene("# default ramp"), "smoke_start_ramp", engine);
   REQUIRE(r.scene.shear.ramp_s > 0.0);
   check_rest_row(r);
   const auto s = start_of_shear(r);
@@ -387,7 +413,8 @@ void check_ramped_start(const std::string& engine) {
 
 // The same criteria see the start-up wave of an instant start: they can fail.
 void check_instant_start(const std::string& engine) {
-  const auto r = run_text("data/scenes/smoke.toml", start_scene("ramp_transits = 0"), "smoke_start_instant", engine);
+  const auto r = run_text("data/scenes/smoke.toml", start_scene("ramp_transits = 0"),
+                          "smoke_start_instant", engine);
   REQUIRE(r.scene.shear.ramp_s == 0.0);
   check_rest_row(r);
   const auto s = start_of_shear(r);
@@ -401,8 +428,10 @@ void check_instant_start(const std::string& engine) {
 // The grains of every scene fill the box's lower part (the plate's servo holds them there), so a
 // split of the ranks along z leaves one rank idle; a split along x gives each its half of a
 // specimen that is uniform in x. LIGGGHTS prints each stage's share as "Nlocal: ave max min".
-TEST_CASE("LIGGGHTS on two ranks: each rank holds a quarter to three quarters of the grains in every stage",
-          "[dem][liggghts]") {
+TEST_CASE(
+    "LIGGGHTS on two ranks: each rank holds a quarter to three quarters of the grains in every "
+    "stage",
+    "[dem][liggghts]") {
   const std::string file = "data/scenes/smoke.toml";
   const auto r = run_text(file, io::read_file(file), "smoke-two-ranks", "liggghts", 2);
   const std::regex nlocal(R"(Nlocal:\s+(\S+) ave (\S+) max (\S+) min)");
@@ -424,20 +453,65 @@ TEST_CASE("LIGGGHTS on two ranks: each rank holds a quarter to three quarters of
   }
 }
 
-TEST_CASE("LIGGGHTS smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][liggghts]") { check_cnl("liggghts"); }
-TEST_CASE("LIGGGHTS smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][liggghts]") { check_cns("liggghts"); }
-TEST_CASE("LIGGGHTS smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][liggghts]") { check_cyclic("liggghts"); }
-TEST_CASE("LIGGGHTS smoke glued: the glued layer carries the wall's load and drags the grains", "[dem][liggghts]") { check_glued("liggghts"); }
-TEST_CASE("LIGGGHTS smoke CV: the plate does not move and sigma_n is free", "[dem][liggghts]") { check_cv("liggghts"); }
-TEST_CASE("LIGGGHTS smoke random wall: the areal mesh carries the load and drags the grains", "[dem][liggghts]") { check_random("liggghts"); }
-TEST_CASE("YADE smoke random wall: the areal mesh carries the load and drags the grains", "[dem][yade][heavy]") { check_random("yade"); }
-TEST_CASE("LIGGGHTS smoke file wall: a measured profile's mesh carries the load", "[dem][liggghts]") { check_file("liggghts"); }
-TEST_CASE("YADE smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][yade]") { check_cnl("yade"); }
-TEST_CASE("YADE smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][yade]") { check_cns("yade"); }
-TEST_CASE("YADE smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][yade][heavy]") { check_cyclic("yade"); }
-TEST_CASE("YADE smoke glued: the glued layer carries the wall's load and drags the grains", "[dem][yade][heavy]") { check_glued("yade"); }
-TEST_CASE("YADE smoke CV: the plate does not move and sigma_n is free", "[dem][yade]") { check_cv("yade"); }
-TEST_CASE("LIGGGHTS smoke start of shear: from the rest state, tau rises without a start-up plateau", "[dem][liggghts]") { check_ramped_start("liggghts"); }
-TEST_CASE("LIGGGHTS smoke instant start: tau jumps and stays flat until the shear wave is back", "[dem][liggghts]") { check_instant_start("liggghts"); }
-TEST_CASE("YADE smoke start of shear: from the rest state, tau rises without a start-up plateau", "[dem][yade]") { check_ramped_start("yade"); }
-TEST_CASE("YADE smoke instant start: tau jumps and stays flat until the shear wave is back", "[dem][yade][heavy]") { check_instant_start("yade"); }
+TEST_CASE("LIGGGHTS smoke CNL: sigma_n stays within 5 % of the target during shear",
+          "[dem][liggghts]") {
+  check_cnl("liggghts");
+}
+TEST_CASE("LIGGGHTS smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][liggghts]") {
+  check_cns("liggghts");
+}
+TEST_CASE("LIGGGHTS smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][liggghts]") {
+  check_cyclic("liggghts");
+}
+TEST_CASE("LIGGGHTS smoke glued: the glued layer carries the wall's load and drags the grains",
+          "[dem][liggghts]") {
+  check_glued("liggghts");
+}
+TEST_CASE("LIGGGHTS smoke CV: the plate does not move and sigma_n is free", "[dem][liggghts]") {
+  check_cv("liggghts");
+}
+TEST_CASE("LIGGGHTS smoke random wall: the areal mesh carries the load and drags the grains",
+          "[dem][liggghts]") {
+  check_random("liggghts");
+}
+TEST_CASE("YADE smoke random wall: the areal mesh carries the load and drags the grains",
+          "[dem][yade][heavy]") {
+  check_random("yade");
+}
+TEST_CASE("LIGGGHTS smoke file wall: a measured profile's mesh carries the load",
+          "[dem][liggghts]") {
+  check_file("liggghts");
+}
+TEST_CASE("YADE smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][yade]") {
+  check_cnl("yade");
+}
+TEST_CASE("YADE smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][yade]") {
+  check_cns("yade");
+}
+TEST_CASE("YADE smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][yade][heavy]") {
+  check_cyclic("yade");
+}
+TEST_CASE("YADE smoke glued: the glued layer carries the wall's load and drags the grains",
+          "[dem][yade][heavy]") {
+  check_glued("yade");
+}
+TEST_CASE("YADE smoke CV: the plate does not move and sigma_n is free", "[dem][yade]") {
+  check_cv("yade");
+}
+TEST_CASE(
+    "LIGGGHTS smoke start of shear: from the rest state, tau rises without a start-up plateau",
+    "[dem][liggghts]") {
+  check_ramped_start("liggghts");
+}
+TEST_CASE("LIGGGHTS smoke instant start: tau jumps and stays flat until the shear wave is back",
+          "[dem][liggghts]") {
+  check_instant_start("liggghts");
+}
+TEST_CASE("YADE smoke start of shear: from the rest state, tau rises without a start-up plateau",
+          "[dem][yade]") {
+  check_ramped_start("yade");
+}
+TEST_CASE("YADE smoke instant start: tau jumps and stays flat until the shear wave is back",
+          "[dem][yade][heavy]") {
+  check_instant_start("yade");
+}

@@ -1,7 +1,8 @@
-// Run orchestration with the real engines (the same statuses for both): a failure ends the run with "failed: <reason>" and
-// keeps no partial contract; --resume continues from the last finished stage. (The short particle
-// count path was seen live: "failed: particle count short: 1685 of 1882 inserted"; since the
-// insertion region is sized from the request it no longer triggers on the shipped scenes.)
+// Run orchestration with the real engines (the same statuses for both): a failure ends the run with
+// "failed: <reason>" and keeps no partial contract; --resume continues from the last finished
+// stage. (The short particle count path was seen live: "failed: particle count short: 1685 of 1882
+// inserted"; since the insertion region is sized from the request it no longer triggers on the
+// shipped scenes.)
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -21,21 +22,26 @@ using iwb::test::replaced;
 namespace fs = std::filesystem;
 
 namespace {
-dem::RunOptions options(const fs::path& dir, bool resume) { return {dir, 1, resume, !resume, "tests", nullptr, nullptr, {}}; }
+dem::RunOptions options(const fs::path& dir, bool resume) {
+  return {dir, 1, resume, !resume, "tests", nullptr, nullptr, {}};
+}
 
 void servo_failure(const std::string& engine_name) {
   // two windows are not enough for the plate to reach the grains: consolidation is not accepted
-  const std::string text = io::read_file("data/scenes/smoke.toml") + "\n[consolidation]\nmax_windows = 2\n";
+  const std::string text =
+      io::read_file("data/scenes/smoke.toml") + "\n[consolidation]\nmax_windows = 2\n";
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / engine_name / "no_convergence";
   const auto engine = dem::make_engine(engine_name);
-  const auto outcome = dem::run_scene(dem::parse_scene(text, "short.toml"), text, *engine, options(dir, false));
+  const auto outcome =
+      dem::run_scene(dem::parse_scene(text, "short.toml"), text, *engine, options(dir, false));
   CHECK_THAT(outcome.status, Catch::StartsWith("failed: servo did not converge") &&
-                                 Catch::Contains("after 2 windows") && Catch::Contains("(stage consolidate)"));
+                                 Catch::Contains("after 2 windows") &&
+                                 Catch::Contains("(stage consolidate)"));
   const auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
   CHECK(m["status"] == outcome.status);
   CHECK(m["stages"]["consolidate"]["status"] == "failed");
   CHECK_FALSE(fs::exists(dir / "timeseries.csv"));  // never a silent partial result
-  CHECK(m["files"].empty());                         // and no file listed that is not there
+  CHECK(m["files"].empty());                        // and no file listed that is not there
 }
 
 // The stage mechanics need no more than half a millimetre of shear (10 rows), not the scene's 2.
@@ -59,7 +65,8 @@ void resume_after_interrupt(const std::string& engine_name) {
   fs::remove(dir / "timeseries.csv");
   const auto resumed = dem::run_scene(scene, text, *engine, options(dir, true));
   REQUIRE(resumed.complete());
-  CHECK(resumed.manifest["stages"]["consolidate"]["wall_seconds"].get<double>() == consolidation_seconds);
+  CHECK(resumed.manifest["stages"]["consolidate"]["wall_seconds"].get<double>() ==
+        consolidation_seconds);
   CHECK(resumed.manifest["stages"]["shear"]["status"] == "done");
   CHECK(resumed.manifest["resumed"].size() == 1);
   CHECK(fs::exists(dir / "timeseries.csv"));
@@ -70,8 +77,9 @@ void resume_after_interrupt(const std::string& engine_name) {
   CHECK(test::files_under(dir) == before);
   // another scene may not resume this run
   const std::string other = replaced(text, "sigma_n_kPa = 50", "sigma_n_kPa = 60");
-  CHECK_THROWS_WITH(dem::run_scene(dem::parse_scene(other, file), other, *engine, options(dir, true)),
-                    Catch::Contains("different scene"));
+  CHECK_THROWS_WITH(
+      dem::run_scene(dem::parse_scene(other, file), other, *engine, options(dir, true)),
+      Catch::Contains("different scene"));
 }
 
 // Finding 8: a truncated consolidation restart made --resume fail inside the engine while the
@@ -104,17 +112,22 @@ void truncated_restart_rebuilt(const std::string& engine_name) {
 
 }  // namespace
 
-TEST_CASE("LIGGGHTS: a truncated consolidation restart is rebuilt on --resume, never used", "[dem][liggghts]") {
+TEST_CASE("LIGGGHTS: a truncated consolidation restart is rebuilt on --resume, never used",
+          "[dem][liggghts]") {
   truncated_restart_rebuilt("liggghts");
 }
-TEST_CASE("YADE: a truncated consolidation restart is rebuilt on --resume, never used", "[dem][yade][heavy]") {
+TEST_CASE("YADE: a truncated consolidation restart is rebuilt on --resume, never used",
+          "[dem][yade][heavy]") {
   truncated_restart_rebuilt("yade");
 }
 
-TEST_CASE("LIGGGHTS: a servo that does not converge fails the run with its reason", "[dem][liggghts]") {
+TEST_CASE("LIGGGHTS: a servo that does not converge fails the run with its reason",
+          "[dem][liggghts]") {
   servo_failure("liggghts");
 }
-TEST_CASE("YADE: a servo that does not converge fails the run with its reason", "[dem][yade]") { servo_failure("yade"); }
+TEST_CASE("YADE: a servo that does not converge fails the run with its reason", "[dem][yade]") {
+  servo_failure("yade");
+}
 
 // The truth halved in length and height (12 x 4 x 10 d50, 640 grains, the tradeoff's box x0.5):
 // its insertion region, sized for a solid fraction of 0.30 with every grain wholly inside, is
@@ -133,7 +146,8 @@ TEST_CASE("LIGGGHTS: a narrow truth box inserts every grain", "[dem][liggghts]")
   const auto engine = dem::make_engine("liggghts");
   auto opt = options(dir, false);
   opt.processes = 2;  // each rank fills its half of the region: on one rank 50 tries were enough
-  const auto outcome = dem::run_scene(dem::parse_scene(text, "narrow_truth.toml"), text, *engine, opt);
+  const auto outcome =
+      dem::run_scene(dem::parse_scene(text, "narrow_truth.toml"), text, *engine, opt);
   CHECK_THAT(outcome.status, !Catch::Contains("particle count short"));
   const auto m = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
   CHECK(m["stages"]["consolidate"]["facts"]["particles"] == 640);
@@ -151,16 +165,19 @@ namespace {
 const fs::path kCommittedRun = "data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s1";
 }
 
-TEST_CASE("dem summary refuses a time series with only its header and keeps summary.json", "[dem]") {
+TEST_CASE("dem summary refuses a time series with only its header and keeps summary.json",
+          "[dem]") {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "summary_header_only";
   test::fresh_copy(kCommittedRun, dir);
-  const std::string header = io::read_file(dir / "timeseries.csv").substr(0, io::read_file(dir / "timeseries.csv").find('\n') + 1);
+  const std::string header = io::read_file(dir / "timeseries.csv")
+                                 .substr(0, io::read_file(dir / "timeseries.csv").find('\n') + 1);
   io::write_atomically(dir / "timeseries.csv", header);
   const auto before = test::files_under(dir);
   const auto r = test::run_iwb({"dem", "summary", dir.string()});
   CHECK(r.exit_code == 2);
-  CHECK_THAT(r.output, Catch::Contains((dir / "timeseries.csv").string() + ": rows = 0, must be >= 180") &&
-                           Catch::Contains("summary.json left as it was"));
+  CHECK_THAT(r.output,
+             Catch::Contains((dir / "timeseries.csv").string() + ": rows = 0, must be >= 180") &&
+                 Catch::Contains("summary.json left as it was"));
   CHECK(test::files_under(dir) == before);
 }
 
@@ -183,7 +200,8 @@ TEST_CASE("dem summary recomputes the summary of a committed run unchanged in it
   CHECK(r.exit_code == 0);
   const auto before = nlohmann::json::parse(io::read_file(kCommittedRun / "summary.json"));
   const auto after = nlohmann::json::parse(io::read_file(dir / "summary.json"));
-  CHECK(after["peak_friction"].get<double>() == Approx(before["peak_friction"].get<double>()).epsilon(1e-9));
+  CHECK(after["peak_friction"].get<double>() ==
+        Approx(before["peak_friction"].get<double>()).epsilon(1e-9));
 }
 
 // Stiff grains (E 4.2e9 Pa, stiffness level ~2000) under CNL: with the shear gain tuned for soft
@@ -193,16 +211,18 @@ TEST_CASE("dem summary recomputes the summary of a committed run unchanged in it
 TEST_CASE("LIGGGHTS: stiff grains under CNL: the plate's force holds its target while shearing",
           "[dem][liggghts]") {
   // 1 mm of shear, 50 rows: the scene's second mm adds 9 s and nothing the check below needs
-  const std::string text =
-      replaced(test::smoke_sheared_over("data/scenes/smoke.toml", 1.0), "youngs_modulus_Pa = 1.0e8", "youngs_modulus_Pa = 4.2e9");
+  const std::string text = replaced(test::smoke_sheared_over("data/scenes/smoke.toml", 1.0),
+                                    "youngs_modulus_Pa = 1.0e8", "youngs_modulus_Pa = 4.2e9");
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "liggghts" / "stiff_cnl";
   const auto engine = dem::make_engine("liggghts");
-  REQUIRE(dem::run_scene(dem::parse_scene(text, "stiff.toml"), text, *engine, options(dir, false)).complete());
+  REQUIRE(dem::run_scene(dem::parse_scene(text, "stiff.toml"), text, *engine, options(dir, false))
+              .complete());
   const auto ts = io::read_csv_table(dir / "timeseries.csv");
   const auto plate = ts.values("sigma_plate_kPa");
   double sum = 0.0, sum2 = 0.0;
   for (std::size_t i = 1; i < plate.size(); ++i) sum += plate[i], sum2 += plate[i] * plate[i];
-  const double n = double(plate.size() - 1), mean = sum / n, sd = std::sqrt(std::max(sum2 / n - mean * mean, 0.0));
+  const double n = double(plate.size() - 1), mean = sum / n,
+               sd = std::sqrt(std::max(sum2 / n - mean * mean, 0.0));
   INFO("plate sigma " << mean << " +- " << sd << " kPa over " << n << " rows");
   CHECK(std::abs(mean - 50.0) < 5.0);
   CHECK(sd < 5.0);
@@ -226,8 +246,10 @@ void clamp_holds(const std::string& engine_name) {
   const auto& shear = manifest["stages"]["shear"]["facts"];
   CHECK(shear["clamped_grains"].get<double>() > 0.0);
   const double d50 = scene.particles.d50_m;
-  const double clamp_from = (shear["z0_m"].get<double>() - scene.plate.height_m - scene.plate_clamp_m -
-                             scene.wall.mean_height_m()) / d50 + scene.outputs.profile_bin_d50;
+  const double clamp_from = (shear["z0_m"].get<double>() - scene.plate.height_m -
+                             scene.plate_clamp_m - scene.wall.mean_height_m()) /
+                                d50 +
+                            scene.outputs.profile_bin_d50;
   const auto prof = io::read_csv_table(dir / "profiles.csv");
   const auto z = prof.values("z_over_d50"), vx = prof.values("vx_over_vwall");
   int held = 0;
@@ -246,10 +268,12 @@ void clamp_holds(const std::string& engine_name) {
 
 }  // namespace
 
-TEST_CASE("LIGGGHTS: a clamp under the plate holds its grains while the wall shears the rest", "[dem][liggghts]") {
+TEST_CASE("LIGGGHTS: a clamp under the plate holds its grains while the wall shears the rest",
+          "[dem][liggghts]") {
   clamp_holds("liggghts");
 }
-TEST_CASE("YADE: a clamp under the plate holds its grains while the wall shears the rest", "[dem][yade][heavy]") {
+TEST_CASE("YADE: a clamp under the plate holds its grains while the wall shears the rest",
+          "[dem][yade][heavy]") {
   clamp_holds("yade");
 }
 
@@ -260,11 +284,12 @@ TEST_CASE("YADE: a clamp under the plate holds its grains while the wall shears 
 TEST_CASE("YADE: a wet scene holds liquid bridges between most touching grains", "[dem][yade]") {
   // 0.2 mm of shear (10 rows), not the smoke scene's 2 mm: the bridges are counted at the end of
   // each stage, and the shear stage only has to keep them (76 s of YADE saved)
-  const std::string text = replaced(test::smoke_sheared_over("data/scenes/smoke.toml", 0.2), "restitution = 0.5",
-                                    "restitution = 0.5\nsuction_kPa = 10");
+  const std::string text = replaced(test::smoke_sheared_over("data/scenes/smoke.toml", 0.2),
+                                    "restitution = 0.5", "restitution = 0.5\nsuction_kPa = 10");
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "yade" / "wet";
   const auto engine = dem::make_engine("yade");
-  REQUIRE(dem::run_scene(dem::parse_scene(text, "wet.toml"), text, *engine, options(dir, false)).complete());
+  REQUIRE(dem::run_scene(dem::parse_scene(text, "wet.toml"), text, *engine, options(dir, false))
+              .complete());
   const auto manifest = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
   const auto& consolidated = manifest["stages"]["consolidate"]["facts"];
   // a 400-grain specimen at 50 kPa has ~1300 contacts (coordination ~6): bridges on most of them
@@ -272,21 +297,26 @@ TEST_CASE("YADE: a wet scene holds liquid bridges between most touching grains",
   CHECK(manifest["stages"]["shear"]["facts"]["liquid_bridges"].get<double>() > 0.0);
 }
 
-TEST_CASE("LIGGGHTS: a wet scene is refused, naming the key and the engine that can run it", "[dem][liggghts]") {
+TEST_CASE("LIGGGHTS: a wet scene is refused, naming the key and the engine that can run it",
+          "[dem][liggghts]") {
   const std::string text = replaced(io::read_file("data/scenes/smoke.toml"), "restitution = 0.5",
                                     "restitution = 0.5\nsuction_kPa = 10");
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "liggghts" / "wet";
   fs::remove_all(dir);
   const auto engine = dem::make_engine("liggghts");
-  CHECK_THROWS_WITH(dem::run_scene(dem::parse_scene(text, "wet.toml"), text, *engine, options(dir, false)),
-                    Catch::Contains("suction_kPa") && Catch::Contains("--engine yade"));
+  CHECK_THROWS_WITH(
+      dem::run_scene(dem::parse_scene(text, "wet.toml"), text, *engine, options(dir, false)),
+      Catch::Contains("suction_kPa") && Catch::Contains("--engine yade"));
   CHECK_FALSE(fs::exists(dir));
 }
 
-TEST_CASE("a suction beyond the capillary tables is refused, naming the largest it allows", "[dem]") {
+TEST_CASE("a suction beyond the capillary tables is refused, naming the largest it allows",
+          "[dem]") {
   const std::string text = replaced(io::read_file("data/scenes/smoke.toml"), "restitution = 0.5",
                                     "restitution = 0.5\nsuction_kPa = 100");
-  // u* = s R_max / gamma = 1e5 x 1.2e-3 / 0.0728 = 1648 > 400: at most 400 x 0.0728 / 1.2e-3 = 24.3 kPa
-  CHECK_THROWS_WITH(dem::parse_scene(text, "wet.toml"), Catch::Contains("key 'particles.suction_kPa' = 100") &&
-                                                            Catch::Contains("at most 24.3 kPa"));
+  // u* = s R_max / gamma = 1e5 x 1.2e-3 / 0.0728 = 1648 > 400: at most 400 x 0.0728 / 1.2e-3 = 24.3
+  // kPa
+  CHECK_THROWS_WITH(
+      dem::parse_scene(text, "wet.toml"),
+      Catch::Contains("key 'particles.suction_kPa' = 100") && Catch::Contains("at most 24.3 kPa"));
 }

@@ -166,7 +166,8 @@ TEST_CASE(
 // periodic sides and frictionless contacts) until its kinetic energy was ~8e-5 J and the
 // consolidation was never accepted; at 10 kPa the plate's servo, at kp 1 and a loop number of 4,
 // jumped between -2 and +9 kPa. Both consolidated, the first row of the test starts at its target.
-TEST_CASE("DEM soil cell: stiff grains prepared dense consolidate at 10 and at 200 kPa", "[dem][liggghts]") {
+TEST_CASE("DEM soil cell: stiff grains prepared dense consolidate at 10 and at 200 kPa",
+          "[dem][liggghts]") {
   auto c = small_cell(SoilTestKind::kSimpleShear);
   c.height_d50 = 6.0;
   c.gamma = 0.02;

@@ -8,14 +8,18 @@
 using namespace iwb;
 
 namespace {
-dem::Scene scene() { return dem::parse_scene(io::read_file("data/scenes/smoke.toml"), "smoke.toml"); }
+dem::Scene scene() {
+  return dem::parse_scene(io::read_file("data/scenes/smoke.toml"), "smoke.toml");
+}
 
 io::CsvTable series(double peak, double residual, double drift) {
   io::CsvTable t;
   t.columns = {"t_s", "u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa"};
   for (int i = 0; i <= 100; ++i) {
     const double u = 0.05 * i;  // 5 mm
-    const double mu = u < 1.0 ? peak * u : (u < 2.0 ? peak - (peak - residual) * (u - 1.0) : residual + drift * (u - 4.0));
+    const double mu =
+        u < 1.0 ? peak * u
+                : (u < 2.0 ? peak - (peak - residual) * (u - 1.0) : residual + drift * (u - 4.0));
     t.rows.push_back({0.01 * i, u, 0.05 * u, 50.0, 50.0 * mu});
   }
   return t;
@@ -23,7 +27,8 @@ io::CsvTable series(double peak, double residual, double drift) {
 
 io::CsvTable profile(const std::function<double(double)>& v, double height) {
   io::CsvTable t;
-  t.columns = {"u_x_mm_window", "z_over_d50", "vx_over_vwall", "porosity", "sigma_zz_kPa", "tau_zx_kPa"};
+  t.columns = {"u_x_mm_window", "z_over_d50",   "vx_over_vwall",
+               "porosity",      "sigma_zz_kPa", "tau_zx_kPa"};
   for (double z = 0.25; z < height; z += 0.5) t.rows.push_back({4.0, z, v(z), 0.4, 50, 30});
   return t;
 }
@@ -65,23 +70,32 @@ TEST_CASE(
 
 TEST_CASE("a localised profile gives its band, a linear one is distributed shear", "[dem]") {
   // erfc profile centred 4 d50 above the wall, width w = 2 d50: 0.9 -> 0.1 spans 3.62 d50
-  const auto band = dem::summarize(scene(), series(0.8, 0.6, 0), profile([](double z) { return 0.5 * std::erfc((z - 4.0) / 2.0); }, 20.0));
+  const auto band =
+      dem::summarize(scene(), series(0.8, 0.6, 0),
+                     profile([](double z) { return 0.5 * std::erfc((z - 4.0) / 2.0); }, 20.0));
   REQUIRE(band.shear_mode == "localised at the wall");
   CHECK(band.far_field_speed == Approx(0.0).margin(0.01));
   CHECK(band.band_thickness_erf_d50.value() == Approx(3.62).epsilon(0.05));
   CHECK(band.band_thickness_d50.value() == Approx(3.62).margin(0.6));  // bin resolution 0.5 d50
   CHECK(band.wall_slip == Approx(1.0 - 0.5 * std::erfc(-3.5 / 2.0)).margin(0.02));
   CHECK(band.e_band.value() == Approx(0.4 / 0.6));
-  const auto linear = dem::summarize(scene(), series(0.8, 0.6, 0), profile([](double z) { return 1.0 - z / 20.0; }, 20.0));
+  const auto linear = dem::summarize(scene(), series(0.8, 0.6, 0),
+                                     profile([](double z) { return 1.0 - z / 20.0; }, 20.0));
   CHECK(linear.shear_mode == "distributed shear");
   CHECK_FALSE(linear.band_thickness_d50.has_value());
 }
 
-TEST_CASE("shear split between the wall and the plate: no 0.9 -> 0.1 band, a wall band to the plateau", "[dem]") {
+TEST_CASE(
+    "shear split between the wall and the plate: no 0.9 -> 0.1 band, a wall band to the plateau",
+    "[dem]") {
   // half the velocity drop next to the wall (width 1 d50 at z = 2), half next to the plate (z = 18)
-  const auto split = dem::summarize(scene(), series(0.8, 0.6, 0), profile([](double z) {
-    return 0.5 + 0.5 * 0.5 * std::erfc((z - 2.0) / 1.0) - 0.5 * 0.5 * std::erfc((18.0 - z) / 1.0);
-  }, 20.0));
+  const auto split = dem::summarize(scene(), series(0.8, 0.6, 0),
+                                    profile(
+                                        [](double z) {
+                                          return 0.5 + 0.5 * 0.5 * std::erfc((z - 2.0) / 1.0) -
+                                                 0.5 * 0.5 * std::erfc((18.0 - z) / 1.0);
+                                        },
+                                        20.0));
   CHECK(split.shear_mode == "split between wall and plate");
   CHECK(split.far_field_speed == Approx(0.5).margin(0.02));
   CHECK_FALSE(split.band_thickness_d50.has_value());  // the far field moves: undefined
@@ -96,9 +110,11 @@ TEST_CASE("shear split between the wall and the plate: no 0.9 -> 0.1 band, a wal
 TEST_CASE("bin heights within round-off of the middle third's bound give one summary", "[dem]") {
   auto table = [](double upper_bound_bin) {
     io::CsvTable t;
-    t.columns = {"u_x_mm_window", "z_over_d50", "vx_over_vwall", "porosity", "sigma_zz_kPa", "tau_zx_kPa"};
+    t.columns = {"u_x_mm_window", "z_over_d50",   "vx_over_vwall",
+                 "porosity",      "sigma_zz_kPa", "tau_zx_kPa"};
     for (int k = 1; k <= 42; ++k) {
-      const double z = 0.5 * k == 14.0 ? upper_bound_bin : 0.5 * k;  // the top bin, 21 d50, sets the height
+      const double z =
+          0.5 * k == 14.0 ? upper_bound_bin : 0.5 * k;  // the top bin, 21 d50, sets the height
       t.rows.push_back({4.0, z, std::exp(-z / 3.0), 0.4, 50, 30});
     }
     return t;

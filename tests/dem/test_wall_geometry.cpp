@@ -38,16 +38,21 @@ TEST_CASE("top plate faces down and a flat wall is cut into strips", "[dem]") {
 }
 
 TEST_CASE("STL text has one facet per triangle with unit normals", "[dem]") {
-  const auto tris = profile_surface(RoughnessProfile{ProfileKind::kSinusoid, 4e-3, 1e-3}, 8e-3, 4e-3, 0, false, 2e-3);
+  const auto tris = profile_surface(RoughnessProfile{ProfileKind::kSinusoid, 4e-3, 1e-3}, 8e-3,
+                                    4e-3, 0, false, 2e-3);
   const std::string stl = to_stl(tris, "w");
   std::size_t facets = 0;
-  for (auto p = stl.find("facet normal"); p != std::string::npos; p = stl.find("facet normal", p + 1)) ++facets;
+  for (auto p = stl.find("facet normal"); p != std::string::npos;
+       p = stl.find("facet normal", p + 1))
+    ++facets;
   CHECK(facets == tris.size());
   CHECK(stl.rfind("endsolid w") != std::string::npos);
 }
 
-TEST_CASE("an areal random wall's mesh covers the box once, faces the grains and passes through the map's nodes",
-          "[dem]") {
+TEST_CASE(
+    "an areal random wall's mesh covers the box once, faces the grains and passes through the "
+    "map's nodes",
+    "[dem]") {
   const double L = 12e-3, W = 4e-3;
   const auto map = std::make_shared<const walls::HeightMap>(
       walls::random_surface({0.3e-3, 1e-3, 0.8, 3}, L, W, 0.5e-3));

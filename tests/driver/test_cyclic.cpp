@@ -1,10 +1,10 @@
 // Cyclic and staged paths, the per-cycle summary (cycles.csv), and what the intergranular strain
 // changes in them: seed 5.7.5 (Table 5.3 Toyoura, e0 = 0.65, 100 kPa, kappa_r = 1, 10 cycles of
 // gamma_x = +-0.075), the small-strain reversal stiffness and ratcheting with and without it.
-#include <catch2/catch.hpp>
 #include <fmt/format.h>
 
 #include <bit>
+#include <catch2/catch.hpp>
 #include <chrono>
 #include <cstdint>
 
@@ -27,7 +27,9 @@ CyclicRun run_cycles(const std::string& name, BoundaryKind bc, double e0, double
   driver::RunSettings rs;
   rs.output_every = 1;
   r.result = driver::run_element_test(
-      *r.model, s0, driver::cyclic_path({bc, 0.0}, amplitude, cycles, driver::ShearDirection::kX, per_quarter), rs);
+      *r.model, s0,
+      driver::cyclic_path({bc, 0.0}, amplitude, cycles, driver::ShearDirection::kX, per_quarter),
+      rs);
   return r;
 }
 
@@ -62,7 +64,8 @@ TEST_CASE("cycles.csv rows agree with the history they summarise", "[driver][cyc
   CHECK(r.result.cycles[1].eps_n_start == r.result.cycles[0].eps_n_end);
 }
 
-TEST_CASE("staged cyclic path: sigma_n is ramped between cycles and held within them", "[driver][cyclic]") {
+TEST_CASE("staged cyclic path: sigma_n is ramped between cycles and held within them",
+          "[driver][cyclic]") {
   const auto m = test::make("hvwe-igs", test::table_5_3_toyoura());
   const auto s0 = m->initial_state({100.0, 0.5, 0.7});
   const auto path = driver::staged_cyclic_path(100.0, 1e-3, 3, {{2, 200.0}, {3, 150.0}},
@@ -80,7 +83,8 @@ TEST_CASE("staged cyclic path: sigma_n is ramped between cycles and held within 
                     Catch::Contains("stage 2 (from_cycle = 2) does not"));
 }
 
-TEST_CASE("seed 5.7.5 CNL: the peak shear stress per cycle falls towards a lower limit", "[driver][cyclic][seed][slow]") {
+TEST_CASE("seed 5.7.5 CNL: the peak shear stress per cycle falls towards a lower limit",
+          "[driver][cyclic][seed][slow]") {
   const auto r = run_cycles("hvwe-igs", BoundaryKind::kCNL, 0.65, 0.075, 10, 75);
   REQUIRE(r.result.complete());
   const auto& c = r.result.cycles;
@@ -104,14 +108,17 @@ TEST_CASE("seed 5.7.5 CNL: the peak shear stress per cycle falls towards a lower
   REQUIRE(m.result.complete());
   const double tau_cs_bound = m.last().tau_x;
   CHECK(c[9].eps_n_end > c[0].eps_n_end);  // dilation accumulates
-  CHECK(r.model->void_ratio(r.result.rows.back().state) < m.diagnostic("e_c", m.result.rows.size() - 1));
+  CHECK(r.model->void_ratio(r.result.rows.back().state) <
+        m.diagnostic("e_c", m.result.rows.size() - 1));
   CHECK(limit > tau_cs_bound);
-  WARN(fmt::format("5.7.5 CNL peak tau per cycle (kPa):{}; extrapolated limit {:.1f} kPa (seed: about "
-                   "53 kPa, difference {:+.1f} kPa); monotonic CNL to gamma = 3 ends at {:.1f} kPa",
-                   peaks(c), limit, limit - 53.0, tau_cs_bound));
+  WARN(fmt::format(
+      "5.7.5 CNL peak tau per cycle (kPa):{}; extrapolated limit {:.1f} kPa (seed: about "
+      "53 kPa, difference {:+.1f} kPa); monotonic CNL to gamma = 3 ends at {:.1f} kPa",
+      peaks(c), limit, limit - 53.0, tau_cs_bound));
 }
 
-TEST_CASE("seed 5.7.5 CV: the cyclic response stabilises after a few cycles", "[driver][cyclic][seed][slow]") {
+TEST_CASE("seed 5.7.5 CV: the cyclic response stabilises after a few cycles",
+          "[driver][cyclic][seed][slow]") {
   const auto r = run_cycles("hvwe-igs", BoundaryKind::kCV, 0.65, 0.075, 10, 75);
   REQUIRE(r.result.complete());
   const auto& c = r.result.cycles;
@@ -120,7 +127,9 @@ TEST_CASE("seed 5.7.5 CV: the cyclic response stabilises after a few cycles", "[
   for (const auto& x : c) sn += fmt::format(" {:.2f}", x.sigma_n_at_plus_kPa);
   // Stabilised: the peak changes by less than 1 % from cycle 4 to 5 and by less than 0.01 % in
   // the last cycle, and the changes shrink.
-  auto change = [&](std::size_t i) { return std::abs(c[i].tau_max_kPa - c[i - 1].tau_max_kPa) / c[i].tau_max_kPa; };
+  auto change = [&](std::size_t i) {
+    return std::abs(c[i].tau_max_kPa - c[i - 1].tau_max_kPa) / c[i].tau_max_kPa;
+  };
   CHECK(change(4) < 0.01);
   CHECK(change(9) < 1e-4);
   CHECK(change(9) < change(4));
@@ -147,7 +156,8 @@ Reversal reversal(const models::Model& m, const models::StateVector& s0, double 
   const auto r = driver::run_element_test(m, s0, path, {});
   REQUIRE(r.complete());
   const auto& rows = r.rows;
-  const double dtau = m.stress(rows.back().state).tau_x - m.stress(rows[rows.size() - 2].state).tau_x;
+  const double dtau =
+      m.stress(rows.back().state).tau_x - m.stress(rows[rows.size() - 2].state).tau_x;
   return {dtau / -step, rows[rows.size() - 2].state};
 }
 
@@ -161,21 +171,25 @@ std::pair<double, double> shear_tangent(const models::Model& hvwe, const models:
 
 }  // namespace
 
-TEST_CASE("a small-strain reversal is stiffer with intergranular strain, by about m_R", "[driver][cyclic][igs]") {
+TEST_CASE("a small-strain reversal is stiffer with intergranular strain, by about m_R",
+          "[driver][cyclic][igs]") {
   const auto in = test::table_5_3_toyoura();
   const auto igs = test::make("hvwe-igs", in), hyp = test::make("hvwe", in);
   const double m_R = in.tables.at("intergranular_strain").at("m_R");
   const double step = 1e-6;                // R / 100
   for (double pre : {2e-4, 1e-3, 1e-2}) {  // 2 R, 10 R, 100 R of pre-shear
-    const auto a = reversal(*igs, igs->initial_state({100.0, 0.5, 0.65, std::array<double, 3>{0, 0, 0}}), pre, step);
+    const auto a = reversal(
+        *igs, igs->initial_state({100.0, 0.5, 0.65, std::array<double, 3>{0, 0, 0}}), pre, step);
     const auto b = reversal(*hyp, hyp->initial_state({100.0, 0.5, 0.65}), pre, step);
     const auto [La, Na] = shear_tangent(*hyp, a.state);
     const auto [Lb, Nb] = shear_tangent(*hyp, b.state);
     const double rho = igs->diagnostics(a.state).back().value;
-    WARN(fmt::format("CV pre-shear {:g}: reversal stiffness with intergranular strain {:.4g} kPa, "
-                     "without {:.4g} kPa, ratio {:.3f} (m_R = {:g}, rho = {:.4f}; hvwe's own reversal "
-                     "stiffness L - N is {:.3f} L there)", pre, a.stiffness_kPa, b.stiffness_kPa,
-                     a.stiffness_kPa / b.stiffness_kPa, m_R, rho, (Lb - Nb) / Lb));
+    WARN(fmt::format(
+        "CV pre-shear {:g}: reversal stiffness with intergranular strain {:.4g} kPa, "
+        "without {:.4g} kPa, ratio {:.3f} (m_R = {:g}, rho = {:.4f}; hvwe's own reversal "
+        "stiffness L - N is {:.3f} L there)",
+        pre, a.stiffness_kPa, b.stiffness_kPa, a.stiffness_kPa / b.stiffness_kPa, m_R, rho,
+        (Lb - Nb) / Lb));
     CHECK(a.stiffness_kPa > 1.5 * b.stiffness_kPa);
     CHECK(a.stiffness_kPa < m_R * b.stiffness_kPa);
     // eq. 5.45 at an exact reversal (D = -||D|| delta^): [rho m_T + (1-rho) m_R] + rho (m_R - m_T)
@@ -186,7 +200,8 @@ TEST_CASE("a small-strain reversal is stiffer with intergranular strain, by abou
   }
 }
 
-TEST_CASE("ratcheting in small-amplitude CNL cycles: hvwe ratchets, hvwe-igs much less", "[driver][cyclic][igs]") {
+TEST_CASE("ratcheting in small-amplitude CNL cycles: hvwe ratchets, hvwe-igs much less",
+          "[driver][cyclic][igs]") {
   for (double amplitude : {5e-5, 2e-4}) {  // R/2 and 2R
     const auto igs = run_cycles("hvwe-igs", BoundaryKind::kCNL, 0.65, amplitude, 10, 20);
     const auto hyp = run_cycles("hvwe", BoundaryKind::kCNL, 0.65, amplitude, 10, 20);
@@ -198,9 +213,12 @@ TEST_CASE("ratcheting in small-amplitude CNL cycles: hvwe ratchets, hvwe-igs muc
       return (c.back().eps_n_end - c[4].eps_n_end) / 5.0;
     };
     const double with = ratchet(igs), without = ratchet(hyp);
-    WARN(fmt::format("amplitude {:g}: eps_n per cycle with intergranular strain {:.3g}, without {:.3g} "
-                     "(ratio {:.3f})", amplitude, with, without, with / without));
-    CHECK(without < -0.5 * amplitude);  // hvwe contracts by a fixed share of the amplitude each cycle
+    WARN(fmt::format(
+        "amplitude {:g}: eps_n per cycle with intergranular strain {:.3g}, without {:.3g} "
+        "(ratio {:.3f})",
+        amplitude, with, without, with / without));
+    CHECK(without <
+          -0.5 * amplitude);  // hvwe contracts by a fixed share of the amplitude each cycle
     CHECK(std::abs(with) < 0.1 * std::abs(without));
   }
 }

@@ -64,7 +64,7 @@ TEST_CASE(
   // diagonal (eq. 5.17 read literally, src/models/hypoplastic/README.md): tr eps = 3 eps_n. Under
   // CV eps_n = 0 and e = e0 whatever the rate says: only a path that moves eps_n can see it.
   for (const auto& spec : models::model_registry()) {
-    if (spec.declaration.layout.void_ratio < 0) continue;  // no void ratio to follow (mc)
+    if (spec.declaration.layout.void_ratio < 0) continue;          // no void ratio to follow (mc)
     const bool eps_n_on_diagonal = spec.name.rfind("ah", 0) == 0;  // ah, ahe, ahe-igs
     const double trace_per_eps_n = eps_n_on_diagonal ? 3.0 : 1.0;
     for (const auto& bc : {driver::BoundaryCondition{BoundaryKind::kCNL, 0.0},
@@ -73,7 +73,8 @@ TEST_CASE(
       s.model = spec.name;
       s.bc = bc;
       s.e0 = 0.70;  // dense of critical: contracts, then dilates
-      if (!test::is_sand(spec)) {  // a clay: its own set, overconsolidated (contracts less, then dilates)
+      if (!test::is_sand(
+              spec)) {  // a clay: its own set, overconsolidated (contracts less, then dilates)
         s.inputs = test::shipped(spec.declaration.example_parameters);
         s.e0 = spec.declaration.example_start.at("e0");
       }
@@ -92,7 +93,8 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("long CNL shear reaches the critical state whatever the initial density", "[driver][slow]") {
+TEST_CASE("long CNL shear reaches the critical state whatever the initial density",
+          "[driver][slow]") {
   const double eta_c = models::simple_shear_critical_ratio(test::kPhiC51);
   for (const std::string name : {"hvwe", "vw3d"}) {
     for (double e0 : {0.62, 0.95}) {
@@ -111,7 +113,7 @@ TEST_CASE("long CNL shear reaches the critical state whatever the initial densit
       CHECK(std::abs(r.ratio(n - 1) - r.ratio(n - 5)) < 1e-5);
       CHECK(r.last_ratio() == Approx(eta_c).epsilon(1e-4));
       CHECK(r.last_e() == Approx(r.diagnostic("e_c", n - 1)).epsilon(1e-4));  // Bauer's e_c(p)
-      CHECK(r.last().sigma_p.value() == Approx(100.0).epsilon(1e-4));        // sigma_p -> sigma_n
+      CHECK(r.last().sigma_p.value() == Approx(100.0).epsilon(1e-4));         // sigma_p -> sigma_n
     }
   }
 }
@@ -131,15 +133,16 @@ TEST_CASE("dense specimens dilate and show a peak, loose ones contract without o
     // Void ratio, not eps_n: AH's stretching carries eps_n on all three diagonal entries, so the
     // same volume change is a third of the normal strain there.
     CHECK(d.result.rows.back().eps_n > 0.0);
-    CHECK(d.last_e() > 0.62 + 0.02);                 // dilation
-    CHECK(d.peak_ratio() > d.last_ratio() + 0.02);   // a peak above the residual
+    CHECK(d.last_e() > 0.62 + 0.02);                // dilation
+    CHECK(d.peak_ratio() > d.last_ratio() + 0.02);  // a peak above the residual
     CHECK(l.result.rows.back().eps_n < 0.0);
     CHECK(l.last_e() < 0.93 - 0.01);                 // contraction
     CHECK(l.peak_ratio() <= l.last_ratio() + 1e-6);  // hardening to the end, no peak
   }
 }
 
-TEST_CASE("Arnold & Herle's a (eq. 5.21) puts the critical state at tau/sigma_n = tan(phi_c)", "[driver][slow]") {
+TEST_CASE("Arnold & Herle's a (eq. 5.21) puts the critical state at tau/sigma_n = tan(phi_c)",
+          "[driver][slow]") {
   for (const std::string name : {"ah", "hp1d"}) {
     test::ShearSpec s;
     s.model = name;
@@ -165,14 +168,21 @@ TEST_CASE("shear in y mirrors shear in x", "[driver]") {
       CHECK(ry.stress(i).sigma_p.value() == Approx(rx.stress(i).sigma_p.value()).epsilon(1e-9));
     }
   }
-  CHECK_THROWS_AS(([] { test::ShearSpec s; s.model = "hp1d"; s.direction = driver::ShearDirection::kY; return test::shear(s); })(),
+  CHECK_THROWS_AS(([] {
+                    test::ShearSpec s;
+                    s.model = "hp1d";
+                    s.direction = driver::ShearDirection::kY;
+                    return test::shear(s);
+                  })(),
                   InputError);
 }
 
-TEST_CASE("staged path: sigma_n is stepped at the given strain and held between steps", "[driver]") {
+TEST_CASE("staged path: sigma_n is stepped at the given strain and held between steps",
+          "[driver]") {
   const auto m = test::make("hvwe", test::table_5_2_hostun());
   const auto s0 = m->initial_state({102.0, 0.5, 0.68});
-  const auto path = driver::staged_path(102.0, 1.0, {{0.25, 274.0}}, driver::ShearDirection::kX, 400, 50);
+  const auto path =
+      driver::staged_path(102.0, 1.0, {{0.25, 274.0}}, driver::ShearDirection::kX, 400, 50);
   const auto r = driver::run_element_test(*m, s0, path, {});
   REQUIRE(r.complete());
   for (const auto& row : r.rows) {
@@ -186,7 +196,8 @@ TEST_CASE("staged path: sigma_n is stepped at the given strain and held between 
 TEST_CASE("cyclic path: each cycle returns exactly to zero shear strain", "[driver]") {
   const auto m = test::make("hvwe");
   const auto s0 = m->initial_state({100.0, test::kK0Oedometric51, 0.75});
-  const auto path = driver::cyclic_path({BoundaryKind::kCV, 0.0}, 0.01, 3, driver::ShearDirection::kX, 25);
+  const auto path =
+      driver::cyclic_path({BoundaryKind::kCV, 0.0}, 0.01, 3, driver::ShearDirection::kX, 25);
   const auto r = driver::run_element_test(*m, s0, path, {});
   REQUIRE(r.complete());
   CHECK(r.increments == 3 * 100);
@@ -194,20 +205,25 @@ TEST_CASE("cyclic path: each cycle returns exactly to zero shear strain", "[driv
     if (row.increment % 100 == 0) CHECK(row.gamma_x == 0.0);
 }
 
-TEST_CASE("a run that leaves the domain ends failed, names the increment, and keeps finite rows", "[driver]") {
+TEST_CASE("a run that leaves the domain ends failed, names the increment, and keeps finite rows",
+          "[driver]") {
   // Unloading a loose element under CNS with a very stiff spring drives sigma_n towards zero.
   const auto m = test::make("hvwe");
   const auto s0 = m->initial_state({5.0, 1.0, 1.0});
   driver::RunSettings rs;
   rs.integrator.scheme = integration::Scheme::kExplicitEuler;
-  const auto path = driver::monotonic_path({BoundaryKind::kCV, 0.0}, 2.0, driver::ShearDirection::kX, 20);
+  const auto path =
+      driver::monotonic_path({BoundaryKind::kCV, 0.0}, 2.0, driver::ShearDirection::kX, 20);
   const auto r = driver::run_element_test(*m, s0, path, rs);
   REQUIRE_FALSE(r.complete());
-  CHECK_THAT(r.status, Catch::StartsWith("failed: domain error at increment") && Catch::Contains("gamma_x"));
+  CHECK_THAT(r.status,
+             Catch::StartsWith("failed: domain error at increment") && Catch::Contains("gamma_x"));
   for (const auto& row : r.rows) CHECK(row.state.allFinite());
 }
 
-TEST_CASE("vw3d under oedometric compression: e stays in (e_d, e_i) and forgets its initial density", "[driver][slow]") {
+TEST_CASE(
+    "vw3d under oedometric compression: e stays in (e_d, e_i) and forgets its initial density",
+    "[driver][slow]") {
   // Proportional compression drives any initial void ratio towards one asymptotic state relative
   // to Bauer's limiting void ratios (swept-out memory): the spread of (e - e_d)/(e_c - e_d) over
   // three initial densities must shrink monotonically with pressure, without the curves crossing.
@@ -225,7 +241,8 @@ TEST_CASE("vw3d under oedometric compression: e stays in (e_d, e_i) and forgets 
     for (std::size_t k = 0; k < checkpoints_kPa.size(); ++k) {
       if (k > 0) {
         const auto r = driver::run_element_test(
-            *m, state, driver::oedometric_path(checkpoints_kPa[k - 1], checkpoints_kPa[k], 500), rs);
+            *m, state, driver::oedometric_path(checkpoints_kPa[k - 1], checkpoints_kPa[k], 500),
+            rs);
         REQUIRE(r.complete());
         for (const auto& row : r.rows) {
           const auto d = m->diagnostics(row.state);  // mean stress, e_i, e_c, e_d

@@ -1,8 +1,9 @@
 // Mixed control: Newton on the integrated increment converges quadratically; with explicit Euler
 // it agrees with the closed form of appendix C (ERRATA 18).
-#include <catch2/catch.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+
+#include <catch2/catch.hpp>
 
 #include "driver/mixed_control.hpp"
 #include "support/fixtures.hpp"
@@ -40,9 +41,9 @@ TEST_CASE("Newton on the normal strain increment converges quadratically", "[dri
 
 TEST_CASE("Newton with one Euler substep equals the closed form of appendix C", "[driver]") {
   for (const std::string name : {"hvwe", "ah", "hp1d", "vw3d"}) {
-    for (const driver::NormalControlRow row : {driver::NormalControlRow{1.0, 0.0, 0.0},
-                                               driver::NormalControlRow{1.0, -2000.0, 0.0},
-                                               driver::NormalControlRow{1.0, 0.0, 5.0}}) {
+    for (const driver::NormalControlRow row :
+         {driver::NormalControlRow{1.0, 0.0, 0.0}, driver::NormalControlRow{1.0, -2000.0, 0.0},
+          driver::NormalControlRow{1.0, 0.0, 5.0}}) {
       const auto m = test::make(name);
       auto s = m->initial_state({100.0, test::kK0Oedometric51, 0.75});
       integration::IntegratorSettings euler;
@@ -66,8 +67,10 @@ TEST_CASE("Newton with one Euler substep equals the closed form of appendix C", 
 // A replayed substep plan cannot cut back; when a Newton iterate's replay leaves the domain the
 // adaptive scheme re-plans at that iterate (found by `iwb bench integrators`: hvwe-igs under CNS at
 // rtol 1e-10 stopped with "replayed substep: ... Matsuoka-Nakai cone").
-TEST_CASE("a replay that leaves the domain is re-planned and not fatal for hvwe-igs under CNS at tight tolerance",
-          "[driver][igs]") {
+TEST_CASE(
+    "a replay that leaves the domain is re-planned and not fatal for hvwe-igs under CNS at tight "
+    "tolerance",
+    "[driver][igs]") {
   test::ShearSpec s;
   s.model = "hvwe-igs";
   s.inputs = test::table_5_3_toyoura();

@@ -45,7 +45,8 @@ TEST_CASE("ERRATA 3: from an isotropic start under CV, AHE and HvWE coincide", "
   }
 }
 
-TEST_CASE("5.7.2 CNL (e0 = 0.85): AHE and HvWE share their asymptotic stress, AH's differs", "[seed][slow]") {
+TEST_CASE("5.7.2 CNL (e0 = 0.85): AHE and HvWE share their asymptotic stress, AH's differs",
+          "[seed][slow]") {
   // "Asymptotic": at gamma = 0.3 none of them is stationary (AH 0.541, AHE 0.532, HvWE 0.537 at
   // 100 kPa), so the seed's statement is tested at the critical state.
   auto stationary = [](const std::string& m) {
@@ -65,7 +66,8 @@ TEST_CASE("5.7.2 CNL (e0 = 0.85): AHE and HvWE share their asymptotic stress, AH
   CHECK(ah - hvwe > 0.005);
 }
 
-TEST_CASE("5.7.2 CNS (e0 = 0.85, K = 1000 kPa/mm, d_s = 1 mm): HvWE highest only at 50 kPa", "[seed]") {
+TEST_CASE("5.7.2 CNS (e0 = 0.85, K = 1000 kPa/mm, d_s = 1 mm): HvWE highest only at 50 kPa",
+          "[seed]") {
   // The seed reports HvWE with the largest shear stress at all three normal stresses. We find it
   // at 50 kPa, where HvWE dilates twice as much as AH and the spring raises its sigma_n most; at
   // 100 and 150 kPa AH is highest, because its a (eq. 5.21) puts its stationary ratio at

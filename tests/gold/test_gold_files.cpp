@@ -133,25 +133,32 @@ TEST_CASE("gold: oedometric loading of every model that has one matches its gold
   check_path("oedometric");
 }
 
-TEST_CASE("gold: the reference interface models (mc, hyperbolic, lashkari, mortara) on CNL, CNS and CV match their gold files",
-          "[gold][gold-files]") {
-  for (const std::string path : {"mc_CNL", "mc_CNS", "mc_CV", "hyperbolic_CNL", "hyperbolic_CNS", "hyperbolic_CV",
-                                 "lashkari_CNL", "lashkari_CNS", "lashkari_CV", "mortara_CNL", "mortara_CNS", "mortara_CV"}) {
+TEST_CASE(
+    "gold: the reference interface models (mc, hyperbolic, lashkari, mortara) on CNL, CNS and CV "
+    "match their gold files",
+    "[gold][gold-files]") {
+  for (const std::string path : {"mc_CNL", "mc_CNS", "mc_CV", "hyperbolic_CNL", "hyperbolic_CNS",
+                                 "hyperbolic_CV", "lashkari_CNL", "lashkari_CNS", "lashkari_CV",
+                                 "mortara_CNL", "mortara_CNS", "mortara_CV"}) {
     INFO(path);
     check_path(path);
   }
 }
 
-TEST_CASE("gold: the models of seed chapter 8 (modified Cam clay, Barodesy) on CNL, CNS and CV match their gold files",
-          "[gold][gold-files]") {
+TEST_CASE(
+    "gold: the models of seed chapter 8 (modified Cam clay, Barodesy) on CNL, CNS and CV match "
+    "their gold files",
+    "[gold][gold-files]") {
   for (const std::string path : {"table_8_1_CNL", "table_8_1_CNS", "table_8_1_CV"}) {
     INFO(path);
     check_path(path);
   }
 }
 
-TEST_CASE("gold: Masin's clay and the thermo-hydro model (Table 6.5) on CNL, CV and a heat-dry-wet path match their gold files",
-          "[gold][gold-files]") {
+TEST_CASE(
+    "gold: Masin's clay and the thermo-hydro model (Table 6.5) on CNL, CV and a heat-dry-wet path "
+    "match their gold files",
+    "[gold][gold-files]") {
   for (const std::string path : {"table_6_5_CNL", "table_6_5_CV", "table_6_5_thermo_hydro"}) {
     INFO(path);
     check_path(path);
@@ -159,8 +166,10 @@ TEST_CASE("gold: Masin's clay and the thermo-hydro model (Table 6.5) on CNL, CV 
 }
 
 // A model added to the registry without gold files, or a gold file no case produces, fails here.
-TEST_CASE("gold: the clay models on their paths (Table 6.4) match their gold files", "[gold][gold-files]") {
-  for (const std::string path : {"clay_CNL", "clay_CNS", "clay_CV", "clay_oedometric", "clay_cyclic_CNL"}) {
+TEST_CASE("gold: the clay models on their paths (Table 6.4) match their gold files",
+          "[gold][gold-files]") {
+  for (const std::string path :
+       {"clay_CNL", "clay_CNS", "clay_CV", "clay_oedometric", "clay_cyclic_CNL"}) {
     INFO(path);
     check_path(path);
   }

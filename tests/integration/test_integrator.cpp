@@ -22,11 +22,13 @@ models::StateVector integrate_path(const models::Model& m, const IntegratorSetti
   auto s = m.initial_state({100.0, test::kK0Oedometric51, 0.70});
   double first = 1.0;
   for (int i = 0; i < increments; ++i)
-    s = integration::integrate_increment<double>(m, s, {0.0, gamma / increments, 0.0}, set, count, first);
+    s = integration::integrate_increment<double>(m, s, {0.0, gamma / increments, 0.0}, set, count,
+                                                 first);
   return s;
 }
 
-double tau_error(const models::Model& m, const models::StateVector& a, const models::StateVector& b) {
+double tau_error(const models::Model& m, const models::StateVector& a,
+                 const models::StateVector& b) {
   return std::abs(m.stress(a).tau_x - m.stress(b).tau_x) / std::abs(m.stress(b).tau_x);
 }
 
@@ -54,7 +56,8 @@ TEST_CASE("explicit Euler converges to the adaptive reference at first order", "
     }
     for (std::size_t i = 1; i < errors.size(); ++i) {
       const double order = std::log2(errors[i - 1] / errors[i]);
-      INFO(name << ": error " << errors[i] << " at " << (8 << i) << " substeps, observed order " << order);
+      INFO(name << ": error " << errors[i] << " at " << (8 << i) << " substeps, observed order "
+                << order);
       CHECK(order == Approx(1.0).margin(0.1));
     }
   }
@@ -69,7 +72,8 @@ TEST_CASE("the adaptive scheme's error follows its tolerance", "[integration]") 
     for (double rtol : {1e-3, 1e-5, 1e-7}) {
       IntegrationCounters count;
       const double err = tau_error(*m, integrate_path(*m, adaptive(rtol, pair), count), reference);
-      INFO(pair << " rtol " << rtol << ": error " << err << ", " << count.rate_evaluations << " evaluations");
+      INFO(pair << " rtol " << rtol << ": error " << err << ", " << count.rate_evaluations
+                << " evaluations");
       CHECK(err < 20 * rtol);  // global error over 20 increments, each within rtol locally
       CHECK(count.rate_evaluations > previous_evals);
       previous_evals = count.rate_evaluations;
@@ -85,14 +89,17 @@ TEST_CASE("rejected substeps do not leak into the committed state", "[integratio
   const models::InterfaceStrain big{0.0, 0.05, 0.0};
   IntegrationCounters with_rejections, without;
   double first = 1.0;
-  const auto a = integration::integrate_increment<double>(*m, s0, big, adaptive(1e-8), with_rejections, first);
+  const auto a =
+      integration::integrate_increment<double>(*m, s0, big, adaptive(1e-8), with_rejections, first);
   first = 1e-4;
-  const auto b = integration::integrate_increment<double>(*m, s0, big, adaptive(1e-8), without, first);
+  const auto b =
+      integration::integrate_increment<double>(*m, s0, big, adaptive(1e-8), without, first);
   CHECK(with_rejections.rejected_substeps > 0);
   CHECK(tau_error(*m, a, b) < 1e-6);
 }
 
-TEST_CASE("leaving the domain: Euler names the substep and state, adaptive cuts back", "[integration]") {
+TEST_CASE("leaving the domain: Euler names the substep and state, adaptive cuts back",
+          "[integration]") {
   const auto m = test::make("hvwe");
   const auto s0 = m->initial_state({100.0, test::kK0Oedometric51, 0.70});
   const models::InterfaceStrain tear{0.3, 0.0, 0.0};  // 30 % opening in one increment: tension
@@ -105,7 +112,8 @@ TEST_CASE("leaving the domain: Euler names the substep and state, adaptive cuts 
   IntegrationCounters ca;
   first = 1.0;
   try {
-    const auto s = integration::integrate_increment<double>(*m, s0, tear, adaptive(1e-6), ca, first);
+    const auto s =
+        integration::integrate_increment<double>(*m, s0, tear, adaptive(1e-6), ca, first);
     CHECK(s.allFinite());
     CHECK(m->domain_violation(s).empty());
   } catch (const DomainError& e) {

@@ -9,7 +9,8 @@
 using namespace iwb;
 namespace fs = std::filesystem;
 
-TEST_CASE("a checksum record tells a missing, truncated or altered file and a missing record", "[io]") {
+TEST_CASE("a checksum record tells a missing, truncated or altered file and a missing record",
+          "[io]") {
   const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / "io" / "checksum";
   fs::remove_all(dir);
   fs::create_directories(dir);

@@ -1,12 +1,13 @@
 // One process at a time in a run directory (issue 15, item 2): a real second `iwb` is refused with
 // exit 2 naming the holder and touches nothing; a lock left by a process that died is taken over
 // and reported as stale; a holder that ends removes its lock file.
-#include <catch2/catch.hpp>
-#include <filesystem>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <filesystem>
 
 #include "common/errors.hpp"
 #include "common/subprocess.hpp"
@@ -43,30 +44,36 @@ fs::path fresh_dir(const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("a second iwb in a locked run directory is refused with exit 2, the holder named, nothing touched",
-          "[io][lock]") {
+TEST_CASE(
+    "a second iwb in a locked run directory is refused with exit 2, the holder named, nothing "
+    "touched",
+    "[io][lock]") {
   const fs::path dir = fresh_dir("locked_run");
   const std::string manifest = "{\"status\": \"interrupted at stage shear\"}\n";
   io::write_atomically(dir / "manifest.json", manifest);
   const auto lock = io::DirectoryLock::take(dir, "the test holding it");
   const std::string pid = fmt::format("PID {}", ::getpid());
   for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"dem", "run", "data/scenes/smoke.toml", "--engine", "liggghts", "--out", dir.string(),
-                                 "--resume"},
-        {"dem", "run", "data/scenes/smoke.toml", "--engine", "liggghts", "--out", dir.string(), "--force"},
+       {std::vector<std::string>{"dem", "run", "data/scenes/smoke.toml", "--engine", "liggghts",
+                                 "--out", dir.string(), "--resume"},
+        {"dem", "run", "data/scenes/smoke.toml", "--engine", "liggghts", "--out", dir.string(),
+         "--force"},
         {"dem", "summary", dir.string()}}) {
     INFO(fmt::format("iwb {}", fmt::join(args, " ")));
     const Command c = iwb_command(args);
     CHECK(c.exit_code == 2);
-    CHECK_THAT(c.output, Catch::Contains(dir.string() + ": in use by another iwb") && Catch::Contains(pid) &&
-                             Catch::Contains("since ") && Catch::Contains("the test holding it"));
+    CHECK_THAT(c.output, Catch::Contains(dir.string() + ": in use by another iwb") &&
+                             Catch::Contains(pid) && Catch::Contains("since ") &&
+                             Catch::Contains("the test holding it"));
     CHECK(io::read_file(dir / "manifest.json") == manifest);  // --force did not empty it
     CHECK_FALSE(fs::exists(dir / "liggghts"));
   }
 }
 
-TEST_CASE("a lock left by a process that died is taken over and reported as stale; a released one is gone",
-          "[io][lock]") {
+TEST_CASE(
+    "a lock left by a process that died is taken over and reported as stale; a released one is "
+    "gone",
+    "[io][lock]") {
   const fs::path dir = fresh_dir("stale_lock");
   const pid_t child = ::fork();
   REQUIRE(child >= 0);
@@ -82,7 +89,8 @@ TEST_CASE("a lock left by a process that died is taken over and reported as stal
     REQUIRE(lock.stale());
     CHECK(lock.stale()->pid == child);
     CHECK_THAT(lock.stale_message(), Catch::Contains(fmt::format("stale lock of PID {}", child)) &&
-                                         Catch::Contains("a run that crashed") && Catch::Contains("taken over"));
+                                         Catch::Contains("a run that crashed") &&
+                                         Catch::Contains("taken over"));
     // while held: refused, in this process too
     CHECK_THROWS_AS(io::DirectoryLock::take(dir, "again"), InputError);
   }

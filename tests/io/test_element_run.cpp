@@ -1,7 +1,7 @@
 // `iwb element`'s run directory (issue 15, finding 6): a path the model cannot follow is refused
 // before the directory is touched, and the manifest lists only files that exist.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <filesystem>
 
 #include "common/errors.hpp"
@@ -17,7 +17,8 @@ namespace {
 std::string hp1d_test(const std::string& direction) {
   return "model = { name = \"hp1d\", parameters = \"data/params/table_5_2_hostun.toml\" }\n"
          "initial = { sigma_n_kPa = 100, e0 = 0.7 }\nboundary = { type = \"CNL\" }\n"
-         "path = { kind = \"monotonic\", gamma = 0.1, increments = 100, direction = \"" + direction + "\" }\n";
+         "path = { kind = \"monotonic\", gamma = 0.1, increments = 100, direction = \"" +
+         direction + "\" }\n";
 }
 
 io::ElementRunOutcome run(const std::string& text, const fs::path& dir) {
@@ -25,16 +26,20 @@ io::ElementRunOutcome run(const std::string& text, const fs::path& dir) {
   opt.out = dir;
   opt.force = true;
   opt.input_text = text;
-  return io::run_element_to_directory(io::parse_element_test(io::parse_toml_text(text, "t.toml"), "t.toml", "."), opt);
+  return io::run_element_to_directory(
+      io::parse_element_test(io::parse_toml_text(text, "t.toml"), "t.toml", "."), opt);
 }
 
 }  // namespace
 
-TEST_CASE("element: hp1d sheared in y is refused naming file, key and value, before anything is written", "[io]") {
+TEST_CASE(
+    "element: hp1d sheared in y is refused naming file, key and value, before anything is written",
+    "[io]") {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "element" / "hp1d_y";
   fs::remove_all(dir);
   CHECK_THROWS_WITH(run(hp1d_test("y"), dir),
-                    "t.toml: key 'path.direction' = \"y\": model hp1d has one shear direction; use direction = \"x\"");
+                    "t.toml: key 'path.direction' = \"y\": model hp1d has one shear direction; use "
+                    "direction = \"x\"");
   CHECK_FALSE(fs::exists(dir));
 }
 

@@ -22,12 +22,14 @@ bool has_temporary(const fs::path& dir) {
 }
 }  // namespace
 
-TEST_CASE("output: a file destination that is a directory or lies under a file is refused", "[io]") {
+TEST_CASE("output: a file destination that is a directory or lies under a file is refused",
+          "[io]") {
   fs::remove_all(kWork);
   fs::create_directories(kWork / "dir");
   io::write_atomically(kWork / "file", "x");
-  CHECK_THROWS_WITH(io::require_file_destination(kWork / "dir", "-o"),
-                    "-o " + (kWork / "dir").string() + ": is a directory; give the name of the file to write");
+  CHECK_THROWS_WITH(
+      io::require_file_destination(kWork / "dir", "-o"),
+      "-o " + (kWork / "dir").string() + ": is a directory; give the name of the file to write");
   CHECK_THROWS_WITH(io::require_file_destination(kWork / "file" / "a.toml", "-o"),
                     Catch::Contains((kWork / "file").string() + " is a file, not a directory"));
   CHECK_NOTHROW(io::require_file_destination(kWork / "new" / "a.toml", "-o"));
@@ -41,30 +43,36 @@ TEST_CASE("output: a write onto a directory throws and leaves no temporary file"
   CHECK_FALSE(has_temporary(kWork));
 }
 
-TEST_CASE("output: a staged directory appears only when committed and replaces the earlier one", "[io]") {
+TEST_CASE("output: a staged directory appears only when committed and replaces the earlier one",
+          "[io]") {
   fs::remove_all(kWork);
-  io::write_atomically((fs::create_directories(kWork / "figures"), kWork / "figures" / "old.svg"), "old");
+  io::write_atomically((fs::create_directories(kWork / "figures"), kWork / "figures" / "old.svg"),
+                       "old");
   {
     io::StagedDirectory staged(kWork / "figures");
     io::write_atomically(staged.path() / "new.svg", "new");
     CHECK(fs::exists(kWork / "figures" / "old.svg"));  // not yet
-  }  // abandoned: as if a figure had failed
+  }                                                    // abandoned: as if a figure had failed
   CHECK(fs::exists(kWork / "figures" / "old.svg"));
   CHECK_FALSE(has_temporary(kWork));
   io::StagedDirectory staged(kWork / "figures");
   io::write_atomically(staged.path() / "new.svg", "new");
   staged.commit();
-  CHECK(test::files_under(kWork / "figures") == std::map<std::string, std::string>{{"new.svg", "new"}});
+  CHECK(test::files_under(kWork / "figures") ==
+        std::map<std::string, std::string>{{"new.svg", "new"}});
   CHECK_FALSE(has_temporary(kWork));
 }
 
-TEST_CASE("calibrate -o naming a directory is refused before fitting, leaving no temporary file", "[io][calibration]") {
+TEST_CASE("calibrate -o naming a directory is refused before fitting, leaving no temporary file",
+          "[io][calibration]") {
   fs::remove_all(kWork);
   fs::create_directories(kWork / "params");
-  const auto r = test::run_iwb({"calibrate", "data/calibration/dem_default_grains/oedometer-dense", "-o", (kWork / "params").string()});
+  const auto r = test::run_iwb({"calibrate", "data/calibration/dem_default_grains/oedometer-dense",
+                                "-o", (kWork / "params").string()});
   CHECK(r.exit_code == 2);
   // refused by the option's check, before anything is fitted
-  CHECK_THAT(r.output, Catch::StartsWith("error: iwb calibrate: --out: " + (kWork / "params").string() + ": is a directory"));
+  CHECK_THAT(r.output, Catch::StartsWith("error: iwb calibrate: --out: " +
+                                         (kWork / "params").string() + ": is a directory"));
   CHECK(test::files_under(kWork).empty());
   CHECK_FALSE(has_temporary(kWork));
 }

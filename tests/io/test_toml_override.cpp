@@ -8,7 +8,8 @@
 using namespace iwb;
 
 TEST_CASE("set_dotted: the key lands in its own table, other keys keep their values", "[io]") {
-  auto root = io::parse_toml_text("seed = 1\n[wall]\nheight_d50 = 0.5\n[plate]\nheight_d50 = 1.0\n", "base.toml");
+  auto root = io::parse_toml_text("seed = 1\n[wall]\nheight_d50 = 0.5\n[plate]\nheight_d50 = 1.0\n",
+                                  "base.toml");
   io::set_dotted(root, "wall.height_d50", 0.25, "t");
   io::set_dotted(root, "seed", std::int64_t{3}, "t");
   io::set_dotted(root, "boundary.type", std::string("CNS"), "t");  // a missing table is created
@@ -21,9 +22,10 @@ TEST_CASE("set_dotted: the key lands in its own table, other keys keep their val
 
 TEST_CASE("set_dotted: a value in the path or a table at the key is refused with the key", "[io]") {
   auto root = io::parse_toml_text("seed = 1\n[wall]\nheight_d50 = 0.5\n", "base.toml");
-  CHECK_THROWS_WITH(io::set_dotted(root, "seed.x", 1.0, "s.toml"), Catch::Contains("s.toml") &&
-                                                                      Catch::Contains("'seed' is a value"));
-  CHECK_THROWS_WITH(io::set_dotted(root, "wall", 1.0, "s.toml"), Catch::Contains("cannot set 'wall' = 1.0"));
+  CHECK_THROWS_WITH(io::set_dotted(root, "seed.x", 1.0, "s.toml"),
+                    Catch::Contains("s.toml") && Catch::Contains("'seed' is a value"));
+  CHECK_THROWS_WITH(io::set_dotted(root, "wall", 1.0, "s.toml"),
+                    Catch::Contains("cannot set 'wall' = 1.0"));
   CHECK_THROWS_AS(io::set_dotted(root, "wall.", 1.0, "s.toml"), InputError);
 }
 

@@ -32,7 +32,8 @@ std::vector<std::string> diagnostic_names(const std::vector<models::NamedValue>&
 
 }  // namespace
 
-TEST_CASE("every model's declaration says what the model does: state, diagnostics, shear directions") {
+TEST_CASE(
+    "every model's declaration says what the model does: state, diagnostics, shear directions") {
   for (const auto& spec : models::model_registry()) {
     INFO(spec.name);
     const auto& d = spec.declaration;
@@ -55,18 +56,47 @@ TEST_CASE("every model's declaration says what the model does: state, diagnostic
   }
 }
 
-TEST_CASE("the registry lists models in their declared order: sand, clay, the reference models, chapter 8's, then the -igs variants") {
+TEST_CASE(
+    "the registry lists models in their declared order: sand, clay, the reference models, chapter "
+    "8's, then the -igs variants") {
   std::vector<std::string> names;
   for (const auto& spec : models::model_registry()) names.push_back(spec.name);
-  CHECK(names == std::vector<std::string>{"vw3d", "ah", "ahe", "hvwe", "hvwe-exact", "hp1d", "hcc", "hcc3d", "hce",
-                                          "hce3d", "hc", "hc3d", "hcthm", "hcthm3d", "mc", "hyperbolic", "lashkari", "mortara", "barodesy-clay", "barodesy-clay3d", "mcc",
-                                          "mcc3d", "vw3d-igs", "ahe-igs", "hvwe-igs", "hvwe-exact-igs", "hcc-igs",
-                                          "hcc3d-igs", "hce-igs", "hce3d-igs"});
+  CHECK(names == std::vector<std::string>{"vw3d",
+                                          "ah",
+                                          "ahe",
+                                          "hvwe",
+                                          "hvwe-exact",
+                                          "hp1d",
+                                          "hcc",
+                                          "hcc3d",
+                                          "hce",
+                                          "hce3d",
+                                          "hc",
+                                          "hc3d",
+                                          "hcthm",
+                                          "hcthm3d",
+                                          "mc",
+                                          "hyperbolic",
+                                          "lashkari",
+                                          "mortara",
+                                          "barodesy-clay",
+                                          "barodesy-clay3d",
+                                          "mcc",
+                                          "mcc3d",
+                                          "vw3d-igs",
+                                          "ahe-igs",
+                                          "hvwe-igs",
+                                          "hvwe-exact-igs",
+                                          "hcc-igs",
+                                          "hcc3d-igs",
+                                          "hce-igs",
+                                          "hce3d-igs"});
 }
 
 TEST_CASE("the interface models of the plan and the league are declared, simplest first") {
-  CHECK(models::ranked_interface_models(true) == std::vector<std::string>{"mc", "hyperbolic", "hp1d", "ah", "ahe", "lashkari", "mortara", "hvwe",
-                                          "ahe-igs", "hvwe-igs"});
+  CHECK(models::ranked_interface_models(true) ==
+        std::vector<std::string>{"mc", "hyperbolic", "hp1d", "ah", "ahe", "lashkari", "mortara",
+                                 "hvwe", "ahe-igs", "hvwe-igs"});
 }
 
 TEST_CASE("the default K0 declared by the sand family is 1 - sin phi_c of the file's table") {
@@ -74,12 +104,15 @@ TEST_CASE("the default K0 declared by the sand family is 1 - sin phi_c of the fi
   const auto in = example_inputs(spec);
   const double phi_c = in.tables.at("hypoplastic").at("phi_c_deg") * M_PI / 180.0;
   for (const auto& input : spec.declaration.initial)
-    if (input.key == "K0") CHECK(input.default_value(in) == Approx(1.0 - std::sin(phi_c)).epsilon(1e-15));
-  const auto* ah_K0 = models::find_initial_input(models::find_model("ah").declaration.initial, "K0");
+    if (input.key == "K0")
+      CHECK(input.default_value(in) == Approx(1.0 - std::sin(phi_c)).epsilon(1e-15));
+  const auto* ah_K0 =
+      models::find_initial_input(models::find_model("ah").declaration.initial, "K0");
   REQUIRE(ah_K0 != nullptr);
   CHECK(ah_K0->need == models::InitialInputSpec::Need::kFixed);
   CHECK(ah_K0->default_value(in) == 1.0);
-  CHECK(models::find_initial_input(models::find_model("hp1d").declaration.initial, "K0") == nullptr);
+  CHECK(models::find_initial_input(models::find_model("hp1d").declaration.initial, "K0") ==
+        nullptr);
 }
 
 TEST_CASE("an inconsistent declaration is refused, with the reason") {
@@ -89,12 +122,14 @@ TEST_CASE("an inconsistent declaration is refused, with the reason") {
   auto too_big = spec;
   while (too_big.declaration.layout.size() <= models::kMaxStateSize)
     too_big.declaration.layout.components.push_back(
-        {"x" + std::to_string(too_big.declaration.layout.size()), "-", models::ComponentKind::kHardening});
+        {"x" + std::to_string(too_big.declaration.layout.size()), "-",
+         models::ComponentKind::kHardening});
   CHECK_THAT(models::declaration_problem(too_big), Catch::Contains("more than kMaxStateSize"));
 
   auto e_first = spec;
   std::swap(e_first.declaration.layout.components[0], e_first.declaration.layout.components[4]);
-  CHECK_THAT(models::declaration_problem(e_first), Catch::Contains("component 0 must be the normal stress"));
+  CHECK_THAT(models::declaration_problem(e_first),
+             Catch::Contains("component 0 must be the normal stress"));
 
   auto twice = spec;
   twice.declaration.layout.components[1].name = "T_n";
@@ -106,7 +141,8 @@ TEST_CASE("an inconsistent declaration is refused, with the reason") {
 
   auto wrong_external = spec;
   wrong_external.declaration.layout.external[0] = 4;
-  CHECK_THAT(models::declaration_problem(wrong_external), Catch::Contains("not an external component"));
+  CHECK_THAT(models::declaration_problem(wrong_external),
+             Catch::Contains("not an external component"));
 
   auto no_schemes = spec;
   no_schemes.declaration.roughness.schemes.clear();
@@ -130,7 +166,9 @@ TEST_CASE("the critical friction angle is read by role, from the model's own tab
   CHECK(models::critical_friction_angle(spec, in) == Approx(28.0 * M_PI / 180.0));
 }
 
-TEST_CASE("offer: a caller that does not know the model gives what the model declares, defaults the rest") {
+TEST_CASE(
+    "offer: a caller that does not know the model gives what the model declares, defaults the "
+    "rest") {
   const auto& hvwe = models::find_model("hvwe");
   const auto in = example_inputs(hvwe);
   const auto s = models::offer(hvwe, in, {{"sigma_n_kPa", 50.0}, {"e0", 0.7}, {"OCR", 2.0}});
@@ -138,7 +176,8 @@ TEST_CASE("offer: a caller that does not know the model gives what the model dec
   CHECK(s.e0 == 0.7);
   CHECK(s.K0 == Approx(1.0 - std::sin(28.0 * M_PI / 180.0)));
   CHECK(s.named.empty());  // hvwe declares no OCR: dropped
-  CHECK(models::offer(models::find_model("ahe"), in, {{"K0", 0.4}}).K0 == 1.0);  // fixed by eq. 5.16
+  CHECK(models::offer(models::find_model("ahe"), in, {{"K0", 0.4}}).K0 ==
+        1.0);  // fixed by eq. 5.16
 }
 
 }  // namespace iwb

@@ -17,7 +17,8 @@ namespace {
 std::vector<models::StateVector> reduced_states(int n, bool with_tau_y = true) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  const auto p = models::HypoplasticParameters::from(test::table_5_1().tables.at("hypoplastic"), "t");
+  const auto p =
+      models::HypoplasticParameters::from(test::table_5_1().tables.at("hypoplastic"), "t");
   std::vector<models::StateVector> out;
   for (int i = 0; i < n; ++i) {
     const double sn = 10.0 + 990.0 * u(rng), sp = sn * (0.4 + 0.8 * u(rng));
@@ -53,8 +54,10 @@ models::StateVector with_delta(const models::Model& m, const models::StateVector
   if (m.state_size() == s.size()) return s;
   models::StateVector out(m.state_size());
   out.head(s.size()) = s;
-  if (m.state_size() - s.size() == 6) out.tail(6) << dn, 0.0, 0.0, dx, dy, 0.0;
-  else out.tail(4) << dn, 0.0, dx, dy;
+  if (m.state_size() - s.size() == 6)
+    out.tail(6) << dn, 0.0, 0.0, dx, dy, 0.0;
+  else
+    out.tail(4) << dn, 0.0, dx, dy;
   return out;
 }
 
@@ -110,7 +113,8 @@ TEST_CASE("dual-number rates carry the finite-difference derivative in eps_n", "
       for (int i = 0; i < s.size(); ++i) {
         CHECK(rd(i).value() == Approx(r0(i)).epsilon(1e-13).margin(1e-300));
         const double fd = (rp(i) - rm(i)) / (2 * h);
-        CHECK(derivative_of(rd(i)) == Approx(fd).epsilon(1e-5).margin(1e-6 * std::abs(r0(i)) / std::abs(d.gamma_x)));
+        CHECK(derivative_of(rd(i)) ==
+              Approx(fd).epsilon(1e-5).margin(1e-6 * std::abs(r0(i)) / std::abs(d.gamma_x)));
       }
     }
   }
@@ -125,12 +129,12 @@ TEST_CASE("hvwe equals vw3d in simple shear, rate by rate (ERRATA 3)", "[models]
     hvwe->rate(r, d, a);
     vw3d->rate(to_3d(r), d, b);
     const double s = b.cwiseAbs().maxCoeff();
-    CHECK(std::abs(a(0) - b(0)) <= 1e-12 * s);  // sigma_n
-    CHECK(std::abs(a(1) - b(1)) <= 1e-12 * s);  // sigma_p = sigma_22
-    CHECK(std::abs(b(2) - b(1)) <= 1e-12 * s);  // sigma_33 stays equal to sigma_22
-    CHECK(std::abs(a(2) - b(3)) <= 1e-12 * s);  // tau_x
-    CHECK(std::abs(a(3) - b(4)) <= 1e-12 * s);  // tau_y
-    CHECK(std::abs(b(5)) <= 1e-12 * s);         // sigma_23 stays zero
+    CHECK(std::abs(a(0) - b(0)) <= 1e-12 * s);   // sigma_n
+    CHECK(std::abs(a(1) - b(1)) <= 1e-12 * s);   // sigma_p = sigma_22
+    CHECK(std::abs(b(2) - b(1)) <= 1e-12 * s);   // sigma_33 stays equal to sigma_22
+    CHECK(std::abs(a(2) - b(3)) <= 1e-12 * s);   // tau_x
+    CHECK(std::abs(a(3) - b(4)) <= 1e-12 * s);   // tau_y
+    CHECK(std::abs(b(5)) <= 1e-12 * s);          // sigma_23 stays zero
     CHECK(a(4) == Approx(b(6)).epsilon(1e-13));  // void ratio
   }
 }
@@ -179,7 +183,8 @@ TEST_CASE("hp1d is Gutjahr's eq. 3.75, re-derived (ERRATA 7)", "[models][hp1d]")
   }
 }
 
-TEST_CASE("hp1d at tau = 0 has the 3D model's isotropic stiffness on the compression line", "[models][hp1d]") {
+TEST_CASE("hp1d at tau = 0 has the 3D model's isotropic stiffness on the compression line",
+          "[models][hp1d]") {
   // On e = e_i, d(-tr T)/d(-tr D) of vw3d under isotropic compression equals d sigma_n/d eps_n of
   // hp1d when sigma_n = -tr T: both put the normal compression line on Bauer's e_i.
   const auto in = test::table_5_2_hostun();

@@ -21,8 +21,10 @@ const char* const kIgsModels[] = {"hvwe-igs", "hvwe-exact-igs", "ahe-igs", "vw3d
 // tau_y = -15 kPa, from its own initial state, with the given [delta_n, delta_x, delta_y].
 models::StateVector sheared_state(const models::Model& m, std::array<double, 3> delta) {
   auto s = m.initial_state({150.0, 0.6, 0.75, delta});
-  if (m.state_size() == 13) s(3) = 40.0, s(4) = -15.0;  // vw3d: T_12, T_13
-  else s(2) = 40.0, s(3) = -15.0;                        // reduced: T_x, T_y
+  if (m.state_size() == 13)
+    s(3) = 40.0, s(4) = -15.0;  // vw3d: T_12, T_13
+  else
+    s(2) = 40.0, s(3) = -15.0;  // reduced: T_x, T_y
   return s;
 }
 
@@ -47,8 +49,10 @@ std::array<double, 3> shear_delta(double rho, double gx, double gy) {
 
 }  // namespace
 
-TEST_CASE("eq. 5.45 limits: continued loading at rho = 1 is hypoplastic, a reversal is m_R L:D, "
-          "delta = 0 is m_R L:D", "[models][igs]") {
+TEST_CASE(
+    "eq. 5.45 limits: continued loading at rho = 1 is hypoplastic, a reversal is m_R L:D, "
+    "delta = 0 is m_R L:D",
+    "[models][igs]") {
   const models::InterfaceStrain d{0.0, 1e-4, -0.4e-4};  // pure shear, parallel to shear_delta
   for (const std::string name : kIgsModels) {
     INFO(name);
@@ -70,14 +74,16 @@ TEST_CASE("eq. 5.45 limits: continued loading at rho = 1 is hypoplastic, a rever
     for (const auto& dd : {d, models::InterfaceStrain{-2e-5, 0.3e-4, 1e-4}}) {
       m->rate(sheared_state(*m, {0.0, 0.0, 0.0}), dd, r);
       const models::StateVector odd =
-          0.5 * (base_rate(name, sheared_state(*m, {}), dd) - base_rate(name, sheared_state(*m, {}), scaled(dd, -1.0)));
+          0.5 * (base_rate(name, sheared_state(*m, {}), dd) -
+                 base_rate(name, sheared_state(*m, {}), scaled(dd, -1.0)));
       CHECK((r.head(n - 1) - kMR * odd.head(n - 1)).cwiseAbs().maxCoeff() <= 1e-12 * kMR * scale);
       CHECK(std::abs(r(n - 1) - odd(n - 1)) <= 1e-14);  // e_rate unchanged
     }
   }
 }
 
-TEST_CASE("M:D is continuous across delta^:D = 0 (both branches of eq. 5.45 meet)", "[models][igs]") {
+TEST_CASE("M:D is continuous across delta^:D = 0 (both branches of eq. 5.45 meet)",
+          "[models][igs]") {
   for (const std::string name : kIgsModels) {
     const auto m = test::make(name, test::table_5_3_toyoura());
     for (double rho : {1e-12, 0.3, 1.0, 1.1547}) {
@@ -111,16 +117,20 @@ TEST_CASE("igs models keep the equivalences of ERRATA 2 and 3 rate by rate", "[m
     const double s = a.head(4).cwiseAbs().maxCoeff();
     CHECK((a - b).head(4).cwiseAbs().maxCoeff() <= 1e-12 * s);
     CHECK((a - b).tail(4).cwiseAbs().maxCoeff() <= 1e-16);
-    // vw3d [11, 22, 33, 12, 13, 23, e, d11, d22, d33, d12, d13, d23] against hvwe [n, p, x, y, e, dn, dp, dx, dy]
-    CHECK(std::abs(a(0) - c(0)) + std::abs(a(1) - c(1)) + std::abs(a(1) - c(2)) + std::abs(a(2) - c(3)) +
-              std::abs(a(3) - c(4)) + std::abs(c(5)) <= 1e-12 * s);
+    // vw3d [11, 22, 33, 12, 13, 23, e, d11, d22, d33, d12, d13, d23] against hvwe [n, p, x, y, e,
+    // dn, dp, dx, dy]
+    CHECK(std::abs(a(0) - c(0)) + std::abs(a(1) - c(1)) + std::abs(a(1) - c(2)) +
+              std::abs(a(2) - c(3)) + std::abs(a(3) - c(4)) + std::abs(c(5)) <=
+          1e-12 * s);
     CHECK(std::abs(a(5) - c(7)) + std::abs(c(8)) + std::abs(c(9)) + std::abs(a(7) - c(10)) +
-              std::abs(a(8) - c(11)) + std::abs(c(12)) <= 1e-16);
+              std::abs(a(8) - c(11)) + std::abs(c(12)) <=
+          1e-16);
     CHECK(a(6) == 0.0);  // delta_p stays zero (eq. 5.48)
   }
 }
 
-TEST_CASE("ahe-igs keeps delta_p = 0 (eq. 5.48) although its D carries eps_n in plane", "[models][igs]") {
+TEST_CASE("ahe-igs keeps delta_p = 0 (eq. 5.48) although its D carries eps_n in plane",
+          "[models][igs]") {
   const auto m = test::make("ahe-igs", test::table_5_3_toyoura());
   auto s = sheared_state(*m, {0.0, 0.0, 0.0});
   s(1) = s(0);
@@ -130,12 +140,13 @@ TEST_CASE("ahe-igs keeps delta_p = 0 (eq. 5.48) although its D carries eps_n in 
   CHECK(r(5) == Approx(-1e-4));  // delta_n follows eps_n from delta = 0 (eq. 5.46, second branch)
 }
 
-TEST_CASE("delta evolves onto ||delta|| = R and stays there under monotonic shear", "[models][igs]") {
-  // Explicit integration of eq. 5.46 alone (the stress plays no part in it), from delta = 0 and from
-  // the seed's initial value, which lies outside (||delta|| = 2R/sqrt 3).
+TEST_CASE("delta evolves onto ||delta|| = R and stays there under monotonic shear",
+          "[models][igs]") {
+  // Explicit integration of eq. 5.46 alone (the stress plays no part in it), from delta = 0 and
+  // from the seed's initial value, which lies outside (||delta|| = 2R/sqrt 3).
   const auto m = test::make("hvwe-igs", test::table_5_3_toyoura());
-  for (const auto& start : {std::array<double, 3>{0.0, 0.0, 0.0},
-                            models::seed_initial_intergranular_strain(kR)}) {
+  for (const auto& start :
+       {std::array<double, 3>{0.0, 0.0, 0.0}, models::seed_initial_intergranular_strain(kR)}) {
     auto s = m->initial_state({100.0, 0.5, 0.75, start});
     const double rho0 = m->diagnostics(s).back().value;
     double rho_max = 0.0;
@@ -148,9 +159,11 @@ TEST_CASE("delta evolves onto ||delta|| = R and stays there under monotonic shea
     const double rho_end = m->diagnostics(s).back().value;
     INFO("rho0 = " << rho0 << ", rho_end = " << rho_end << ", rho_max = " << rho_max);
     CHECK(rho_end == Approx(1.0).epsilon(1e-3));
-    if (rho0 < 1.0) CHECK(rho_max <= 1.0 + 1e-3);  // explicit steps of R/100 overshoot little
-    else CHECK(rho_max <= rho0 + 1e-12);           // from outside it only decays
-    CHECK(s(7) > 0.0);                              // delta points along the shear
+    if (rho0 < 1.0)
+      CHECK(rho_max <= 1.0 + 1e-3);  // explicit steps of R/100 overshoot little
+    else
+      CHECK(rho_max <= rho0 + 1e-12);  // from outside it only decays
+    CHECK(s(7) > 0.0);                 // delta points along the shear
   }
 }
 
@@ -173,7 +186,8 @@ TEST_CASE("Newton converges on igs models, also at a reversal", "[models][igs][d
   }
 }
 
-TEST_CASE("the closed form of appendix C is refused for a rate that is not L:D + N||D||", "[models][igs][driver]") {
+TEST_CASE("the closed form of appendix C is refused for a rate that is not L:D + N||D||",
+          "[models][igs][driver]") {
   const auto m = test::make("hvwe-igs", test::table_5_3_toyoura());
   // delta with a normal part: the stiffness of a normal stretching depends on its sign
   const auto s0 = m->initial_state({100.0, 0.5, 0.7, std::array<double, 3>{-0.5e-4, 0.3e-4, 0.0}});
@@ -187,7 +201,8 @@ TEST_CASE("the closed form of appendix C is refused for a rate that is not L:D +
                     Catch::Contains("not of the form L:D + N||D||"));
 }
 
-TEST_CASE("intergranular strain parameters are validated with the key and the range", "[models][igs]") {
+TEST_CASE("intergranular strain parameters are validated with the key and the range",
+          "[models][igs]") {
   auto in = test::table_5_3_toyoura();
   in.tables["intergranular_strain"]["m_T"] = 6.0;  // above m_R = 5
   CHECK_THROWS_WITH(models::find_model("hvwe-igs").make(in), Catch::Contains("m_T <= m_R"));
@@ -196,10 +211,12 @@ TEST_CASE("intergranular strain parameters are validated with the key and the ra
   CHECK_THROWS_WITH(models::find_model("hvwe-igs").make(in),
                     Catch::Contains("key 'R' = 0 is out of range; allowed (0, 0.01]"));
   in.tables.erase("intergranular_strain");
-  CHECK_THROWS_WITH(models::find_model("vw3d-igs").make(in), Catch::Contains("no table [intergranular_strain]"));
+  CHECK_THROWS_WITH(models::find_model("vw3d-igs").make(in),
+                    Catch::Contains("no table [intergranular_strain]"));
   // a model without intergranular strain refuses an initial delta
-  CHECK_THROWS_WITH(test::make("hvwe", in)->initial_state({100.0, 0.5, 0.7, std::array<double, 3>{0, 0, 0}}),
-                    Catch::Contains("hvwe has no intergranular strain"));
+  CHECK_THROWS_WITH(
+      test::make("hvwe", in)->initial_state({100.0, 0.5, 0.7, std::array<double, 3>{0, 0, 0}}),
+      Catch::Contains("hvwe has no intergranular strain"));
 }
 
 // The seed's initial delta (delta_y = R/sqrt3) drives a tau_y under shear in x that then decays

@@ -1,13 +1,13 @@
 // Pile load transfer (src/pile): facts derived by hand, not from the code. A linear t-z pile (an
 // elastic Mohr-Coulomb interface that never yields) against the closed-form head stiffness of a
 // compressible pile on uniform springs with a base spring, with second-order mesh convergence; a
-// rigid-plastic shaft (psi = 0, no cohesion, no base) whose capacity is pi D tan(phi) K0 gamma' L^2 / 2;
-// the head load equal to shaft plus base at every step.
-#include <catch2/catch.hpp>
+// rigid-plastic shaft (psi = 0, no cohesion, no base) whose capacity is pi D tan(phi) K0 gamma' L^2
+// / 2; the head load equal to shaft plus base at every step.
+#include <fmt/core.h>
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
-#include <fmt/core.h>
 #include <fstream>
 
 #include "io/csv_table.hpp"
@@ -24,15 +24,18 @@ namespace {
 constexpr double kL = 10.0, kD = 0.5, kEA = 4.0e6, kGamma = 10.0, kK0 = 0.5;
 
 // A pile file for mc with the given Mohr-Coulomb set, written into `dir`.
-fs::path write_case(const fs::path& dir, const std::string& mc_table, double base_kN_per_mm, int elements,
-                    const std::string& loading) {
+fs::path write_case(const fs::path& dir, const std::string& mc_table, double base_kN_per_mm,
+                    int elements, const std::string& loading) {
   fs::create_directories(dir);
   std::ofstream(dir / "mc.toml") << "[mohr_coulomb]\n" << mc_table;
-  std::ofstream(dir / "pile.toml") << "[pile]\nlength_m = " << kL << "\ndiameter_m = " << kD << "\nEA_kN = " << kEA
-                                   << "\nelements = " << elements << "\n[soil]\nunit_weight_kN_m3 = " << kGamma
-                                   << "\nK0 = " << kK0 << "\nshear_modulus_kPa = 20000\n[base]\nstiffness_kN_per_mm = "
-                                   << base_kN_per_mm << "\n[interface]\nmodel = \"mc\"\nparameters = \"mc.toml\"\nd_s_mm = 5\n"
-                                   << "[loading]\n" << loading;
+  std::ofstream(dir / "pile.toml")
+      << "[pile]\nlength_m = " << kL << "\ndiameter_m = " << kD << "\nEA_kN = " << kEA
+      << "\nelements = " << elements << "\n[soil]\nunit_weight_kN_m3 = " << kGamma
+      << "\nK0 = " << kK0
+      << "\nshear_modulus_kPa = 20000\n[base]\nstiffness_kN_per_mm = " << base_kN_per_mm
+      << "\n[interface]\nmodel = \"mc\"\nparameters = \"mc.toml\"\nd_s_mm = 5\n"
+      << "[loading]\n"
+      << loading;
   return dir / "pile.toml";
 }
 
@@ -44,33 +47,50 @@ fs::path run(const fs::path& file, const fs::path& out) {
 
 }  // namespace
 
-TEST_CASE("pile: a linear t-z pile has the closed-form head stiffness, converging at second order", "[pile]") {
+TEST_CASE("pile: a linear t-z pile has the closed-form head stiffness, converging at second order",
+          "[pile]") {
   // shaft spring per unit area G/d_s (mc's elastic shear), never yielding (cohesion 1e9 kPa)
-  const double E = 3000.0, nu = 0.25, G = E / (2 * (1 + nu)), d_s = 0.005, kb = 50.0;  // kb in kN/mm
+  const double E = 3000.0, nu = 0.25, G = E / (2 * (1 + nu)), d_s = 0.005,
+               kb = 50.0;  // kb in kN/mm
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "pile" / "linear";
-  const auto file = write_case(dir, fmt::format("E_kPa = {}\nnu = {}\nphi_i_deg = 30\npsi_deg = 0\nc_kPa = 1e9\ntension_cutoff_kPa = 0\n", E, nu),
-                               kb, 20, "kind = \"settlement\"\nsettlement_mm = 10\nincrements = 2\n");
+  const auto file = write_case(
+      dir,
+      fmt::format(
+          "E_kPa = {}\nnu = {}\nphi_i_deg = 30\npsi_deg = 0\nc_kPa = 1e9\ntension_cutoff_kPa = 0\n",
+          E, nu),
+      kb, 20, "kind = \"settlement\"\nsettlement_mm = 10\nincrements = 2\n");
   const auto out = run(file, dir / "run");
-  // d2w/dz2 = mu^2 w, mu^2 = pi D (G/d_s) / EA; P/w_h = EA mu (Omega + tanh mu L)/(1 + Omega tanh mu L), Omega = k_b/(EA mu)
+  // d2w/dz2 = mu^2 w, mu^2 = pi D (G/d_s) / EA; P/w_h = EA mu (Omega + tanh mu L)/(1 + Omega tanh
+  // mu L), Omega = k_b/(EA mu)
   const double mu = std::sqrt(M_PI * kD * G / d_s / kEA), omega = kb * 1000.0 / (kEA * mu);
-  const double stiffness = kEA * mu * (omega + std::tanh(mu * kL)) / (1.0 + omega * std::tanh(mu * kL)) / 1000.0;  // kN/mm
+  const double stiffness = kEA * mu * (omega + std::tanh(mu * kL)) /
+                           (1.0 + omega * std::tanh(mu * kL)) / 1000.0;  // kN/mm
   const auto summary = io::read_json_file(out / "summary.json");
   const double P = summary["end"]["head_load_kN"].get<double>();
   CHECK(P / 10.0 == Approx(stiffness).epsilon(2e-3));
   // halving h divides the error by 4: the observed order of the three meshes (10, 20, 40 elements)
   CHECK(summary["mesh_convergence"]["observed_order"].get<double>() == Approx(2.0).epsilon(0.05));
-  CHECK(summary["mesh_convergence"]["extrapolated"].get<double>() / 10.0 == Approx(stiffness).epsilon(1e-5));
+  CHECK(summary["mesh_convergence"]["extrapolated"].get<double>() / 10.0 ==
+        Approx(stiffness).epsilon(1e-5));
 }
 
-TEST_CASE("pile: a rigid-plastic shaft carries pi D tan(phi) K0 gamma' L^2 / 2; head = shaft + base at every step", "[pile]") {
+TEST_CASE(
+    "pile: a rigid-plastic shaft carries pi D tan(phi) K0 gamma' L^2 / 2; head = shaft + base at "
+    "every step",
+    "[pile]") {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "pile" / "plastic";
-  const auto file = write_case(dir, "E_kPa = 3e6\nnu = 0.25\nphi_i_deg = 30\npsi_deg = 0\nc_kPa = 0\ntension_cutoff_kPa = 0\n", 0.0,
-                               10, "kind = \"settlement\"\nsettlement_mm = 50\nincrements = 10\n");
+  const auto file = write_case(
+      dir,
+      "E_kPa = 3e6\nnu = 0.25\nphi_i_deg = 30\npsi_deg = 0\nc_kPa = 0\ntension_cutoff_kPa = 0\n",
+      0.0, 10, "kind = \"settlement\"\nsettlement_mm = 50\nincrements = 10\n");
   const auto out = run(file, dir / "run");
-  const double capacity = M_PI * kD * std::tan(M_PI / 6) * kK0 * kGamma * kL * kL / 2.0;  // the midpoint rule is exact on z
+  const double capacity = M_PI * kD * std::tan(M_PI / 6) * kK0 * kGamma * kL * kL /
+                          2.0;  // the midpoint rule is exact on z
   const auto summary = io::read_json_file(out / "summary.json");
   CHECK(summary["end"]["head_load_kN"].get<double>() == Approx(capacity).epsilon(1e-9));
   const auto curve = io::read_csv_table(out / "load_settlement.csv");
-  const auto head = curve.values("head_load_kN"), shaft = curve.values("shaft_load_kN"), base = curve.values("base_load_kN");
-  for (std::size_t r = 0; r < head.size(); ++r) CHECK(head[r] == Approx(shaft[r] + base[r]).margin(1e-9 * capacity));
+  const auto head = curve.values("head_load_kN"), shaft = curve.values("shaft_load_kN"),
+             base = curve.values("base_load_kN");
+  for (std::size_t r = 0; r < head.size(); ++r)
+    CHECK(head[r] == Approx(shaft[r] + base[r]).margin(1e-9 * capacity));
 }

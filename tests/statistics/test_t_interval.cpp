@@ -18,11 +18,12 @@ TEST_CASE("two-sided 95 % t quantiles are the tables' values", "[statistics]") {
 
 TEST_CASE("a t-interval of a mean, and the values a half-width needs", "[statistics]") {
   CHECK_FALSE(statistics::t_half_width(1.0, 1).has_value());  // one run has no interval
-  CHECK(*statistics::t_half_width(0.008, 3) == Approx(4.303 * 0.008 / std::sqrt(3.0)).epsilon(1e-3));
+  CHECK(*statistics::t_half_width(0.008, 3) ==
+        Approx(4.303 * 0.008 / std::sqrt(3.0)).epsilon(1e-3));
   // t_{n-1} / sqrt(n) for n = 6, 7: 2.571 / 2.449 = 1.050, 2.447 / 2.646 = 0.925
   CHECK(statistics::values_needed(1.0, 1.0) == 7);
   CHECK(statistics::values_needed(1.0, 1.06) == 6);
-  CHECK(statistics::values_needed(1.0, 9.0) == 2);            // 12.706 / sqrt(2) = 8.98
+  CHECK(statistics::values_needed(1.0, 9.0) == 2);               // 12.706 / sqrt(2) = 8.98
   CHECK_FALSE(statistics::values_needed(0.0, 1.0).has_value());  // no scatter: nothing to resolve
   CHECK_FALSE(statistics::values_needed(1.0, 0.01, 100).has_value());  // beyond 100 values
 }

@@ -10,8 +10,10 @@
 using namespace iwb;
 namespace fs = std::filesystem;
 
-TEST_CASE("chapter8 study: every case completes, the page holds every figure, the ends obey the critical state lines",
-          "[studies]") {
+TEST_CASE(
+    "chapter8 study: every case completes, the page holds every figure, the ends obey the critical "
+    "state lines",
+    "[studies]") {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "chapter8-study";
   const auto study = studies::chapter8_study();
   const auto json = test::run_study_checked(study, dir);
@@ -26,7 +28,9 @@ TEST_CASE("chapter8 study: every case completes, the page holds every figure, th
   for (const std::string clay : {"london", "kaolin"})
     for (const std::string m : {"hce", "barodesy-clay", "barodesy-clay3d"}) {
       INFO(clay << " " << m);
-      CHECK(test::last_history_value(dir / (clay + "_" + m), "mean_stress_kPa") == Approx(50.0).epsilon(2e-3));
+      CHECK(test::last_history_value(dir / (clay + "_" + m), "mean_stress_kPa") ==
+            Approx(50.0).epsilon(2e-3));
     }
-  CHECK(test::last_history_value(dir / "london_mcc", "mean_stress_kPa") == Approx(100.0 / std::pow(2.0, 0.099 / 0.161)).epsilon(1e-3));
+  CHECK(test::last_history_value(dir / "london_mcc", "mean_stress_kPa") ==
+        Approx(100.0 / std::pow(2.0, 0.099 / 0.161)).epsilon(1e-3));
 }

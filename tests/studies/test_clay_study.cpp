@@ -1,5 +1,5 @@
-// iwb run --study clay (src/studies/): every case runs, the page and its figures are written, and the
-// study's numbers obey facts derived from the models' equations, not from the study's code.
+// iwb run --study clay (src/studies/): every case runs, the page and its figures are written, and
+// the study's numbers obey facts derived from the models' equations, not from the study's code.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -22,8 +22,10 @@ TEST_CASE("clay study: the tangent after the first reversal of a cyclic curve", 
   CHECK(studies::initial_tangent(c) == Approx(2.0));
 }
 
-TEST_CASE("clay study: every case completes, the page holds every figure, the numbers obey the models' equations",
-          "[studies]") {
+TEST_CASE(
+    "clay study: every case completes, the page holds every figure, the numbers obey the models' "
+    "equations",
+    "[studies]") {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "clay-study";
   fs::remove_all(dir);
   REQUIRE(studies::run_study(studies::clay_study(), {dir, false, "test", nullptr}) == 0);
@@ -39,7 +41,8 @@ TEST_CASE("clay study: every case completes, the page holds every figure, the nu
   for (auto p = html.find("<svg"); p != std::string::npos; p = html.find("<svg", p + 1)) ++svgs;
   CHECK(svgs == 11);
 
-  // ERRATA 3 and 13: in simple shear the reduced forms are the 3D forms (the tests of hcc and hce: 1e-10)
+  // ERRATA 3 and 13: in simple shear the reduced forms are the 3D forms (the tests of hcc and hce:
+  // 1e-10)
   const auto& equal = study["claims"][0];
   CHECK(equal["section"] == "6.4.1");
   for (const std::string m : {"hcc", "hce"}) {
@@ -55,12 +58,14 @@ TEST_CASE("clay study: every case completes, the page holds every figure, the nu
       INFO(m << " " << bc);
       const auto& a = end[bc + "100_" + m]["end"];
       const auto& b = end[bc + "300_" + m]["end"];
-      CHECK(a["eps_n"].get<double>() == Approx(b["eps_n"].get<double>()).epsilon(1e-6).margin(1e-12));
+      CHECK(a["eps_n"].get<double>() ==
+            Approx(b["eps_n"].get<double>()).epsilon(1e-6).margin(1e-12));
       CHECK(a["tau_kPa"].get<double>() / a["sigma_n_kPa"].get<double>() ==
             Approx(b["tau_kPa"].get<double>() / b["sigma_n_kPa"].get<double>()).epsilon(1e-6));
     }
   // A second run into the same directory is refused without --force, before anything is written
   const auto before = fs::last_write_time(dir / "parameters" / "table_6_1_evaluation.toml");
-  CHECK_THROWS_WITH(studies::run_study(studies::clay_study(), {dir, false, "test", nullptr}), Catch::Contains("--force"));
+  CHECK_THROWS_WITH(studies::run_study(studies::clay_study(), {dir, false, "test", nullptr}),
+                    Catch::Contains("--force"));
   CHECK(fs::last_write_time(dir / "parameters" / "table_6_1_evaluation.toml") == before);
 }

@@ -1,9 +1,10 @@
 // iwb run --study thermo (src/studies/): every case runs, the page holds its figures, and the CV
 // ends obey the critical state line of Masin's law at each temperature, derived from its equations.
+#include <fmt/core.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
-#include <fmt/core.h>
 
 #include "studies/thermo_study.hpp"
 #include "support/study_run.hpp"
@@ -11,15 +12,18 @@
 using namespace iwb;
 namespace fs = std::filesystem;
 
-TEST_CASE("thermo study: every case completes, the page holds every figure, CV ends on the heated critical state line",
-          "[studies]") {
+TEST_CASE(
+    "thermo study: every case completes, the page holds every figure, CV ends on the heated "
+    "critical state line",
+    "[studies]") {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "thermo-study";
   const auto study = studies::thermo_study();
   const auto json = test::run_study_checked(study, dir);
   REQUIRE(json["claims"].size() == 8);
   CHECK(json["claims"][0]["holds"] == true);  // reduced = 3D
   // Under CV e stays 0.44; Masin's critical state is f_d = 1 on the Matsuoka-Nakai cone, i.e.
-  // p = p_e / 2 with p_e = exp[(N(T) - ln(1+e)) / lambda*], N(T) = 0.88 - 0.01 ln(T / 298.15) (Soil 1)
+  // p = p_e / 2 with p_e = exp[(N(T) - ln(1+e)) / lambda*], N(T) = 0.88 - 0.01 ln(T / 298.15) (Soil
+  // 1)
   for (double T_C : {25.0, 40.0, 60.0}) {
     const double N = 0.88 - 0.01 * std::log((T_C + 273.15) / 298.15);
     const double p_cs = 0.5 * std::exp((N - std::log(1.44)) / 0.09);

@@ -21,7 +21,9 @@ inline models::ClayParameters clay_parameters(const models::ModelInputs& in) {
 }
 
 // e on Table 6.1's isotropic normal compression line at p: ln(1+e) = N - lambda* ln p (p in kPa).
-inline double e_on_table_6_1_ncl(double p) { return std::exp(1.0 - 0.1 * std::log(p)) - 1.0; }
+inline double e_on_table_6_1_ncl(double p) {
+  return std::exp(1.0 - 0.1 * std::log(p)) - 1.0;
+}
 
 // d ln(1+e) / d ln p of an isotropic stretching D = rate * 1 from an isotropic state on the NCL,
 // with the model's void-ratio rate (1 + e) tr D (ERRATA 6).

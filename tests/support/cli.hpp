@@ -20,10 +20,11 @@ inline CliRun run_iwb(const std::vector<std::string>& args) {
   std::vector<std::string> argv = {IWB_BINARY};
   argv.insert(argv.end(), args.begin(), args.end());
   std::string output;
-  const auto r = run_process(argv, std::filesystem::current_path(), [&output](const std::string& line) {
-    output += line + "\n";
-    return true;
-  });
+  const auto r =
+      run_process(argv, std::filesystem::current_path(), [&output](const std::string& line) {
+        output += line + "\n";
+        return true;
+      });
   return {r.exit_code, output};
 }
 
@@ -32,7 +33,8 @@ inline std::map<std::string, std::string> files_under(const std::filesystem::pat
   std::map<std::string, std::string> files;
   if (!std::filesystem::exists(dir)) return files;
   for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
-    if (e.is_regular_file()) files[std::filesystem::relative(e.path(), dir).string()] = io::read_file(e.path());
+    if (e.is_regular_file())
+      files[std::filesystem::relative(e.path(), dir).string()] = io::read_file(e.path());
   return files;
 }
 

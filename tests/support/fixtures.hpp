@@ -16,20 +16,26 @@ inline models::ModelInputs shipped(const std::string& file) {
   return {io::load_parameter_file(path), path, {}};
 }
 
-inline models::ModelInputs table_5_1(double kappa_r = 1.0,
-                                     models::RoughnessScheme scheme = models::RoughnessScheme::kGutjahr) {
+inline models::ModelInputs table_5_1(
+    double kappa_r = 1.0, models::RoughnessScheme scheme = models::RoughnessScheme::kGutjahr) {
   auto in = shipped("table_5_1_evaluation.toml");
   in.roughness = {scheme, kappa_r};
   return in;
 }
 
-inline models::ModelInputs table_5_2_hostun() { return shipped("table_5_2_hostun.toml"); }
+inline models::ModelInputs table_5_2_hostun() {
+  return shipped("table_5_2_hostun.toml");
+}
 
 // Table 5.2 differs from 5.3 in alpha: 0.25, not 0.18.
-inline models::ModelInputs table_5_2_toyoura() { return shipped("table_5_2_toyoura.toml"); }
+inline models::ModelInputs table_5_2_toyoura() {
+  return shipped("table_5_2_toyoura.toml");
+}
 
 // Seed Table 5.3, Toyoura sand (Arnold 2008), both column groups (seed 5.7.5).
-inline models::ModelInputs table_5_3_toyoura() { return shipped("table_5_3_toyoura.toml"); }
+inline models::ModelInputs table_5_3_toyoura() {
+  return shipped("table_5_3_toyoura.toml");
+}
 
 // Table 5.3's intergranular-strain columns for Toyoura sand.
 inline models::ParameterValues table_5_3_toyoura_igs() {
@@ -38,7 +44,9 @@ inline models::ParameterValues table_5_3_toyoura_igs() {
 
 // Seed Table 5.3, homo-gravel (Zhang and Zhang 2006), both column groups: h_s = 20 MPa and
 // m_R = 7 make its reversals the stiffest of the seed's sets.
-inline models::ModelInputs table_5_3_homo_gravel() { return shipped("table_5_3_homo_gravel.toml"); }
+inline models::ModelInputs table_5_3_homo_gravel() {
+  return shipped("table_5_3_homo_gravel.toml");
+}
 
 // The sand family: Bauer's limiting void ratios among its diagnostics. The tests written on Table
 // 5.1 run these; the other families bring their own sets (their declared example).
@@ -50,7 +58,8 @@ inline bool is_sand(const models::ModelSpec& spec) {
 
 // Whether the model declares an initial intergranular strain (the -igs models).
 inline bool has_intergranular_strain(const std::string& model) {
-  return models::find_initial_input(models::find_model(model).declaration.initial, "delta") != nullptr;
+  return models::find_initial_input(models::find_model(model).declaration.initial, "delta") !=
+         nullptr;
 }
 
 inline const double kPhiC51 = 28.0 * M_PI / 180.0;
@@ -71,9 +80,14 @@ struct Run {
   std::unique_ptr<models::Model> model;
   driver::ElementTestResult result;
 
-  models::InterfaceStress stress(std::size_t row) const { return model->stress(result.rows.at(row).state); }
+  models::InterfaceStress stress(std::size_t row) const {
+    return model->stress(result.rows.at(row).state);
+  }
   models::InterfaceStress last() const { return stress(result.rows.size() - 1); }
-  double ratio(std::size_t row) const { const auto s = stress(row); return s.tau_x / s.sigma_n; }
+  double ratio(std::size_t row) const {
+    const auto s = stress(row);
+    return s.tau_x / s.sigma_n;
+  }
   double last_ratio() const { return ratio(result.rows.size() - 1); }
   double peak_ratio() const {
     double p = 0.0;
@@ -114,8 +128,9 @@ inline Run shear(const ShearSpec& s) {
 
 // Monotonic shear of `model` on a shipped set from 100 kPa, integrated at rtol 1e-10 (far below the
 // 1e-6 the tests compare an independent implementation's numbers at), required to complete.
-inline Run tight_shear(const std::string& model, const std::string& set, driver::BoundaryCondition bc, double gamma,
-                       int increments, double e0 = 0.8) {
+inline Run tight_shear(const std::string& model, const std::string& set,
+                       driver::BoundaryCondition bc, double gamma, int increments,
+                       double e0 = 0.8) {
   ShearSpec s;
   s.model = model;
   s.inputs = shipped(set);

@@ -8,8 +8,8 @@
 
 namespace iwb::test {
 
-inline void check_reduced_equals_3d(ShearSpec s, const std::string& reduced_model, const std::string& full_model,
-                                    double rel = 1e-10) {
+inline void check_reduced_equals_3d(ShearSpec s, const std::string& reduced_model,
+                                    const std::string& full_model, double rel = 1e-10) {
   s.model = reduced_model;
   const auto reduced = shear(s);
   s.model = full_model;

@@ -16,7 +16,8 @@ inline std::string replaced(std::string text, const std::string& from, const std
 }
 
 // The same in a file, rewritten in place (atomically).
-inline void edit_file(const std::filesystem::path& file, const std::string& from, const std::string& to) {
+inline void edit_file(const std::filesystem::path& file, const std::string& from,
+                      const std::string& to) {
   io::write_atomically(file, replaced(io::read_file(file), from, to));
 }
 

@@ -7,8 +7,9 @@
 // run, by the runs that change what it reads (glued wall, servo failure, resume) and by
 // tests/dem/test_consolidation_cache.cpp, which also shows a reused specimen gives the bytes of a
 // run that consolidated itself.
-#include <filesystem>
 #include <fmt/core.h>
+
+#include <filesystem>
 #include <string>
 
 #include "support/replaced.hpp"
@@ -18,7 +19,8 @@ namespace iwb::test {
 // A smoke scene file's text sheared over `mm` instead of its 2 mm: each engine test shears only
 // what its check needs (the margin measured is in the test's comment).
 inline std::string smoke_sheared_over(const std::filesystem::path& file, double mm) {
-  return replaced(io::read_file(file), "displacement_mm = 2.0", fmt::format("displacement_mm = {:.1f}", mm));
+  return replaced(io::read_file(file), "displacement_mm = 2.0",
+                  fmt::format("displacement_mm = {:.1f}", mm));
 }
 
 inline std::filesystem::path smoke_specimens() {

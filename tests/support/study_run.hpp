@@ -13,7 +13,8 @@
 namespace iwb::test {
 
 // Runs `study` into `dir` (emptied first) and checks its cases and page; returns study.json.
-inline nlohmann::json run_study_checked(const studies::StudyDefinition& study, const std::filesystem::path& dir) {
+inline nlohmann::json run_study_checked(const studies::StudyDefinition& study,
+                                        const std::filesystem::path& dir) {
   std::filesystem::remove_all(dir);
   REQUIRE(studies::run_study(study, {dir, false, "test", nullptr}) == 0);
   for (const auto& c : study.cases) {

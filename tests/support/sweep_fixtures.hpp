@@ -16,13 +16,17 @@ inline std::filesystem::path campaign_dir(const std::string& name) {
 }
 
 // A sweep file in `dir` on the smoke scene, with `body` after the scene line.
-inline std::filesystem::path write_sweep(const std::filesystem::path& dir, const std::string& body) {
+inline std::filesystem::path write_sweep(const std::filesystem::path& dir,
+                                         const std::string& body) {
   const auto file = dir / "sweep.toml";
-  io::write_atomically(file, "scene = \"" + std::filesystem::absolute("data/scenes/smoke.toml").string() + "\"\n" + body);
+  io::write_atomically(
+      file,
+      "scene = \"" + std::filesystem::absolute("data/scenes/smoke.toml").string() + "\"\n" + body);
   return file;
 }
 
-inline campaign::SweepOptions sweep_options(const std::filesystem::path& sweep, const std::filesystem::path& out) {
+inline campaign::SweepOptions sweep_options(const std::filesystem::path& sweep,
+                                            const std::filesystem::path& out) {
   campaign::SweepOptions opt;
   opt.sweep_file = sweep;
   opt.out = out;

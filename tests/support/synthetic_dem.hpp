@@ -68,7 +68,8 @@ inline std::filesystem::path write_synthetic_dem(const SyntheticDem& spec) {
     const double dtau = i == 0 ? 0.0 : spec.tau_noise_kPa * noise(random);
     const double dun = i == 0 ? 0.0 : spec.u_n_noise_mm * noise(random);
     ts += fmt::format("{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},4\n", 0.01 * double(i),
-                      r.gamma_x * spec.d_s_mm, r.eps_n * spec.d_s_mm + dun, st.sigma_n, st.tau_x + dtau, e, e);
+                      r.gamma_x * spec.d_s_mm, r.eps_n * spec.d_s_mm + dun, st.sigma_n,
+                      st.tau_x + dtau, e, e);
   }
   io::write_atomically(dir / "timeseries.csv", ts);
   io::write_atomically(dir / "profiles.csv",

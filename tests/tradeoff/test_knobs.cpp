@@ -65,8 +65,10 @@ TEST_CASE(
   CHECK(small.particle_count == base.particle_count / 2);
 }
 
-TEST_CASE("tradeoff knobs: the plate's clamp scales with the height, so a halved truth keeps its free share",
-          "[tradeoff]") {
+TEST_CASE(
+    "tradeoff knobs: the plate's clamp scales with the height, so a halved truth keeps its free "
+    "share",
+    "[tradeoff]") {
   const std::string text = io::read_file("data/scenes/truth.toml");
   const auto base = dem::parse_scene(text, "truth.toml");
   REQUIRE(base.plate_clamp_m > 0.0);
@@ -98,7 +100,9 @@ TEST_CASE(
   const auto refined = dem::parse_scene(v[1].job.scene_text, "r.toml");
   // the steps at full speed scale with 1 / (v dt): four times as many; the start-up ramp adds
   // T / 2, and T follows from the specimen (its shear-wave speed), not from v: twice the steps
-  const auto ramp_steps = [](const dem::Scene& s) { return 0.5 * s.shear.ramp_s / dem::derive(s).dt; };
+  const auto ramp_steps = [](const dem::Scene& s) {
+    return 0.5 * s.shear.ramp_s / dem::derive(s).dt;
+  };
   CHECK(double(dem::derive(refined).shear_steps) - ramp_steps(refined) ==
         Approx(4.0 * (double(dem::derive(base).shear_steps) - ramp_steps(base))).epsilon(1e-3));
   CHECK(ramp_steps(refined) == Approx(2.0 * ramp_steps(base)));

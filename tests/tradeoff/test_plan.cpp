@@ -5,8 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include "io/run_directory.hpp"
-#include "tradeoff/plan.hpp"
 #include "support/mohr_coulomb_reference.hpp"
+#include "tradeoff/plan.hpp"
 #include "tradeoff/tradeoff.hpp"
 #include "tradeoff/tradeoff_output.hpp"
 
@@ -81,12 +81,14 @@ TEST_CASE("tradeoff analysis against the base: the mean of the seeds is the refe
   CHECK(base["meets"]["0.05"]["residual_friction"].get<bool>());
   CHECK_FALSE(base["meets"]["0.01"]["residual_friction"].get<bool>());
   for (const auto& s : t["settings"])  // dt x2: 0.60 against the seeds' 0.51
-    if (s["name"] == "dtx2") CHECK(s["error"]["residual_friction"].get<double>() == Approx(0.09 / 0.51));
+    if (s["name"] == "dtx2")
+      CHECK(s["error"]["residual_friction"].get<double>() == Approx(0.09 / 0.51));
   // The same rows against the refined reference have none: it did not run.
   CHECK(tradeoff::analyse(r)["reference"].is_null());
 }
 
-TEST_CASE("tradeoff against the base runs the seeds and each knob's coarsening only", "[tradeoff]") {
+TEST_CASE("tradeoff against the base runs the seeds and each knob's coarsening only",
+          "[tradeoff]") {
   tradeoff::TradeoffOptions opt;
   opt.scene_file = "data/scenes/truth.toml";
   opt.reference = tradeoff::Reference::kBase;
@@ -94,8 +96,8 @@ TEST_CASE("tradeoff against the base runs the seeds and each knob's coarsening o
   for (const auto& v : tradeoff::expand_variants(opt)) names.push_back(v.job.name);
   // refining: box x2, kappa x2, dt x0.5, I x0.5 (knobs.cpp); so box x0.5, kappa x0.5, dt x2, I x2
   std::sort(names.begin(), names.end());
-  CHECK(names == std::vector<std::string>{"Ix2", "base_s1", "base_s2", "base_s3", "boxx0.5", "coarsened",
-                                          "dtx2", "kappax0.5"});
+  CHECK(names == std::vector<std::string>{"Ix2", "base_s1", "base_s2", "base_s3", "boxx0.5",
+                                          "coarsened", "dtx2", "kappax0.5"});
 }
 
 TEST_CASE("plan: the cheapest DEM setting whose error plus noise meets every stated tolerance",
@@ -133,12 +135,16 @@ TEST_CASE("plan: the simplest model that meets the tolerances, and why the simpl
       tradeoff::choose_model(models, {{"residual_friction", 0.05}, {"peak_friction", 0.05}}, noise);
   CHECK(both["chosen"]["name"] == "hvwe");  // ah: 4 % + 2 % noise > 5 % in the peak
   CHECK(both["candidates"][1]["fails"][0]["qoi"] == "peak_friction");
-  CHECK(tradeoff::model_ladder(false) ==
-        std::vector<std::string>{"mc", "hyperbolic", "hp1d", "ah", "ahe", "lashkari", "mortara", "hvwe"});
-  CHECK(tradeoff::model_ladder(true).back() == "hvwe-igs");  // intergranular strain for reversing paths only
+  CHECK(tradeoff::model_ladder(false) == std::vector<std::string>{"mc", "hyperbolic", "hp1d", "ah",
+                                                                  "ahe", "lashkari", "mortara",
+                                                                  "hvwe"});
+  CHECK(tradeoff::model_ladder(true).back() ==
+        "hvwe-igs");  // intergranular strain for reversing paths only
 }
 
-TEST_CASE("plan: a candidate's global uncertainty; the model that cannot dilate fails the dilation rate", "[tradeoff]") {
+TEST_CASE(
+    "plan: a candidate's global uncertainty; the model that cannot dilate fails the dilation rate",
+    "[tradeoff]") {
   // a reference made by Mohr-Coulomb (phi_i 30, psi 8): Mohr-Coulomb calibrated to it misses
   // nothing and its parameters, pinned down by the fit, spread it little; Clough & Duncan has no
   // dilatancy and misses the rate by 100 %
@@ -147,15 +153,19 @@ TEST_CASE("plan: a candidate's global uncertainty; the model that cannot dilate 
   assessment::LeagueOptions o;
   o.spread = assessment::ParameterSpread::kFitSigmas;
   o.uncertainty_samples = 50;
-  const auto mc = tradeoff::evaluate_model(ref, "mc", test::shipped("table_4_3_mohr_coulomb.toml"), o);
-  const auto hy = tradeoff::evaluate_model(ref, "hyperbolic", test::shipped("table_4_4_hyperbolic.toml"), o);
+  const auto mc =
+      tradeoff::evaluate_model(ref, "mc", test::shipped("table_4_3_mohr_coulomb.toml"), o);
+  const auto hy =
+      tradeoff::evaluate_model(ref, "hyperbolic", test::shipped("table_4_4_hyperbolic.toml"), o);
   INFO(mc.note << "\n" << hy.note);
   REQUIRE(mc.error.at("residual_friction"));
   CHECK(*mc.error.at("residual_friction") < 0.01);
   CHECK(*mc.error.at("dilation_rate") < 0.01);
   CHECK(*hy.error.at("dilation_rate") == Approx(1.0).margin(1e-6));
-  const json noise = {{"dilation_rate", {{"relative", 0.0}}}, {"residual_friction", {{"relative", 0.0}}}};
-  const auto choice = tradeoff::choose_model({hy, mc}, {{"dilation_rate", 0.2}, {"residual_friction", 0.05}}, noise);
+  const json noise = {{"dilation_rate", {{"relative", 0.0}}},
+                      {"residual_friction", {{"relative", 0.0}}}};
+  const auto choice = tradeoff::choose_model(
+      {hy, mc}, {{"dilation_rate", 0.2}, {"residual_friction", 0.05}}, noise);
   CHECK(choice["chosen"]["name"] == "mc");
 }
 
@@ -167,7 +177,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A committed tradeoff's tradeoff.json alone, in `dir` (one per test case: ctest -j2 runs them at once).
+// A committed tradeoff's tradeoff.json alone, in `dir` (one per test case: ctest -j2 runs them at
+// once).
 fs::path tables_only(const fs::path& committed, const fs::path& dir) {
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -187,7 +198,8 @@ tradeoff::PlanOptions plan_on_copy(const std::string& name, const std::string& f
   io::write_atomically(dir / name, text);
   tradeoff::PlanOptions opt;
   opt.scene_file = dir / name;
-  opt.tradeoff_dir = tradeoff_dir.empty() ? tables_only("data/tradeoff/default", dir / "tradeoff") : tradeoff_dir;
+  opt.tradeoff_dir =
+      tradeoff_dir.empty() ? tables_only("data/tradeoff/default", dir / "tradeoff") : tradeoff_dir;
   opt.params = io::read_parameter_set("data/params/dem_default_grains.toml");
   opt.out = dir / "plan";
   return opt;
@@ -195,23 +207,29 @@ tradeoff::PlanOptions plan_on_copy(const std::string& name, const std::string& f
 
 }  // namespace
 
-TEST_CASE("plan: a byte-identical copy of the scene under another name is the tradeoff's scene", "[tradeoff]") {
+TEST_CASE("plan: a byte-identical copy of the scene under another name is the tradeoff's scene",
+          "[tradeoff]") {
   const auto opt = plan_on_copy("my_copy.toml");
   REQUIRE_THROWS_WITH(tradeoff::run_plan(opt),
-                      Catch::Contains("run directories runs/refined, runs/base_s1") && !Catch::Contains("not the scene"));
+                      Catch::Contains("run directories runs/refined, runs/base_s1") &&
+                          !Catch::Contains("not the scene"));
   CHECK_FALSE(fs::exists(opt.out));
 }
 
-TEST_CASE("plan: a copy with another value that reaches the engine is refused, naming the key", "[tradeoff]") {
+TEST_CASE("plan: a copy with another value that reaches the engine is refused, naming the key",
+          "[tradeoff]") {
   const auto opt = plan_on_copy("default.toml", "friction = 0.5\n", "friction = 0.6\n");
-  REQUIRE_THROWS_WITH(tradeoff::run_plan(opt), Catch::Contains("key 'particles.friction' = 0.6 here, = 0.5 there"));
+  REQUIRE_THROWS_WITH(tradeoff::run_plan(opt),
+                      Catch::Contains("key 'particles.friction' = 0.6 here, = 0.5 there"));
   CHECK_FALSE(fs::exists(opt.out));
   // other requirements and description are not the DEM's business: the copy is accepted
-  const auto reworded = plan_on_copy("default.toml", "residual_friction = 0.05", "residual_friction = 0.1");
+  const auto reworded =
+      plan_on_copy("default.toml", "residual_friction = 0.05", "residual_friction = 0.1");
   REQUIRE_THROWS_WITH(tradeoff::run_plan(reworded), Catch::Contains("run directories"));
 }
 
-TEST_CASE("plan: a tradeoff.json recording only the scene's sha256 still accepts a renamed copy", "[tradeoff]") {
+TEST_CASE("plan: a tradeoff.json recording only the scene's sha256 still accepts a renamed copy",
+          "[tradeoff]") {
   const fs::path old = fs::path(IWB_TEST_RUNS_DIR) / "plan-old-tradeoff";
   fs::create_directories(old);
   auto t = nlohmann::json::parse(io::read_file("data/tradeoff/default/tradeoff.json"));
@@ -223,11 +241,12 @@ TEST_CASE("plan: a tradeoff.json recording only the scene's sha256 still accepts
                       Catch::Contains("its DEM settings differ"));
 }
 
-TEST_CASE("tradeoff stopped before any run completed: its tables say so and are written", "[tradeoff]") {
+TEST_CASE("tradeoff stopped before any run completed: its tables say so and are written",
+          "[tradeoff]") {
   json r = json::array();
   for (auto x : rows()) {
-    x = {{"name", x["name"]}, {"kind", x["kind"]}, {"knob", x["knob"]}, {"factor", x["factor"]},
-         {"seed", 1}, {"settings", ""}, {"status", "not run"}};
+    x = {{"name", x["name"]}, {"kind", x["kind"]}, {"knob", x["knob"]},  {"factor", x["factor"]},
+         {"seed", 1},         {"settings", ""},    {"status", "not run"}};
     r.push_back(x);
   }
   for (const auto mode : {tradeoff::Reference::kBase, tradeoff::Reference::kRefined}) {
@@ -244,15 +263,20 @@ TEST_CASE("tradeoff stopped before any run completed: its tables say so and are 
 
 // A tradeoff measured against its own base (`--reference base`, data/tradeoff/truth) has no run
 // called "base": its reference is the mean of the base seeds, and those are the runs plan needs.
-TEST_CASE("plan: a base-reference tradeoff asks for its base seeds' run directories, not for a run named base",
-          "[tradeoff]") {
+TEST_CASE(
+    "plan: a base-reference tradeoff asks for its base seeds' run directories, not for a run named "
+    "base",
+    "[tradeoff]") {
   tradeoff::PlanOptions opt;
   opt.scene_file = "data/tradeoff/truth/truth_requirements.toml";
-  opt.tradeoff_dir = tables_only("data/tradeoff/truth", fs::path(IWB_TEST_RUNS_DIR) / "plan-truth-tables-only");
+  opt.tradeoff_dir =
+      tables_only("data/tradeoff/truth", fs::path(IWB_TEST_RUNS_DIR) / "plan-truth-tables-only");
   opt.params = io::read_parameter_set("data/params/truth_grains_epsd2.toml");
   opt.out = fs::path(IWB_TEST_RUNS_DIR) / "plan-truth-base-reference";
   fs::remove_all(opt.out);
-  REQUIRE_THROWS_WITH(tradeoff::run_plan(opt), Catch::Contains("run directories runs/base_s1, runs/base_s2, runs/base_s3 are missing"));
+  REQUIRE_THROWS_WITH(
+      tradeoff::run_plan(opt),
+      Catch::Contains("run directories runs/base_s1, runs/base_s2, runs/base_s3 are missing"));
   CHECK_FALSE(fs::exists(opt.out));
 }
 

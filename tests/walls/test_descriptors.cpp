@@ -23,7 +23,9 @@ double share_at(const RoughnessDescriptors& r, double wavelength) {
 }
 }  // namespace
 
-TEST_CASE("sawtooth: R_a = h/4, R_q = h/sqrt 12, slope 2h/p, R_n and its window mean, odd harmonics", "[walls]") {
+TEST_CASE(
+    "sawtooth: R_a = h/4, R_q = h/sqrt 12, slope 2h/p, R_n and its window mean, odd harmonics",
+    "[walls]") {
   const double h = 0.5 * kD50, p = 2.0 * kD50;
   const RoughnessProfile saw{ProfileKind::kSawtooth, p, h};
   const auto r = describe_roughness(saw, 24 * kD50, 4 * kD50, kD50);
@@ -43,8 +45,10 @@ TEST_CASE("sawtooth: R_a = h/4, R_q = h/sqrt 12, slope 2h/p, R_n and its window 
   CHECK_FALSE(r.hurst.has_value());
 }
 
-TEST_CASE("sinusoid: R_a = h/pi, R_q = h/(2 sqrt 2), slope 2h/p, R_n = h sin(pi d50/p)/d50, one wavelength",
-          "[walls]") {
+TEST_CASE(
+    "sinusoid: R_a = h/pi, R_q = h/(2 sqrt 2), slope 2h/p, R_n = h sin(pi d50/p)/d50, one "
+    "wavelength",
+    "[walls]") {
   const double h = 0.4 * kD50, p = 4.0 * kD50;
   const RoughnessProfile sine{ProfileKind::kSinusoid, p, h};
   const auto r = describe_roughness(sine, 24 * kD50, 4 * kD50, kD50);
@@ -63,20 +67,24 @@ TEST_CASE("a flat wall has no roughness", "[walls]") {
   CHECK(r.spectrum.empty());
 }
 
-TEST_CASE("a random self-affine surface: its RMS as asked, periodic, and its Hurst exponent back from the spectrum",
-          "[walls]") {
+TEST_CASE(
+    "a random self-affine surface: its RMS as asked, periodic, and its Hurst exponent back from "
+    "the spectrum",
+    "[walls]") {
   const double length = 128 * kD50, width = 32 * kD50;
   for (double H : {0.5, 0.8}) {
     INFO("H = " << H);
     // roll-off at wavelength 2 pi xi = L/2: self-affine from there down to the grid
     const RandomSurfaceSpec spec{0.2 * kD50, length / (4 * M_PI), H, 7};
-    const auto map = std::make_shared<const HeightMap>(random_surface(spec, length, width, 0.25 * kD50));
+    const auto map =
+        std::make_shared<const HeightMap>(random_surface(spec, length, width, 0.25 * kD50));
     double square = 0.0, mean = map->mean();
     for (int j = 0; j < map->ny(); ++j)
       for (int i = 0; i < map->nx(); ++i) square += std::pow(map->node(i, j) - mean, 2);
     CHECK(std::sqrt(square / (map->nx() * map->ny())) == Approx(0.2 * kD50).epsilon(1e-9));
     CHECK(map->min() == Approx(0.0).margin(1e-15));
-    CHECK(map->at(0.3 * kD50, 0.1 * kD50) == Approx(map->at(0.3 * kD50 + length, 0.1 * kD50 - width)).epsilon(1e-12));
+    CHECK(map->at(0.3 * kD50, 0.1 * kD50) ==
+          Approx(map->at(0.3 * kD50 + length, 0.1 * kD50 - width)).epsilon(1e-12));
     const RoughnessProfile wall{ProfileKind::kRandom, 0.0, map->max(), map};
     const auto r = describe_roughness(wall, length, width, kD50);
     REQUIRE(r.hurst.has_value());

@@ -17,7 +17,8 @@ void add_all_commands(CLI::App& app, CommandList& commands) {
   add_element_command(app, commands);
   add_models_command(app, commands);
   add_run_command(app, commands);
-  auto& dem = add_group(app, "dem", "DEM interface-shear scenes (scene schema: data/scenes/README.md).");
+  auto& dem =
+      add_group(app, "dem", "DEM interface-shear scenes (scene schema: data/scenes/README.md).");
   add_dem_run_command(dem, commands);
   add_dem_soiltest_command(dem, commands);
   add_dem_crosscheck_command(dem, commands);
@@ -36,7 +37,8 @@ void add_all_commands(CLI::App& app, CommandList& commands) {
   add_bench_integrators_command(bench, commands);
   add_bench_assess_command(bench, commands);
   add_bench_dem_command(bench, commands);
-  auto& soiltest = add_group(app, "soiltest", "Soil element tests in the soil-test contract (src/calibration/README.md).");
+  auto& soiltest = add_group(
+      app, "soiltest", "Soil element tests in the soil-test contract (src/calibration/README.md).");
   add_soiltest_synthetic_command(soiltest, commands);
   add_calibrate_command(app, commands);
   add_tradeoff_command(app, commands);

@@ -31,28 +31,34 @@ models::ModelInputs as_inputs(const io::ParameterSet& set) {
 // The league's parameter set of `model`: --params-for MODEL=FILE, else the positional set when
 // one model is named, else for a model calibrated from soil tests the set of the scene's grains as
 // `iwb validate` chooses it, else the model's own example (the seed's table), where its fit starts.
-models::ModelInputs league_parameters(const AssessOptions& o, const std::string& model, const comparison::DemRun& dem) {
+models::ModelInputs league_parameters(const AssessOptions& o, const std::string& model,
+                                      const comparison::DemRun& dem) {
   for (const auto& g : o.params_for) {
     const auto eq = g.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == g.size())
-      throw InputError(fmt::format("--params-for {}: give MODEL=FILE, e.g. hvwe=data/params/truth_grains.toml", g));
+      throw InputError(fmt::format(
+          "--params-for {}: give MODEL=FILE, e.g. hvwe=data/params/truth_grains.toml", g));
     if (g.substr(0, eq) != model) continue;
     return as_inputs(io::read_parameter_set(g.substr(eq + 1)));
   }
   if (!o.params.empty()) return as_inputs(io::read_parameter_set(o.params));
   const auto& spec = models::find_model(model);
-  if (spec.declaration.calibration_recipe.empty()) return io::shipped_inputs(spec.declaration.example_parameters);
+  if (spec.declaration.calibration_recipe.empty())
+    return io::shipped_inputs(spec.declaration.example_parameters);
   std::string why;
-  const auto scene = dem::parse_scene(dem.scene_text, (dem.dir / "manifest.json").string() + " /scene/text");
-  return as_inputs(parameters_for(io::parameter_sets({}), scene, dem.summary.at("residual_friction").get<double>(), why));
+  const auto scene =
+      dem::parse_scene(dem.scene_text, (dem.dir / "manifest.json").string() + " /scene/text");
+  return as_inputs(parameters_for(io::parameter_sets({}), scene,
+                                  dem.summary.at("residual_friction").get<double>(), why));
 }
 
-// The tables a set lacks for `spec` (the sand set has no [intergranular_strain] for the -igs models)
-// from the model's own example set, and the source says so.
+// The tables a set lacks for `spec` (the sand set has no [intergranular_strain] for the -igs
+// models) from the model's own example set, and the source says so.
 models::ModelInputs with_missing_tables(const models::ModelSpec& spec, models::ModelInputs in) {
   for (const auto* t : spec.tables)
     if (!in.tables.count(t->name)) {
-      in.tables[t->name] = io::shipped_inputs(spec.declaration.example_parameters).tables.at(t->name);
+      in.tables[t->name] =
+          io::shipped_inputs(spec.declaration.example_parameters).tables.at(t->name);
       in.source += fmt::format(" + [{}] of {}", t->name, spec.declaration.example_parameters);
     }
   return in;
@@ -61,7 +67,8 @@ models::ModelInputs with_missing_tables(const models::ModelSpec& spec, models::M
 std::vector<std::string> league_models(const AssessOptions& o) {
   if (!o.model.empty()) return {o.model};
   if (!o.models.empty()) {
-    for (const auto& m : o.models) models::find_model(m);  // an unknown name is refused before anything runs
+    for (const auto& m : o.models)
+      models::find_model(m);  // an unknown name is refused before anything runs
     return o.models;
   }
   return models::ranked_interface_models(true);
@@ -70,8 +77,13 @@ std::vector<std::string> league_models(const AssessOptions& o) {
 // What a model's record was made from: a record of other inputs is not reused.
 nlohmann::json record_inputs(const AssessOptions& o, const models::ModelInputs& in,
                              const std::map<std::string, std::string>& distributions) {
-  return {{"reference", o.reference}, {"parameters", in.tables}, {"samples", o.samples}, {"sobol_samples", o.sobol_samples},
-          {"seed", o.seed}, {"distributions", distributions}, {"parameter_uncertainty", o.parameter_uncertainty}};
+  return {{"reference", o.reference},
+          {"parameters", in.tables},
+          {"samples", o.samples},
+          {"sobol_samples", o.sobol_samples},
+          {"seed", o.seed},
+          {"distributions", distributions},
+          {"parameter_uncertainty", o.parameter_uncertainty}};
 }
 
 }  // namespace
@@ -81,20 +93,28 @@ int run_league(const AssessOptions& o) {
   for (const auto& r : o.reference) runs.push_back(comparison::load_dem_run(r));
   const auto ref = assessment::scene_reference(runs);  // refuses runs of different scenes
   const auto names = league_models(o);
-  const auto texts = assessment::distribution_texts(o.distributions);  // each file's text: a changed COV is a changed input
+  const auto texts = assessment::distribution_texts(
+      o.distributions);  // each file's text: a changed COV is a changed input
   std::vector<models::ModelInputs> inputs;
   for (const auto& m : names) {
-    inputs.push_back(with_missing_tables(models::find_model(m), league_parameters(o, m, runs.front())));
+    inputs.push_back(
+        with_missing_tables(models::find_model(m), league_parameters(o, m, runs.front())));
     inputs.back().source = inputs.back().source.empty() ? "?" : inputs.back().source;
-    models::find_model(m).make(inputs.back());  // a set the model refuses is bad input, before anything runs
+    models::find_model(m).make(
+        inputs.back());  // a set the model refuses is bad input, before anything runs
   }
-  const auto dir = o.out.empty() ? std::filesystem::path("runs") / "assess-league" : std::filesystem::path(o.out);
-  const nlohmann::json header = {{"scene", runs.front().dir.parent_path().string()}, {"runs", o.reference},
-                                 {"boundary", driver::to_string(ref.mean.boundary)},
-                                 {"wall", fmt::format("R_n {:g}, d50 {:g} mm", ref.mean.R_n, ref.mean.d50_mm)},
-                                 {"normal", ref.mean.boundary == driver::BoundaryKind::kCV ? "sigma_n" : "dilation"},
-                                 {"uncertainty_samples", o.samples}, {"sobol_samples", o.sobol_samples}, {"models", names},
-                                 {"parameter_uncertainty", o.parameter_uncertainty}};
+  const auto dir = o.out.empty() ? std::filesystem::path("runs") / "assess-league"
+                                 : std::filesystem::path(o.out);
+  const nlohmann::json header = {
+      {"scene", runs.front().dir.parent_path().string()},
+      {"runs", o.reference},
+      {"boundary", driver::to_string(ref.mean.boundary)},
+      {"wall", fmt::format("R_n {:g}, d50 {:g} mm", ref.mean.R_n, ref.mean.d50_mm)},
+      {"normal", ref.mean.boundary == driver::BoundaryKind::kCV ? "sigma_n" : "dilation"},
+      {"uncertainty_samples", o.samples},
+      {"sobol_samples", o.sobol_samples},
+      {"models", names},
+      {"parameter_uncertainty", o.parameter_uncertainty}};
   // an earlier league continues here: its model records say what they were made from, and only
   // those made from these inputs are reused
   const bool resume = std::filesystem::exists(dir / "manifest.json") &&
@@ -108,16 +128,20 @@ int run_league(const AssessOptions& o) {
     if (std::filesystem::exists(record)) {
       auto old = io::read_json_file(record);
       if (old.value("inputs", nlohmann::json()) == in) {
-        fmt::print(stderr, "model {}/{}: {} (reused {})\n", i + 1, names.size(), names[i], record.string());
+        fmt::print(stderr, "model {}/{}: {} (reused {})\n", i + 1, names.size(), names[i],
+                   record.string());
         entries.push_back(old);
         continue;
       }
     }
-    fmt::print(stderr, "model {}/{}: {} (calibration, {} parameter samples{})\n", i + 1, names.size(), names[i], o.samples,
+    fmt::print(stderr, "model {}/{}: {} (calibration, {} parameter samples{})\n", i + 1,
+               names.size(), names[i], o.samples,
                o.sobol_samples > 0 ? fmt::format(", Sobol N = {}", o.sobol_samples) : "");
     assessment::LeagueOptions lo;
-    lo.spread = o.parameter_uncertainty == "fit" ? assessment::ParameterSpread::kFitSigmas : assessment::ParameterSpread::kSeedCovs;
-    lo.distributions = texts, lo.uncertainty_samples = o.samples, lo.sobol_samples = o.sobol_samples;
+    lo.spread = o.parameter_uncertainty == "fit" ? assessment::ParameterSpread::kFitSigmas
+                                                 : assessment::ParameterSpread::kSeedCovs;
+    lo.distributions = texts, lo.uncertainty_samples = o.samples,
+    lo.sobol_samples = o.sobol_samples;
     lo.seed = o.seed, lo.threads = o.threads, lo.progress = increment_progress("run");
     auto e = assessment::entry_json(assessment::assess_model(ref, names[i], inputs[i], lo));
     e["inputs"] = in;
@@ -135,6 +159,5 @@ int run_league(const AssessOptions& o) {
   fmt::print(stderr, "-> {}\n", (dir / "league.md").string());
   return 0;
 }
-
 
 }  // namespace iwb::app

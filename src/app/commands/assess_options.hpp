@@ -8,7 +8,7 @@ namespace iwb::app {
 struct AssessOptions {
   std::string model, params, out, boundary = "CNL", uncertainty;
   std::vector<std::string> reference, models, params_for;  // the league
-  std::string distributions;  // empty: the files built into iwb
+  std::string distributions;                               // empty: the files built into iwb
   std::string parameter_uncertainty = "seed";
   int sobol_samples = 0, threads = 0;
   bool force = false;

@@ -14,10 +14,12 @@ namespace iwb::app {
 void add_bench_element_command(CLI::App& bench, CommandList& commands) {
   auto o = std::make_shared<bench::ElementBenchOptions>();
   auto* element = bench.add_subcommand(
-      "element", "Rate evaluations per second and the time of a 2000-increment CNL simple shear "
-                 "at rtol 1e-6, for each model.");
+      "element",
+      "Rate evaluations per second and the time of a 2000-increment CNL simple shear "
+      "at rtol 1e-6, for each model.");
   element->add_option("--repeats", o->repeats, "runs per model; the best is reported")
-      ->check(whole_in(1, 1000))->capture_default_str();
+      ->check(whole_in(1, 1000))
+      ->capture_default_str();
   element
       ->add_option("--igs-params", o->igs_params,
                    "parameter set of the -igs models (Table 5.1 has no [intergranular_strain]); "
@@ -31,12 +33,15 @@ void add_bench_element_command(CLI::App& bench, CommandList& commands) {
 
 void add_bench_assess_command(CLI::App& bench, CommandList& commands) {
   auto o = std::make_shared<bench::AssessBenchOptions>();
-  auto* assess = bench.add_subcommand(
-      "assess", "Throughput of the model assessment: element tests per second on one core and the speed-up on every "
-                "core, for each interface model of the league (a Latin hypercube of CNL simple shears about its "
-                "example set).");
+  auto* assess = bench.add_subcommand("assess",
+                                      "Throughput of the model assessment: element tests per "
+                                      "second on one core and the speed-up on every "
+                                      "core, for each interface model of the league (a Latin "
+                                      "hypercube of CNL simple shears about its "
+                                      "example set).");
   assess->add_option("--tests", o->tests, "element tests per model and thread count")
-      ->check(whole_in(10, 100000))->capture_default_str();
+      ->check(whole_in(10, 100000))
+      ->capture_default_str();
   commands.add(assess, [o](const CommandContext&) {
     bench::run_assess_bench(*o);
     return 0;
@@ -47,11 +52,15 @@ void add_bench_integrators_command(CLI::App& bench, CommandList& commands) {
   auto o = std::make_shared<bench::IntegratorBenchOptions>();
   auto out = std::make_shared<std::string>(o->out.string());
   auto* integrators = bench.add_subcommand(
-      "integrators", "Integration error against cost (rate evaluations, wall time) of explicit Euler with "
-                     "1..256 substeps and adaptive rk32/rk54 at rtol 1e-2..1e-8, against rk54 at 1e-10, for "
-                     "vw3d, hvwe, ahe, ah, hp1d, hvwe-exact, hvwe-igs under CNL, CNS and CV; writes "
-                     "integrators.csv, integrators.md and pareto_<model>.svg/.png (a few seconds). Error: max over the path of |x - x_ref| / max |x_ref| for tau and sigma_n, the larger of the two.");
-  integrators->add_option("--out,-o", *out, "output directory")->check(output_directory())->capture_default_str();
+      "integrators",
+      "Integration error against cost (rate evaluations, wall time) of explicit Euler with "
+      "1..256 substeps and adaptive rk32/rk54 at rtol 1e-2..1e-8, against rk54 at 1e-10, for "
+      "vw3d, hvwe, ahe, ah, hp1d, hvwe-exact, hvwe-igs under CNL, CNS and CV; writes "
+      "integrators.csv, integrators.md and pareto_<model>.svg/.png (a few seconds). Error: max "
+      "over the path of |x - x_ref| / max |x_ref| for tau and sigma_n, the larger of the two.");
+  integrators->add_option("--out,-o", *out, "output directory")
+      ->check(output_directory())
+      ->capture_default_str();
   commands.add(integrators, [o, out](const CommandContext&) {
     auto opt = *o;
     opt.out = *out;
@@ -63,11 +72,17 @@ void add_bench_integrators_command(CLI::App& bench, CommandList& commands) {
 void add_bench_dem_command(CLI::App& bench, CommandList& commands) {
   auto o = std::make_shared<bench::DemBenchOptions>();
   auto* dem = bench.add_subcommand(
-      "dem", "Particle-steps per second of a DEM engine on a scene with 1 and 2 ranks, and the "
-             "workbench's own overhead as a share of the run (a few minutes on the default scene).");
-  dem->add_option("--engine", o->engine, "DEM engine: liggghts (ranks = MPI ranks) or yade (ranks = OpenMP threads)")->check(CLI::IsMember({"liggghts", "yade"}))->capture_default_str();
+      "dem",
+      "Particle-steps per second of a DEM engine on a scene with 1 and 2 ranks, and the "
+      "workbench's own overhead as a share of the run (a few minutes on the default scene).");
+  dem->add_option("--engine", o->engine,
+                  "DEM engine: liggghts (ranks = MPI ranks) or yade (ranks = OpenMP threads)")
+      ->check(CLI::IsMember({"liggghts", "yade"}))
+      ->capture_default_str();
   dem->add_option("--scene", o->scene, "scene file")->check(input_file())->capture_default_str();
-  dem->add_option("--ranks", o->ranks, "rank counts to measure")->check(whole_in(1, kMaxProcesses))->capture_default_str();
+  dem->add_option("--ranks", o->ranks, "rank counts to measure")
+      ->check(whole_in(1, kMaxProcesses))
+      ->capture_default_str();
   commands.add(dem, [o](const CommandContext&) {
     bench::run_dem_bench(*o);
     return 0;

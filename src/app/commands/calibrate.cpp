@@ -1,4 +1,6 @@
 // `iwb calibrate SOILTEST_DIR...`: hypoplastic parameters fitted to soil tests (calibration/).
+#include "calibration/calibrate.hpp"
+
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
@@ -9,7 +11,6 @@
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
-#include "calibration/calibrate.hpp"
 #include "calibration/seed_scatter.hpp"
 #include "common/errors.hpp"
 #include "io/output_path.hpp"
@@ -40,17 +41,21 @@ CLI::App* add_calibrate_options(CLI::App& app, CalibrateCommand& c) {
       "the estimate and "
       "its one-sigma (Gauss-Newton) uncertainty; parameters the tests cannot identify are flagged, "
       "e_d0 and e_i0 then set from e_c0 by the usual factors. A residual counts in units of the "
-      "measurement scatter: 0.01 sigma0 for stresses and 0.002 for e as declared, or, for a test given "
-      "with several seeds (same test, boundary, sigma0 and preparation in their manifests), the scatter "
-      "measured across them when larger. Writes the parameter file and calibration.json next to it.\n"
+      "measurement scatter: 0.01 sigma0 for stresses and 0.002 for e as declared, or, for a test "
+      "given "
+      "with several seeds (same test, boundary, sigma0 and preparation in their manifests), the "
+      "scatter "
+      "measured across them when larger. Writes the parameter file and calibration.json next to "
+      "it.\n"
       "Example: iwb calibrate runs/soil/* --model vw3d -o data/params/calibrated_sand.toml");
   calibrate->add_option("runs", c.runs, "soil-test run directories")
       ->required()
       ->check(input_directory());
   calibrate
-      ->add_option("--held-out", c.held_out,
-                   "soil-test run directories left out of the fit and predicted with the calibrated set "
-                   "(RMSE and end values printed and in calibration.json)")
+      ->add_option(
+          "--held-out", c.held_out,
+          "soil-test run directories left out of the fit and predicted with the calibrated set "
+          "(RMSE and end values printed and in calibration.json)")
       ->check(input_directory());
   calibrate->add_option("--model", c.model, "continuum model whose parameters are fitted")
       ->check(CLI::IsMember({"vw3d"}))
@@ -64,13 +69,18 @@ CLI::App* add_calibrate_options(CLI::App& app, CalibrateCommand& c) {
 // Tests that identify none of the parameters (a single oedometer, say) give no parameter set:
 // nothing is written and the input is refused (exit 2), rather than a file of starting values
 // flagged NOT IDENTIFIED (issue 37).
-void refuse_if_nothing_identified(const calibration::CalibrationResult& r, const std::vector<std::string>& runs) {
-  if (std::any_of(r.parameters.begin(), r.parameters.end(), [](const auto& p) { return p.identified; })) return;
-  throw InputError(fmt::format(
-      "{}: the {} soil test(s) given identify none of the {} parameters of {} (each one's sigma exceeds a quarter of "
-      "its box); give oedometer and simple-shear tests, dense and loose, that reach the critical state; "
-      "no parameter file written",
-      fmt::join(runs, ", "), runs.size(), r.parameters.size(), r.model));
+void refuse_if_nothing_identified(const calibration::CalibrationResult& r,
+                                  const std::vector<std::string>& runs) {
+  if (std::any_of(r.parameters.begin(), r.parameters.end(),
+                  [](const auto& p) { return p.identified; }))
+    return;
+  throw InputError(
+      fmt::format("{}: the {} soil test(s) given identify none of the {} parameters of {} (each "
+                  "one's sigma exceeds a quarter of "
+                  "its box); give oedometer and simple-shear tests, dense and loose, that reach "
+                  "the critical state; "
+                  "no parameter file written",
+                  fmt::join(runs, ", "), runs.size(), r.parameters.size(), r.model));
 }
 
 int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
@@ -102,7 +112,8 @@ int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
     fmt::print("{:<10} {:>12.8g} {:>12} {:>12}  {}\n", p.key, p.value, text(p.sigma),
                text(p.sigma_at_scatter), p.how);
   auto result = r;
-  for (const auto& t : held_out) result.held_out.push_back(calibration::test_fit(t, c.model, r.values()));
+  for (const auto& t : held_out)
+    result.held_out.push_back(calibration::test_fit(t, c.model, r.values()));
   if (!result.held_out.empty()) fmt::print("\nheld out, predicted: RMSE (end: model / measured)\n");
   for (const auto& t : result.held_out) {
     fmt::print("{:<40} {:<12}", t.name, t.test + (t.boundary.empty() ? "" : " " + t.boundary));
@@ -121,7 +132,9 @@ int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
 void add_calibrate_command(CLI::App& app, CommandList& commands) {
   auto c = std::make_shared<CalibrateCommand>();
   auto* calibrate = add_calibrate_options(app, *c);
-  commands.add(calibrate, [c](const CommandContext& context) { return run_calibrate(*c, context.command_line); });
+  commands.add(calibrate, [c](const CommandContext& context) {
+    return run_calibrate(*c, context.command_line);
+  });
 }
 
 }  // namespace iwb::app

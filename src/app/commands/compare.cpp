@@ -1,5 +1,7 @@
 // `iwb compare RUN_DIR` and `iwb compare --runs RUN_DIR...`: a continuum model judged against DEM
 // runs (comparison/compare.hpp, comparison/run_set.hpp).
+#include "comparison/compare.hpp"
+
 #include <fmt/core.h>
 
 #include <filesystem>
@@ -9,7 +11,6 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "common/errors.hpp"
-#include "comparison/compare.hpp"
 #include "comparison/run_set.hpp"
 #include "comparison/verdict_table.hpp"
 
@@ -17,7 +18,8 @@ namespace iwb::app {
 
 void print_hypothesis_checks(const nlohmann::json& hypotheses) {
   for (const auto& check : hypotheses["checks"])
-    fmt::print("\n{}\n  {}\n", check["title"].get<std::string>(), check["verdict"].get<std::string>());
+    fmt::print("\n{}\n  {}\n", check["title"].get<std::string>(),
+               check["verdict"].get<std::string>());
 }
 
 namespace {
@@ -31,13 +33,17 @@ struct CompareCommand {
 // `iwb compare --runs`: the set's comparisons, then the hypothesis verdicts.
 int compare_set(const CompareCommand& o, const CommandContext& context) {
   const auto& c = o.options;
-  comparison::RunSetOptions opt{{o.set_runs.begin(), o.set_runs.end()}, c.model, c.params,
-                                o.out.empty() ? "runs/hypotheses" : o.out, c.allow_partial, c.force,
+  comparison::RunSetOptions opt{{o.set_runs.begin(), o.set_runs.end()},
+                                c.model,
+                                c.params,
+                                o.out.empty() ? "runs/hypotheses" : o.out,
+                                c.allow_partial,
+                                c.force,
                                 context.command_line};
   opt.predicted_ds_d50 = c.predicted_ds_d50;
   const auto outcome = comparison::run_hypothesis_set(opt);
-  fmt::print("{} run(s) compared ({} reused) -> {}\n", outcome.compare_dirs.size(), outcome.reused.size(),
-             opt.out.string());
+  fmt::print("{} run(s) compared ({} reused) -> {}\n", outcome.compare_dirs.size(),
+             outcome.reused.size(), opt.out.string());
   print_hypothesis_checks(outcome.hypotheses);
   fmt::print("\n-> {}\n", (opt.out / "hypotheses.md").string());
   return 0;
@@ -47,13 +53,16 @@ int compare_run(const CompareCommand& o, const CommandContext& context) {
   if (o.dem_dir.empty()) throw InputError("compare: give a DEM run directory or --runs DIR...");
   auto opt = o.options;
   opt.dem_dir = o.dem_dir;
-  opt.out = o.out.empty() ? std::filesystem::path("runs") / ("compare-" + std::filesystem::path(o.dem_dir).filename().string())
+  opt.out = o.out.empty() ? std::filesystem::path("runs") /
+                                ("compare-" + std::filesystem::path(o.dem_dir).filename().string())
                           : std::filesystem::path(o.out);
   opt.command_line = context.command_line;
   opt.seed_dirs.assign(o.seed_runs.begin(), o.seed_runs.end());
   const auto result = comparison::run_comparison(opt);
   const auto cyclic = comparison::cyclic_verdict_table(result);
-  if (!cyclic.rows.empty()) fmt::print("Cycles (issue 34):\n{}\nMonotonic quantities over the whole path:\n", comparison::to_text(cyclic));
+  if (!cyclic.rows.empty())
+    fmt::print("Cycles (issue 34):\n{}\nMonotonic quantities over the whole path:\n",
+               comparison::to_text(cyclic));
   fmt::print("{}", comparison::to_text(comparison::verdict_table(result)));
   for (const auto& f : comparison::verdict_findings(result)) fmt::print("{}\n", f);
   fmt::print("-> {} (iwb report {})\n", opt.out.string(), opt.out.string());
@@ -70,7 +79,8 @@ void add_compare_command(CLI::App& app, CommandList& commands) {
       "(measured u_x(t); CNL with the measured sigma_n(t), CNS with the scene's K, CV) from the "
       "DEM's first state, in variants of kappa_r and d_s: predicted without fitting (kappa_r from "
       "eq. 5.35 with the wall's R_n, d_s = --predict-ds-d50 x d50; also 5 and 10 d50 and the "
-      "measured wall band), fitted to tau alone, and fitted to tau and u_n (CNL) or tau and sigma_n "
+      "measured wall band), fitted to tau alone, and fitted to tau and u_n (CNL) or tau and "
+      "sigma_n "
       "(CNS, CV) together, each weighted by the DEM's seed scatter (--seeds; without seeds, by its "
       "range). Per quantity (peak and residual friction, u_x at the peak, total dilation, dilation "
       "rate, sigma_n change) the DEM (its seed mean +- the 95 % Student's t-interval; seeds that "
@@ -85,27 +95,47 @@ void add_compare_command(CLI::App& app, CommandList& commands) {
       "data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s{2,3} --params "
       "data/params/dem_default_grains.toml -o runs/cmp");
   auto& copt = o->options;
-  auto* single_run = compare->add_option("dem_run", o->dem_dir, "a run directory of `iwb dem run`")->check(input_directory());
-  compare->add_option("--runs", o->set_runs, "a set of DEM run directories: each is compared (or its complete comparison "
-                                             "in OUT/<run> reused), with the set's runs of its scene and other seeds as "
-                                             "its seeds, then the hypothesis checks of DEM.md over the set "
-                                             "into OUT/hypotheses.json and .md")
-      ->check(input_directory())->excludes(single_run);
-  compare->add_option("--seeds", o->seed_runs, "runs of the same scene with other seeds: their scatter weighs the joint "
-                                               "fit and the verdicts")
-      ->check(input_directory())->excludes("--runs");
-  compare->add_option("--predict-ds-d50", copt.predicted_ds_d50, "d_s of the predicted variant, in d50")
-      ->capture_default_str()->check(number_in(closed(0.5, 100.0), "d50"));
+  auto* single_run = compare->add_option("dem_run", o->dem_dir, "a run directory of `iwb dem run`")
+                         ->check(input_directory());
+  compare
+      ->add_option("--runs", o->set_runs,
+                   "a set of DEM run directories: each is compared (or its complete comparison "
+                   "in OUT/<run> reused), with the set's runs of its scene and other seeds as "
+                   "its seeds, then the hypothesis checks of DEM.md over the set "
+                   "into OUT/hypotheses.json and .md")
+      ->check(input_directory())
+      ->excludes(single_run);
+  compare
+      ->add_option("--seeds", o->seed_runs,
+                   "runs of the same scene with other seeds: their scatter weighs the joint "
+                   "fit and the verdicts")
+      ->check(input_directory())
+      ->excludes("--runs");
+  compare
+      ->add_option("--predict-ds-d50", copt.predicted_ds_d50,
+                   "d_s of the predicted variant, in d50")
+      ->capture_default_str()
+      ->check(number_in(closed(0.5, 100.0), "d50"));
   compare->add_option("--model", copt.model, "continuum model (iwb models)")->capture_default_str();
-  compare->add_option("--params", copt.params, "parameter file (data/params/)")->required()->check(input_file());
-  compare->add_option("--out,-o", o->out, "output directory (default runs/compare-<dem run>)")->check(output_directory());
-  compare->add_option("--roughness-scheme", copt.roughness_scheme,
-                      "the wall's roughness scheme for every variant instead of the model's default (one the model "
-                      "declares: iwb models)")->excludes("--runs");
-  compare->add_option("--f-c", copt.f_c, "Arnold & Herle's rate factor: 1/kappa_r (eq. 5.40 as printed, default) or "
-                                         "kappa_r (ERRATA 9); with --roughness-scheme arnold-herle")
-      ->check(CLI::IsMember({"1/kappa_r", "kappa_r"}))->excludes("--runs");
-  compare->add_flag("--allow-partial", copt.allow_partial, "compare a failed or interrupted DEM run");
+  compare->add_option("--params", copt.params, "parameter file (data/params/)")
+      ->required()
+      ->check(input_file());
+  compare->add_option("--out,-o", o->out, "output directory (default runs/compare-<dem run>)")
+      ->check(output_directory());
+  compare
+      ->add_option("--roughness-scheme", copt.roughness_scheme,
+                   "the wall's roughness scheme for every variant instead of the model's default "
+                   "(one the model "
+                   "declares: iwb models)")
+      ->excludes("--runs");
+  compare
+      ->add_option("--f-c", copt.f_c,
+                   "Arnold & Herle's rate factor: 1/kappa_r (eq. 5.40 as printed, default) or "
+                   "kappa_r (ERRATA 9); with --roughness-scheme arnold-herle")
+      ->check(CLI::IsMember({"1/kappa_r", "kappa_r"}))
+      ->excludes("--runs");
+  compare->add_flag("--allow-partial", copt.allow_partial,
+                    "compare a failed or interrupted DEM run");
   compare->add_flag("--force", copt.force, "replace an earlier comparison in the same directory");
   commands.add(compare, [o](const CommandContext& c) {
     return o->set_runs.empty() ? compare_run(*o, c) : compare_set(*o, c);

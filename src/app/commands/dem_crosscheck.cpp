@@ -46,14 +46,21 @@ void add_dem_crosscheck_command(CLI::App& dem, CommandList& commands) {
       "tau/sigma_n, total dilation, dilation rate and wall band thickness side by side with their "
       "seed scatter and each engine's wall-clock cost. Per quantity: do the engines agree within "
       "their seed scatter (the difference of the means within 2 standard errors, sqrt(sd_a^2/n_a + "
-      "sd_b^2/n_b); needs 2 seeds or more)? Verdicts: residual friction within 10 %, dilation of the "
+      "sd_b^2/n_b); needs 2 seeds or more)? Verdicts: residual friction within 10 %, dilation of "
+      "the "
       "same sign and order. Writes crosscheck.json and crosscheck.md; complete runs in the output "
       "directory are reused, so a stopped crosscheck continues when run again.");
   dem_cross->add_option("scene", o->scene, "scene TOML file")->required()->check(input_file());
-  dem_cross->add_option("--seeds", o->options.seeds, "seeds per engine")->check(whole_in(1, 100))->capture_default_str();
+  dem_cross->add_option("--seeds", o->options.seeds, "seeds per engine")
+      ->check(whole_in(1, 100))
+      ->capture_default_str();
   dem_cross->add_option("--engines", o->engines, "comma-separated engines")->capture_default_str();
-  dem_cross->add_option("--np,--threads", o->options.processes, "MPI ranks / OpenMP threads per run")->check(whole_in(1, kMaxProcesses))->capture_default_str();
-  dem_cross->add_option("--out,-o", o->out, "output directory (default runs/crosscheck-<scene>)")->check(output_directory());
+  dem_cross
+      ->add_option("--np,--threads", o->options.processes, "MPI ranks / OpenMP threads per run")
+      ->check(whole_in(1, kMaxProcesses))
+      ->capture_default_str();
+  dem_cross->add_option("--out,-o", o->out, "output directory (default runs/crosscheck-<scene>)")
+      ->check(output_directory());
   commands.add(dem_cross, [o](const CommandContext& c) { return run_crosscheck(*o, c); });
 }
 

@@ -27,14 +27,22 @@ int run_dem(const DemRunOptions& o, const CommandContext& context) {
   const auto scene = dem::load_scene(o.scene_file);  // refused here, before any engine starts
   for (const auto& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
   const auto engine = dem::make_engine(o.engine_name);
-  const auto dir = o.out.empty() ? std::filesystem::path("runs") / fmt::format("{}-{}", scene.name, o.engine_name)
+  const auto dir = o.out.empty() ? std::filesystem::path("runs") /
+                                       fmt::format("{}-{}", scene.name, o.engine_name)
                                  : std::filesystem::path(o.out);
-  dem::RunOptions opt{dir, o.np, o.resume, o.force, context.command_line, context.interrupt, engine_progress(),
+  dem::RunOptions opt{dir,
+                      o.np,
+                      o.resume,
+                      o.force,
+                      context.command_line,
+                      context.interrupt,
+                      engine_progress(),
                       dem::consolidation_cache_dir(o.consolidated)};
-  fmt::print(stderr, "iwb dem run: {} with {} ({} particles requested, {} rank(s)) -> {}\n", o.scene_file,
-             o.engine_name, scene.particle_count, o.np, dir.string());
+  fmt::print(stderr, "iwb dem run: {} with {} ({} particles requested, {} rank(s)) -> {}\n",
+             o.scene_file, o.engine_name, scene.particle_count, o.np, dir.string());
   const auto outcome = dem::run_scene(scene, io::read_file(o.scene_file), *engine, opt);
-  fmt::print(outcome.complete() ? stdout : stderr, "{}: {} -> {}\n", o.scene_file, outcome.status, dir.string());
+  fmt::print(outcome.complete() ? stdout : stderr, "{}: {} -> {}\n", o.scene_file, outcome.status,
+             dir.string());
   return outcome.complete() ? 0 : 1;
 }
 
@@ -48,14 +56,22 @@ void add_dem_run_command(CLI::App& dem, CommandList& commands) {
       "manifest.json, timeseries.csv, profiles.csv, vtk/ with .pvd indexes, summary.json. Stages "
       "(consolidate, shear) are recorded as they finish; --resume continues an interrupted run.");
   dem_run->add_option("scene", o->scene_file, "scene TOML file")->required()->check(input_file());
-  dem_run->add_option("--engine", o->engine_name, "DEM engine: liggghts or yade")->capture_default_str();
-  dem_run->add_option("--np,--threads", o->np, "parallel processes: MPI ranks (LIGGGHTS) or OpenMP threads (YADE)")->check(whole_in(1, kMaxProcesses))->capture_default_str();
-  dem_run->add_option("--out,-o", o->out, "run directory (default runs/<scene>-<engine>)")->check(output_directory());
-  dem_run->add_flag("--resume", o->resume, "continue an interrupted run of the same scene from its last finished stage");
+  dem_run->add_option("--engine", o->engine_name, "DEM engine: liggghts or yade")
+      ->capture_default_str();
+  dem_run
+      ->add_option("--np,--threads", o->np,
+                   "parallel processes: MPI ranks (LIGGGHTS) or OpenMP threads (YADE)")
+      ->check(whole_in(1, kMaxProcesses))
+      ->capture_default_str();
+  dem_run->add_option("--out,-o", o->out, "run directory (default runs/<scene>-<engine>)")
+      ->check(output_directory());
+  dem_run->add_flag("--resume", o->resume,
+                    "continue an interrupted run of the same scene from its last finished stage");
   dem_run->add_flag("--force", o->force, "replace an earlier run in the same directory");
-  dem_run->add_option("--consolidated", o->consolidated,
-                      "start from a consolidated specimen of the same consolidation key kept in DIR, or keep this "
-                      "run's there (default $IWB_CONSOLIDATED_DIR, else none; src/dem/consolidation_cache.hpp)");
+  dem_run->add_option(
+      "--consolidated", o->consolidated,
+      "start from a consolidated specimen of the same consolidation key kept in DIR, or keep this "
+      "run's there (default $IWB_CONSOLIDATED_DIR, else none; src/dem/consolidation_cache.hpp)");
   commands.add(dem_run, [o](const CommandContext& c) { return run_dem(*o, c); });
 }
 

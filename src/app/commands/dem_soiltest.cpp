@@ -35,8 +35,8 @@ int run_dem_soiltest(const DemSoiltestCommand& c, const CommandContext& context)
                 fmt::format("soil-{}-{}{}-{}{}", std::filesystem::path(c.scene).stem().string(),
                             c.test, oed ? "" : "-" + c.bc, c.density,
                             spec.engine == "liggghts" ? "" : "-" + spec.engine);
-  dem::RunOptions opt{dir, c.np, c.resume, c.force, context.command_line, context.interrupt,
-                      engine_progress(), {}};
+  dem::RunOptions opt{
+      dir, c.np, c.resume, c.force, context.command_line, context.interrupt, engine_progress(), {}};
   fmt::print(
       stderr,
       "iwb dem soiltest: {} of {} in {} ({}, {:g} kPa, cell {:g} x {:g} x {:g} d50, {} rank(s)) -> "
@@ -45,8 +45,8 @@ int run_dem_soiltest(const DemSoiltestCommand& c, const CommandContext& context)
       spec.initial_stress_kPa(), spec.length_d50, spec.width_d50, spec.height_d50, c.np,
       dir.string());
   const auto outcome = dem::run_soil_test(io::read_file(c.scene), c.scene, spec, opt);
-  fmt::print(outcome.complete() ? stdout : stderr, "{}: {} ({} particles) -> {}\n", c.scene, outcome.status,
-             outcome.manifest.value("particle_count", 0), dir.string());
+  fmt::print(outcome.complete() ? stdout : stderr, "{}: {} ({} particles) -> {}\n", c.scene,
+             outcome.status, outcome.manifest.value("particle_count", 0), dir.string());
   return outcome.complete() ? 0 : 1;
 }
 
@@ -58,7 +58,8 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
       "soiltest",
       "A soil element test on a DEM cell of a scene's grains (same particles, contact law and "
       "seed; no "
-      "wall under test), in LIGGGHTS or YADE (--engine), into the soil-test contract that `iwb calibrate` reads "
+      "wall under test), in LIGGGHTS or YADE (--engine), into the soil-test contract that `iwb "
+      "calibrate` reads "
       "(src/calibration/README.md). The cell is periodic in x and y between two rough sawtooth "
       "plates "
       "(ridges 1 d50, pitch 2 d50; plate friction = grain friction); the specimen is prepared at "
@@ -129,7 +130,9 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
                 "oedometer: ramp and hold length in consolidation windows")
       ->check(whole_in(1, 100))
       ->capture_default_str();
-  s->add_option("--np", c->np, "MPI ranks (LIGGGHTS) or OpenMP threads (YADE)")->check(whole_in(1, kMaxProcesses))->capture_default_str();
+  s->add_option("--np", c->np, "MPI ranks (LIGGGHTS) or OpenMP threads (YADE)")
+      ->check(whole_in(1, kMaxProcesses))
+      ->capture_default_str();
   s->add_option("--out,-o", c->out,
                 "run directory (default runs/soil-<scene>-<test>[-<bc>]-<density>[-yade])")
       ->check(output_directory());

@@ -24,17 +24,19 @@ struct ElementOptions {
 int run_element(const ElementOptions& o, const CommandContext& context) {
   auto spec = io::load_element_test(o.test_file);
   for (const auto& w : spec.warnings) fmt::print(stderr, "warning: {}\n", w);
-  const auto dir = o.out.empty() ? std::filesystem::path("runs") / std::filesystem::path(o.test_file).stem()
-                                 : std::filesystem::path(o.out);
-  io::ElementRunOptions opt{dir, o.force, context.command_line, io::read_file(o.test_file), context.interrupt};
+  const auto dir = o.out.empty()
+                       ? std::filesystem::path("runs") / std::filesystem::path(o.test_file).stem()
+                       : std::filesystem::path(o.out);
+  io::ElementRunOptions opt{dir, o.force, context.command_line, io::read_file(o.test_file),
+                            context.interrupt};
   spec.settings.on_increment = increment_progress();
   const auto outcome = io::run_element_to_directory(spec, opt);
   const auto& r = outcome.result;
   // A failed or interrupted run is an error message: on stderr, with exit 1 (README).
   fmt::print(r.complete() ? stdout : stderr,
-             "{}: {} ({} increments, {} rate evaluations, {} rejected substeps) -> {}\n", o.test_file,
-             r.status, r.increments, r.counters.rate_evaluations, r.counters.rejected_substeps,
-             dir.string());
+             "{}: {} ({} increments, {} rate evaluations, {} rejected substeps) -> {}\n",
+             o.test_file, r.status, r.increments, r.counters.rate_evaluations,
+             r.counters.rejected_substeps, dir.string());
   return r.complete() ? 0 : 1;
 }
 
@@ -46,8 +48,11 @@ void add_element_command(CLI::App& app, CommandList& commands) {
       "element",
       "Run an element test described in a TOML file (schema: data/tests/README.md) and write a "
       "run directory with manifest.json and history.csv (compression positive, kPa, mm).");
-  element->add_option("test", o->test_file, "element-test TOML file")->required()->check(input_file());
-  element->add_option("--out,-o", o->out, "run directory (default runs/<test file stem>)")->check(output_directory());
+  element->add_option("test", o->test_file, "element-test TOML file")
+      ->required()
+      ->check(input_file());
+  element->add_option("--out,-o", o->out, "run directory (default runs/<test file stem>)")
+      ->check(output_directory());
   element->add_flag("--force", o->force, "replace an earlier run in the same directory");
   commands.add(element, [o](const CommandContext& c) { return run_element(*o, c); });
 }

@@ -1,5 +1,7 @@
 // `iwb plan SCENE`: the cheapest DEM setting and the simplest continuum model that meet a scene's
 // requirements (tradeoff/plan.hpp).
+#include "tradeoff/plan.hpp"
+
 #include <fmt/core.h>
 
 #include <memory>
@@ -10,7 +12,6 @@
 #include "app/parameter_choice.hpp"
 #include "io/json_file.hpp"
 #include "io/run_directory.hpp"
-#include "tradeoff/plan.hpp"
 
 namespace iwb::app {
 
@@ -31,11 +32,16 @@ CLI::App* add_plan_options(CLI::App& app, PlanCommand& c) {
       "interest, or \"not needed\") and its tradeoff (run `iwb tradeoff` first): the cheapest DEM "
       "setting whose "
       "errors plus the seed noise floor meet every tolerance, and the simplest interface model "
-      "(mc, hyperbolic, hp1d, ah, ahe, lashkari, mortara, hvwe; ahe-igs and hvwe-igs too for cyclic paths) whose "
-      "global uncertainty meets them: each model calibrated to the scene's own runs (the base seeds: kappa_r and "
-      "d_s, and the material of models without a soil-test calibration), replayed along their path, its miss of "
-      "their seed mean and the spread its parameters' uncertainty gives (--parameter-uncertainty) in quadrature, "
-      "per quantity (seed eq. 4.4, ERRATA 16). Prints the decision and which setting or model failed which "
+      "(mc, hyperbolic, hp1d, ah, ahe, lashkari, mortara, hvwe; ahe-igs and hvwe-igs too for "
+      "cyclic paths) whose "
+      "global uncertainty meets them: each model calibrated to the scene's own runs (the base "
+      "seeds: kappa_r and "
+      "d_s, and the material of models without a soil-test calibration), replayed along their "
+      "path, its miss of "
+      "their seed mean and the spread its parameters' uncertainty gives (--parameter-uncertainty) "
+      "in quadrature, "
+      "per quantity (seed eq. 4.4, ERRATA 16). Prints the decision and which setting or model "
+      "failed which "
       "tolerance by how much; writes plan.json.\n"
       "It needs the tradeoff's run directories (the base runs are replayed), not only its "
       "tables.\n"
@@ -43,45 +49,50 @@ CLI::App* add_plan_options(CLI::App& app, PlanCommand& c) {
   plan->add_option("scene", c.scene, "scene TOML file with a [requirements] table")
       ->required()
       ->check(input_file());
-  plan->add_option("--tradeoff", c.tradeoff,
-                     "tradeoff directory (default runs/tradeoff-<scene stem>)");  // run_plan says what to run
   plan->add_option(
-      "--params", c.params,
-      "parameter file of the continuum models (default: the set iwb validate chooses from those "
-      "built into iwb: dem_default_grains.toml for the default scene's grains, else phi_c closest "
-      "to the reference's residual friction)")
+      "--tradeoff", c.tradeoff,
+      "tradeoff directory (default runs/tradeoff-<scene stem>)");  // run_plan says what to run
+  plan->add_option("--params", c.params,
+                   "parameter file of the continuum models (default: the set iwb validate chooses "
+                   "from those "
+                   "built into iwb: dem_default_grains.toml for the default scene's grains, else "
+                   "phi_c closest "
+                   "to the reference's residual friction)")
       ->check(input_file());
   plan->add_option("--parameter-uncertainty", c.parameter_uncertainty,
-                   "fit (default): each calibrated quantity spread by its own sigma from the fit to these runs (the "
-                   "parameters as this scene pins them down); seed: the COVs of the seed's Table 4.8 and Appendix A "
+                   "fit (default): each calibrated quantity spread by its own sigma from the fit "
+                   "to these runs (the "
+                   "parameters as this scene pins them down); seed: the COVs of the seed's Table "
+                   "4.8 and Appendix A "
                    "about the calibrated values (parameters as a laboratory would know them)")
       ->check(CLI::IsMember({"fit", "seed"}));
   plan->add_option("--samples", c.samples, "Latin hypercube parameter samples per candidate model")
       ->check(whole_in(10, 100000));
-  plan->add_option("--out,-o", c.out,
-                     "where plan.json goes (default: the tradeoff directory)")
+  plan->add_option("--out,-o", c.out, "where plan.json goes (default: the tradeoff directory)")
       ->check(output_directory());
   return plan;
 }
 
 // --params, else the set `iwb validate` would choose for the tradeoff's reference run from the
 // sets built into iwb (app/parameter_choice.hpp).
-io::ParameterSet plan_parameters(const tradeoff::PlanOptions& opt, const std::string& params, std::string& why) {
+io::ParameterSet plan_parameters(const tradeoff::PlanOptions& opt, const std::string& params,
+                                 std::string& why) {
   if (!params.empty()) {
     why = "given with --params";
     return io::read_parameter_set(params);
   }
-  const auto summary =
-      io::read_json_file(tradeoff::reference_run(opt) / "summary.json");
+  const auto summary = io::read_json_file(tradeoff::reference_run(opt) / "summary.json");
   const auto scene = dem::parse_scene(io::read_file(opt.scene_file), opt.scene_file.string());
   const auto sets = io::parameter_sets({});
   return parameters_for(sets, scene, summary["residual_friction"].get<double>(), why);
 }
 
 int run_plan_command(const PlanCommand& c, const std::string& cl) {
-  tradeoff::load_scene_to_plan(c.scene);  // every value and [requirements] checked before the tradeoff is read
+  tradeoff::load_scene_to_plan(
+      c.scene);  // every value and [requirements] checked before the tradeoff is read
   tradeoff::PlanOptions opt{c.scene, c.tradeoff, {}, "", c.out, cl};
-  opt.spread = c.parameter_uncertainty == "seed" ? assessment::ParameterSpread::kSeedCovs : assessment::ParameterSpread::kFitSigmas;
+  opt.spread = c.parameter_uncertainty == "seed" ? assessment::ParameterSpread::kSeedCovs
+                                                 : assessment::ParameterSpread::kFitSigmas;
   opt.samples = c.samples;
   opt.params = plan_parameters(opt, c.params, opt.params_why);
   const auto plan = tradeoff::run_plan(opt);
@@ -97,7 +108,9 @@ int run_plan_command(const PlanCommand& c, const std::string& cl) {
 void add_plan_command(CLI::App& app, CommandList& commands) {
   auto c = std::make_shared<PlanCommand>();
   auto* plan = add_plan_options(app, *c);
-  commands.add(plan, [c](const CommandContext& context) { return run_plan_command(*c, context.command_line); });
+  commands.add(plan, [c](const CommandContext& context) {
+    return run_plan_command(*c, context.command_line);
+  });
 }
 
 }  // namespace iwb::app

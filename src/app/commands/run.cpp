@@ -1,5 +1,6 @@
-// `iwb run [--study sand|clay|chapter8|thermo]`: the continuum studies. sand: hvwe against vw3d on seed Table 5.1
-// (app/default_job.hpp); clay: the seed's 6.4 comparisons of the clay models (studies/).
+// `iwb run [--study sand|clay|chapter8|thermo]`: the continuum studies. sand: hvwe against vw3d on
+// seed Table 5.1 (app/default_job.hpp); clay: the seed's 6.4 comparisons of the clay models
+// (studies/).
 #include <memory>
 #include <string>
 
@@ -21,32 +22,44 @@ struct RunOptions {
 
 int run_study(const RunOptions& o, const CommandContext& c) {
   if (o.study == "clay")
-    return studies::run_study(studies::clay_study(), {o.out.empty() ? "runs/clay" : o.out, o.force, c.command_line, c.interrupt});
+    return studies::run_study(studies::clay_study(), {o.out.empty() ? "runs/clay" : o.out, o.force,
+                                                      c.command_line, c.interrupt});
   if (o.study == "chapter8")
-    return studies::run_study(studies::chapter8_study(),
-                              {o.out.empty() ? "runs/chapter8" : o.out, o.force, c.command_line, c.interrupt});
+    return studies::run_study(studies::chapter8_study(), {o.out.empty() ? "runs/chapter8" : o.out,
+                                                          o.force, c.command_line, c.interrupt});
   if (o.study == "thermo")
-    return studies::run_study(studies::thermo_study(), {o.out.empty() ? "runs/thermo" : o.out, o.force, c.command_line, c.interrupt});
+    return studies::run_study(studies::thermo_study(), {o.out.empty() ? "runs/thermo" : o.out,
+                                                        o.force, c.command_line, c.interrupt});
   return run_default_job(o.out.empty() ? "runs/default" : o.out, o.force, c.command_line);
 }
 }  // namespace
 
 void add_run_command(CLI::App& app, CommandList& commands) {
   auto o = std::make_shared<RunOptions>();
-  auto* run = app.add_subcommand(
-      "run", "The continuum studies. sand (default): hvwe against its 3D reference vw3d in simple shear under CNL, "
-             "CNS and CV (seed Table 5.1), with a table of their differences. clay: the seed's section 6.4 "
-             "comparisons of the clay interface models (HCC against HCE under CV, CNL and CNS; roughness kappa_r and "
-             "the two roughness schemes; intergranular strain under cyclic CNL and CV). chapter8: the seed's section 8.4, "
-             "constant-volume shear of HCE, Barodesy for clay and modified Cam clay on the reduced vectors with Table "
-             "8.1's London and Kaolin sets, and reduced against 3D. thermo: the seed's section 6.5, the thermo-hydro-mechanical "
-             "interface model hcthm under CNL and CV at several temperatures, with n_t and l_t varied, and at several "
-             "suctions (Table 6.5). Each case is an element run directory, the seed's "
-             "claims are checked in study.md and study.json, and NAME.html holds the figures (src/studies/README.md).");
+  auto* run =
+      app.add_subcommand("run",
+                         "The continuum studies. sand (default): hvwe against its 3D reference "
+                         "vw3d in simple shear under CNL, "
+                         "CNS and CV (seed Table 5.1), with a table of their differences. clay: "
+                         "the seed's section 6.4 "
+                         "comparisons of the clay interface models (HCC against HCE under CV, CNL "
+                         "and CNS; roughness kappa_r and "
+                         "the two roughness schemes; intergranular strain under cyclic CNL and "
+                         "CV). chapter8: the seed's section 8.4, "
+                         "constant-volume shear of HCE, Barodesy for clay and modified Cam clay on "
+                         "the reduced vectors with Table "
+                         "8.1's London and Kaolin sets, and reduced against 3D. thermo: the seed's "
+                         "section 6.5, the thermo-hydro-mechanical "
+                         "interface model hcthm under CNL and CV at several temperatures, with n_t "
+                         "and l_t varied, and at several "
+                         "suctions (Table 6.5). Each case is an element run directory, the seed's "
+                         "claims are checked in study.md and study.json, and NAME.html holds the "
+                         "figures (src/studies/README.md).");
   run->add_option("--study", o->study, "sand, clay, chapter8 or thermo")
       ->check(CLI::IsMember({"sand", "clay", "chapter8", "thermo"}))
       ->capture_default_str();
-  run->add_option("--out,-o", o->out, "output directory (default runs/default for sand, runs/<study> otherwise)")
+  run->add_option("--out,-o", o->out,
+                  "output directory (default runs/default for sand, runs/<study> otherwise)")
       ->check(output_directory());
   run->add_flag("--force", o->force, "replace earlier runs in the output directory");
   commands.add(run, [o](const CommandContext& c) { return run_study(*o, c); });

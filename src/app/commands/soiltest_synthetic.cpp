@@ -99,7 +99,8 @@ int run_synthetic(SyntheticCommand c, const std::string& command_line) {
 void add_soiltest_synthetic_command(CLI::App& soiltest, CommandList& commands) {
   auto c = std::make_shared<SyntheticCommand>();
   auto* s = add_synthetic_options(soiltest, *c);
-  commands.add(s, [c](const CommandContext& context) { return run_synthetic(*c, context.command_line); });
+  commands.add(
+      s, [c](const CommandContext& context) { return run_synthetic(*c, context.command_line); });
 }
 
 }  // namespace iwb::app

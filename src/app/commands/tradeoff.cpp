@@ -1,4 +1,6 @@
 // `iwb tradeoff SCENE`: DEM speed against accuracy, knob by knob (tradeoff/tradeoff.hpp).
+#include "tradeoff/tradeoff.hpp"
+
 #include <fmt/core.h>
 
 #include <memory>
@@ -9,7 +11,6 @@
 #include "app/progress.hpp"
 #include "io/run_directory.hpp"
 #include "tradeoff/knobs.hpp"
-#include "tradeoff/tradeoff.hpp"
 
 namespace iwb::app {
 
@@ -47,11 +48,9 @@ CLI::App* add_tradeoff_options(CLI::App& app, TradeoffCommand& c) {
   tradeoff->add_option("scene", c.scene, "scene TOML file (data/scenes/)")
       ->required()
       ->check(input_file());
-  tradeoff->add_option("--out,-o", c.out,
-                         "tradeoff directory (default runs/tradeoff-<scene stem>)")
+  tradeoff->add_option("--out,-o", c.out, "tradeoff directory (default runs/tradeoff-<scene stem>)")
       ->check(output_directory());
-  tradeoff
-      ->add_option("--jobs,-j", c.jobs, "runs at once (jobs x np should not exceed the cores)")
+  tradeoff->add_option("--jobs,-j", c.jobs, "runs at once (jobs x np should not exceed the cores)")
       ->check(whole_in(1, kMaxProcesses))
       ->capture_default_str();
   tradeoff->add_option("--np", c.np, "MPI ranks per run")
@@ -65,10 +64,11 @@ CLI::App* add_tradeoff_options(CLI::App& app, TradeoffCommand& c) {
   tradeoff->add_option("--knobs", c.knobs, "comma-separated knobs to vary: box, kappa, dt, I")
       ->capture_default_str();
   tradeoff
-      ->add_option("--reference", c.reference,
-                   "what the errors are measured against: refined (every knob refined at once, one "
-                   "seed) or base (the scene itself, mean of its seeds: for a scene a convergence "
-                   "study showed converged, e.g. data/scenes/truth.toml; then only cheaper settings run)")
+      ->add_option(
+          "--reference", c.reference,
+          "what the errors are measured against: refined (every knob refined at once, one "
+          "seed) or base (the scene itself, mean of its seeds: for a scene a convergence "
+          "study showed converged, e.g. data/scenes/truth.toml; then only cheaper settings run)")
       ->check(CLI::IsMember({"refined", "base"}))
       ->capture_default_str();
   tradeoff

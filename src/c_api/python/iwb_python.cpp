@@ -22,7 +22,8 @@ constexpr size_t kMessageSize = 2048;
 // The library's error as a Python exception: status, message, step_factor (IWB_ERROR_DOMAIN and
 // IWB_ERROR_CONVERGENCE: the fraction of the increment to retry with).
 struct MaterialError : std::runtime_error {
-  MaterialError(int s, const std::string& m, double f) : std::runtime_error(m), status(s), step_factor(f) {}
+  MaterialError(int s, const std::string& m, double f)
+      : std::runtime_error(m), status(s), step_factor(f) {}
   int status;
   double step_factor;
 };
@@ -35,35 +36,41 @@ using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 class Material {
  public:
-  Material(const std::string& model, const std::string& parameter_file, double kappa_r, const std::string& integration) {
+  Material(const std::string& model, const std::string& parameter_file, double kappa_r,
+           const std::string& integration) {
     char message[kMessageSize];
     iwb_material* m = nullptr;
-    check(iwb_material_create(model.c_str(), parameter_file.c_str(), kappa_r, integration.c_str(), &m, message, kMessageSize), message);
+    check(iwb_material_create(model.c_str(), parameter_file.c_str(), kappa_r, integration.c_str(),
+                              &m, message, kMessageSize),
+          message);
     material_.reset(m);
   }
 
   std::vector<std::string> state_names() const {
     std::vector<std::string> names;
-    for (int i = 0; i < iwb_state_size(material_.get()); ++i) names.emplace_back(iwb_state_name(material_.get(), i));
+    for (int i = 0; i < iwb_state_size(material_.get()); ++i)
+      names.emplace_back(iwb_state_name(material_.get(), i));
     return names;
   }
 
   std::vector<std::string> initial_inputs() const {
     std::vector<std::string> keys;
-    for (int i = 0; i < iwb_initial_input_count(material_.get()); ++i) keys.emplace_back(iwb_initial_input_key(material_.get(), i));
+    for (int i = 0; i < iwb_initial_input_count(material_.get()); ++i)
+      keys.emplace_back(iwb_initial_input_key(material_.get(), i));
     return keys;
   }
 
   Array initial_state(const py::kwargs& inputs) const {
     std::vector<std::string> keys;
     std::vector<double> values;
-    for (const auto& [key, value] : inputs) keys.push_back(py::str(key)), values.push_back(value.cast<double>());
+    for (const auto& [key, value] : inputs)
+      keys.push_back(py::str(key)), values.push_back(value.cast<double>());
     std::vector<const char*> pointers;
     for (const auto& k : keys) pointers.push_back(k.c_str());
     Array state(iwb_state_size(material_.get()));
     char message[kMessageSize];
-    check(iwb_initial_state(material_.get(), pointers.data(), values.data(), int(values.size()), state.mutable_data(), message,
-                            kMessageSize),
+    check(iwb_initial_state(material_.get(), pointers.data(), values.data(), int(values.size()),
+                            state.mutable_data(), message, kMessageSize),
           message);
     return state;
   }
@@ -72,7 +79,8 @@ class Material {
     require_size(state);
     Array t(3);
     char message[kMessageSize];
-    check(iwb_traction(material_.get(), state.data(), t.mutable_data(), message, kMessageSize), message);
+    check(iwb_traction(material_.get(), state.data(), t.mutable_data(), message, kMessageSize),
+          message);
     return t;
   }
 
@@ -83,8 +91,9 @@ class Material {
     Array out(iwb_state_size(material_.get())), t(3), tangent({3, 3});
     double factor = 1.0;
     char message[kMessageSize];
-    check(iwb_update(material_.get(), state.data(), du.data(), thickness, 0.0, nullptr, out.mutable_data(), t.mutable_data(),
-                     tangent.mutable_data(), &factor, message, kMessageSize),
+    check(iwb_update(material_.get(), state.data(), du.data(), thickness, 0.0, nullptr,
+                     out.mutable_data(), t.mutable_data(), tangent.mutable_data(), &factor, message,
+                     kMessageSize),
           message, factor);
     return py::make_tuple(out, t, tangent);
   }
@@ -92,7 +101,8 @@ class Material {
  private:
   void require_size(const Array& state) const {
     if (state.size() != iwb_state_size(material_.get()))
-      throw py::value_error("state must hold " + std::to_string(iwb_state_size(material_.get())) + " values");
+      throw py::value_error("state must hold " + std::to_string(iwb_state_size(material_.get())) +
+                            " values");
   }
 
   struct Destroy {
@@ -104,7 +114,9 @@ class Material {
 }  // namespace
 
 PYBIND11_MODULE(iwb_interface, m) {
-  m.doc() = "The interface models of the interface workbench (iwb) through its C library (iwb_interface.h)";
+  m.doc() =
+      "The interface models of the interface workbench (iwb) through its C library "
+      "(iwb_interface.h)";
   m.attr("__version__") = iwb_version();
   static py::exception<MaterialError> error(m, "MaterialError");
   py::register_exception_translator([](std::exception_ptr p) {
@@ -119,13 +131,17 @@ PYBIND11_MODULE(iwb_interface, m) {
     }
   });
   py::class_<Material>(m, "Material")
-      .def(py::init<const std::string&, const std::string&, double, const std::string&>(), py::arg("model"),
-           py::arg("parameter_file"), py::arg("kappa_r") = 1.0, py::arg("integration") = "",
-           "integration: TOML text of an [integration] table (e.g. 'scheme = \"euler\"\\nsubsteps = 4'); '' for the default")
+      .def(py::init<const std::string&, const std::string&, double, const std::string&>(),
+           py::arg("model"), py::arg("parameter_file"), py::arg("kappa_r") = 1.0,
+           py::arg("integration") = "",
+           "integration: TOML text of an [integration] table (e.g. 'scheme = \"euler\"\\nsubsteps "
+           "= 4'); '' for the default")
       .def_property_readonly("state_names", &Material::state_names)
       .def_property_readonly("initial_inputs", &Material::initial_inputs)
-      .def("initial_state", &Material::initial_state, "the initial state from the model's [initial] inputs by keyword")
+      .def("initial_state", &Material::initial_state,
+           "the initial state from the model's [initial] inputs by keyword")
       .def("traction", &Material::traction, py::arg("state"))
       .def("update", &Material::update, py::arg("state"), py::arg("du"), py::arg("thickness") = 1.0,
-           "(state_out, traction (sigma_n, tau_x, tau_y) kPa, tangent d traction / d du) after the increment du");
+           "(state_out, traction (sigma_n, tau_x, tau_y) kPa, tangent d traction / d du) after the "
+           "increment du");
 }

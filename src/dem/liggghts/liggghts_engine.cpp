@@ -1,17 +1,18 @@
 #include "dem/liggghts/liggghts_engine.hpp"
-#include "dem/numerics.hpp"
-#include "dem/shear_start.hpp"
-#include "dem/liggghts/liggghts_outputs.hpp"
-#include "dem/stage_follower.hpp"
+
+#include <fmt/core.h>
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fmt/core.h>
 #include <map>
 
 #include "common/subprocess.hpp"
 #include "common/template.hpp"
+#include "dem/liggghts/liggghts_outputs.hpp"
+#include "dem/numerics.hpp"
+#include "dem/shear_start.hpp"
+#include "dem/stage_follower.hpp"
 #include "dem/wall_geometry.hpp"
 #include "io/run_directory.hpp"
 
@@ -35,24 +36,30 @@ long prime_seed(int scene_seed, int stream) {
   return n;
 }
 
-std::string g(double x) { return fmt::format("{:.10g}", x); }
+std::string g(double x) {
+  return fmt::format("{:.10g}", x);
+}
 
 // The wall's displacement ux (m) and its motion (the same functions as Shear::displacement_at and
 // speed_at): monotonic at v, after a linear ramp of the speed over T when the scene has one, or
-// cycles 0 -> +A -> -A -> 0 as a triangle wave, then the post-cyclic shear. LIGGGHTS 3.8's equal-style variables have no
-// min(): the ramp is written with (a<b) factors.
-bool ramped(const Shear& sh) { return !sh.cyclic() && sh.ramp_s > 0.0; }
+// cycles 0 -> +A -> -A -> 0 as a triangle wave, then the post-cyclic shear. LIGGGHTS 3.8's
+// equal-style variables have no min(): the ramp is written with (a<b) factors.
+bool ramped(const Shear& sh) {
+  return !sh.cyclic() && sh.ramp_s > 0.0;
+}
 
 std::string wall_displacement(const Shear& sh) {
   const std::string v = g(sh.velocity_m_s), T = g(sh.ramp_s);
   if (ramped(sh))
-    return fmt::format("variable ux equal {}*((v_t<{})*v_t*v_t/(2*{})+(v_t>={})*(v_t-{}/2))", v, T, T, T, T);
+    return fmt::format("variable ux equal {}*((v_t<{})*v_t*v_t/(2*{})+(v_t>={})*(v_t-{}/2))", v, T,
+                       T, T, T);
   if (!sh.cyclic()) return fmt::format("variable ux equal {}*v_t", v);
   // after the cycles (t >= tc) the post-cyclic shear, from 0 at v
   const std::string tc = g(sh.cycles_travel_m() / sh.velocity_m_s);
-  return fmt::format("variable phase equal v_t*{}/{}\n"
-                     "variable ux equal (v_t<{})*{}*(abs(((v_phase+3)%4)-2)-1)+(v_t>={})*{}*(v_t-{})",
-                     v, g(sh.amplitude_m), tc, g(sh.amplitude_m), tc, v, tc);
+  return fmt::format(
+      "variable phase equal v_t*{}/{}\n"
+      "variable ux equal (v_t<{})*{}*(abs(((v_phase+3)%4)-2)-1)+(v_t>={})*{}*(v_t-{})",
+      v, g(sh.amplitude_m), tc, g(sh.amplitude_m), tc, v, tc);
 }
 
 // The distance the wall has travelled (progress): its displacement, or v t for cycles.
@@ -66,14 +73,17 @@ std::string wall_travel(const Shear& sh) {
 std::string wall_motion(const Shear& sh, double dt) {
   const std::string v = g(sh.velocity_m_s);
   if (ramped(sh))
-    return fmt::format("variable vw equal {}*((v_t<{})*(v_t-{})/{}+(v_t>={}))\nvariable zero equal 0\n"
-                       "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero",
-                       v, g(sh.ramp_s), g(0.5 * dt), g(sh.ramp_s), g(sh.ramp_s));
+    return fmt::format(
+        "variable vw equal {}*((v_t<{})*(v_t-{})/{}+(v_t>={}))\nvariable zero equal 0\n"
+        "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero",
+        v, g(sh.ramp_s), g(0.5 * dt), g(sh.ramp_s), g(sh.ramp_s));
   if (!sh.cyclic()) return fmt::format("fix mv all move/mesh mesh W linear {} 0 0", v);
   const std::string tc = g(sh.cycles_travel_m() / sh.velocity_m_s);
-  return fmt::format("variable vw equal {}*((v_t<{})*(1-2*(floor((v_phase+1)/2)%2))+(v_t>={}))\n"
-                     "variable zero equal 0\n"
-                     "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero", v, tc, tc);
+  return fmt::format(
+      "variable vw equal {}*((v_t<{})*(1-2*(floor((v_phase+1)/2)%2))+(v_t>={}))\n"
+      "variable zero equal 0\n"
+      "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero",
+      v, tc, tc);
 }
 
 // The largest Young's modulus LIGGGHTS takes in SI units without `hard_particles yes`.
@@ -81,12 +91,13 @@ constexpr double kLiggghtsSoftLimitPa = 1e9;
 
 // Frictionless grains between flat walls and periodic sides have a free mode: the whole specimen
 // sliding sideways. Nothing stops it, and round-off feeds it: a dense soil cell (preparation
-// friction 0, 1084 grains, E 6.9e8, 200 kPa) drifted at 4-8 cm/s with every grain alike, its kinetic
-// energy growing to 6e-5 J, and never passed the acceptance (1e-6 J); with the drift removed every
-// 100 steps it was accepted after 14 windows. With friction the walls take this momentum up, and
-// the fix stays out so that those runs are unchanged.
+// friction 0, 1084 grains, E 6.9e8, 200 kPa) drifted at 4-8 cm/s with every grain alike, its
+// kinetic energy growing to 6e-5 J, and never passed the acceptance (1e-6 J); with the drift
+// removed every 100 steps it was accepted after 14 windows. With friction the walls take this
+// momentum up, and the fix stays out so that those runs are unchanged.
 std::string frictionless_drift(double consolidation_friction) {
-  if (consolidation_friction > 0.0) return "# frictionless preparation only: no sideways drift to remove";
+  if (consolidation_friction > 0.0)
+    return "# frictionless preparation only: no sideways drift to remove";
   return "fix nodrift grains momentum 100 linear 1 1 0";
 }
 
@@ -102,17 +113,19 @@ std::string materials(const Particles& p, double friction, int types) {
   // (global_properties.cpp); stiffness levels of ~2000 at 50 kPa need E ~ 4e9 (issue 20).
   const std::string hard = p.youngs_modulus_Pa > kLiggghtsSoftLimitPa ? "hard_particles yes\n" : "";
   return hard + fmt::format(
-      "fix m1 all property/global youngsModulus peratomtype{}\n"
-      "fix m2 all property/global poissonsRatio peratomtype{}\n"
-      "fix m3 all property/global coefficientRestitution peratomtypepair {}{}\n"
-      "fix m4 all property/global coefficientFriction peratomtypepair {}{}\n"
-      "fix m5 all property/global coefficientRollingFriction peratomtypepair {}{}",
-      repeat(g(p.youngs_modulus_Pa), types), repeat(g(p.poisson), types), types,
-      repeat(g(p.restitution), pairs), types, repeat(g(friction), pairs), types,
-      repeat(g(p.rolling_friction), pairs));
+                    "fix m1 all property/global youngsModulus peratomtype{}\n"
+                    "fix m2 all property/global poissonsRatio peratomtype{}\n"
+                    "fix m3 all property/global coefficientRestitution peratomtypepair {}{}\n"
+                    "fix m4 all property/global coefficientFriction peratomtypepair {}{}\n"
+                    "fix m5 all property/global coefficientRollingFriction peratomtypepair {}{}",
+                    repeat(g(p.youngs_modulus_Pa), types), repeat(g(p.poisson), types), types,
+                    repeat(g(p.restitution), pairs), types, repeat(g(friction), pairs), types,
+                    repeat(g(p.rolling_friction), pairs));
 }
 
-bool glued(const Scene& s) { return s.wall.kind == ProfileKind::kGlued; }
+bool glued(const Scene& s) {
+  return s.wall.kind == ProfileKind::kGlued;
+}
 
 // The glued layer: spheres of type 2 on a square grid, resting on the flat base mesh.
 std::string glued_layer(const Scene& s) {
@@ -121,14 +134,17 @@ std::string glued_layer(const Scene& s) {
   std::string out;
   for (int i = 0; i < int(std::lround(s.length_m / a)); ++i)
     for (int j = 0; j < int(std::lround(s.width_m / a)); ++j)
-      out += fmt::format("create_atoms 2 single {} {} {} units box\n", g((i + 0.5) * a), g((j + 0.5) * a), g(0.5 * d));
-  return out + fmt::format("group glued type 2\nset group glued diameter {}\nset group glued density {}",
-                           g(d), g(s.particles.density_kg_m3));
+      out += fmt::format("create_atoms 2 single {} {} {} units box\n", g((i + 0.5) * a),
+                         g((j + 0.5) * a), g(0.5 * d));
+  return out +
+         fmt::format("group glued type 2\nset group glued diameter {}\nset group glued density {}",
+                     g(d), g(s.particles.density_kg_m3));
 }
 
 // The glued spheres move with the wall's mesh: the same displacement, by `fix move`.
 std::string glued_motion(const Shear& sh) {
-  if (!sh.cyclic() && !ramped(sh)) return fmt::format("fix mvg glued move linear {} 0 0", g(sh.velocity_m_s));
+  if (!sh.cyclic() && !ramped(sh))
+    return fmt::format("fix mvg glued move linear {} 0 0", g(sh.velocity_m_s));
   return "fix mvg glued move variable v_ux NULL NULL v_vw NULL NULL";
 }
 
@@ -162,9 +178,11 @@ std::string plate_clamp(const Scene& s) {
 
 // A row of timeseries.raw (fix print, and the row printed when shear starts) and its title.
 constexpr const char* kTimeseriesRow =
-    "${t} ${ux} ${zplate} ${sigma_wall} ${tau_wall} ${sigma_plate} ${vs} ${vb} ${coord} ${na} ${kin}";
+    "${t} ${ux} ${zplate} ${sigma_wall} ${tau_wall} ${sigma_plate} ${vs} ${vb} ${coord} ${na} "
+    "${kin}";
 constexpr const char* kTimeseriesTitle =
-    "t_s ux_m zplate_m sigma_wall_Pa tau_wall_Pa sigma_plate_Pa vsolid_m3 vband_m3 coordination atoms ke_J";
+    "t_s ux_m zplate_m sigma_wall_Pa tau_wall_Pa sigma_plate_Pa vsolid_m3 vband_m3 coordination "
+    "atoms ke_J";
 
 TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidated) {
   const auto& p = s.particles;
@@ -172,9 +190,10 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
   std::string distribution = fmt::format("fix pdd all particledistribution/discrete {} {}",
                                          prime_seed(s.seed, 0), p.sizes.size());
   for (std::size_t i = 0; i < p.sizes.size(); ++i) {
-    templates += fmt::format("fix pt{} all particletemplate/sphere {} atom_type 1 density constant {} "
-                             "radius constant {}\n", i, prime_seed(s.seed, int(i) + 2),
-                             g(p.density_kg_m3), g(0.5 * p.sizes[i].diameter_m));
+    templates += fmt::format(
+        "fix pt{} all particletemplate/sphere {} atom_type 1 density constant {} "
+        "radius constant {}\n",
+        i, prime_seed(s.seed, int(i) + 2), g(p.density_kg_m3), g(0.5 * p.sizes[i].diameter_m));
     distribution += fmt::format(" pt{} {}", i, g(p.sizes[i].mass_fraction));
   }
   const double F0 = s.boundary.sigma_n_Pa * s.area_m2();
@@ -190,13 +209,23 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
       {"glued_force", glued(s) ? "compute fglued glued reduce sum fx fz" : "# no glued layer"},
       {"glued_fx", glued(s) ? "+c_fglued[1]" : ""},
       {"glued_fz", glued(s) ? "+c_fglued[2]" : ""},
-      {"Lx", g(s.length_m)}, {"Ly", g(s.width_m)}, {"zlo", g(n.zlo)}, {"zhi", g(n.zhi)},
-      {"skin", g(n.skin)}, {"dt", g(n.dt)}, {"rolling_model", p.rolling_model},
+      {"Lx", g(s.length_m)},
+      {"Ly", g(s.width_m)},
+      {"zlo", g(n.zlo)},
+      {"zhi", g(n.zhi)},
+      {"skin", g(n.skin)},
+      {"dt", g(n.dt)},
+      {"rolling_model", p.rolling_model},
       {"plate_com", fmt::format("{} {} {}", g(0.5 * s.length_m), g(0.5 * s.width_m), g(n.plate_z))},
-      {"F0", g(F0)}, {"servo_vmax", g(s.servo.vel_max_m_s)}, {"servo_kp", g(s.servo.kp)},
+      {"F0", g(F0)},
+      {"servo_vmax", g(s.servo.vel_max_m_s)},
+      {"servo_kp", g(s.servo.kp)},
       {"particle_templates", templates + distribution},
-      {"ins_zlo", g(n.ins_zlo)}, {"ins_zhi", g(n.ins_zhi)}, {"seed_insert", std::to_string(prime_seed(s.seed, 1))},
-      {"n_particles", std::to_string(s.particle_count)}, {"insert_attempts", std::to_string(kInsertAttempts)},
+      {"ins_zlo", g(n.ins_zlo)},
+      {"ins_zhi", g(n.ins_zhi)},
+      {"seed_insert", std::to_string(prime_seed(s.seed, 1))},
+      {"n_particles", std::to_string(s.particle_count)},
+      {"insert_attempts", std::to_string(kInsertAttempts)},
       {"thermo_every", "5000"},
       {"settle_steps", std::to_string(n.settle_steps)},
       {"windows_required", std::to_string(s.consolidation.windows_required)},
@@ -204,26 +233,37 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
       {"window_steps", std::to_string(s.consolidation.window_steps)},
       {"approach_windows", std::to_string(n.approach_windows)},
       {"approach_sigma", g(kApproachSigmaShare * s.boundary.sigma_n_Pa)},
-      {"sigma_n0", g(s.boundary.sigma_n_Pa)}, {"sigma_tol", g(s.consolidation.sigma_tolerance)},
+      {"sigma_n0", g(s.boundary.sigma_n_Pa)},
+      {"sigma_tol", g(s.consolidation.sigma_tolerance)},
       {"plate_tol", g(s.consolidation.plate_tolerance_d50 * n.d50)},
       {"ke_tol", g(s.consolidation.kinetic_energy_J)},
       {"bc", driver::to_string(s.boundary.kind)},
-      {"K_Pa_per_m", g(s.boundary.kind == driver::BoundaryKind::kCNS ? s.boundary.K_Pa_per_m : 0.0)},
+      {"K_Pa_per_m",
+       g(s.boundary.kind == driver::BoundaryKind::kCNS ? s.boundary.K_Pa_per_m : 0.0)},
       {"relax_steps", std::to_string(n.relax_steps)},
       {"cv_hold", s.boundary.kind == driver::BoundaryKind::kCV
                       ? "fix_modify P servo/integrate stop  # CV: the plate is held during shear"
                       : "# the servo keeps controlling the plate during shear"},
       {"v_wall", g(s.shear.velocity_m_s)},
-      {"wall_displacement", wall_displacement(s.shear)}, {"wall_motion", wall_motion(s.shear, n.dt)},
-      {"wall_travel", wall_travel(s.shear)}, {"ts_row", kTimeseriesRow}, {"ts_title", kTimeseriesTitle},
+      {"wall_displacement", wall_displacement(s.shear)},
+      {"wall_motion", wall_motion(s.shear, n.dt)},
+      {"wall_travel", wall_travel(s.shear)},
+      {"ts_row", kTimeseriesRow},
+      {"ts_title", kTimeseriesTitle},
       {"ts_every", std::to_string(n.ts_every)},
-      {"progress_every", std::to_string(n.progress_every)}, {"u_total", g(s.shear.travel_m())},
-      {"profile_repeat", std::to_string(n.profile_repeat)}, {"profile_every", std::to_string(n.profile_every)},
-      {"bin_dz", g(s.outputs.profile_bin_d50 * n.d50)}, {"vtk_every", std::to_string(n.vtk_every)},
-      {"shear_steps", std::to_string(n.shear_steps)}, {"vtk_dir", "dumps"},
+      {"progress_every", std::to_string(n.progress_every)},
+      {"u_total", g(s.shear.travel_m())},
+      {"profile_repeat", std::to_string(n.profile_repeat)},
+      {"profile_every", std::to_string(n.profile_every)},
+      {"bin_dz", g(s.outputs.profile_bin_d50 * n.d50)},
+      {"vtk_every", std::to_string(n.vtk_every)},
+      {"shear_steps", std::to_string(n.shear_steps)},
+      {"vtk_dir", "dumps"},
       {"z0_consolidated", g(z0_consolidated)},
-      {"band_d50", g((n.band_zhi - n.band_zlo) / n.d50)}, {"band_zlo", g(n.band_zlo)},
-      {"band_zhi", g(n.band_zhi)}, {"servo_kp_shear", g(s.servo.kp_shear)},
+      {"band_d50", g((n.band_zhi - n.band_zlo) / n.d50)},
+      {"band_zlo", g(n.band_zlo)},
+      {"band_zhi", g(n.band_zhi)},
+      {"servo_kp_shear", g(s.servo.kp_shear)},
   };
 }
 
@@ -264,15 +304,20 @@ std::string LiggghtsEngine::version() const {
 
 nlohmann::json LiggghtsEngine::numerics(const Scene& s) const {
   const Numerics n = derive(s);
-  return {{"timestep_s", n.dt},
-          {"timestep_rule", fmt::format("{:g} x Rayleigh time of the smallest particle", s.dt_fraction)},
-          {"rayleigh_time_s", rayleigh_time(s.particles)},
-          {"shear_steps", n.shear_steps},
-          {"wall_velocity_mm_s", s.shear.velocity_m_s * 1e3},
-          {"wall_ramp", ramp_numerics(s, n.dt)},
-          {"contact_law", fmt::format("pair gran hertz, tangential history, rolling_friction {}; walls: wall/gran hertz on STL "
-                                      "meshes", s.particles.rolling_model)},
-          {"servo", {{"vel_max_m_s", s.servo.vel_max_m_s}, {"kp", s.servo.kp}, {"kp_shear", s.servo.kp_shear}}}};
+  return {
+      {"timestep_s", n.dt},
+      {"timestep_rule",
+       fmt::format("{:g} x Rayleigh time of the smallest particle", s.dt_fraction)},
+      {"rayleigh_time_s", rayleigh_time(s.particles)},
+      {"shear_steps", n.shear_steps},
+      {"wall_velocity_mm_s", s.shear.velocity_m_s * 1e3},
+      {"wall_ramp", ramp_numerics(s, n.dt)},
+      {"contact_law", fmt::format("pair gran hertz, tangential history, rolling_friction {}; "
+                                  "walls: wall/gran hertz on STL "
+                                  "meshes",
+                                  s.particles.rolling_model)},
+      {"servo",
+       {{"vel_max_m_s", s.servo.vel_max_m_s}, {"kp", s.servo.kp}, {"kp_shear", s.servo.kp_shear}}}};
 }
 
 StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageContext& ctx,
@@ -282,18 +327,23 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
   const Numerics n = derive(s);
   write_scene_meshes(s, n.plate_z, ctx.work_dir);
   const std::string input = stage + ".in";
-  TemplateValues values = values_of(s, n, facts.value("/consolidate/zplate_m"_json_pointer, n.plate_z));
+  TemplateValues values =
+      values_of(s, n, facts.value("/consolidate/zplate_m"_json_pointer, n.plate_z));
   values.insert(extra_.begin(), extra_.end());
-  io::write_atomically(ctx.work_dir / input, render_template(liggghts_templates().at(input), values, input));
-  const double generation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  StageResult r = run_followed_stage(liggghts_command(input, ctx.processes), stage, ctx, read_loop_time);
+  io::write_atomically(ctx.work_dir / input,
+                       render_template(liggghts_templates().at(input), values, input));
+  const double generation =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  StageResult r =
+      run_followed_stage(liggghts_command(input, ctx.processes), stage, ctx, read_loop_time);
   r.facts["generation_seconds"] = generation;
   return r;
 }
 
 std::string LiggghtsEngine::unsupported(const Scene& s) const {
   if (s.particles.wet())
-    return "[particles] suction_kPa: liquid bridges are modelled in YADE only (Law2_ScGeom_CapillaryPhys_Capillarity; "
+    return "[particles] suction_kPa: liquid bridges are modelled in YADE only "
+           "(Law2_ScGeom_CapillaryPhys_Capillarity; "
            "run with --engine yade)";
   return {};
 }
@@ -305,7 +355,8 @@ std::string LiggghtsEngine::consolidation_inputs(const Scene& s) const {
   values.insert(extra_.begin(), extra_.end());
   const std::string input = std::string(kConsolidationStage) + ".in";
   const SceneMeshes meshes = scene_meshes(s, n.plate_z);
-  return render_template(liggghts_templates().at(input), values, input) + meshes.wall_stl + meshes.top_stl;
+  return render_template(liggghts_templates().at(input), values, input) + meshes.wall_stl +
+         meshes.top_stl;
 }
 
 // consolidate.in's write_restart; shear.in's sheared.restart is not started from.

@@ -45,8 +45,10 @@ ContractTables assemble_liggghts_outputs(const StageContext& ctx, const nlohmann
   const Scene& s = ctx.scene;
   ContractTables out;
   out.timeseries = timeseries_table(s, n, ctx.work_dir / "timeseries.raw", z0);
-  out.profiles = profile_table(s, n, liggghts_profile_blocks(ctx.work_dir / "profiles.raw", s, n), step0);
-  write_snapshot_series(s, ctx.work_dir / "dumps", {"particles_([0-9]+)\\.vtk", "walls_([0-9]+)\\.vtk"},
+  out.profiles =
+      profile_table(s, n, liggghts_profile_blocks(ctx.work_dir / "profiles.raw", s, n), step0);
+  write_snapshot_series(s, ctx.work_dir / "dumps",
+                        {"particles_([0-9]+)\\.vtk", "walls_([0-9]+)\\.vtk"},
                         {Eigen::Vector3d::Zero(), step0, n.dt}, ctx.run_dir / "vtk");
   out.facts = plate_facts(s, out.timeseries);
   out.facts["timestep_s"] = n.dt;

@@ -1,8 +1,9 @@
 #include "dem/yade/yade_engine.hpp"
 
+#include <fmt/core.h>
+
 #include <chrono>
 #include <cmath>
-#include <fmt/core.h>
 #include <fstream>
 #include <sstream>
 
@@ -50,7 +51,8 @@ nlohmann::json rolling(const Scene& s) {
   const double overlap = std::pow(force / kno, 2.0 / 3.0);
   const double k_n = 1.5 * kno * std::sqrt(overlap);
   const double k_t = 8.0 * g_star * std::sqrt(r_star * overlap);
-  const double k_r = p.rolling_model == "epsd2" ? k_t * r_star * r_star : 2.25 * k_n * mu_r * mu_r * r_star * r_star;
+  const double k_r = p.rolling_model == "epsd2" ? k_t * r_star * r_star
+                                                : 2.25 * k_n * mu_r * mu_r * r_star * r_star;
   return {{"eta", 0.5 * mu_r}, {"krot", k_r}, {"mu_r", mu_r}, {"stiffness_from", p.rolling_model}};
 }
 
@@ -59,23 +61,38 @@ nlohmann::json glued_spheres(const Scene& s) {
   if (s.wall.kind != ProfileKind::kGlued) return g;
   const double d = s.wall.height_m, a = s.wall.pitch_m;
   for (int i = 0; i < int(std::lround(s.length_m / a)); ++i)
-    for (int j = 0; j < int(std::lround(s.width_m / a)); ++j) g.push_back({(i + 0.5) * a, (j + 0.5) * a, 0.5 * d, d});
+    for (int j = 0; j < int(std::lround(s.width_m / a)); ++j)
+      g.push_back({(i + 0.5) * a, (j + 0.5) * a, 0.5 * d, d});
   return g;
 }
 
 nlohmann::json shear_parameters(const Scene& s, const Numerics& n) {
-  return {{"velocity", s.shear.velocity_m_s}, {"amplitude", s.shear.amplitude_m}, {"cyclic", s.shear.cyclic()},
+  return {{"velocity", s.shear.velocity_m_s},
+          {"amplitude", s.shear.amplitude_m},
+          {"cyclic", s.shear.cyclic()},
           {"cycles_travel", s.shear.cycles_travel_m()},
           {"ramp_s", s.shear.cyclic() ? 0.0 : s.shear.ramp_s},
-          {"steps", n.shear_steps}, {"ts_every", n.ts_every}, {"progress_every", n.progress_every},
-          {"profile_every", n.profile_every}, {"profile_repeat", n.profile_repeat},
-          {"vtk_every", n.vtk_every}, {"u_total", s.shear.travel_m()}};
+          {"steps", n.shear_steps},
+          {"ts_every", n.ts_every},
+          {"progress_every", n.progress_every},
+          {"profile_every", n.profile_every},
+          {"profile_repeat", n.profile_repeat},
+          {"vtk_every", n.vtk_every},
+          {"u_total", s.shear.travel_m()}};
 }
 
 std::vector<std::string> yade_command(const std::string& stage, int threads) {
   // -n: no GUI; -x: exit when the script ends. stdbuf keeps the IWB_ lines live.
-  return {"stdbuf", "-oL", "yade", "-n", "-x", "-j", std::to_string(std::max(1, threads)), kScript,
-          "yade_params.json", stage};
+  return {"stdbuf",
+          "-oL",
+          "yade",
+          "-n",
+          "-x",
+          "-j",
+          std::to_string(std::max(1, threads)),
+          kScript,
+          "yade_params.json",
+          stage};
 }
 
 // The script's profiles.raw: "step z count vx solid s_zz s_xz" per bin, stresses per bin volume
@@ -84,7 +101,8 @@ ProfileBlocks yade_profile_blocks(const fs::path& raw, const Scene& s, const Num
   ProfileBlocks blocks;
   for (const auto& v : numeric_lines(raw))
     if (v.size() >= 7)
-      blocks[long(v[0])].push_back({(v[1] - s.wall.mean_height_m()) / n.d50, v[2], v[3], v[4], -v[5], -v[6]});
+      blocks[long(v[0])].push_back(
+          {(v[1] - s.wall.mean_height_m()) / n.d50, v[2], v[3], v[4], -v[5], -v[6]});
   return blocks;
 }
 
@@ -104,26 +122,58 @@ nlohmann::json yade_parameters(const Scene& s, const Numerics& n) {
   nlohmann::json sizes = nlohmann::json::array();
   for (const auto& c : p.sizes) sizes.push_back({c.diameter_m, c.mass_fraction});
   return {
-      {"Lx", s.length_m}, {"Ly", s.width_m}, {"zlo", n.zlo}, {"zhi", n.zhi}, {"d_max", p.d_max()},
-      {"dt", n.dt}, {"skin", n.skin}, {"plate_z", n.plate_z}, {"ins_zlo", n.ins_zlo}, {"ins_zhi", n.ins_zhi},
-      {"sizes", sizes}, {"density", p.density_kg_m3}, {"E", p.youngs_modulus_Pa}, {"nu", p.poisson},
-      {"restitution", p.restitution}, {"mu_consolidation", s.consolidation.friction}, {"mu_test", p.friction},
-      {"rolling", rolling(s)}, {"glued", glued_spheres(s)},
-      {"capillary", p.wet() ? nlohmann::json{{"suction_Pa", p.suction_Pa}, {"surface_tension_N_m", p.surface_tension_N_m}}
-                            : nlohmann::json(nullptr)}, {"wall_stl", "wall.stl"}, {"plate_stl", "top.stl"},
-      {"n_particles", s.particle_count}, {"seed", s.seed},
-      {"settle_steps", n.settle_steps}, {"window_steps", s.consolidation.window_steps},
-      {"approach_windows", n.approach_windows}, {"approach_sigma", kApproachSigmaShare * s.boundary.sigma_n_Pa},
-      {"windows_required", s.consolidation.windows_required}, {"max_windows", s.consolidation.max_windows},
-      {"sigma_n0", s.boundary.sigma_n_Pa}, {"sigma_tol", s.consolidation.sigma_tolerance},
-      {"plate_tol", s.consolidation.plate_tolerance_d50 * n.d50}, {"ke_tol", s.consolidation.kinetic_energy_J},
-      {"F0", s.boundary.sigma_n_Pa * s.area_m2()}, {"area", s.area_m2()},
-      {"servo", {{"vel_max", s.servo.vel_max_m_s}, {"gain", kServoGain}, {"integral_gain", kServoIntegralGain}, {"every", kServoEvery}}},
+      {"Lx", s.length_m},
+      {"Ly", s.width_m},
+      {"zlo", n.zlo},
+      {"zhi", n.zhi},
+      {"d_max", p.d_max()},
+      {"dt", n.dt},
+      {"skin", n.skin},
+      {"plate_z", n.plate_z},
+      {"ins_zlo", n.ins_zlo},
+      {"ins_zhi", n.ins_zhi},
+      {"sizes", sizes},
+      {"density", p.density_kg_m3},
+      {"E", p.youngs_modulus_Pa},
+      {"nu", p.poisson},
+      {"restitution", p.restitution},
+      {"mu_consolidation", s.consolidation.friction},
+      {"mu_test", p.friction},
+      {"rolling", rolling(s)},
+      {"glued", glued_spheres(s)},
+      {"capillary", p.wet() ? nlohmann::json{{"suction_Pa", p.suction_Pa},
+                                             {"surface_tension_N_m", p.surface_tension_N_m}}
+                            : nlohmann::json(nullptr)},
+      {"wall_stl", "wall.stl"},
+      {"plate_stl", "top.stl"},
+      {"n_particles", s.particle_count},
+      {"seed", s.seed},
+      {"settle_steps", n.settle_steps},
+      {"window_steps", s.consolidation.window_steps},
+      {"approach_windows", n.approach_windows},
+      {"approach_sigma", kApproachSigmaShare * s.boundary.sigma_n_Pa},
+      {"windows_required", s.consolidation.windows_required},
+      {"max_windows", s.consolidation.max_windows},
+      {"sigma_n0", s.boundary.sigma_n_Pa},
+      {"sigma_tol", s.consolidation.sigma_tolerance},
+      {"plate_tol", s.consolidation.plate_tolerance_d50 * n.d50},
+      {"ke_tol", s.consolidation.kinetic_energy_J},
+      {"F0", s.boundary.sigma_n_Pa * s.area_m2()},
+      {"area", s.area_m2()},
+      {"servo",
+       {{"vel_max", s.servo.vel_max_m_s},
+        {"gain", kServoGain},
+        {"integral_gain", kServoIntegralGain},
+        {"every", kServoEvery}}},
       {"bc", driver::to_string(s.boundary.kind)},
       {"K_Pa_per_m", s.boundary.kind == driver::BoundaryKind::kCNS ? s.boundary.K_Pa_per_m : 0.0},
-      {"relax_steps", n.relax_steps}, {"plate_clamp", s.plate.height_m + s.plate_clamp_m},
-      {"clamp", s.plate_clamp_m > 0.0}, {"band_zlo", n.band_zlo}, {"band_zhi", n.band_zhi},
-      {"bin_dz", s.outputs.profile_bin_d50 * n.d50}, {"shear", shear_parameters(s, n)},
+      {"relax_steps", n.relax_steps},
+      {"plate_clamp", s.plate.height_m + s.plate_clamp_m},
+      {"clamp", s.plate_clamp_m > 0.0},
+      {"band_zlo", n.band_zlo},
+      {"band_zhi", n.band_zhi},
+      {"bin_dz", s.outputs.profile_bin_d50 * n.d50},
+      {"shear", shear_parameters(s, n)},
   };
 }
 
@@ -142,18 +192,26 @@ std::string YadeEngine::version() const {
 nlohmann::json YadeEngine::numerics(const Scene& s) const {
   const Numerics n = derive(s);
   return {{"timestep_s", n.dt},
-          {"timestep_rule", fmt::format("{:g} x Rayleigh time of the smallest particle (the LIGGGHTS runner's rule)", s.dt_fraction)},
+          {"timestep_rule",
+           fmt::format("{:g} x Rayleigh time of the smallest particle (the LIGGGHTS runner's rule)",
+                       s.dt_fraction)},
           {"rayleigh_time_s", rayleigh_time(s.particles)},
           {"shear_steps", n.shear_steps},
           {"wall_velocity_mm_s", s.shear.velocity_m_s * 1e3},
           {"wall_ramp", ramp_numerics(s, n.dt)},
-          {"contact_law", "Ip2_FrictMat_FrictMat_MindlinPhys (en = es = restitution, krot, eta) + "
-                          "Law2_ScGeom_MindlinPhys_Mindlin(includeMoment); walls: facets from the STL"},
+          {"contact_law",
+           "Ip2_FrictMat_FrictMat_MindlinPhys (en = es = restitution, krot, eta) + "
+           "Law2_ScGeom_MindlinPhys_Mindlin(includeMoment); walls: facets from the STL"},
           {"rolling", rolling(s)},
-          {"servo", {{"vel_max_m_s", s.servo.vel_max_m_s}, {"gain_per_update", kServoGain}, {"integral_gain_while_shearing", kServoIntegralGain}, {"steps_per_update", kServoEvery}}}};
+          {"servo",
+           {{"vel_max_m_s", s.servo.vel_max_m_s},
+            {"gain_per_update", kServoGain},
+            {"integral_gain_while_shearing", kServoIntegralGain},
+            {"steps_per_update", kServoEvery}}}};
 }
 
-StageResult YadeEngine::run_stage(const std::string& stage, const StageContext& ctx, const nlohmann::json&) {
+StageResult YadeEngine::run_stage(const std::string& stage, const StageContext& ctx,
+                                  const nlohmann::json&) {
   const auto t0 = std::chrono::steady_clock::now();
   const Scene& s = ctx.scene;
   const Numerics n = derive(s);
@@ -163,7 +221,8 @@ StageResult YadeEngine::run_stage(const std::string& stage, const StageContext& 
   io::write_atomically(ctx.work_dir / "yade_params.json", params.dump(2) + "\n");
   io::write_atomically(ctx.work_dir / kScript, yade_scripts().at(kScript));
   if (s.particles.wet()) write_capillary_tables(ctx.work_dir);
-  const double generation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double generation =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   StageResult r = run_followed_stage(yade_command(stage, ctx.processes), stage, ctx);
   r.facts["generation_seconds"] = generation;
   return r;
@@ -176,8 +235,8 @@ std::string YadeEngine::consolidation_inputs(const Scene& s) const {
   const Numerics n = derive(s);
   nlohmann::json params = yade_parameters(s, n);
   params.update(extra_);
-  for (const char* later : {"shear", "bc", "K_Pa_per_m", "relax_steps", "plate_clamp", "clamp", "band_zlo", "band_zhi", "bin_dz", "mu_test",
-                            "oedometer"})
+  for (const char* later : {"shear", "bc", "K_Pa_per_m", "relax_steps", "plate_clamp", "clamp",
+                            "band_zlo", "band_zhi", "bin_dz", "mu_test", "oedometer"})
     params.erase(later);
   const SceneMeshes meshes = scene_meshes(s, n.plate_z);
   return params.dump(2) + yade_scripts().at(kScript) + meshes.wall_stl + meshes.top_stl;
@@ -194,10 +253,12 @@ ContractTables YadeEngine::assemble(const StageContext& ctx, const nlohmann::jso
   const double z0 = facts.at("shear").at("z0_m").get<double>();
   ContractTables out;
   out.timeseries = timeseries_table(ctx.scene, n, ctx.work_dir / "timeseries.raw", z0);
-  out.profiles = profile_table(ctx.scene, n, yade_profile_blocks(ctx.work_dir / "profiles.raw", ctx.scene, n), step0);
+  out.profiles = profile_table(
+      ctx.scene, n, yade_profile_blocks(ctx.work_dir / "profiles.raw", ctx.scene, n), step0);
   // interface_shear.py lifts the scene by d_max - zlo (YADE's cell starts at z = 0)
   const Eigen::Vector3d shift(0.0, 0.0, -(ctx.scene.particles.d_max() - n.zlo));
-  write_snapshot_series(ctx.scene, ctx.work_dir / "dumps", {"yade-spheres-0*([0-9]+)\\.vtk", "yade-facets-0*([0-9]+)\\.vtk"},
+  write_snapshot_series(ctx.scene, ctx.work_dir / "dumps",
+                        {"yade-spheres-0*([0-9]+)\\.vtk", "yade-facets-0*([0-9]+)\\.vtk"},
                         {shift, step0, n.dt}, ctx.run_dir / "vtk");
   out.facts = plate_facts(ctx.scene, out.timeseries);
   out.facts["timestep_s"] = n.dt;

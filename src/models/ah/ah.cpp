@@ -11,12 +11,13 @@ ModelSpec ah_spec() {
           true,
           {&HypoplasticParameters::table()},
           [](const ModelInputs& in) {
-            return make_hypoplastic("ah", ReducedInterfaceKinematics<algebra::ReducedOps>{true},
-                                    HypoplasticVariant{LodeRule::kZero, CoefficientARule::kArnoldHerle},
-                                    in);
+            return make_hypoplastic(
+                "ah", ReducedInterfaceKinematics<algebra::ReducedOps>{true},
+                HypoplasticVariant{LodeRule::kZero, CoefficientARule::kArnoldHerle}, in);
           },
-          with_plan_rank(hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(),
-                                                 true, InPlaneStart::kIsotropic, 1),
+          with_plan_rank(hypoplastic_declaration(
+                             ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(),
+                             true, InPlaneStart::kIsotropic, 1),
                          4)};
 }
 

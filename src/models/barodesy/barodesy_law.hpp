@@ -29,15 +29,17 @@ namespace iwb::models {
 
 struct BarodesyParameters {
   double lambda_star;  // slope of the isotropic NCL, ln(1+e) against ln p
-  double kappa_star;   // slope of isotropic unloading, ln(1+e) against ln p (approximately: README.md)
-  double phi_c;        // critical state friction angle, rad
-  double N;            // ln(1+e) on the isotropic NCL at p = 1 kPa
-  double G0_over_p;    // shear modulus over mean stress at an isotropic state (Table 8.1's G0/p_ini)
+  double
+      kappa_star;  // slope of isotropic unloading, ln(1+e) against ln p (approximately: README.md)
+  double phi_c;    // critical state friction angle, rad
+  double N;        // ln(1+e) on the isotropic NCL at p = 1 kPa
+  double G0_over_p;  // shear modulus over mean stress at an isotropic state (Table 8.1's G0/p_ini)
 };
 
 struct BarodesyConstants {
   BarodesyParameters p;
-  double K_c;  // (1 - sin phi) / (1 + sin phi), phi = phi_c kappa_r: sigma_3 / sigma_1 at the critical state
+  double K_c;  // (1 - sin phi) / (1 + sin phi), phi = phi_c kappa_r: sigma_3 / sigma_1 at the
+               // critical state
   double c1, c2, c3, c5, c6;
   double c3_shear, c3_unloading;  // the two entries of eq. 8.12, c3 their max (both negative)
 };
@@ -50,8 +52,10 @@ struct BarodesyLaw {
   using Constants = BarodesyConstants;
 
   template <class Ops, class S>
-  static typename Ops::template Tensor<S> rate(const typename Ops::template Tensor<S>& T, const S& e,
-                                               const typename Ops::template Tensor<S>& D, const Constants& c) {
+  static typename Ops::template Tensor<S> rate(const typename Ops::template Tensor<S>& T,
+                                               const S& e,
+                                               const typename Ops::template Tensor<S>& D,
+                                               const Constants& c) {
     using std::exp;
     using std::log;
     using std::pow;
@@ -63,7 +67,8 @@ struct BarodesyLaw {
     const S delta = Ops::trace(D0);
     const S R_norm_T = sqrt(S(Ops::contract(T, T)));
     const Tensor T0 = T / R_norm_T;
-    const S x = safe_sqrt(S(1.5 - 0.5 * delta * delta));  // |D0_1 - D0_2| of a triaxial D0; 0 when isotropic
+    const S x = safe_sqrt(
+        S(1.5 - 0.5 * delta * delta));  // |D0_1 - D0_2| of a triaxial D0; 0 when isotropic
     // alpha -> 0 for an isotropic D^0 (K -> 1 as fast as x -> 0): R^0 = -1/sqrt3 there
     S alpha = S(0.0);
     if (value_of(x) > kIsotropicStretching) {
@@ -78,7 +83,8 @@ struct BarodesyLaw {
     const S density = pow(2.0 * p / p_e, c.p.lambda_star * c.c5);  // ((1+e)/(1+e_c))^c5
     const S Lambda = -(c.p.lambda_star - c.p.kappa_star) / (2.0 * std::sqrt(3.0)) * delta +
                      (c.p.lambda_star + c.p.kappa_star) / 2.0;
-    const S beta = -1.0 / (c.c3 * Lambda) + (std::pow(2.0, c.c5 * c.p.lambda_star) - 1.0) / std::sqrt(3.0);
+    const S beta =
+        -1.0 / (c.c3 * Lambda) + (std::pow(2.0, c.c5 * c.p.lambda_star) - 1.0) / std::sqrt(3.0);
     const S f = c.c6 * beta * delta - 0.5;
     const S g = (1.0 - c.c6) * beta * delta + density - 0.5;
     return Tensor((c.c3 * R_norm_T * norm_D) * (f * R0 + g * T0));
@@ -93,18 +99,21 @@ struct BarodesyLaw {
   // the ratio constant (README.md). OCR 1 is the isotropic NCL at K = 1, the oedometric
   // asymptote at K0, e_c at K_c.
   template <class Ops>
-  static double void_ratio_at_stress(const typename Ops::template Tensor<double>& T, double ocr, const Constants& c) {
+  static double void_ratio_at_stress(const typename Ops::template Tensor<double>& T, double ocr,
+                                     const Constants& c) {
     const double p = -Ops::trace(T) / 3.0;
     const auto s = (T + p * Ops::template unit<double>()).eval();
     const double q = std::sqrt(1.5 * Ops::contract(s, s));
     // tr s^3 < 0: one principal compression larger than the other two (triaxial compression)
     const bool compression = Ops::trace_of_cube(s) < 0.0;
-    const double K = compression ? (p - q / 3.0) / (p + 2.0 * q / 3.0) : (p - 2.0 * q / 3.0) / (p + q / 3.0);
+    const double K =
+        compression ? (p - q / 3.0) / (p + 2.0 * q / 3.0) : (p - 2.0 * q / 3.0) / (p + q / 3.0);
     return void_ratio_at_ratio(K, p, ocr, c);
   }
   static double void_ratio_at_ratio(double K, double p, double ocr, const Constants& c);
   // mean_stress_kPa, p_e_kPa, p_e / p
-  static std::vector<NamedValue> diagnostics(const StressInvariants& s, double e, const Constants& c);
+  static std::vector<NamedValue> diagnostics(const StressInvariants& s, double e,
+                                             const Constants& c);
 
   // Below this |D0_1 - D0_2|-like measure D^0 is isotropic for alpha (alpha ~ x there).
   static constexpr double kIsotropicStretching = 1e-9;

@@ -11,8 +11,9 @@
 namespace iwb::models {
 
 // `table` holds phi_c_deg (the default K0): Masin's [hypoplastic_clay], or Barodesy's own.
-ModelDeclaration clay_declaration(const std::vector<std::string>& stress_components, bool interface_model,
-                                  int listing_order, RoughnessScheme scheme, std::vector<DiagnosticSpec> own_diagnostics,
+ModelDeclaration clay_declaration(const std::vector<std::string>& stress_components,
+                                  bool interface_model, int listing_order, RoughnessScheme scheme,
+                                  std::vector<DiagnosticSpec> own_diagnostics,
                                   const std::string& table = "hypoplastic_clay");
 
 }  // namespace iwb::models

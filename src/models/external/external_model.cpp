@@ -3,12 +3,12 @@
 #include <dlfcn.h>
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <memory>
 #include <regex>
-#include <algorithm>
-#include <array>
 
 #include "common/errors.hpp"
 
@@ -16,8 +16,8 @@ namespace iwb::models {
 
 namespace {
 
-using UmatEntry = void (*)(double*, double*, double*, const double*, const double*, const int*, const double*, const int*,
-                           double*);
+using UmatEntry = void (*)(double*, double*, double*, const double*, const double*, const int*,
+                           const double*, const int*, double*);
 
 constexpr int kMaxStatev = kMaxStateSize - 6;  // stress (3) and total strain (3) come first
 constexpr int kListingOrder = 1000;            // after every built-in model
@@ -40,7 +40,8 @@ Library open(const std::string& path, const std::string& name) {
       lib.entry = reinterpret_cast<UmatEntry>(f);
       return lib;
     }
-  throw InputError(fmt::format("--entry {}: no symbol '{}' (or '{}_', gfortran's) in {}", name, name, name, path));
+  throw InputError(fmt::format("--entry {}: no symbol '{}' (or '{}_', gfortran's) in {}", name,
+                               name, name, path));
 }
 
 class ExternalModel final : public Model {
@@ -67,7 +68,8 @@ class ExternalModel final : public Model {
     call(s, {d.eps_n, d.gamma_x, d.gamma_y}, out, ddsdde);
   }
   // The stress carries DDSDDE's derivative; the user's variables none (the UMAT does not give it).
-  void update(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d, StateVectorT<Dual>& out) const override {
+  void update(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d,
+              StateVectorT<Dual>& out) const override {
     const StateVector values = values_of<Dual>(s);
     StateVector end;
     const Dual du[3] = {d.eps_n, d.gamma_x, d.gamma_y};
@@ -83,16 +85,23 @@ class ExternalModel final : public Model {
   }
   // The rate form for the callers that ask for one (the closed-form mixed control): the response to
   // a small increment along d, per unit of it.
-  void rate(const StateVector& s, const InterfaceStrain& d, StateVector& ds) const override { rate_of(s, d, ds); }
-  void rate(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d, StateVectorT<Dual>& ds) const override {
+  void rate(const StateVector& s, const InterfaceStrain& d, StateVector& ds) const override {
+    rate_of(s, d, ds);
+  }
+  void rate(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d,
+            StateVectorT<Dual>& ds) const override {
     StateVectorT<Dual> end;
     const double h = kRateStep;
     update(s, {d.eps_n * h, d.gamma_x * h, d.gamma_y * h}, end);
     ds = (end - s) / h;
   }
-  InterfaceStress stress(const StateVector& s) const override { return {-s(kTn), std::nullopt, s(kTn + 1), s(kTn + 2)}; }
+  InterfaceStress stress(const StateVector& s) const override {
+    return {-s(kTn), std::nullopt, s(kTn + 1), s(kTn + 2)};
+  }
   double void_ratio(const StateVector&) const override { return std::nan(""); }
-  std::string domain_violation(const StateVector& s) const override { return s.allFinite() ? "" : "non-finite state"; }
+  std::string domain_violation(const StateVector& s) const override {
+    return s.allFinite() ? "" : "non-finite state";
+  }
   StateVector error_scale(const StateVector& s) const override {
     StateVector e = StateVector::Constant(s.size(), 1e-3);
     e.head(3).setConstant(std::max(1.0, std::abs(s(kTn))));
@@ -104,17 +113,22 @@ class ExternalModel final : public Model {
  private:
   static constexpr double kRateStep = 1e-8;
 
-  void call(const StateVector& s, const std::array<double, 3>& dstran, StateVector& out, double* ddsdde) const {
+  void call(const StateVector& s, const std::array<double, 3>& dstran, StateVector& out,
+            double* ddsdde) const {
     out = s;
-    double stress[3] = {s(kTn), s(kTn + 1), s(kTn + 2)}, stran[3] = {s(kStrain), s(kStrain + 1), s(kStrain + 2)};
+    double stress[3] = {s(kTn), s(kTn + 1), s(kTn + 2)},
+           stran[3] = {s(kStrain), s(kStrain + 1), s(kStrain + 2)};
     std::vector<double> statev(s.data() + kStatev, s.data() + kStatev + nstatv_);
     statev.reserve(1);  // a valid pointer even for nstatv = 0
     const int nprops = int(props_.size());
     double pnewdt = 1.0;
-    lib_.entry(stress, statev.data(), ddsdde, stran, dstran.data(), &nstatv_, props_.data(), &nprops, &pnewdt);
+    lib_.entry(stress, statev.data(), ddsdde, stran, dstran.data(), &nstatv_, props_.data(),
+               &nprops, &pnewdt);
     if (pnewdt < 1.0)
-      throw DomainError(fmt::format("{}: the model asks for a smaller increment (PNEWDT = {:g})", name_, pnewdt));
-    for (int i = 0; i < 3; ++i) out(kTn + i) = stress[i], out(kStrain + i) = s(kStrain + i) + dstran[i];
+      throw DomainError(
+          fmt::format("{}: the model asks for a smaller increment (PNEWDT = {:g})", name_, pnewdt));
+    for (int i = 0; i < 3; ++i)
+      out(kTn + i) = stress[i], out(kStrain + i) = s(kStrain + i) + dstran[i];
     for (int i = 0; i < nstatv_; ++i) out(kStatev + i) = statev[i];
   }
   void rate_of(const StateVector& s, const InterfaceStrain& d, StateVector& ds) const {
@@ -145,18 +159,22 @@ Props props_of(const ModelInputs& in) {
     std::smatch m;
     if (key == "nstatv") {
       if (!(value >= 0.0 && value <= kMaxStatev && value == std::round(value)))
-        throw InputError(fmt::format("{}: nstatv = {:g}; an integer in [0, {}]", where, value, kMaxStatev));
+        throw InputError(
+            fmt::format("{}: nstatv = {:g}; an integer in [0, {}]", where, value, kMaxStatev));
       out.nstatv = int(value);
     } else if (std::regex_match(key, m, prop)) {
       numbered.push_back({std::stoi(m[1].str()), value});
     } else {
-      throw InputError(fmt::format("{}: unknown key '{}'; [external] takes nstatv and p1 (or p01), p2, ... (PROPS)", where, key));
+      throw InputError(fmt::format(
+          "{}: unknown key '{}'; [external] takes nstatv and p1 (or p01), p2, ... (PROPS)", where,
+          key));
     }
   }
   std::sort(numbered.begin(), numbered.end());
   for (std::size_t i = 0; i < numbered.size(); ++i) {
     if (numbered[i].first != int(i) + 1)
-      throw InputError(fmt::format("{}: the PROPS p1, p2, ... must have no gap (p{} missing)", where, i + 1));
+      throw InputError(
+          fmt::format("{}: the PROPS p1, p2, ... must have no gap (p{} missing)", where, i + 1));
     out.values.push_back(numbered[i].second);
   }
   return out;
@@ -167,12 +185,16 @@ Props props_of(const ModelInputs& in) {
 ModelDeclaration declaration() {
   ModelDeclaration d;
   d.listing_order = kListingOrder;
-  d.layout.components = {{"T_n", "kPa", ComponentKind::kStress},       {"tau_x", "kPa", ComponentKind::kStress},
-                         {"tau_y", "kPa", ComponentKind::kStress},     {"eps_n", "-", ComponentKind::kHardening},
-                         {"gamma_x", "-", ComponentKind::kHardening}, {"gamma_y", "-", ComponentKind::kHardening}};
-  for (int i = 1; i <= kMaxStatev; ++i) d.layout.components.push_back({fmt::format("statev_{}", i), "-", ComponentKind::kHardening});
+  d.layout.components = {
+      {"T_n", "kPa", ComponentKind::kStress},      {"tau_x", "kPa", ComponentKind::kStress},
+      {"tau_y", "kPa", ComponentKind::kStress},    {"eps_n", "-", ComponentKind::kHardening},
+      {"gamma_x", "-", ComponentKind::kHardening}, {"gamma_y", "-", ComponentKind::kHardening}};
+  for (int i = 1; i <= kMaxStatev; ++i)
+    d.layout.components.push_back({fmt::format("statev_{}", i), "-", ComponentKind::kHardening});
   d.layout.void_ratio = -1;
-  d.initial = {{"sigma_n_kPa", "kPa", "initial normal stress (compression positive); the user's state variables start at 0"}};
+  d.initial = {
+      {"sigma_n_kPa", "kPa",
+       "initial normal stress (compression positive); the user's state variables start at 0"}};
   d.update = StressPointUpdate::kIncrement;
   d.example_start = {{"sigma_n_kPa", 100.0}};
   return d;
@@ -182,16 +204,18 @@ ModelDeclaration declaration() {
 
 ModelSpec external_model_spec(const std::string& library, const std::string& entry) {
   const Library lib = open(library, entry);
-  return {entry,
-          fmt::format("a user's model: {} in {} (UMAT-style entry point, --model-lib)", entry, library),
-          "the user's",
-          false,
-          {},
-          [lib, entry](const ModelInputs& in) {
-            const Props p = props_of(in);
-            return std::unique_ptr<Model>(std::make_unique<ExternalModel>(entry, lib, p.values, p.nstatv));
-          },
-          declaration()};
+  return {
+      entry,
+      fmt::format("a user's model: {} in {} (UMAT-style entry point, --model-lib)", entry, library),
+      "the user's",
+      false,
+      {},
+      [lib, entry](const ModelInputs& in) {
+        const Props p = props_of(in);
+        return std::unique_ptr<Model>(
+            std::make_unique<ExternalModel>(entry, lib, p.values, p.nstatv));
+      },
+      declaration()};
 }
 
 }  // namespace iwb::models

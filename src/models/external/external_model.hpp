@@ -18,7 +18,8 @@ namespace iwb::models {
 
 // The spec of the model `entry` in `library` (dlopen; `entry` or gfortran's `entry_`), named
 // `entry`. Its parameter files hold a table [external]: nstatv (0-10) and the PROPS p1 (or p01),
-// p2, ... InputError naming the library or the entry; a bad table is refused when the model is made.
+// p2, ... InputError naming the library or the entry; a bad table is refused when the model is
+// made.
 ModelSpec external_model_spec(const std::string& library, const std::string& entry);
 
 }  // namespace iwb::models

@@ -16,8 +16,10 @@ constexpr int kListingOrder = 10;
 template <class Kinematics>
 std::unique_ptr<Model> build(const std::string& name, const Kinematics& kin, const ModelInputs& in,
                              WithIntergranularStrain igs) {
-  const auto p = ClayParameters::from(require_table(in, "hypoplastic_clay"), in.source + " [hypoplastic_clay]");
-  return make_member<HypoplasticCamClayLaw>(name, kin, make_hypoplastic_cam_clay_constants(p, in.roughness), in, igs);
+  const auto p = ClayParameters::from(require_table(in, "hypoplastic_clay"),
+                                      in.source + " [hypoplastic_clay]");
+  return make_member<HypoplasticCamClayLaw>(
+      name, kin, make_hypoplastic_cam_clay_constants(p, in.roughness), in, igs);
 }
 
 std::unique_ptr<Model> build_interface(const ModelInputs& in, WithIntergranularStrain igs) {
@@ -28,11 +30,12 @@ std::unique_ptr<Model> build_3d(const ModelInputs& in, WithIntergranularStrain i
   return build("hcc3d", SimpleShearKinematics{}, in, igs);
 }
 
-ModelDeclaration hcc_declaration(const std::vector<std::string>& stress_components, bool interface_model,
-                                 int listing_order) {
-  return clay_declaration(stress_components, interface_model, listing_order, RoughnessScheme::kArnoldHerle,
-                          {{"OCR", "-", "p_e* over the ASBS pressure p (M^2 + eta^2)/M^2: 1 on the ASBS",
-                            DiagnosticRole::kOverconsolidation}});
+ModelDeclaration hcc_declaration(const std::vector<std::string>& stress_components,
+                                 bool interface_model, int listing_order) {
+  return clay_declaration(
+      stress_components, interface_model, listing_order, RoughnessScheme::kArnoldHerle,
+      {{"OCR", "-", "p_e* over the ASBS pressure p (M^2 + eta^2)/M^2: 1 on the ASBS",
+        DiagnosticRole::kOverconsolidation}});
 }
 
 }  // namespace
@@ -44,7 +47,8 @@ ModelSpec hcc_spec() {
           true,
           {&ClayParameters::table()},
           [](const ModelInputs& in) { return build_interface(in, WithIntergranularStrain::kNo); },
-          hcc_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(), true, kListingOrder)};
+          hcc_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(), true,
+                          kListingOrder)};
 }
 
 ModelSpec hcc3d_spec() {
@@ -60,7 +64,8 @@ ModelSpec hcc3d_spec() {
 // Table 6.4 is the seed's clay set with intergranular strain; e0 1.45 is OCR 1.2 at 100 kPa.
 const std::map<std::string, double> kTable64Start{{"sigma_n_kPa", 100.0}, {"e0", 1.45}};
 ModelSpec hcc_igs_spec() {
-  return with_intergranular_strain(hcc_spec(), build_interface, "table_6_4_cyclic.toml", kTable64Start);
+  return with_intergranular_strain(hcc_spec(), build_interface, "table_6_4_cyclic.toml",
+                                   kTable64Start);
 }
 ModelSpec hcc3d_igs_spec() {
   return with_intergranular_strain(hcc3d_spec(), build_3d, "table_6_4_cyclic.toml", kTable64Start);

@@ -11,11 +11,12 @@ ModelSpec hp1d_spec() {
           true,
           {&HypoplasticParameters::table()},
           [](const ModelInputs& in) {
-            return make_hypoplastic("hp1d", ShearPlaneKinematics{},
-                                    HypoplasticVariant{LodeRule::kStandard, CoefficientARule::kGutjahr1D},
-                                    in);
+            return make_hypoplastic(
+                "hp1d", ShearPlaneKinematics{},
+                HypoplasticVariant{LodeRule::kStandard, CoefficientARule::kGutjahr1D}, in);
           },
-          with_plan_rank(hypoplastic_declaration(ShearPlaneKinematics::component_names(), true, InPlaneStart::kNone, 5),
+          with_plan_rank(hypoplastic_declaration(ShearPlaneKinematics::component_names(), true,
+                                                 InPlaneStart::kNone, 5),
                          3)};
 }
 

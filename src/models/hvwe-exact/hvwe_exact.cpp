@@ -13,16 +13,19 @@ std::unique_ptr<Model> build(const ModelInputs& in, WithIntergranularStrain igs)
 }  // namespace
 
 ModelSpec hvwe_exact_spec() {
-  return {"hvwe-exact",
-          "hvwe with invariants evaluated on the embedded 3x3 tensor",
-          "seed 5.5, ERRATA 2",
-          true,
-          {&HypoplasticParameters::table()},
-          [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); },
-          hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(), true,
-                                  InPlaneStart::kFreeK0, 4)};
+  return {
+      "hvwe-exact",
+      "hvwe with invariants evaluated on the embedded 3x3 tensor",
+      "seed 5.5, ERRATA 2",
+      true,
+      {&HypoplasticParameters::table()},
+      [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); },
+      hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(),
+                              true, InPlaneStart::kFreeK0, 4)};
 }
 
-ModelSpec hvwe_exact_igs_spec() { return with_intergranular_strain(hvwe_exact_spec(), build); }
+ModelSpec hvwe_exact_igs_spec() {
+  return with_intergranular_strain(hvwe_exact_spec(), build);
+}
 
 }  // namespace iwb::models

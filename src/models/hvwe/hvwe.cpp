@@ -18,8 +18,9 @@ ModelSpec hvwe_spec() {
           true,
           {&HypoplasticParameters::table()},
           [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); },
-          with_plan_rank(hypoplastic_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(),
-                                                 true, InPlaneStart::kFreeK0, 3),
+          with_plan_rank(hypoplastic_declaration(
+                             ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(),
+                             true, InPlaneStart::kFreeK0, 3),
                          8)};
 }
 

@@ -7,9 +7,10 @@
 // stiffness is 0. The normal stress is linear elastic and uncoupled (eq. 3.53): the model has no
 // dilatancy. Stiffnesses are per unit displacement, so the rate on strains scales by the element's
 // d_s (ModelInputs::shear_zone_mm). README.md says what was re-derived.
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 #include <memory>
 
 #include "common/errors.hpp"
@@ -23,17 +24,55 @@ namespace {
 const ParameterTable& hyperbolic_table() {
   static const ParameterTable t{
       "hyperbolic",
-      {{"K_I", "-", {0.0, true}, {kUnbounded, true}, "dimensionless stiffness number of the initial shear stiffness", "eq. 3.49",
-        ParameterRole::kMaterial, CalibrationBox{1e2, 1e6, true}},
-       {"K_I_ur", "-", {0.0, true}, {kUnbounded, true}, "stiffness number of unloading and reloading (Duncan & Chang 1970)", "README"},
+      {{"K_I",
+        "-",
+        {0.0, true},
+        {kUnbounded, true},
+        "dimensionless stiffness number of the initial shear stiffness",
+        "eq. 3.49",
+        ParameterRole::kMaterial,
+        CalibrationBox{1e2, 1e6, true}},
+       {"K_I_ur",
+        "-",
+        {0.0, true},
+        {kUnbounded, true},
+        "stiffness number of unloading and reloading (Duncan & Chang 1970)",
+        "README"},
        {"n_HY", "-", {0.0, false}, {2.0, false}, "stiffness exponent", "eq. 3.49"},
-       {"R_f", "-", {0.0, true}, {1.0, false}, "failure ratio tau_f / tau_ult", "eq. 3.48", ParameterRole::kMaterial,
+       {"R_f",
+        "-",
+        {0.0, true},
+        {1.0, false},
+        "failure ratio tau_f / tau_ult",
+        "eq. 3.48",
+        ParameterRole::kMaterial,
         CalibrationBox{0.5, 1.0, false}},
-       {"delta_deg", "deg", {0.0, true}, {90.0, true}, "interface friction angle", "eq. 3.50", ParameterRole::kMaterial,
+       {"delta_deg",
+        "deg",
+        {0.0, true},
+        {90.0, true},
+        "interface friction angle",
+        "eq. 3.50",
+        ParameterRole::kMaterial,
         CalibrationBox{15.0, 50.0, false}},
-       {"k_n_kPa_per_mm", "kPa/mm", {0.0, true}, {kUnbounded, true}, "normal stiffness (uncoupled, typically high)", "eq. 3.53"},
-       {"p_a_kPa", "kPa", {0.0, true}, {kUnbounded, true}, "atmospheric pressure of eq. 3.49 (101.325)", "eq. 3.49"},
-       {"gamma_w_kN_per_m3", "kN/m3", {0.0, true}, {kUnbounded, true}, "unit weight of water of eq. 3.49 (9.81)", "eq. 3.49"}}};
+       {"k_n_kPa_per_mm",
+        "kPa/mm",
+        {0.0, true},
+        {kUnbounded, true},
+        "normal stiffness (uncoupled, typically high)",
+        "eq. 3.53"},
+       {"p_a_kPa",
+        "kPa",
+        {0.0, true},
+        {kUnbounded, true},
+        "atmospheric pressure of eq. 3.49 (101.325)",
+        "eq. 3.49"},
+       {"gamma_w_kN_per_m3",
+        "kN/m3",
+        {0.0, true},
+        {kUnbounded, true},
+        "unit weight of water of eq. 3.49 (9.81)",
+        "eq. 3.49"}}};
   return t;
 }
 
@@ -50,21 +89,29 @@ class Hyperbolic final : public TractionModel<Hyperbolic> {
   explicit Hyperbolic(HyperbolicParameters p) : p_(p) {}
   std::string_view name() const override { return "hyperbolic"; }
   int state_size() const override { return kSize; }
-  std::vector<std::string> state_names() const override { return {"T_n", "tau_x", "tau_y", "stress_level_max"}; }
+  std::vector<std::string> state_names() const override {
+    return {"T_n", "tau_x", "tau_y", "stress_level_max"};
+  }
 
   StateVector initial_state(const InitialState& in) const override {
     if (!(in.sigma_n > 0.0))
-      throw InputError(fmt::format("sigma_n_kPa = {} is not admissible for hyperbolic: its stiffness (eq. 3.49) needs "
-                                   "compression", in.sigma_n));
+      throw InputError(fmt::format(
+          "sigma_n_kPa = {} is not admissible for hyperbolic: its stiffness (eq. 3.49) needs "
+          "compression",
+          in.sigma_n));
     return unsheared(in.sigma_n, kSize);
   }
 
   std::string domain_violation(const StateVector& s) const override {
     if (!s.allFinite()) return "non-finite state";
-    if (!(-s(kTn) > 0.0)) return fmt::format("sigma_n = {:.6g} kPa: the hyperbolic stiffness needs compression", -s(kTn));
+    if (!(-s(kTn) > 0.0))
+      return fmt::format("sigma_n = {:.6g} kPa: the hyperbolic stiffness needs compression",
+                         -s(kTn));
     return {};
   }
-  StateVector error_scale(const StateVector& s) const override { return traction_error_scale(s, 1.0); }
+  StateVector error_scale(const StateVector& s) const override {
+    return traction_error_scale(s, 1.0);
+  }
   std::vector<NamedValue> diagnostics(const StateVector& s) const override {
     return {{"stress_level", level(s)}, {"K_s_kPa_per_mm", 1e-3 * loading_stiffness(s)}};
   }
@@ -74,7 +121,9 @@ class Hyperbolic final : public TractionModel<Hyperbolic> {
   HyperbolicParameters p_;
 
   template <class S>
-  S tau_f(const StateVectorT<S>& s) const { return -s(kTn) * p_.tan_delta; }
+  S tau_f(const StateVectorT<S>& s) const {
+    return -s(kTn) * p_.tan_delta;
+  }
   double level(const StateVector& s) const { return std::hypot(s(kTauX), s(kTauY)) / tau_f(s); }
   // Eq. 3.49 times (1 - R_f SL)^2 (eq. 3.52), 0 once the stress level reaches 1; kPa per metre.
   template <class S>
@@ -98,7 +147,8 @@ class Hyperbolic final : public TractionModel<Hyperbolic> {
     const S tau2 = s(kTauX) * s(kTauX) + s(kTauY) * s(kTauY);
     const S tau = safe_sqrt(tau2);
     const S sl = tau / tau_f(s);
-    const bool loading = value_of(along) >= 0.0 && value_of(sl) >= value_of(s(kLevelMax)) * (1.0 - 1e-12);
+    const bool loading =
+        value_of(along) >= 0.0 && value_of(sl) >= value_of(s(kLevelMax)) * (1.0 - 1e-12);
     const S sigma_ratio = -s(kTn) / p_.p_a;
     const S K = loading ? loading_stiffness(s) : S(p_.K_ur * p_.gamma_w * pow(sigma_ratio, p_.n));
     const S dsigma_n = -p_.k_n * 1e3 * p_.d_s_m * d.eps_n;  // kPa/mm x mm of opening
@@ -109,7 +159,8 @@ class Hyperbolic final : public TractionModel<Hyperbolic> {
       const S dtau = (s(kTauX) * ds(kTauX) + s(kTauY) * ds(kTauY)) / tau;
       ds(kLevelMax) = (dtau - sl * dsigma_n * p_.tan_delta) / tau_f(s);
     } else if (loading) {
-      ds(kLevelMax) = K * p_.d_s_m * safe_sqrt(S(d.gamma_x * d.gamma_x + d.gamma_y * d.gamma_y)) / tau_f(s);
+      ds(kLevelMax) =
+          K * p_.d_s_m * safe_sqrt(S(d.gamma_x * d.gamma_x + d.gamma_y * d.gamma_y)) / tau_f(s);
     }
   }
 };
@@ -130,15 +181,17 @@ ModelSpec hyperbolic_spec() {
   d.plan_rank = 2;
   d.example_start = {{"sigma_n_kPa", 100.0}};
   return {"hyperbolic",
-          "Clough & Duncan (1971) hyperbolic non-linear elastic interface, elastic unloading, no dilatancy",
+          "Clough & Duncan (1971) hyperbolic non-linear elastic interface, elastic unloading, no "
+          "dilatancy",
           "seed 3.46-3.53, Table 3.2 (3.49 and 3.52 re-read)",
           false,
           {&hyperbolic_table()},
           [](const ModelInputs& in) {
             const auto& v = in.tables.at("hyperbolic");
             return std::make_unique<Hyperbolic>(HyperbolicParameters{
-                v.at("K_I"), v.at("K_I_ur"), v.at("n_HY"), v.at("R_f"), std::tan(v.at("delta_deg") * M_PI / 180.0),
-                v.at("k_n_kPa_per_mm"), v.at("p_a_kPa"), v.at("gamma_w_kN_per_m3"), 1e-3 * in.shear_zone_mm});
+                v.at("K_I"), v.at("K_I_ur"), v.at("n_HY"), v.at("R_f"),
+                std::tan(v.at("delta_deg") * M_PI / 180.0), v.at("k_n_kPa_per_mm"), v.at("p_a_kPa"),
+                v.at("gamma_w_kN_per_m3"), 1e-3 * in.shear_zone_mm});
           },
           d};
 }

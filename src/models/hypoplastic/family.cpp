@@ -1,8 +1,8 @@
 #include "models/hypoplastic/family.hpp"
 
-#include <cmath>
-
 #include <fmt/core.h>
+
+#include <cmath>
 
 #include "common/physical_limits.hpp"
 
@@ -12,10 +12,13 @@ namespace {
 
 // In the order a test file's [initial] is read (the first bad value is the one reported). The
 // default K0 is the oedometric 1 - sin phi_c of the phi_c_deg in `friction_table`.
-std::vector<InitialInputSpec> rate_form_initial_inputs(InPlaneStart start, const std::string& friction_table) {
-  InitialInputSpec sigma_n{"sigma_n_kPa", "kPa", "initial normal stress sigma_n0, compression positive"};
+std::vector<InitialInputSpec> rate_form_initial_inputs(InPlaneStart start,
+                                                       const std::string& friction_table) {
+  InitialInputSpec sigma_n{"sigma_n_kPa", "kPa",
+                           "initial normal stress sigma_n0, compression positive"};
   sigma_n.range = positive(kMaxStressKPa);
-  InitialInputSpec e0{"e0", "-", "initial void ratio, inside (e_d, e_i) at the initial mean stress"};
+  InitialInputSpec e0{"e0", "-",
+                      "initial void ratio, inside (e_d, e_i) at the initial mean stress"};
   e0.range = positive(kMaxVoidRatio);
   std::vector<InitialInputSpec> in{sigma_n, e0};
   if (start == InPlaneStart::kNone) return in;
@@ -48,18 +51,21 @@ std::vector<FitParameter> interface_fit_parameters_from_normalized_roughness() {
   auto fit = interface_fit_parameters();
   fit.front().predict = [](const WallDescription& wall) -> std::pair<double, std::string> {
     if (!(wall.R_n > 0.0))
-      return {kKappaRFloor, fmt::format("kappa_r = {} (flat wall: eq. 5.35's floor)", kKappaRFloor)};
+      return {kKappaRFloor,
+              fmt::format("kappa_r = {} (flat wall: eq. 5.35's floor)", kKappaRFloor)};
     const double k = kappa_r_from_normalized_roughness(wall.R_n).value;
     return {k, fmt::format("kappa_r = {:.3f} (eq. 5.35, R_n = {:.3g})", k, wall.R_n)};
   };
   return fit;
 }
 
-ModelDeclaration rate_form_declaration(const std::vector<std::string>& stress_components, InPlaneStart start,
-                                       int listing_order, const std::string& friction_table) {
+ModelDeclaration rate_form_declaration(const std::vector<std::string>& stress_components,
+                                       InPlaneStart start, int listing_order,
+                                       const std::string& friction_table) {
   ModelDeclaration d;
   d.listing_order = listing_order;
-  for (const auto& c : stress_components) d.layout.components.push_back({c, "kPa", ComponentKind::kStress});
+  for (const auto& c : stress_components)
+    d.layout.components.push_back({c, "kPa", ComponentKind::kStress});
   d.layout.void_ratio = d.layout.size();
   d.layout.components.push_back({"e", "-", ComponentKind::kVoidRatio});
   d.initial = rate_form_initial_inputs(start, friction_table);
@@ -68,14 +74,22 @@ ModelDeclaration rate_form_declaration(const std::vector<std::string>& stress_co
 }
 
 ModelDeclaration hypoplastic_declaration(const std::vector<std::string>& stress_components,
-                                         bool interface_model, InPlaneStart start, int listing_order) {
-  ModelDeclaration d = rate_form_declaration(stress_components, start, listing_order, "hypoplastic");
-  d.diagnostics = {{"mean_stress_kPa", "kPa", "mean stress -tr T / tr 1", DiagnosticRole::kMeanStress},
-                   {"e_i", "-", "maximum void ratio at the mean stress (eq. 5.13)", DiagnosticRole::kMaxVoidRatio},
-                   {"e_c", "-", "critical void ratio at the mean stress (eq. 5.13)", DiagnosticRole::kCriticalVoidRatio},
-                   {"e_d", "-", "minimum void ratio at the mean stress (eq. 5.13)", DiagnosticRole::kMinVoidRatio}};
+                                         bool interface_model, InPlaneStart start,
+                                         int listing_order) {
+  ModelDeclaration d =
+      rate_form_declaration(stress_components, start, listing_order, "hypoplastic");
+  d.diagnostics = {
+      {"mean_stress_kPa", "kPa", "mean stress -tr T / tr 1", DiagnosticRole::kMeanStress},
+      {"e_i", "-", "maximum void ratio at the mean stress (eq. 5.13)",
+       DiagnosticRole::kMaxVoidRatio},
+      {"e_c", "-", "critical void ratio at the mean stress (eq. 5.13)",
+       DiagnosticRole::kCriticalVoidRatio},
+      {"e_d", "-", "minimum void ratio at the mean stress (eq. 5.13)",
+       DiagnosticRole::kMinVoidRatio}};
   if (interface_model) {
-    d.roughness = {{RoughnessScheme::kGutjahr, RoughnessScheme::kArnoldHerle}, RoughnessScheme::kGutjahr, true,
+    d.roughness = {{RoughnessScheme::kGutjahr, RoughnessScheme::kArnoldHerle},
+                   RoughnessScheme::kGutjahr,
+                   true,
                    KappaFromAngle::kTangentRatio};
     d.fit = interface_fit_parameters_from_normalized_roughness();
   }
@@ -93,7 +107,8 @@ IntergranularStrainParameters intergranular_strain_parameters(const ModelInputs&
 // -igs models list after every base model, in their bases' order.
 constexpr int kIntergranularListingOffset = 100;
 
-ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build, const std::string& example_parameters,
+ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build,
+                                    const std::string& example_parameters,
                                     std::map<std::string, double> example_start) {
   base.name += "-igs";
   base.summary += ", with Niemunis & Herle's intergranular strain";
@@ -105,14 +120,16 @@ ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build, co
   d.plan_rank = 0;  // a candidate of `iwb plan` only where its folder says so
   const int stress_size = d.layout.void_ratio;  // the packed stress precedes e
   for (int i = 0; i < stress_size; ++i)
-    d.layout.components.push_back(
-        {"delta" + d.layout.components[i].name.substr(1), "-", ComponentKind::kIntergranularStrain});
-  InitialInputSpec delta{"delta", "-", "initial intergranular strain [delta_n, delta_x, delta_y] "
-                                       "(default: the seed's, R/sqrt3 in both shear directions)"};
+    d.layout.components.push_back({"delta" + d.layout.components[i].name.substr(1), "-",
+                                   ComponentKind::kIntergranularStrain});
+  InitialInputSpec delta{"delta", "-",
+                         "initial intergranular strain [delta_n, delta_x, delta_y] "
+                         "(default: the seed's, R/sqrt3 in both shear directions)"};
   delta.kind = InitialInputSpec::Kind::kVector3;
   delta.need = InitialInputSpec::Need::kOptional;
   d.initial.push_back(delta);
-  d.diagnostics.push_back({"rho", "-", "||delta|| / R (eq. 5.45)", DiagnosticRole::kIntergranularRho});
+  d.diagnostics.push_back(
+      {"rho", "-", "||delta|| / R (eq. 5.45)", DiagnosticRole::kIntergranularRho});
   d.example_parameters = example_parameters;
   if (!example_start.empty()) d.example_start = std::move(example_start);
   return base;

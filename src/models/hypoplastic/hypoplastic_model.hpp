@@ -23,8 +23,10 @@ namespace iwb::models {
 // `kExternals`, none for the others.
 template <class Law>
 constexpr auto law_externals() {
-  if constexpr (requires { Law::kExternals; }) return Law::kExternals;
-  else return std::array<External, 0>{};
+  if constexpr (requires { Law::kExternals; })
+    return Law::kExternals;
+  else
+    return std::array<External, 0>{};
 }
 
 template <class Kinematics, class Law = VonWolffersdorffLaw>
@@ -37,7 +39,8 @@ class HypoplasticModel final : public Model {
   static constexpr auto kExternals = law_externals<Law>();
   static constexpr int kExternalCount = int(kExternals.size());
   static constexpr int kFirstExternal = kVoidRatio + 1;
-  static constexpr int kDelta = kFirstExternal + kExternalCount;  // first intergranular strain component
+  static constexpr int kDelta =
+      kFirstExternal + kExternalCount;  // first intergranular strain component
 
  public:
   // tr 1 of the element's algebra: 3 for tensors and reduced vectors, 1 for Gutjahr's 1D vectors.
@@ -47,8 +50,10 @@ class HypoplasticModel final : public Model {
                    std::optional<IntergranularStrainParameters> igs = std::nullopt)
       : name_(std::move(name)), kin_(kin), c_(constants), igs_(igs) {
     if (kExternalCount > 0 && igs_)
-      throw InputError(fmt::format("{}: the intergranular strain is not defined for a law that reads temperature "
-                                   "or suction", name_));
+      throw InputError(fmt::format(
+          "{}: the intergranular strain is not defined for a law that reads temperature "
+          "or suction",
+          name_));
   }
 
   std::string_view name() const override { return name_; }
@@ -76,30 +81,39 @@ class HypoplasticModel final : public Model {
     if constexpr (kExternalCount > 0)
       for (int i = 0; i < kExternalCount; ++i) {
         const auto given = init.named.find(external_key(kExternals[std::size_t(i)]));
-        s(kFirstExternal + i) = given != init.named.end() ? given->second : Law::initial_external(kExternals[std::size_t(i)], c_);
+        s(kFirstExternal + i) = given != init.named.end()
+                                    ? given->second
+                                    : Law::initial_external(kExternals[std::size_t(i)], c_);
       }
     // a law that knows its asymptotic state boundary surface may be given the density as an OCR
     // (from the invariants, or from the stress tensor where the surface needs the principal ratio)
     if (const auto ocr = init.named.find("OCR"); ocr != init.named.end()) {
       const auto T = Ops::template unpack<double>(s, 0);
       if constexpr (kExternalCount > 0)
-        s(kVoidRatio) = Law::template void_ratio_at_state<Ops>(T, externals_of<double>(s), ocr->second, c_);
+        s(kVoidRatio) =
+            Law::template void_ratio_at_state<Ops>(T, externals_of<double>(s), ocr->second, c_);
       else if constexpr (requires { Law::void_ratio_at(StressInvariants{}, 1.0, c_); })
         s(kVoidRatio) = Law::void_ratio_at(stress_invariants<Ops>(T), ocr->second, c_);
       else if constexpr (requires { Law::template void_ratio_at_stress<Ops>(T, 1.0, c_); })
         s(kVoidRatio) = Law::template void_ratio_at_stress<Ops>(T, ocr->second, c_);
     }
-    if (igs_) Ops::template pack<double>(initial_intergranular_strain(init), s, kDelta);
+    if (igs_)
+      Ops::template pack<double>(initial_intergranular_strain(init), s, kDelta);
     else if (init.delta)
-      throw InputError(fmt::format("{} has no intergranular strain; an initial delta is meaningless "
-                                   "for it (use {}-igs)", name_, name_));
+      throw InputError(
+          fmt::format("{} has no intergranular strain; an initial delta is meaningless "
+                      "for it (use {}-igs)",
+                      name_, name_));
     std::string why = domain_violation(s);
     if constexpr (requires { Law::initial_violation(StressInvariants{}, 0.0, c_); })
-      if (why.empty()) why = Law::initial_violation(stress_invariants<Ops>(Ops::template unpack<double>(s, 0)), s(kVoidRatio), c_);
+      if (why.empty())
+        why = Law::initial_violation(stress_invariants<Ops>(Ops::template unpack<double>(s, 0)),
+                                     s(kVoidRatio), c_);
     if (!why.empty())
-      throw InputError(fmt::format("initial state (sigma_n0 = {:g} kPa, K0 = {:g}, e0 = {:g}) is "
-                                   "not admissible for {}: {}",
-                                   init.sigma_n, init.K0, s(kVoidRatio), name_, why));
+      throw InputError(
+          fmt::format("initial state (sigma_n0 = {:g} kPa, K0 = {:g}, e0 = {:g}) is "
+                      "not admissible for {}: {}",
+                      init.sigma_n, init.K0, s(kVoidRatio), name_, why));
     return s;
   }
 
@@ -137,7 +151,8 @@ class HypoplasticModel final : public Model {
     scale(kVoidRatio) = std::abs(s(kVoidRatio));
     // T_K and s follow their path exactly (their rate is the given increment); 1 K or 1 kPa keeps
     // a zero suction from dividing by zero
-    for (int i = 0; i < kExternalCount; ++i) scale(kFirstExternal + i) = std::max(std::abs(s(kFirstExternal + i)), 1.0);
+    for (int i = 0; i < kExternalCount; ++i)
+      scale(kFirstExternal + i) = std::max(std::abs(s(kFirstExternal + i)), 1.0);
     if (igs_) scale.tail(Ops::kPackedSize).setConstant(igs_->R);  // delta is measured against R
     return scale;
   }
@@ -158,7 +173,8 @@ class HypoplasticModel final : public Model {
 
  private:
   template <class S>
-  void rate_impl(const StateVectorT<S>& s, const InterfaceStrainT<S>& d, StateVectorT<S>& ds) const {
+  void rate_impl(const StateVectorT<S>& s, const InterfaceStrainT<S>& d,
+                 StateVectorT<S>& ds) const {
     const auto T = Ops::template unpack<S>(s, 0);
     const auto D = kin_.template stretching<S>(d);
     const S e = s(kVoidRatio);
@@ -166,7 +182,8 @@ class HypoplasticModel final : public Model {
     if constexpr (kExternalCount > 0) {
       // the externals' rates are their given increments; the law gives the stress's and e's
       std::array<S, kExternalCount> dx;
-      for (int i = 0; i < kExternalCount; ++i) ds(kFirstExternal + i) = dx[std::size_t(i)] = d.external_of(kExternals[std::size_t(i)]);
+      for (int i = 0; i < kExternalCount; ++i)
+        ds(kFirstExternal + i) = dx[std::size_t(i)] = d.external_of(kExternals[std::size_t(i)]);
       const auto r = Law::template rate<Ops, S>(T, e, D, externals_of<S>(s), dx, c_);
       Ops::template pack<S>(r.net_stress, ds, 0);
       ds(kVoidRatio) = r.void_ratio;
@@ -177,7 +194,8 @@ class HypoplasticModel final : public Model {
 
   template <class S>
   void mechanical_rate(const StateVectorT<S>& s, const typename Ops::template Tensor<S>& T,
-                       const typename Ops::template Tensor<S>& D, const S& e, StateVectorT<S>& ds) const {
+                       const typename Ops::template Tensor<S>& D, const S& e,
+                       StateVectorT<S>& ds) const {
     ds(kVoidRatio) = (1.0 + e) * Ops::trace(D);  // ERRATA item 6
     if (!igs_) {
       Ops::template pack<S>(Law::template rate<Ops, S>(T, e, D, c_), ds, 0);
@@ -187,7 +205,8 @@ class HypoplasticModel final : public Model {
     // Barodesy, is never built with it: make_member)
     if constexpr (requires { Law::template tangent<Ops, S>(T, e, c_); }) {
       const auto delta = Ops::template unpack<S>(s, kDelta);
-      const auto r = intergranular_strain_rate<Ops, S>(Law::template tangent<Ops, S>(T, e, c_), delta, D, *igs_);
+      const auto r = intergranular_strain_rate<Ops, S>(Law::template tangent<Ops, S>(T, e, c_),
+                                                       delta, D, *igs_);
       Ops::template pack<S>(r.stress, ds, 0);
       Ops::template pack<S>(kin_.template intergranular<S>(r.delta), ds, kDelta);
     }
@@ -200,16 +219,20 @@ class HypoplasticModel final : public Model {
     return x;
   }
 
-  // The stress the law's domain is about: the effective stress of a law with suction, else the state's.
+  // The stress the law's domain is about: the effective stress of a law with suction, else the
+  // state's.
   typename Ops::template Tensor<double> law_stress(const StateVector& s) const {
     const auto T = Ops::template unpack<double>(s, 0);
-    if constexpr (kExternalCount > 0) return Law::template effective_stress<Ops, double>(T, externals_of<double>(s), c_);
-    else return T;
+    if constexpr (kExternalCount > 0)
+      return Law::template effective_stress<Ops, double>(T, externals_of<double>(s), c_);
+    else
+      return T;
   }
 
   // Given [delta_n, delta_x, delta_y] or the seed's default, as the stretching-shaped tensor of
   // the element's algebra (delta_x is a tensor component, hence gamma = 2 delta_x).
-  typename Ops::template Tensor<double> initial_intergranular_strain(const InitialState& init) const {
+  typename Ops::template Tensor<double> initial_intergranular_strain(
+      const InitialState& init) const {
     const auto d = init.delta.value_or(seed_initial_intergranular_strain(igs_->R));
     return kin_.template intergranular<double>(
         kin_.template stretching<double>(InterfaceStrain{d[0], 2.0 * d[1], 2.0 * d[2]}));

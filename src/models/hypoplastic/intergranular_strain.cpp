@@ -12,15 +12,39 @@ constexpr double kMaxStiffnessFactor = 100.0;
 constexpr double kMaxExponent = 100.0;
 
 const ParameterTable& IntergranularStrainParameters::table() {
-  static const ParameterTable t{
-      "intergranular_strain",
-      {
-          {"R", "-", {0.0, true}, {0.01, false}, "size R of the elastic range, max ||delta|| (eq. 5.43)", "eq. 5.43"},
-          {"m_R", "-", {1.0, false}, {kMaxStiffnessFactor, false}, "stiffness factor m_R after a 180 deg reversal", "eq. 5.44"},
-          {"m_T", "-", {1.0, false}, {kMaxStiffnessFactor, false}, "stiffness factor m_T after a 90 deg turn", "eq. 5.44"},
-          {"beta_r", "-", {0.0, true}, {kMaxExponent, false}, "evolution exponent beta_r of delta (eq. 5.46)", "eq. 5.46"},
-          {"chi", "-", {0.0, true}, {kMaxExponent, false}, "interpolation exponent chi of rho (eq. 5.45)", "eq. 5.45"},
-      }};
+  static const ParameterTable t{"intergranular_strain",
+                                {
+                                    {"R",
+                                     "-",
+                                     {0.0, true},
+                                     {0.01, false},
+                                     "size R of the elastic range, max ||delta|| (eq. 5.43)",
+                                     "eq. 5.43"},
+                                    {"m_R",
+                                     "-",
+                                     {1.0, false},
+                                     {kMaxStiffnessFactor, false},
+                                     "stiffness factor m_R after a 180 deg reversal",
+                                     "eq. 5.44"},
+                                    {"m_T",
+                                     "-",
+                                     {1.0, false},
+                                     {kMaxStiffnessFactor, false},
+                                     "stiffness factor m_T after a 90 deg turn",
+                                     "eq. 5.44"},
+                                    {"beta_r",
+                                     "-",
+                                     {0.0, true},
+                                     {kMaxExponent, false},
+                                     "evolution exponent beta_r of delta (eq. 5.46)",
+                                     "eq. 5.46"},
+                                    {"chi",
+                                     "-",
+                                     {0.0, true},
+                                     {kMaxExponent, false},
+                                     "interpolation exponent chi of rho (eq. 5.45)",
+                                     "eq. 5.45"},
+                                }};
   return t;
 }
 
@@ -29,9 +53,10 @@ IntergranularStrainParameters IntergranularStrainParameters::from(const Paramete
   validate(table(), v, source);
   const double m_R = v.at("m_R"), m_T = v.at("m_T");
   if (!(m_T <= m_R))
-    throw InputError(fmt::format("{}: stiffness factors must satisfy m_T <= m_R (a reversal is the "
-                                 "stiffest change of direction); got m_T = {:g}, m_R = {:g}",
-                                 source, m_T, m_R));
+    throw InputError(
+        fmt::format("{}: stiffness factors must satisfy m_T <= m_R (a reversal is the "
+                    "stiffest change of direction); got m_T = {:g}, m_R = {:g}",
+                    source, m_T, m_R));
   return {v.at("R"), m_R, m_T, v.at("beta_r"), v.at("chi")};
 }
 

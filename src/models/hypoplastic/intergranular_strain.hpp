@@ -34,7 +34,8 @@ struct IntergranularStrainParameters {
 
   static const ParameterTable& table();  // TOML table [intergranular_strain]
   // Validates bounds and m_T <= m_R; errors name `source`.
-  static IntergranularStrainParameters from(const ParameterValues& values, const std::string& source);
+  static IntergranularStrainParameters from(const ParameterValues& values,
+                                            const std::string& source);
 };
 
 // Seed 5.6 (after Arnold 2008): after oedometric loading start from delta_n = 0,

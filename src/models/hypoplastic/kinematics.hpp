@@ -29,9 +29,7 @@ struct ReducedInterfaceKinematics {
   InterfaceStress stress(const typename Ops::template Tensor<double>& t) const {
     return {-t(0), -t(1), t(2), t(3)};
   }
-  static std::vector<std::string> component_names() {
-    return {"T_n", "T_p", "T_x", "T_y"};
-  }
+  static std::vector<std::string> component_names() { return {"T_n", "T_p", "T_x", "T_y"}; }
   // The reduced intergranular strain has delta_p = 0 (eq. 5.48), also for AHE whose stretching
   // carries eps_n in plane: its in-plane part loads no intergranular strain.
   template <class S>
@@ -67,7 +65,8 @@ struct SimpleShearKinematics {
   // In simple shear D_22 = D_33 = D_23 = 0, so the lateral intergranular strain stays as it
   // starts (zero): nothing to project.
   template <class S>
-  typename Ops::template Tensor<S> intergranular(const typename Ops::template Tensor<S>& delta) const {
+  typename Ops::template Tensor<S> intergranular(
+      const typename Ops::template Tensor<S>& delta) const {
     return delta;
   }
   static constexpr bool kSecondShearDirection = true;
@@ -86,7 +85,8 @@ struct ShearPlaneKinematics {
   static std::vector<std::string> component_names() { return {"T_n", "T_x"}; }
   // hp1d has no -igs variant; the shared model class still names the projection.
   template <class S>
-  typename Ops::template Tensor<S> intergranular(const typename Ops::template Tensor<S>& delta) const {
+  typename Ops::template Tensor<S> intergranular(
+      const typename Ops::template Tensor<S>& delta) const {
     return delta;
   }
   static constexpr bool kSecondShearDirection = false;

@@ -8,8 +8,9 @@
 // positive. The variants differ only in data: the Lode-angle rule, the coefficient a, and the
 // roughness effect (a_r, alpha_r, f_c). With ShearPlaneOps F = 1 and the formula is Gutjahr's
 // eq. 3.75 (derivation in src/models/hp1d/README.md).
-#include <cmath>
 #include <fmt/core.h>
+
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -27,18 +28,21 @@ namespace iwb::models {
 // underflow at 1e-30 kPa.
 inline constexpr double kMinimumPressure_kPa = 1e-6;
 
-// tr T of a compressed state; DomainError (contact lost) otherwise. Every hypoplastic law starts here.
+// tr T of a compressed state; DomainError (contact lost) otherwise. Every hypoplastic law starts
+// here.
 template <class Ops, class S>
 S compressed_trace(const typename Ops::template Tensor<S>& T) {
   const S tr = Ops::trace(T);
   if (!(value_of(tr) < -kMinimumPressure_kPa))
-    throw DomainError(fmt::format("no compression: tr T = {:.6g} kPa (contact lost)", value_of(tr)));
+    throw DomainError(
+        fmt::format("no compression: tr T = {:.6g} kPa (contact lost)", value_of(tr)));
   return tr;
 }
 
 // T_rate = L : D + N ||D|| of a law's tangent (any type with L(X) and N).
 template <class Ops, class S, class Tangent>
-typename Ops::template Tensor<S> rate_of(const Tangent& h, const typename Ops::template Tensor<S>& D) {
+typename Ops::template Tensor<S> rate_of(const Tangent& h,
+                                         const typename Ops::template Tensor<S>& D) {
   return h.L(D) + safe_sqrt(Ops::contract(D, D)) * h.N;
 }
 
@@ -49,8 +53,8 @@ enum class LodeRule {
 
 enum class CoefficientARule {
   kVonWolffersdorff,  // eq. 5.15
-  kArnoldHerle,       // eq. 5.21 with tan psi = tan phi (the interface stress ratio at critical state)
-  kGutjahr1D,         // eq. 3.76, a = 1 / tan phi
+  kArnoldHerle,  // eq. 5.21 with tan psi = tan phi (the interface stress ratio at critical state)
+  kGutjahr1D,    // eq. 3.76, a = 1 / tan phi
 };
 
 struct HypoplasticVariant {
@@ -73,9 +77,10 @@ double friction_angle_of_simple_shear_ratio(double eta);
 struct VonWolffersdorffConstants {
   HypoplasticParameters p;
   LodeRule lode;
-  double a;           // a, or a_r for a rough wall (eq. 5.37)
-  double alpha;       // alpha, or alpha kappa_r^2 (Gutjahr, eq. 5.38)
-  double barotropy;   // f_c (h_s/n) (e_i0/e_c0)^beta / [tr1 + a^2 - a sqrt(tr1) ((e_i0-e_d0)/(e_c0-e_d0))^alpha]
+  double a;          // a, or a_r for a rough wall (eq. 5.37)
+  double alpha;      // alpha, or alpha kappa_r^2 (Gutjahr, eq. 5.38)
+  double barotropy;  // f_c (h_s/n) (e_i0/e_c0)^beta / [tr1 + a^2 - a sqrt(tr1)
+                     // ((e_i0-e_d0)/(e_c0-e_d0))^alpha]
 };
 
 // trace_of_unit = tr 1 of the algebra: 3 for tensors and reduced vectors, 1 for Gutjahr's 1D
@@ -154,10 +159,10 @@ HypoplasticTangent<Ops, S> von_wolffersdorff_tangent(const typename Ops::templat
   const S pressure = -tr;
   const auto lim = limiting_void_ratios(pressure, c.p);
   if (!(value_of(e) > value_of(lim.e_d)))
-    throw DomainError(fmt::format("e = {:.6g} at or below e_d = {:.6g}", value_of(e),
-                                  value_of(lim.e_d)));
-  const S f_d = pow((e - lim.e_d) / (lim.e_c - lim.e_d), c.alpha);        // eq. 5.14 / 5.38
-  const S f_e = pow(lim.e_c / e, c.p.beta);                                 // f_e = (e_c/e)^beta
+    throw DomainError(
+        fmt::format("e = {:.6g} at or below e_d = {:.6g}", value_of(e), value_of(lim.e_d)));
+  const S f_d = pow((e - lim.e_d) / (lim.e_c - lim.e_d), c.alpha);  // eq. 5.14 / 5.38
+  const S f_e = pow(lim.e_c / e, c.p.beta);                         // f_e = (e_c/e)^beta
   const S ratio = pressure / c.p.hs;
   const S f_b = c.barotropy * (1.0 + lim.e_i) / lim.e_i * ratio / pow(ratio, c.p.n);  // eq. 5.12
   S F = S(1.0);
@@ -216,13 +221,16 @@ struct VonWolffersdorffLaw {
   static HypoplasticTangent<Ops, S> tangent(const typename Ops::template Tensor<S>& T, const S& e,
                                             const Constants& c);
   template <class Ops, class S>
-  static typename Ops::template Tensor<S> rate(const typename Ops::template Tensor<S>& T, const S& e,
-                                               const typename Ops::template Tensor<S>& D, const Constants& c);
+  static typename Ops::template Tensor<S> rate(const typename Ops::template Tensor<S>& T,
+                                               const S& e,
+                                               const typename Ops::template Tensor<S>& D,
+                                               const Constants& c);
   // Why a compressed state (-tr T > 0) with void ratio e is outside the law's domain, (e_d, e_i)
   // at that pressure; empty inside.
   static std::string domain_violation(const StressInvariants& s, double e, const Constants& c);
   // mean_stress_kPa, e_i, e_c, e_d (the order the declarations state).
-  static std::vector<NamedValue> diagnostics(const StressInvariants& s, double e, const Constants& c);
+  static std::vector<NamedValue> diagnostics(const StressInvariants& s, double e,
+                                             const Constants& c);
 };
 
 template <class Ops, class S>
@@ -234,15 +242,15 @@ typename Ops::template Tensor<S> von_wolffersdorff_rate(const typename Ops::temp
 }
 
 template <class Ops, class S>
-HypoplasticTangent<Ops, S> VonWolffersdorffLaw::tangent(const typename Ops::template Tensor<S>& T, const S& e,
-                                                        const Constants& c) {
+HypoplasticTangent<Ops, S> VonWolffersdorffLaw::tangent(const typename Ops::template Tensor<S>& T,
+                                                        const S& e, const Constants& c) {
   return von_wolffersdorff_tangent<Ops, S>(T, e, c);
 }
 
 template <class Ops, class S>
-typename Ops::template Tensor<S> VonWolffersdorffLaw::rate(const typename Ops::template Tensor<S>& T, const S& e,
-                                                           const typename Ops::template Tensor<S>& D,
-                                                           const Constants& c) {
+typename Ops::template Tensor<S> VonWolffersdorffLaw::rate(
+    const typename Ops::template Tensor<S>& T, const S& e,
+    const typename Ops::template Tensor<S>& D, const Constants& c) {
   return von_wolffersdorff_rate<Ops, S>(T, e, D, c);
 }
 

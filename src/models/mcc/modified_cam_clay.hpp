@@ -5,8 +5,9 @@
 // q = sqrt(3/2 s:s):
 //
 //   f = q^2 / M^2 + p (p - p_c) = 0           the ellipse (8.18; the seed writes p_0 for p_c)
-//   K = p / kappa, G = 3 K (1 - 2 nu) / (2 (1 + nu))        (8.19: the seed's D^e = diag(p/kappa, 3G))
-//   dp_c / p_c = d eps_v^p / (lambda - kappa)              (8.20: H = p p_c (2p - p_c)/(lambda - kappa))
+//   K = p / kappa, G = 3 K (1 - 2 nu) / (2 (1 + nu))        (8.19: the seed's D^e = diag(p/kappa,
+//   3G)) dp_c / p_c = d eps_v^p / (lambda - kappa)              (8.20: H = p p_c (2p - p_c)/(lambda
+//   - kappa))
 //
 // lambda and kappa are slopes against ln p of the volumetric (natural) strain, as 8.19 and 8.20
 // write them (no 1 + e): Table 8.1's lambda_MCC, kappa_MCC. Associated flow, n = df/dsigma =
@@ -23,9 +24,10 @@
 // solved by Newton with the exact Jacobian; f = 0 to round-off at the end of every plastic
 // increment. On dual numbers one more Newton step from the converged values carries the exact
 // derivative of the increment (implicit function theorem), the consistent tangent.
+#include <fmt/core.h>
+
 #include <Eigen/Dense>
 #include <cmath>
-#include <fmt/core.h>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -96,7 +98,9 @@ struct CamClayReturn {
 
   // s^tr(p) = s_n + 2 g p de_dev
   Tensor trial_deviator(const S& p) const { return start.s + (2.0 * c.shear_per_p() * p) * de_dev; }
-  S radial_scale(const S& p, const S& dl) const { return 1.0 + 6.0 * c.shear_per_p() * p * dl / (c.M * c.M); }
+  S radial_scale(const S& p, const S& dl) const {
+    return 1.0 + 6.0 * c.shear_per_p() * p * dl / (c.M * c.M);
+  }
   Tensor stress(const S& p, const S& dl) const {
     return -(p * Ops::template unit<S>() + trial_deviator(p) / radial_scale(p, dl));
   }
@@ -108,7 +112,8 @@ struct CamClayReturn {
     const S eps_vp = dl * (2.0 * p - pc);
     const Tensor a = trial_deviator(p);
     const S q = safe_sqrt(S(1.5 * Ops::contract(a, a))) / radial_scale(p, dl);
-    return {u - log(start.p) - (de_v - eps_vp) / c.kappa, w - log(p_c) - eps_vp / (c.lambda - c.kappa),
+    return {u - log(start.p) - (de_v - eps_vp) / c.kappa,
+            w - log(p_c) - eps_vp / (c.lambda - c.kappa),
             cam_clay_yield(p, q, pc, c.M) / (p_c * p_c)};
   }
 };
@@ -121,20 +126,24 @@ Eigen::Matrix3d cam_clay_jacobian(const CamClayReturn<Ops, double>& r, const Eig
   const double p = std::exp(x(0)), pc = std::exp(x(1)), dl = x(2), pc2 = r.p_c * r.p_c;
   const auto a = r.trial_deviator(p);
   const double A = std::sqrt(1.5 * Ops::contract(a, a));
-  const double dA_dp = A > 0.0 ? 1.5 * Ops::contract(a, typename Ops::template Tensor<double>(2.0 * g * r.de_dev)) / A : 0.0;
+  const double dA_dp =
+      A > 0.0
+          ? 1.5 * Ops::contract(a, typename Ops::template Tensor<double>(2.0 * g * r.de_dev)) / A
+          : 0.0;
   const double scale = r.radial_scale(p, dl), q = A / scale;
   const double dq_dp = dA_dp / scale - A / (scale * scale) * 6.0 * g * dl / M2;
   const double dq_ddl = -A / (scale * scale) * 6.0 * g * p / M2;
   Eigen::Matrix3d J;
   J << 1.0 + 2.0 * p * dl / c.kappa, -pc * dl / c.kappa, (2.0 * p - pc) / c.kappa,  //
-      -2.0 * p * dl / lk, 1.0 + pc * dl / lk, -(2.0 * p - pc) / lk,                  //
+      -2.0 * p * dl / lk, 1.0 + pc * dl / lk, -(2.0 * p - pc) / lk,                 //
       p * (2.0 * q * dq_dp / M2 + 2.0 * p - pc) / pc2, -p * pc / pc2, 2.0 * q * dq_ddl / M2 / pc2;
   return J;
 }
 
 // Newton from the trial state (x0); the converged x and its Jacobian. DomainError if it fails.
 template <class Ops>
-std::pair<Eigen::Vector3d, Eigen::Matrix3d> solve_cam_clay_return(const CamClayReturn<Ops, double>& r, Eigen::Vector3d x) {
+std::pair<Eigen::Vector3d, Eigen::Matrix3d> solve_cam_clay_return(
+    const CamClayReturn<Ops, double>& r, Eigen::Vector3d x) {
   for (int it = 0; it < kCamClayNewtonIterations; ++it) {
     const Eigen::Vector3d res = r.residual(x(0), x(1), x(2));
     const Eigen::Matrix3d J = cam_clay_jacobian(r, x);
@@ -142,13 +151,15 @@ std::pair<Eigen::Vector3d, Eigen::Matrix3d> solve_cam_clay_return(const CamClayR
     if (!dx.allFinite()) break;
     x += dx;
     // quadratic convergence: a step this small leaves an error of its square
-    if ((std::abs(dx(0)) < 1e-13 && std::abs(dx(1)) < 1e-13 && std::abs(dx(2)) <= 1e-13 * std::abs(x(2))) ||
+    if ((std::abs(dx(0)) < 1e-13 && std::abs(dx(1)) < 1e-13 &&
+         std::abs(dx(2)) <= 1e-13 * std::abs(x(2))) ||
         res.cwiseAbs().maxCoeff() < 1e-15)
       return {x, cam_clay_jacobian(r, x)};
   }
-  throw DomainError(fmt::format("modified Cam clay: the return did not converge in {} iterations (p = {:.6g} kPa, "
-                                "p_c = {:.6g} kPa, dlambda = {:.3g}): the increment is too large",
-                                kCamClayNewtonIterations, std::exp(x(0)), std::exp(x(1)), x(2)));
+  throw DomainError(fmt::format(
+      "modified Cam clay: the return did not converge in {} iterations (p = {:.6g} kPa, "
+      "p_c = {:.6g} kPa, dlambda = {:.3g}): the increment is too large",
+      kCamClayNewtonIterations, std::exp(x(0)), std::exp(x(1)), x(2)));
 }
 
 }  // namespace detail
@@ -157,37 +168,45 @@ std::pair<Eigen::Vector3d, Eigen::Matrix3d> solve_cam_clay_return(const CamClayR
 // lies inside the ellipse, else the implicit return above. Throws DomainError when the Newton
 // iteration does not converge (the caller cuts the increment).
 template <class Ops, class S>
-CamClayPoint<Ops, S> cam_clay_increment(const CamClayPoint<Ops, S>& n, const typename Ops::template Tensor<S>& dD,
+CamClayPoint<Ops, S> cam_clay_increment(const CamClayPoint<Ops, S>& n,
+                                        const typename Ops::template Tensor<S>& dD,
                                         const CamClayParameters& c) {
   using std::exp;
   using Tensor = typename Ops::template Tensor<S>;
-  const detail::CamClayReturn<Ops, S> ret{CamClayInvariants<Ops, S>(n.T), n.p_c, -Ops::trace(dD),
-                                          Tensor(-dD + (Ops::trace(dD) / 3.0) * Ops::template unit<S>()), c};
+  const detail::CamClayReturn<Ops, S> ret{
+      CamClayInvariants<Ops, S>(n.T), n.p_c, -Ops::trace(dD),
+      Tensor(-dD + (Ops::trace(dD) / 3.0) * Ops::template unit<S>()), c};
   const S p_tr = ret.start.p * exp(ret.de_v / c.kappa);
   const CamClayInvariants<Ops, S> trial(ret.stress(p_tr, S(0.0)));
-  if (value_of(cam_clay_yield(trial.p, trial.q, n.p_c, c.M)) <= 0.0) return {ret.stress(p_tr, S(0.0)), n.p_c};
+  if (value_of(cam_clay_yield(trial.p, trial.q, n.p_c, c.M)) <= 0.0)
+    return {ret.stress(p_tr, S(0.0)), n.p_c};
 
   const detail::CamClayReturn<Ops, double> on_values{
-      CamClayInvariants<Ops, double>(detail::values_of_tensor<Ops, S>(n.T)), value_of(n.p_c), value_of(ret.de_v),
-      detail::values_of_tensor<Ops, S>(ret.de_dev), c};
-  const auto [x, J] = detail::solve_cam_clay_return<Ops>(on_values, {std::log(value_of(p_tr)), std::log(value_of(n.p_c)), 0.0});
+      CamClayInvariants<Ops, double>(detail::values_of_tensor<Ops, S>(n.T)), value_of(n.p_c),
+      value_of(ret.de_v), detail::values_of_tensor<Ops, S>(ret.de_dev), c};
+  const auto [x, J] = detail::solve_cam_clay_return<Ops>(
+      on_values, {std::log(value_of(p_tr)), std::log(value_of(n.p_c)), 0.0});
   if (!(x(2) >= 0.0))
-    throw DomainError(fmt::format("modified Cam clay: the return found a negative multiplier ({:.3g})", x(2)));
+    throw DomainError(
+        fmt::format("modified Cam clay: the return found a negative multiplier ({:.3g})", x(2)));
   Eigen::Matrix<S, 3, 1> xs(S(x(0)), S(x(1)), S(x(2)));
   // On double this leaves x; on dual numbers it adds the derivative -J^-1 dr/d(inputs).
   if constexpr (!std::is_same_v<S, double>) {
     const Eigen::Matrix3d J_inv = J.inverse();
     const Eigen::Matrix<S, 3, 1> r = ret.residual(xs(0), xs(1), xs(2));
-    for (int i = 0; i < 3; ++i) xs(i) -= J_inv(i, 0) * r(0) + J_inv(i, 1) * r(1) + J_inv(i, 2) * r(2);
+    for (int i = 0; i < 3; ++i)
+      xs(i) -= J_inv(i, 0) * r(0) + J_inv(i, 1) * r(1) + J_inv(i, 2) * r(2);
   }
   return {ret.stress(exp(xs(0)), xs(2)), exp(xs(1))};
 }
 
 // The rate form (the return's limit for a small increment): D^e inside or when unloading, else
-// D^ep = D^e - (D^e n)(n : D^e) / (n : D^e n + H), H = p p_c (2p - p_c) / (lambda - kappa). `on_surface`
-// is the caller's judgement that f = 0 (to round-off). Returns (dT, dp_c) for the stretching D.
+// D^ep = D^e - (D^e n)(n : D^e) / (n : D^e n + H), H = p p_c (2p - p_c) / (lambda - kappa).
+// `on_surface` is the caller's judgement that f = 0 (to round-off). Returns (dT, dp_c) for the
+// stretching D.
 template <class Ops, class S>
-CamClayPoint<Ops, S> cam_clay_rate(const CamClayPoint<Ops, S>& n, const typename Ops::template Tensor<S>& D,
+CamClayPoint<Ops, S> cam_clay_rate(const CamClayPoint<Ops, S>& n,
+                                   const typename Ops::template Tensor<S>& D,
                                    const CamClayParameters& c, bool on_surface) {
   using Tensor = typename Ops::template Tensor<S>;
   const Tensor unit = Ops::template unit<S>();

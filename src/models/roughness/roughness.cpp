@@ -1,8 +1,9 @@
 #include "models/roughness/roughness.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/core.h>
 
 #include "common/errors.hpp"
 
@@ -11,17 +12,23 @@ namespace iwb::models {
 RoughnessEffect effect_of(const Roughness& r) {
   const double k = r.kappa_r;
   if (r.scheme == RoughnessScheme::kGutjahr) return {k, k * k, 1.0};  // eqs. 5.37-5.39
-  return {k, 1.0, r.f_c == ArnoldHerleFactor::kReciprocal ? 1.0 / k : k};  // eqs. 5.37, 5.40, 5.41; ERRATA 9
+  return {
+      k, 1.0,
+      r.f_c == ArnoldHerleFactor::kReciprocal ? 1.0 / k : k};  // eqs. 5.37, 5.40, 5.41; ERRATA 9
 }
 
 ArnoldHerleFactor parse_arnold_herle_factor(const std::string& text, const std::string& where) {
   if (text == "1/kappa_r") return ArnoldHerleFactor::kReciprocal;
   if (text == "kappa_r") return ArnoldHerleFactor::kProportional;
-  throw InputError(fmt::format("{}: f_c = '{}': Arnold & Herle's rate factor is \"1/kappa_r\" (eq. 5.40 as printed) or "
-                               "\"kappa_r\" (the reading of 5.7.3, ERRATA 9)", where, text));
+  throw InputError(fmt::format(
+      "{}: f_c = '{}': Arnold & Herle's rate factor is \"1/kappa_r\" (eq. 5.40 as printed) or "
+      "\"kappa_r\" (the reading of 5.7.3, ERRATA 9)",
+      where, text));
 }
 
-const char* to_string(ArnoldHerleFactor f) { return f == ArnoldHerleFactor::kReciprocal ? "1/kappa_r" : "kappa_r"; }
+const char* to_string(ArnoldHerleFactor f) {
+  return f == ArnoldHerleFactor::kReciprocal ? "1/kappa_r" : "kappa_r";
+}
 
 namespace {
 KappaR clamped(double raw, const std::string& origin) {
@@ -47,7 +54,8 @@ KappaR kappa_r_from_normalized_roughness(double R_n, double log_base) {
 namespace {
 void require_interface_angle(double delta) {
   if (!(delta > 0.0) || !(delta < M_PI / 2))
-    throw InputError(fmt::format("interface friction angle {:g} deg must be in (0, 90)", delta * 180.0 / M_PI));
+    throw InputError(
+        fmt::format("interface friction angle {:g} deg must be in (0, 90)", delta * 180.0 / M_PI));
 }
 }  // namespace
 
@@ -64,9 +72,12 @@ KappaR kappa_r_from_angle_ratio(double delta, double phi_c) {
 
 const char* to_string(RoughnessScheme s) {
   switch (s) {
-    case RoughnessScheme::kGutjahr: return "gutjahr";
-    case RoughnessScheme::kArnoldHerle: return "arnold-herle";
-    case RoughnessScheme::kStutzMasin: return "stutz-masin";
+    case RoughnessScheme::kGutjahr:
+      return "gutjahr";
+    case RoughnessScheme::kArnoldHerle:
+      return "arnold-herle";
+    case RoughnessScheme::kStutzMasin:
+      return "stutz-masin";
   }
   return "?";
 }

@@ -21,7 +21,8 @@ enum class ArnoldHerleFactor { kReciprocal, kProportional };
 struct Roughness {
   RoughnessScheme scheme = RoughnessScheme::kGutjahr;
   double kappa_r = 1.0;  // (0, 1]; 1 = fully rough
-  ArnoldHerleFactor f_c = ArnoldHerleFactor::kReciprocal;  // read only by Arnold & Herle's sand scheme
+  ArnoldHerleFactor f_c =
+      ArnoldHerleFactor::kReciprocal;  // read only by Arnold & Herle's sand scheme
 };
 
 // "1/kappa_r" (as printed, the default) or "kappa_r"; InputError naming `where` otherwise.

@@ -8,7 +8,8 @@
 
 namespace iwb::models {
 
-ModelDeclaration masin_clay_declaration(const std::vector<std::string>& stress_components, bool interface_model,
+ModelDeclaration masin_clay_declaration(const std::vector<std::string>& stress_components,
+                                        bool interface_model,
                                         int listing_order);  // hc/hc.cpp
 
 namespace {
@@ -16,27 +17,34 @@ namespace {
 constexpr int kListingOrder = 16;  // after hc, hc3d
 
 template <class Kinematics>
-std::unique_ptr<Model> build(const std::string& name, const Kinematics& kin, const ModelInputs& in) {
-  const auto p = MasinClayParameters::from(require_table(in, "clay_hypoplasticity"), in.source + " [clay_hypoplasticity]");
-  const auto th = ThermoHydroParameters::from(require_table(in, "thermo_hydro"), in.source + " [thermo_hydro]");
-  return make_member<ThermoHydroClayLaw>(name, kin, ThermoHydroClayConstants{make_masin_clay_constants(p, in.roughness), th},
-                                         in, WithIntergranularStrain::kNo);
+std::unique_ptr<Model> build(const std::string& name, const Kinematics& kin,
+                             const ModelInputs& in) {
+  const auto p = MasinClayParameters::from(require_table(in, "clay_hypoplasticity"),
+                                           in.source + " [clay_hypoplasticity]");
+  const auto th =
+      ThermoHydroParameters::from(require_table(in, "thermo_hydro"), in.source + " [thermo_hydro]");
+  return make_member<ThermoHydroClayLaw>(
+      name, kin, ThermoHydroClayConstants{make_masin_clay_constants(p, in.roughness), th}, in,
+      WithIntergranularStrain::kNo);
 }
 
-ModelDeclaration thermo_hydro_declaration(const std::vector<std::string>& stress_components, bool interface_model,
-                                          int listing_order) {
+ModelDeclaration thermo_hydro_declaration(const std::vector<std::string>& stress_components,
+                                          bool interface_model, int listing_order) {
   auto d = masin_clay_declaration(stress_components, interface_model, listing_order);
   const int first = d.layout.size();
   d.layout.components.push_back({"T_K", "K", ComponentKind::kExternal});
   d.layout.components.push_back({"s_kPa", "kPa", ComponentKind::kExternal});
   d.layout.external[std::size_t(External::kTemperature)] = first;
   d.layout.external[std::size_t(External::kSuction)] = first + 1;
-  d.externals = {{External::kTemperature, "T_K", "K", "absolute temperature (a test file may give T_C in deg C)"},
+  d.externals = {{External::kTemperature, "T_K", "K",
+                  "absolute temperature (a test file may give T_C in deg C)"},
                  {External::kSuction, "s_kPa", "kPa", "matric suction s = u_a - u_w"}};
   InitialInputSpec T{"T_K", "K", "initial temperature (default: the parameters' T0_K)"};
   T.need = InitialInputSpec::Need::kOptional;
   T.range = closed(200.0, 500.0);
-  T.default_value = [](const ModelInputs& in) { return require_table(in, "thermo_hydro").at("T0_K"); };
+  T.default_value = [](const ModelInputs& in) {
+    return require_table(in, "thermo_hydro").at("T0_K");
+  };
   InitialInputSpec s{"s_kPa", "kPa", "initial matric suction (default 0: saturated)"};
   s.need = InitialInputSpec::Need::kOptional;
   s.range = closed(0.0, 1e6);
@@ -57,25 +65,31 @@ ModelDeclaration thermo_hydro_declaration(const std::vector<std::string>& stress
 }  // namespace
 
 ModelSpec hcthm_spec() {
-  return {"hcthm",
-          "Masin & Khalili (2012) thermo-hydro-mechanical clay hypoplasticity, interface model on [sigma_n, sigma_p, tau_x, "
-          "tau_y] (net stresses), with temperature and suction",
-          "seed 6.3 (6.29-6.52; issue 19 closing note), roughness 6.2.4",
-          true,
-          {&MasinClayParameters::table(), &ThermoHydroParameters::table()},
-          [](const ModelInputs& in) { return build("hcthm", ReducedInterfaceKinematics<algebra::ReducedOps>{}, in); },
-          thermo_hydro_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(), true,
-                                   kListingOrder)};
+  return {
+      "hcthm",
+      "Masin & Khalili (2012) thermo-hydro-mechanical clay hypoplasticity, interface model on "
+      "[sigma_n, sigma_p, tau_x, "
+      "tau_y] (net stresses), with temperature and suction",
+      "seed 6.3 (6.29-6.52; issue 19 closing note), roughness 6.2.4",
+      true,
+      {&MasinClayParameters::table(), &ThermoHydroParameters::table()},
+      [](const ModelInputs& in) {
+        return build("hcthm", ReducedInterfaceKinematics<algebra::ReducedOps>{}, in);
+      },
+      thermo_hydro_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(),
+                               true, kListingOrder)};
 }
 
 ModelSpec hcthm3d_spec() {
-  return {"hcthm3d",
-          "Masin & Khalili (2012) thermo-hydro-mechanical clay hypoplasticity, full 3x3 tensors in simple shear",
-          "seed 6.3 (6.29-6.52; issue 19 closing note)",
-          false,
-          {&MasinClayParameters::table(), &ThermoHydroParameters::table()},
-          [](const ModelInputs& in) { return build("hcthm3d", SimpleShearKinematics{}, in); },
-          thermo_hydro_declaration(SimpleShearKinematics::component_names(), false, kListingOrder + 1)};
+  return {
+      "hcthm3d",
+      "Masin & Khalili (2012) thermo-hydro-mechanical clay hypoplasticity, full 3x3 tensors in "
+      "simple shear",
+      "seed 6.3 (6.29-6.52; issue 19 closing note)",
+      false,
+      {&MasinClayParameters::table(), &ThermoHydroParameters::table()},
+      [](const ModelInputs& in) { return build("hcthm3d", SimpleShearKinematics{}, in); },
+      thermo_hydro_declaration(SimpleShearKinematics::component_names(), false, kListingOrder + 1)};
 }
 
 }  // namespace iwb::models

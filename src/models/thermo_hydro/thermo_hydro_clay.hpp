@@ -4,15 +4,17 @@
 // law (clay/masin_clay.hpp), tension positive. The state holds the net stress T_net (what a test
 // applies), e, the absolute temperature T_K and the suction s:
 //
-//   T = T_net - chi s 1,  chi = 1 (s < s_e), (s_e/s)^gamma (s >= s_e),  gamma = 0.55       (6.30, 6.31)
+//   T = T_net - chi s 1,  chi = 1 (s < s_e), (s_e/s)^gamma (s >= s_e),  gamma = 0.55 (6.30, 6.31)
 //   T_net_rate = T_rate + psi s_rate 1,  psi = d(chi s)/ds = 1 (s < s_e), (1 - gamma) chi
-//   T_rate = f_s L : D_m + f_s f_d N ||D_m|| + f_u (H_T + H_s),  D_m = D - alpha_s T_rate_K / 3 1  (6.29, 6.32)
-//   lambda*(s,T) = lambda* + l_t ln(T/T0) + l_s <ln(s/s_e)>,  N(s,T) likewise with n_t, n_s  (6.44, 6.45)
-//     (every coefficient of the base law that depends on lambda*, alpha included, takes lambda*(s,T))
-//   H_T = c_i T / (T_K lambda*(s,T)) [n_t - l_t ln(p_e/p_r)] <T_rate_K>                   (6.46, sign: README)
-//   H_s = -c_i T / (s lambda*(s,T)) [n_s - l_s ln(p_e/p_r)] <-s_rate>  for s > s_e, else 0      (6.48)
-//   c_i = (3 + a^2 - f_d a sqrt3) / (3 + a^2 - f_d^SBS a sqrt3),  f_u = (f_d / f_d^SBS)^(m/alpha)  (6.47, 6.51)
-//   e_rate = (1 + e) tr D_m                                                                   (6.52)
+//   T_rate = f_s L : D_m + f_s f_d N ||D_m|| + f_u (H_T + H_s),  D_m = D - alpha_s T_rate_K / 3 1
+//   (6.29, 6.32) lambda*(s,T) = lambda* + l_t ln(T/T0) + l_s <ln(s/s_e)>,  N(s,T) likewise with
+//   n_t, n_s  (6.44, 6.45)
+//     (every coefficient of the base law that depends on lambda*, alpha included, takes
+//     lambda*(s,T))
+//   H_T = c_i T / (T_K lambda*(s,T)) [n_t - l_t ln(p_e/p_r)] <T_rate_K>                   (6.46,
+//   sign: README) H_s = -c_i T / (s lambda*(s,T)) [n_s - l_s ln(p_e/p_r)] <-s_rate>  for s > s_e,
+//   else 0      (6.48) c_i = (3 + a^2 - f_d a sqrt3) / (3 + a^2 - f_d^SBS a sqrt3),  f_u = (f_d /
+//   f_d^SBS)^(m/alpha)  (6.47, 6.51) e_rate = (1 + e) tr D_m (6.52)
 //
 // Every term is of degree one in (D, T_rate_K, s_rate) jointly, so the integrators take the
 // increments of T and s as they take the strain's. At T = T0, s < s_e and no T or s rate it is
@@ -28,12 +30,12 @@
 namespace iwb::models {
 
 struct ThermoHydroParameters {
-  double alpha_s;  // volumetric thermal expansion of the grains, 1/K
+  double alpha_s;   // volumetric thermal expansion of the grains, 1/K
   double l_t, n_t;  // temperature dependence of lambda* and N
   double l_s, n_s;  // suction dependence of lambda* and N
-  double s_e;      // air-entry (expansion) suction, kPa
-  double m;        // collapse exponent of f_u
-  double T0;       // reference temperature, K
+  double s_e;       // air-entry (expansion) suction, kPa
+  double m;         // collapse exponent of f_u
+  double T0;        // reference temperature, K
 
   static const ParameterTable& table();  // [thermo_hydro]
   static ThermoHydroParameters from(const ParameterValues& v, const std::string& source);
@@ -71,7 +73,8 @@ CompressionLine<S> compression_line(const S& T_K, const S& s, const ThermoHydroC
   using std::log;
   const S heat = log(T_K / c.th.T0);
   const S dry = value_of(s) > c.th.s_e ? S(log(s / c.th.s_e)) : S(0.0);
-  return {c.base.p.lambda_star + c.th.l_t * heat + c.th.l_s * dry, c.base.p.N + c.th.n_t * heat + c.th.n_s * dry};
+  return {c.base.p.lambda_star + c.th.l_t * heat + c.th.l_s * dry,
+          c.base.p.N + c.th.n_t * heat + c.th.n_s * dry};
 }
 
 template <class Ops, class S>
@@ -87,16 +90,19 @@ struct ThermoHydroClayLaw {
 
   // T = T_net - chi s 1 at x = {T_K, s} (6.30).
   template <class Ops, class S>
-  static typename Ops::template Tensor<S> effective_stress(const typename Ops::template Tensor<S>& T_net,
-                                                           const std::array<S, 2>& x, const Constants& c) {
-    return T_net - (effective_stress_factor<S>(x[1], c.th.s_e).chi * x[1]) * Ops::template unit<S>();
+  static typename Ops::template Tensor<S> effective_stress(
+      const typename Ops::template Tensor<S>& T_net, const std::array<S, 2>& x,
+      const Constants& c) {
+    return T_net -
+           (effective_stress_factor<S>(x[1], c.th.s_e).chi * x[1]) * Ops::template unit<S>();
   }
 
   // x = {T_K, s}, dx = their rates (increments over the pseudo-time of D).
   template <class Ops, class S>
   static ThermoHydroRate<Ops, S> rate(const typename Ops::template Tensor<S>& T_net, const S& e,
-                                      const typename Ops::template Tensor<S>& D, const std::array<S, 2>& x,
-                                      const std::array<S, 2>& dx, const Constants& c) {
+                                      const typename Ops::template Tensor<S>& D,
+                                      const std::array<S, 2>& x, const std::array<S, 2>& dx,
+                                      const Constants& c) {
     using std::exp;
     using std::log;
     using Tensor = typename Ops::template Tensor<S>;
@@ -114,11 +120,11 @@ struct ThermoHydroClayLaw {
       const S f_d_sbs = state_boundary_pyknotropy<Ops, S>(T, parts, line.lambda);
       const double a = c.base.a, a3 = a * std::sqrt(3.0);
       const S c_i = (3.0 + a * a - parts.f_d * a3) / (3.0 + a * a - f_d_sbs * a3);  // 6.47
-      const S f_u = exp(c.th.m / parts.alpha * log(parts.f_d / f_d_sbs));             // 6.51
-      const S ln_pe = log(parts.p_e);                                                 // p_r = 1 kPa
+      const S f_u = exp(c.th.m / parts.alpha * log(parts.f_d / f_d_sbs));           // 6.51
+      const S ln_pe = log(parts.p_e);                                               // p_r = 1 kPa
       S h = S(0.0);
-      if (heating) h += (c.th.n_t - c.th.l_t * ln_pe) * dT / T_K;   // 6.46
-      if (wetting) h += (c.th.n_s - c.th.l_s * ln_pe) * ds / s;     // 6.48: <-s_rate> = -ds
+      if (heating) h += (c.th.n_t - c.th.l_t * ln_pe) * dT / T_K;  // 6.46
+      if (wetting) h += (c.th.n_s - c.th.l_s * ln_pe) * ds / s;    // 6.48: <-s_rate> = -ds
       T_rate += (f_u * c_i * h / line.lambda) * T;
     }
     return {T_rate + (factor.psi * ds) * unit, (1.0 + e) * Ops::trace(D_m)};  // 6.30, 6.52
@@ -130,21 +136,24 @@ struct ThermoHydroClayLaw {
   }
 
   // States where the effective stress is compressed with F_m < 1.
-  static std::string domain_violation(const StressInvariants& effective, double e, const Constants& c) {
+  static std::string domain_violation(const StressInvariants& effective, double e,
+                                      const Constants& c) {
     return MasinClayLaw::domain_violation(effective, e, c.base);
   }
   // The void ratio at overconsolidation `ocr` at this net stress, temperature and suction.
   template <class Ops>
-  static double void_ratio_at_state(const typename Ops::template Tensor<double>& T_net, const std::array<double, 2>& x,
-                                    double ocr, const Constants& c) {
+  static double void_ratio_at_state(const typename Ops::template Tensor<double>& T_net,
+                                    const std::array<double, 2>& x, double ocr,
+                                    const Constants& c) {
     const auto line = compression_line<double>(x[0], x[1], c);
-    return MasinClayLaw::void_ratio_at_stress_with<Ops>(effective_stress<Ops, double>(T_net, x, c), ocr,
-                                                        line.lambda, line.N, c.base);
+    return MasinClayLaw::void_ratio_at_stress_with<Ops>(effective_stress<Ops, double>(T_net, x, c),
+                                                        ocr, line.lambda, line.N, c.base);
   }
   // mean_stress_kPa (effective), p_e_kPa (at this T and s), F_m, chi, f_d / f_d^SBS
   template <class Ops>
-  static std::vector<NamedValue> diagnostics_at(const typename Ops::template Tensor<double>& T_net, double e,
-                                                const std::array<double, 2>& x, const Constants& c) {
+  static std::vector<NamedValue> diagnostics_at(const typename Ops::template Tensor<double>& T_net,
+                                                double e, const std::array<double, 2>& x,
+                                                const Constants& c) {
     const auto T = effective_stress<Ops, double>(T_net, x, c);
     const auto line = compression_line<double>(x[0], x[1], c);
     const auto parts = masin_clay_parts<Ops, double>(T, e, line.lambda, line.N, c.base);
@@ -153,7 +162,8 @@ struct ThermoHydroClayLaw {
             {"p_e_kPa", parts.p_e},
             {"F_m", inv.F_m},
             {"chi", effective_stress_factor<double>(x[1], c.th.s_e).chi},
-            {"f_d_over_f_dSBS", parts.f_d / state_boundary_pyknotropy<Ops, double>(T, parts, line.lambda)}};
+            {"f_d_over_f_dSBS",
+             parts.f_d / state_boundary_pyknotropy<Ops, double>(T, parts, line.lambda)}};
   }
 };
 

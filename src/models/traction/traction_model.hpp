@@ -17,14 +17,19 @@ enum TractionComponent : int { kTractionN = 0, kTractionX = 1, kTractionY = 2 };
 
 // The layout's first three components, for a declaration.
 inline std::vector<StateComponent> traction_components() {
-  return {{"T_n", "kPa", ComponentKind::kStress}, {"tau_x", "kPa", ComponentKind::kStress}, {"tau_y", "kPa", ComponentKind::kStress}};
+  return {{"T_n", "kPa", ComponentKind::kStress},
+          {"tau_x", "kPa", ComponentKind::kStress},
+          {"tau_y", "kPa", ComponentKind::kStress}};
 }
 
 template <class Derived>
 class TractionModel : public Model {
  public:
-  void rate(const StateVector& s, const InterfaceStrain& d, StateVector& ds) const override { self().rate_of(s, d, ds); }
-  void rate(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d, StateVectorT<Dual>& ds) const override {
+  void rate(const StateVector& s, const InterfaceStrain& d, StateVector& ds) const override {
+    self().rate_of(s, d, ds);
+  }
+  void rate(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d,
+            StateVectorT<Dual>& ds) const override {
     self().rate_of(s, d, ds);
   }
   InterfaceStress stress(const StateVector& s) const override {

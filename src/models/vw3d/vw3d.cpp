@@ -19,9 +19,12 @@ ModelSpec vw3d_spec() {
           false,
           {&HypoplasticParameters::table()},
           [](const ModelInputs& in) { return build(in, WithIntergranularStrain::kNo); },
-          hypoplastic_declaration(SimpleShearKinematics::component_names(), false, InPlaneStart::kFreeK0, 0)};
+          hypoplastic_declaration(SimpleShearKinematics::component_names(), false,
+                                  InPlaneStart::kFreeK0, 0)};
 }
 
-ModelSpec vw3d_igs_spec() { return with_intergranular_strain(vw3d_spec(), build); }
+ModelSpec vw3d_igs_spec() {
+  return with_intergranular_strain(vw3d_spec(), build);
+}
 
 }  // namespace iwb::models

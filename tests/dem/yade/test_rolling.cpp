@@ -1,13 +1,14 @@
 // YADE stands in for LIGGGHTS's rolling models with one elastic-plastic moment (yade_engine.cpp).
 // The expected values come from YADE itself: two d50 grains of the scene's material pressed
 // together by sigma_n0 d50^2, and the stiffnesses YADE's Mindlin law gives that contact.
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <map>
-#include <unistd.h>
 #include <sstream>
 #include <string>
 
@@ -50,18 +51,22 @@ print("probe", p.normalForce.norm(), p.kn, p.ks, p.maxBendPl)
 )";
 
 std::map<std::string, double> yade_contact(const Scene& s) {
-  const fs::path dir = fs::temp_directory_path() / ("iwb_yade_rolling_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("iwb_yade_rolling_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / "probe.py") << kProbe;
   const double f0 = s.boundary.sigma_n_Pa * s.particles.d50_m * s.particles.d50_m;
   std::map<std::string, double> out;
-  const auto arg = [](double v) { return fmt::format("{:.17g}", v); };  // every digit: to_string keeps 6 decimals
-  run_process({"yade", "-n", "-x", "probe.py", arg(s.particles.youngs_modulus_Pa), arg(s.particles.poisson),
-               arg(s.particles.d50_m), arg(f0), arg(kProbeEta)},
+  const auto arg = [](double v) {
+    return fmt::format("{:.17g}", v);
+  };  // every digit: to_string keeps 6 decimals
+  run_process({"yade", "-n", "-x", "probe.py", arg(s.particles.youngs_modulus_Pa),
+               arg(s.particles.poisson), arg(s.particles.d50_m), arg(f0), arg(kProbeEta)},
               dir, [&out](const std::string& line) {
                 std::istringstream in(line);
                 std::string tag;
-                if (in >> tag && tag == "probe") in >> out["force"] >> out["kn"] >> out["ks"] >> out["cap_per_force"];
+                if (in >> tag && tag == "probe")
+                  in >> out["force"] >> out["kn"] >> out["ks"] >> out["cap_per_force"];
                 return true;
               });
   fs::remove_all(dir);
@@ -70,9 +75,10 @@ std::map<std::string, double> yade_contact(const Scene& s) {
 
 }  // namespace
 
-TEST_CASE("YADE's rolling spring for an epsd2 scene is LIGGGHTS's k_t R*^2 of a d50 contact at sigma_n0, "
-          "its cap mu_r R* F_n",
-          "[dem][yade]") {
+TEST_CASE(
+    "YADE's rolling spring for an epsd2 scene is LIGGGHTS's k_t R*^2 of a d50 contact at sigma_n0, "
+    "its cap mu_r R* F_n",
+    "[dem][yade]") {
   const Scene truth = load_scene("data/scenes/truth.toml");
   REQUIRE(truth.particles.rolling_model == "epsd2");
   const auto contact = yade_contact(truth);
@@ -85,10 +91,12 @@ TEST_CASE("YADE's rolling spring for an epsd2 scene is LIGGGHTS's k_t R*^2 of a 
   CHECK(rolling["krot"].get<double>() == Approx(contact.at("ks") * r_star * r_star).epsilon(1e-4));
   // YADE's cap per unit force is eta R_mean: equal to LIGGGHTS's mu_r R* for two d50 grains
   const double eta = rolling["eta"].get<double>();
-  CHECK(eta * contact.at("cap_per_force") / kProbeEta == Approx(truth.particles.rolling_friction * r_star).epsilon(1e-9));
+  CHECK(eta * contact.at("cap_per_force") / kProbeEta ==
+        Approx(truth.particles.rolling_friction * r_star).epsilon(1e-9));
 }
 
-TEST_CASE("YADE's rolling spring for a cdt scene stays Ai et al.'s 2.25 k_n mu_r^2 R*^2", "[dem][yade]") {
+TEST_CASE("YADE's rolling spring for a cdt scene stays Ai et al.'s 2.25 k_n mu_r^2 R*^2",
+          "[dem][yade]") {
   Scene cdt = load_scene("data/scenes/truth.toml");
   cdt.particles.rolling_model = "cdt";
   const auto contact = yade_contact(cdt);

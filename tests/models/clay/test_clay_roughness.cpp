@@ -29,8 +29,10 @@ double shear_tangent(const std::string& model, models::RoughnessScheme scheme, d
 
 }  // namespace
 
-TEST_CASE("clay roughness: Stutz & Masin divide the initial shear stiffness by kappa_r, Arnold & Herle keep it",
-          "[models][clay]") {
+TEST_CASE(
+    "clay roughness: Stutz & Masin divide the initial shear stiffness by kappa_r, Arnold & Herle "
+    "keep it",
+    "[models][clay]") {
   using models::RoughnessScheme;
   for (const std::string model : {"hcc", "hce", "hcc3d", "hce3d"}) {
     INFO(model);

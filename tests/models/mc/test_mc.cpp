@@ -1,9 +1,9 @@
 // The Mohr-Coulomb interface model (src/models/mc, seed 3.3.1): facts of elastic-perfectly
 // plastic Coulomb friction with a non-associated flow rule, each derived by hand from eqs.
 // 3.36-3.41 (compression positive, README.md), not from the code: the elastic slope G, the
-// strength sigma_n tan(phi_i) + c, the dilation rate tan(psi) under CNL, the stress path on the yield
-// line under CV and CNS, the yield condition to round-off after every increment, the consistent
-// tangent against central differences.
+// strength sigma_n tan(phi_i) + c, the dilation rate tan(psi) under CNL, the stress path on the
+// yield line under CV and CNS, the yield condition to round-off after every increment, the
+// consistent tangent against central differences.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -23,7 +23,12 @@ const double kTanPhi = std::tan(kPhi * M_PI / 180.0), kTanPsi = std::tan(kPsi * 
 
 models::ModelInputs inputs(double psi = kPsi, double cutoff = 0.0) {
   return {{{"mohr_coulomb",
-            {{"E_kPa", kE}, {"nu", kNu}, {"phi_i_deg", kPhi}, {"psi_deg", psi}, {"c_kPa", kC}, {"tension_cutoff_kPa", cutoff}}}},
+            {{"E_kPa", kE},
+             {"nu", kNu},
+             {"phi_i_deg", kPhi},
+             {"psi_deg", psi},
+             {"c_kPa", kC},
+             {"tension_cutoff_kPa", cutoff}}}},
           "test",
           {}};
 }
@@ -40,11 +45,14 @@ test::Run shear(driver::BoundaryCondition bc, double psi = kPsi) {
   return r;
 }
 
-double f_yield(const test::Run& r, std::size_t i) { return r.diagnostic("f_yield", i); }
+double f_yield(const test::Run& r, std::size_t i) {
+  return r.diagnostic("f_yield", i);
+}
 
 }  // namespace
 
-TEST_CASE("mc under CNL: slope G, then tau = sigma_n tan(phi_i) + c and du_n/du_x = tan(psi)", "[models]") {
+TEST_CASE("mc under CNL: slope G, then tau = sigma_n tan(phi_i) + c and du_n/du_x = tan(psi)",
+          "[models]") {
   const auto r = shear({BoundaryKind::kCNL, 0.0});
   const auto& rows = r.result.rows;
   // elastic: the first increment (gamma 2.5e-4, tau 5.6 kPa: far from the strength)
@@ -53,23 +61,30 @@ TEST_CASE("mc under CNL: slope G, then tau = sigma_n tan(phi_i) + c and du_n/du_
   const auto& last = rows.back();
   CHECK(r.model->stress(last.state).tau_x == Approx(strength).epsilon(1e-12));
   const auto& before = rows[rows.size() - 2];
-  CHECK((last.eps_n - before.eps_n) / (last.gamma_x - before.gamma_x) == Approx(kTanPsi).epsilon(1e-9));
+  CHECK((last.eps_n - before.eps_n) / (last.gamma_x - before.gamma_x) ==
+        Approx(kTanPsi).epsilon(1e-9));
   for (std::size_t i = 0; i < rows.size(); ++i) CHECK(f_yield(r, i) <= 1e-12 * strength);
 }
 
-TEST_CASE("mc under CV: the stress climbs the yield line, sigma_n rises with dilatancy, stays with psi = 0", "[models]") {
+TEST_CASE(
+    "mc under CV: the stress climbs the yield line, sigma_n rises with dilatancy, stays with psi = "
+    "0",
+    "[models]") {
   const auto r = shear({BoundaryKind::kCV, 0.0});
   const auto& rows = r.result.rows;
-  const auto a = r.model->stress(rows[rows.size() - 2].state), b = r.model->stress(rows.back().state);
-  CHECK((b.tau_x - a.tau_x) / (b.sigma_n - a.sigma_n) == Approx(kTanPhi).epsilon(1e-9));  // on f = 0
-  CHECK(b.sigma_n > 300.0);  // psi 5 deg at gamma 0.05: E_oed lambda tan(psi) is large
+  const auto a = r.model->stress(rows[rows.size() - 2].state),
+             b = r.model->stress(rows.back().state);
+  CHECK((b.tau_x - a.tau_x) / (b.sigma_n - a.sigma_n) ==
+        Approx(kTanPhi).epsilon(1e-9));  // on f = 0
+  CHECK(b.sigma_n > 300.0);              // psi 5 deg at gamma 0.05: E_oed lambda tan(psi) is large
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const double f = f_yield(r, i);
     CHECK((f < 0.0 || std::abs(f) <= 1e-12 * (1.0 + b.sigma_n)));
   }
   const auto flat = shear({BoundaryKind::kCV, 0.0}, 0.0);
   CHECK(flat.model->stress(flat.result.rows.back().state).sigma_n == Approx(100.0).epsilon(1e-12));
-  CHECK(flat.model->stress(flat.result.rows.back().state).tau_x == Approx(100.0 * kTanPhi + kC).epsilon(1e-12));
+  CHECK(flat.model->stress(flat.result.rows.back().state).tau_x ==
+        Approx(100.0 * kTanPhi + kC).epsilon(1e-12));
 }
 
 TEST_CASE("mc under CNS: sigma_n follows K u_n on the yield line", "[models]") {
@@ -86,10 +101,12 @@ TEST_CASE("mc: the closed-form increment's Dual derivative is its central differ
   const auto m = models::find_model("mc").make(inputs());
   models::StateVector s(5);
   s << -100.0, 60.0, 20.0, 0.0, 0.0;  // inside; the increment below crosses the surface
-  test::check_increment_derivative(*m, s, {{1e-4, 2e-3, 5e-4}, {-2e-4, 1e-3, 0.0}, {3e-5, 1e-5, 0.0}}, 1e-8, 1e-6, 1e-6);
+  test::check_increment_derivative(
+      *m, s, {{1e-4, 2e-3, 5e-4}, {-2e-4, 1e-3, 0.0}, {3e-5, 1e-5, 0.0}}, 1e-8, 1e-6, 1e-6);
 }
 
-TEST_CASE("mc: an opening past the cut-off leaves sigma_n there and the shear on the surface", "[models]") {
+TEST_CASE("mc: an opening past the cut-off leaves sigma_n there and the shear on the surface",
+          "[models]") {
   const auto m = models::find_model("mc").make(inputs(kPsi, 0.5));
   models::StateVector s(5), out(5);
   s << -10.0, 5.0, 0.0, 0.0, 0.0;
@@ -102,5 +119,6 @@ TEST_CASE("mc: an opening past the cut-off leaves sigma_n there and the shear on
 TEST_CASE("mc refuses psi above phi_i and a cut-off beyond the apex, naming the keys", "[models]") {
   const auto& spec = models::find_model("mc");
   CHECK_THROWS_WITH(spec.make(inputs(40.0)), Catch::Contains("psi_deg = 40 above phi_i_deg = 35"));
-  CHECK_THROWS_WITH(spec.make(inputs(kPsi, 10.0)), Catch::Contains("tension_cutoff_kPa = 10 beyond the yield surface's apex"));
+  CHECK_THROWS_WITH(spec.make(inputs(kPsi, 10.0)),
+                    Catch::Contains("tension_cutoff_kPa = 10 beyond the yield surface's apex"));
 }
