@@ -15,6 +15,7 @@ PACKAGES=(
   libvtk9-dev  # VTK's legacy readers and XML writers (issue 21); beside YADE's python3-vtk9
   paraview     # the tests open the .pvd outputs in ParaView itself (pvpython, below)
   gfortran pybind11-dev python3-dev python3-numpy  # the C interface's Fortran and Python callers (src/c_api)
+  clang-format  # the format check (tests/format/check.sh; Debian bookworm: version 14)
   slurmctld slurmd slurm-client munge  # a one-node Slurm for the tests of `iwb sweep --executor slurm` (issue 35)
 )
 
