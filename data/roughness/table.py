@@ -1,0 +1,49 @@
+"""The shapes campaign's cells beside the sawtooth's at the same R_n: per cell the mean over its
+seeds +- the 95 % t half-width (Student's t, n - 1 degrees of freedom) of each run's summary.json,
+the runs it rests on and where each sheared. Cells with no complete run are left out. Run from the
+repository root:  /usr/bin/python3 data/roughness/table.py"""
+import json
+import statistics as st
+from pathlib import Path
+
+T975 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262}
+DATA = Path("data")
+SHAPES = DATA / "roughness" / "roughness_shapes" / "runs"
+# (label, R_n, run directories): the sawtooth cells are the truth campaign's own
+CELLS = [
+    ("sawtooth", 0.1, sorted((DATA / "reference/truth2_rn/runs").glob("sawtooth-2-0.1_s*_cnl"))),
+    ("sinusoid", 0.1, sorted(SHAPES.glob("sinusoid-2-0.1_s*"))),
+    ("random H 0.5", 0.1, sorted(SHAPES.glob("random-*0.5-0.02185*_s*"))),
+    ("random H 0.8", 0.1, sorted(SHAPES.glob("random-*0.8-0.02398*_s*"))),
+    ("measured-like file", 0.1, sorted(SHAPES.glob("file-*-1.263_s*"))),
+    ("sawtooth", 0.5, sorted((DATA / "convergence/truth_clamped/runs").glob("s[0-9]"))),
+    ("sinusoid", 0.5, sorted(SHAPES.glob("sinusoid-2-0.5_s*"))),
+    ("glued spheres", 0.5, sorted(SHAPES.glob("glued-*_s*"))),
+    ("random H 0.5", 0.5, sorted(SHAPES.glob("random-*0.5-0.1092*_s*"))),
+    ("random H 0.8", 0.5, sorted(SHAPES.glob("random-*0.8-0.1199*_s*"))),
+    ("measured-like file", 0.5, sorted(SHAPES.glob("file-*-6.316_s*"))),
+]
+
+
+def interval(values):
+    v = [x for x in values if x is not None]
+    if len(v) < 2:
+        return f"{v[0]:.3f} (one run)" if v else "-"
+    return f"{st.mean(v):.3f} +- {T975[len(v) - 1] * st.stdev(v) / len(v) ** 0.5:.3f}"
+
+
+def complete(run):
+    manifest = run / "manifest.json"
+    return manifest.exists() and json.loads(manifest.read_text()).get("status") == "complete"
+
+
+print("| wall | R_n | runs | peak friction | residual friction | total dilation (mm) | first-layer slip | where it sheared (residual steady?) |")
+print("|---|---|---|---|---|---|---|---|")
+for label, rn, runs in CELLS:
+    summaries = [json.loads((r / "summary.json").read_text()) for r in runs if complete(r)]
+    if not summaries:
+        continue
+    q = lambda key: interval([s.get(key) for s in summaries])
+    where = "; ".join(f"{s['shear_mode']} ({s['residual_is']})" for s in summaries)
+    print(f"| {label} | {rn} | {len(summaries)} | {q('peak_friction')} | {q('residual_friction')} | "
+          f"{q('dilation_mm')} | {q('wall_slip')} | {where} |")
