@@ -9,18 +9,19 @@ from pathlib import Path
 T975 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262}
 DATA = Path("data")
 SHAPES = DATA / "roughness" / "roughness_shapes" / "runs"
-# (label, R_n, run directories): the sawtooth cells are the truth campaign's own
+# (label, R_n, run directories): the sawtooth cells are the truth campaign's own; job names are
+# the sweep's (random: RMS-xi-H, file: height_scale)
 CELLS = [
     ("sawtooth", 0.1, sorted((DATA / "reference/truth2_rn/runs").glob("sawtooth-2-0.1_s*_cnl"))),
     ("sinusoid", 0.1, sorted(SHAPES.glob("sinusoid-2-0.1_s*"))),
-    ("random H 0.5", 0.1, sorted(SHAPES.glob("random-*0.5-0.02185*_s*"))),
-    ("random H 0.8", 0.1, sorted(SHAPES.glob("random-*0.8-0.02398*_s*"))),
+    ("random H 0.5", 0.1, sorted(SHAPES.glob("random-0.02185-0.5-0.5_s*"))),
+    ("random H 0.8", 0.1, sorted(SHAPES.glob("random-0.02398-0.5-0.8_s*"))),
     ("measured-like file", 0.1, sorted(SHAPES.glob("file-*-1.263_s*"))),
     ("sawtooth", 0.5, sorted((DATA / "convergence/truth_clamped/runs").glob("s[0-9]"))),
     ("sinusoid", 0.5, sorted(SHAPES.glob("sinusoid-2-0.5_s*"))),
     ("glued spheres", 0.5, sorted(SHAPES.glob("glued-*_s*"))),
-    ("random H 0.5", 0.5, sorted(SHAPES.glob("random-*0.5-0.1092*_s*"))),
-    ("random H 0.8", 0.5, sorted(SHAPES.glob("random-*0.8-0.1199*_s*"))),
+    ("random H 0.5", 0.5, sorted(SHAPES.glob("random-0.1092-0.5-0.5_s*"))),
+    ("random H 0.8", 0.5, sorted(SHAPES.glob("random-0.1199-0.5-0.8_s*"))),
     ("measured-like file", 0.5, sorted(SHAPES.glob("file-*-6.316_s*"))),
 ]
 
