@@ -45,6 +45,19 @@ std::string task_log(std::size_t index, const std::string& job_id) {
 
 namespace {
 
+// A word the shell takes as it is: bare when it holds only safe characters (the usual job and
+// path names), else single-quoted, so that no name from a sweep file runs as shell.
+std::string shell_word(const std::string& s) {
+  if (!s.empty() &&
+      s.find_first_not_of(
+          "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789._/+=:,@%-") ==
+          std::string::npos)
+    return s;
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
 std::string sbatch_lines(const SlurmOptions& o, std::size_t jobs) {
   std::string s = fmt::format(
       "#SBATCH --job-name={}\n#SBATCH --array=0-{}\n#SBATCH --ntasks={}\n#SBATCH --time={}\n"
@@ -72,15 +85,16 @@ std::string slurm_script(const std::vector<Job>& jobs, const SlurmOptions& opt,
       "resumes\n"
       "resume() {{ [ -f \"$1/manifest.json\" ] && echo --resume || true; }}\n"
       "case \"$SLURM_ARRAY_TASK_ID\" in\n",
-      opt.iwb);
+      shell_word(opt.iwb));
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     const auto& j = jobs[i];
-    const std::string flag =
-        i < flags.size() && !flags[i].empty() ? flags[i] : fmt::format("$(resume {})", run_path(j));
+    const std::string flag = i < flags.size() && !flags[i].empty()
+                                 ? flags[i]
+                                 : fmt::format("$(resume {})", shell_word(run_path(j)));
     s += fmt::format(
         "  {}) \"$IWB\" dem run {} --engine {} --np {} --out {} --consolidated consolidated {} "
         ";;\n",
-        i, scene_path(j), j.engine, opt.processes, run_path(j), flag);
+        i, shell_word(scene_path(j)), j.engine, opt.processes, shell_word(run_path(j)), flag);
   }
   s += "  *) echo \"no job for array index $SLURM_ARRAY_TASK_ID\" >&2; exit 2 ;;\nesac\n";
   return s;

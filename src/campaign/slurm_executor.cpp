@@ -61,13 +61,23 @@ struct TaskKey {
   }
 };
 
-// The user's queued and running array tasks with their states (PENDING, RUNNING, COMPLETING, ...).
-// A task that has ended is not listed (squeue shows only live jobs by default).
-std::map<TaskKey, std::string> live_tasks() {
-  const auto q = capture({"squeue", "--noheader", "--array", "--me", "--format=%F %K %T"}, ".");
+// The user's queued and running array tasks with their states (PENDING, RUNNING, COMPLETING, ...),
+// on `cluster` when sbatch named one (a multi-cluster setup). A task that has ended is not listed
+// (squeue shows only live jobs by default). A busy controller is asked again before giving up.
+std::map<TaskKey, std::string> live_tasks(const std::string& cluster) {
+  std::vector<std::string> argv = {"squeue", "--noheader", "--array", "--me", "--format=%F %K %T"};
+  if (!cluster.empty()) argv.push_back("--clusters=" + cluster);
+  Captured q;
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    q = capture(argv, ".");
+    if (q.exit_code == 0) break;
+    std::this_thread::sleep_for(std::chrono::seconds(2 << attempt));
+  }
   if (q.exit_code != 0)
     throw std::runtime_error(
-        fmt::format("squeue failed (exit {}): {}", q.exit_code, trimmed(q.text)));
+        fmt::format("squeue failed five times (exit {}): {}; the tasks stay in Slurm, "
+                    "the same command again watches them",
+                    q.exit_code, trimmed(q.text)));
   std::map<TaskKey, std::string> out;
   std::istringstream lines(q.text);
   for (std::string id, index, state; lines >> id >> index >> state;) {
@@ -117,7 +127,7 @@ class SlurmWatch {
 
   json run() {
     const auto previous = previous_tasks();
-    const auto live = live_tasks();
+    const auto live = live_tasks(cluster_);
     std::vector<std::size_t> to_submit;
     for (std::size_t i = 0; i < jobs_.size(); ++i) {
       if (how_to_start(run_dir(i), record_["jobs"][i]["scene_sha256"]) == JobStart::kSkip) {
@@ -127,6 +137,7 @@ class SlurmWatch {
       const auto p = previous.find(i);
       if (p != previous.end() && live.count({p->second, i})) {
         track(i, p->second, "adopted");  // still queued or running from an earlier watch
+        attempts_[i] = 1;                // its one resubmission is still to come
         continue;
       }
       to_submit.push_back(i);
@@ -158,9 +169,13 @@ class SlurmWatch {
     const json old = io::read_json_file(opt_.out / "sweep.json");
     if (old.value("executor", "") != "slurm") return out;
     record_["slurm"]["submissions"] = old["slurm"].value("submissions", json::array());
+    cluster_ = old["slurm"].value("cluster", "");
     for (std::size_t i = 0; i < jobs_.size() && i < old["jobs"].size(); ++i) {
       const auto& j = old["jobs"][i];
-      if (j.value("name", "") == jobs_[i].name && j.contains("slurm_job")) out[i] = j["slurm_job"];
+      // a task of an edited sweep runs another scene: not adopted (the job is submitted again)
+      if (j.value("name", "") == jobs_[i].name && j.contains("slurm_job") &&
+          j.value("scene_sha256", "") == record_["jobs"][i]["scene_sha256"])
+        out[i] = j["slurm_job"];
     }
     return out;
   }
@@ -197,14 +212,17 @@ class SlurmWatch {
     if (s.exit_code != 0)
       throw std::runtime_error(
           fmt::format("sbatch failed (exit {}): {}", s.exit_code, trimmed(s.text)));
-    const std::string id =
-        trimmed(s.text).substr(0, trimmed(s.text).find(';'));  // "ID" or "ID;cluster"
+    const std::string out = trimmed(s.text),
+                      id = out.substr(0, out.find(';'));  // "ID" or "ID;cluster"
+    if (out.find(';') != std::string::npos) cluster_ = out.substr(out.find(';') + 1);
+    record_["slurm"]["cluster"] = cluster_;
     record_["slurm"]["submissions"].push_back(
         {{"job", id}, {"array", index_list(indices)}, {"at", io::utc_timestamp()}});
     for (auto i : indices) {
       ++attempts_[i];
       track(i, id, flags[i] == "--resume" ? "resumed" : "fresh");
     }
+    write_record(record_, opt_.out);  // the job IDs are kept before anything else can fail
     report(fmt::format("submitted Slurm job {} (array {})", id, index_list(indices)));
   }
 
@@ -213,10 +231,11 @@ class SlurmWatch {
     tracked_.erase(i);
     auto& j = record_["jobs"][i];
     const fs::path manifest = run_dir(i) / "manifest.json";
-    const std::string status = fs::exists(manifest)
-                                   ? io::read_json_file(manifest).value("status", "unknown")
-                                   : "no run directory written";
-    if (status == "complete") {
+    std::string status = fs::exists(manifest)
+                             ? io::read_json_file(manifest).value("status", "unknown")
+                             : "no run directory written";
+    // complete, and of this job's scene: not a stale run the task never got to replace
+    if (how_to_start(run_dir(i), j["scene_sha256"]) == JobStart::kSkip) {
       j["status"] = "complete";
       j["wall_seconds"] = recorded_seconds(run_dir(i));
       j["finished"] = io::utc_timestamp();
@@ -224,6 +243,8 @@ class SlurmWatch {
       report(fmt::format("{}: complete", jobs_[i].name));
       return;
     }
+    if (status == "complete")
+      status = "complete, but of another scene (the task did not replace it)";
     if (attempts_[i] <= opt_.resubmits) {
       resubmit.push_back(i);
       report(fmt::format("{}: its task ended with the run '{}' (log {}); resubmitting it",
@@ -241,11 +262,13 @@ class SlurmWatch {
     for (;;) {
       if (opt_.interrupt && opt_.interrupt->load()) {
         stopped = true;
+        for (auto i : to_submit)  // settled, not yet resubmitted: to do when run again
+          record_["jobs"][i]["status"] = "interrupted before its resubmission";
         break;
       }
       if (!to_submit.empty()) submit(to_submit);
       to_submit.clear();
-      const auto live = live_tasks();
+      const auto live = live_tasks(cluster_);
       for (auto it = tracked_.begin(); it != tracked_.end();) {
         const auto [i, id] = *it++;  // settle() erases i
         const auto state = live.find({id, i});
@@ -305,6 +328,7 @@ class SlurmWatch {
   json record_;
   std::map<std::size_t, std::string> tracked_;  // job index -> Slurm job of its live task
   std::map<std::size_t, int> attempts_;         // submissions per job in this watch
+  std::string cluster_;  // the cluster sbatch named (multi-cluster setups), else empty
   std::vector<double> run_seconds_;
   Clock::time_point started_ = Clock::now(), last_progress_ = Clock::now();
 };

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cctype>
 
 #include "campaign/jobs.hpp"
 #include "campaign/pool.hpp"
@@ -42,6 +43,9 @@ comparison::RunSetOutcome compare_complete_runs(const Comparison& c, const nlohm
 SlurmOptions slurm_options(const SweepOptions& opt, const SweepSpec& spec) {
   SlurmOptions s = opt.slurm;
   s.name = "iwb-" + opt.sweep_file.stem().string();
+  for (char& c :
+       s.name)  // an #SBATCH value ends at a space: the job name keeps safe characters only
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
   s.processes = opt.processes;
   if (s.time.empty()) s.time = spec.slurm_time;
   if (opt.on_slurm) s.iwb = fs::read_symlink("/proc/self/exe").string();

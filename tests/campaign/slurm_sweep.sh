@@ -144,7 +144,8 @@ adopt)
 import json, sys
 d = json.load(open(sys.argv[1]))
 assert d["status"] == "complete" and len(d["slurm"]["submissions"]) == 1, d["slurm"]
-assert {j["start"] for j in d["jobs"]} <= {"adopted", "reused"}, [j["start"] for j in d["jobs"]]
+starts = [j["start"] for j in d["jobs"]]
+assert set(starts) <= {"adopted", "reused"} and "adopted" in starts, starts
 EOF
   ;;
 refused)
@@ -163,6 +164,7 @@ refused)
   expect_refused "--time '2-25': not one of Slurm's --time formats" --time 2-25
   expect_refused "--mem '4 GB': not a Slurm memory size" --mem "4 GB"
   client_path=PATH=/nonexistent expect_refused "--executor slurm: no sbatch on this machine's PATH"
+  expect_refused "--stop-after is for a local run" --stop-after 1
   msg=$("$iwb" sweep data/sweeps/tiny.toml -o "$scratch/local-partition" --partition x 2>&1); code=$?
   [ "$code" -eq 2 ] && grep -q -- "--partition is a Slurm option: it needs --executor slurm" <<<"$msg" ||
     fail "--partition without Slurm: exit $code: $msg"

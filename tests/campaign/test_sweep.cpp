@@ -275,3 +275,23 @@ TEST_CASE(
           Catch::Contains("--out runs/u0.1 --consolidated consolidated --force ;;") &&
           Catch::Contains("--out runs/u0.05 --consolidated consolidated $(resume runs/u0.05) ;;"));
 }
+
+TEST_CASE(
+    "slurm script: a job name the shell would read as code is single-quoted, the script still "
+    "parses",
+    "[campaign]") {
+  campaign::SlurmOptions o;
+  o.name = "iwb-x";
+  o.time = "10";
+  o.iwb = "/opt/my iwb/bin/iwb";
+  const std::vector<campaign::Job> jobs = {{"plain_s1", "liggghts", {}, ""},
+                                           {"a b;touch pwned", "liggghts", {}, ""}};
+  const std::string script = campaign::slurm_script(jobs, o);
+  CHECK_THAT(script, Catch::Contains("IWB=${IWB:-'/opt/my iwb/bin/iwb'}") &&
+                         Catch::Contains("dem run scenes/plain_s1.toml") &&
+                         Catch::Contains("dem run 'scenes/a b;touch pwned.toml' --engine liggghts "
+                                         "--np 1 --out 'runs/a b;touch pwned'"));
+  const auto dir = test::campaign_dir("slurm_quoting");
+  io::write_atomically(dir / "q.slurm", script);
+  CHECK(std::system(("bash -n " + (dir / "q.slurm").string()).c_str()) == 0);
+}

@@ -21,10 +21,21 @@ struct SweepCommand {
   std::string sweep_file, out, emit, executor = "local";
 };
 
-// The Slurm options mean nothing to a local run: refused rather than ignored.
+// The Slurm options mean nothing to a local run, and --jobs and --stop-after nothing to Slurm
+// (it decides how many tasks run at once): refused rather than ignored.
 void require_slurm_for_slurm_options(const SweepCommand& o) {
   const auto& s = o.options.slurm;
+  if (o.executor == "slurm")
+    for (const auto& [option, given] :
+         {std::pair{"--jobs", o.options.jobs != 1}, {"--stop-after", o.options.stop_after != 0}})
+      if (given)
+        throw InputError(
+            fmt::format("{} is for a local run: with --executor slurm, Slurm decides how many "
+                        "tasks run at once",
+                        option));
   if (o.executor == "slurm" || o.emit == "slurm") return;
+  if (o.options.poll_seconds != campaign::SweepOptions{}.poll_seconds)
+    throw InputError("--poll is a Slurm option: it needs --executor slurm");
   for (const auto& [option, given] : {std::pair{"--partition", !s.partition.empty()},
                                       {"--account", !s.account.empty()},
                                       {"--time", !s.time.empty()},
