@@ -60,10 +60,10 @@ out_option() {
 }
 
 # Quick commands run for real: each must be a command of the table (so this list cannot outlive it).
+# (`bench element` runs in its own two tests of tests/CMakeLists.txt: not a third time here.)
 QUICK=(
   "models"
   "element $repo/data/tests/hvwe_cnl_dense.toml --out $scratch/element --force"
-  "bench element --repeats 1"
 )
 for q in "${QUICK[@]}"; do
   sub=$(subcommand_of "iwb $q")

@@ -128,7 +128,11 @@ EOF
   grep -q "Loop time of .* on 2 procs" "$scratch/out/runs/w60/liggghts/shear.out" || fail "LIGGGHTS did not run on 2 MPI ranks"
   ;;
 adopt)
-  "$iwb" sweep data/sweeps/tiny.toml -o "$scratch/out" --executor slurm --poll 1 >"$scratch/first.log" 2>&1 &
+  # one job of tiny.toml (the longest, 10 mm): still running when the watch is stopped
+  sed -e 's|^scene = "../scenes/smoke.toml"|scene = "'"$repo"'/data/scenes/smoke.toml"|' \
+    -e 's|^values = \[0.05, 10.0, 0.1\]|values = [10.0]|' data/sweeps/tiny.toml >"$scratch/one.toml"
+  grep -q '^values = \[10.0\]' "$scratch/one.toml" || fail "tiny.toml changed: the one-job sweep was not made"
+  "$iwb" sweep "$scratch/one.toml" -o "$scratch/out" --executor slurm --poll 1 >"$scratch/first.log" 2>&1 &
   watcher=$!
   for _ in $(seq 1 100); do grep -q "submitted Slurm job" "$scratch/first.log" && break; sleep 0.1; done
   kill -INT $watcher; wait $watcher; code=$?
@@ -136,7 +140,7 @@ adopt)
   [ "$code" -eq 1 ] || fail "the stopped watch exits $code, expected 1"
   grep -q '"status": "interrupted"' "$scratch/out/sweep.json" || fail "the stopped watch's sweep.json is not interrupted"
   [ "$(jobs_submitted)" -ge 1 ] || fail "stopping the watch took the tasks out of Slurm"
-  "$iwb" sweep data/sweeps/tiny.toml -o "$scratch/out" --executor slurm --poll 1 >"$scratch/second.log" 2>&1 ||
+  "$iwb" sweep "$scratch/one.toml" -o "$scratch/out" --executor slurm --poll 1 >"$scratch/second.log" 2>&1 ||
     { cat "$scratch/second.log"; fail "the second watch failed"; }
   cat "$scratch/second.log"
   grep -q "submitted Slurm job" "$scratch/second.log" && fail "the second watch submitted again"
