@@ -5,10 +5,10 @@
 #include <chrono>
 #include <filesystem>
 
-#include "coarse_graining/run_fields.hpp"
 #include "common/errors.hpp"
 #include "dem/engines.hpp"
 #include "dem/run.hpp"
+#include "dem/run_fields.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::bench {
@@ -23,7 +23,7 @@ struct FieldsCost {
 // produce a snapshot (the shear stage's loop time over the intervals between snapshots).
 FieldsCost fields_cost(const std::filesystem::path& dir, const nlohmann::json& manifest) {
   const auto t0 = std::chrono::steady_clock::now();
-  const auto fields = coarse_graining::coarse_grain_run(dir, {std::nullopt, true, nullptr});
+  const auto fields = dem::coarse_grain_run(dir, {std::nullopt, true, nullptr});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double snapshots = fields.value("snapshots", 1.0);

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <chrono>
 
-#include "coarse_graining/run_fields.hpp"
 #include "common/errors.hpp"
 #include "dem/consolidation_cache.hpp"
 #include "dem/plausibility.hpp"
+#include "dem/run_fields.hpp"
 #include "dem/scene_roughness.hpp"
 #include "dem/summary.hpp"
 #include "io/checksum_record.hpp"
@@ -118,11 +118,11 @@ StageResult run_recorded_stage(Engine& engine, const std::string& stage, const S
   return r;
 }
 
-// The fields of the snapshots (coarse_graining/run_fields.hpp) once the run is complete. They are
+// The fields of the snapshots (run_fields.hpp) once the run is complete. They are
 // a view of the run, not part of it: a failure is a warning, and `iwb dem fields` can redo them.
 void coarse_grain_fields(const RunOptions& opt, nlohmann::json& m) {
   try {
-    coarse_graining::coarse_grain_run(opt.out, {std::nullopt, false, opt.progress});
+    coarse_grain_run(opt.out, {std::nullopt, false, opt.progress});
     m["files"].push_back("fields/fields.pvd");
   } catch (const std::exception& e) {
     m["warnings"].push_back(fmt::format("coarse-graining failed ({}); `iwb dem fields {}` retries",

@@ -7,7 +7,7 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "app/progress.hpp"
-#include "coarse_graining/run_fields.hpp"
+#include "dem/run_fields.hpp"
 
 namespace iwb::app {
 
@@ -51,11 +51,11 @@ void add_dem_fields_command(CLI::App& dem, CommandList& commands) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--force", o->force, "recompute every snapshot");
   commands.add(cmd, [o](const CommandContext&) {
-    coarse_graining::RunFieldsOptions opt;
+    dem::RunFieldsOptions opt;
     if (o->width_d50 > 0.0) opt.width_d50 = o->width_d50;
     opt.force = o->force || o->width_d50 > 0.0;
     opt.progress = engine_progress();
-    const auto result = coarse_graining::coarse_grain_run(o->run_dir, opt);
+    const auto result = dem::coarse_grain_run(o->run_dir, opt);
     fmt::print("{}\n", result.dump(2));
     return result.value("verdict", "") == "all checks pass" ? 0 : 1;
   });

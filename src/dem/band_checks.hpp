@@ -13,7 +13,7 @@
 #include "dem/scene.hpp"
 #include "io/csv_table.hpp"
 
-namespace iwb::coarse_graining {
+namespace iwb::dem {
 
 struct SnapshotProfile {
   double time_s;            // since the start of shear
@@ -21,7 +21,7 @@ struct SnapshotProfile {
   double grains_volume_m3;  // sum of the grains' volumes
   // the grains' v_x / v_wall binned by centre (scene's profile_bin_d50), heights in d50 above the
   // wall's mean height as the profile's: the kernel-free velocity of the same instant
-  BinnedProfile grain_velocity;
+  coarse_graining::BinnedProfile grain_velocity;
 };
 
 struct BandChecks {
@@ -34,4 +34,4 @@ BandChecks band_checks(const dem::Scene& scene, const dem::Numerics& numerics,
                        const io::CsvTable& timeseries, const std::vector<SnapshotProfile>& profiles,
                        double width_m);
 
-}  // namespace iwb::coarse_graining
+}  // namespace iwb::dem

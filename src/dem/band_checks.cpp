@@ -1,4 +1,4 @@
-#include "coarse_graining/band_checks.hpp"
+#include "dem/band_checks.hpp"
 
 #include <fmt/core.h>
 
@@ -7,7 +7,7 @@
 
 #include "coarse_graining/band_measures.hpp"
 
-namespace iwb::coarse_graining {
+namespace iwb::dem {
 
 namespace {
 
@@ -43,7 +43,7 @@ double top_of_roughness(const dem::RoughnessProfile& p, double length) {
 // and below the plate's clamp (scene.hpp, plate_clamp_m): the clamp holds its grains by an
 // external force, which carries part of the shear there, so the momentum balance that makes
 // sigma_xz uniform and equal to the wall's tau holds only in the free soil beneath it.
-Span interior_d50(const io::CsvTable& p, const dem::Scene& s, double d50) {
+coarse_graining::Span interior_d50(const io::CsvTable& p, const dem::Scene& s, double d50) {
   const auto z = p.values("z_over_d50"), nu = p.values("solid_fraction");
   const double peak = *std::max_element(nu.begin(), nu.end());
   double top = z.front();
@@ -78,8 +78,8 @@ io::CsvTable mean_profile(const std::vector<const io::CsvTable*>& ps) {
   return out;
 }
 
-nlohmann::json check(const std::string& name, double value, const std::string& comparison,
-                     double limit, const std::string& measures) {
+nlohmann::json band_check(const std::string& name, double value, const std::string& comparison,
+                          double limit, const std::string& measures) {
   const bool passed = comparison == "<=" ? value <= limit : value >= limit;
   return {{"name", name},   {"value", value},   {"comparison", comparison},
           {"limit", limit}, {"passed", passed}, {"measures", measures}};
@@ -90,8 +90,8 @@ nlohmann::json check(const std::string& name, double value, const std::string& c
 std::pair<double, double> band_widths(const SnapshotProfile& sp, double wall_speed) {
   auto v = sp.profile.values("velocity_x_m_s");
   for (double& x : v) x = wall_speed > 0.0 ? x / wall_speed : 0.0;
-  return {velocity_band_width(sp.profile.values("z_over_d50"), v, 0.0),
-          velocity_band_width(sp.grain_velocity.z, sp.grain_velocity.mean, 0.0)};
+  return {coarse_graining::velocity_band_width(sp.profile.values("z_over_d50"), v, 0.0),
+          coarse_graining::velocity_band_width(sp.grain_velocity.z, sp.grain_velocity.mean, 0.0)};
 }
 
 // The band's shear rate as a magnitude: the wall drags the grains along +x, so dV_x/dz < 0 in it.
@@ -101,7 +101,7 @@ std::vector<double> shear_rate_magnitude(const io::CsvTable& p) {
   return r;
 }
 
-double mean(const std::vector<double>& v) {
+double mean_of(const std::vector<double>& v) {
   double s = 0.0;
   for (double x : v) s += x;
   return v.empty() ? std::nan("") : s / double(v.size());
@@ -134,20 +134,22 @@ BandChecks band_checks(const dem::Scene& s, const dem::Numerics& n, const io::Cs
     const auto& p = sp.profile;
     const auto z = p.values("z_over_d50");
     const double h = (z[1] - z[0]) * d50;
-    const double mass =
-        std::abs(integral(p.values("solid_fraction"), h) * area / sp.grains_volume_m3 - 1.0);
+    const double mass = std::abs(coarse_graining::integral(p.values("solid_fraction"), h) * area /
+                                     sp.grains_volume_m3 -
+                                 1.0);
     mass_err.push_back(mass);
-    const Span inner = interior_d50(p, s, d50);
+    const coarse_graining::Span inner = interior_d50(p, s, d50);
     const double u = interpolate(ts, "t_s", "u_x_mm", sp.time_s),
                  tau = interpolate(ts, "t_s", "tau_kPa", sp.time_s);
     const double sigma = interpolate(ts, "t_s", "sigma_n_kPa", sp.time_s);
-    const double tau_cg = mean_over(z, p.values("stress_xz_Pa"), inner) / 1e3;
-    const double sigma_cg = mean_over(z, p.values("stress_zz_Pa"), inner) / 1e3;
-    const double sp_xz = relative_spread(z, p.values("stress_xz_Pa"), inner);
-    const double e_cg = 1.0 / mean_over(z, p.values("solid_fraction"), {band_lo, band_hi}) - 1.0;
+    const double tau_cg = coarse_graining::mean_over(z, p.values("stress_xz_Pa"), inner) / 1e3;
+    const double sigma_cg = coarse_graining::mean_over(z, p.values("stress_zz_Pa"), inner) / 1e3;
+    const double sp_xz = coarse_graining::relative_spread(z, p.values("stress_xz_Pa"), inner);
+    const double e_cg =
+        1.0 / coarse_graining::mean_over(z, p.values("solid_fraction"), {band_lo, band_hi}) - 1.0;
     const double e_ts = interpolate(ts, "t_s", "e_band", sp.time_s);
-    const double fwhm =
-        peak_width_at_half_maximum(z, shear_rate_magnitude(p), {0.0, 0.5 * s.height_m / d50});
+    const double fwhm = coarse_graining::peak_width_at_half_maximum(z, shear_rate_magnitude(p),
+                                                                    {0.0, 0.5 * s.height_m / d50});
     const auto [width_cg, width_grains] = band_widths(sp, s.shear.velocity_m_s);
     out.per_snapshot.rows.push_back({sp.time_s, u, tau, tau_cg, sp_xz, sigma, sigma_cg, mass, e_ts,
                                      e_cg, fwhm, width_cg, width_grains});
@@ -158,8 +160,8 @@ BandChecks band_checks(const dem::Scene& s, const dem::Numerics& n, const io::Cs
     if (u < 0.5 * s.shear.travel_m() * 1e3) continue;
     late.push_back(&p);
     if (width_cg >= 0.0 && width_grains >= 0.0)
-      band_diff.push_back(
-          std::abs(width_cg - coarse_grained_band_width(width_grains, width_m / d50)));
+      band_diff.push_back(std::abs(
+          width_cg - coarse_graining::coarse_grained_band_width(width_grains, width_m / d50)));
   }
   auto& j = out.json;
   j["width_d50"] = width_m / d50;
@@ -169,34 +171,34 @@ BandChecks band_checks(const dem::Scene& s, const dem::Numerics& n, const io::Cs
   j["wall_speed_m_s"] = s.shear.velocity_m_s;
   j["snapshots"] = profiles.size();
   j["checks"] = nlohmann::json::array();
-  j["checks"].push_back(check(
+  j["checks"].push_back(band_check(
       "mass_balance", *std::max_element(mass_err.begin(), mass_err.end()), "<=", kMassTolerance,
       "largest |integral of the solid fraction x area / grains' volume - 1| over the snapshots"));
   if (!spread.empty()) {
-    j["checks"].push_back(check(
-        "shear_stress_uniform", mean(spread), "<=", kShearSpreadTolerance,
+    j["checks"].push_back(band_check(
+        "shear_stress_uniform", mean_of(spread), "<=", kShearSpreadTolerance,
         "(max - min) / mean of sigma_xz over the interior (2 d50 from the wall's peaks and from "
         "the plate's valleys or its clamp's lower edge), mean over the snapshots after the start"));
-    j["checks"].push_back(check("shear_stress_equals_wall", mean(tau_err),
-                                "<=", kShearWallTolerance,
-                                "|interior mean of sigma_xz / the wall's tau - 1|, mean over the "
-                                "snapshots after the start"));
-    j["checks"].push_back(check("normal_stress_equals_wall", mean(sigma_err),
-                                "<=", kNormalWallTolerance,
-                                "|interior mean of sigma_zz / the wall's sigma_n - 1|, mean over "
-                                "the snapshots after the start"));
-    j["e_band_cg_minus_timeseries"] = mean(e_diff);
+    j["checks"].push_back(
+        band_check("shear_stress_equals_wall", mean_of(tau_err), "<=", kShearWallTolerance,
+                   "|interior mean of sigma_xz / the wall's tau - 1|, mean over the "
+                   "snapshots after the start"));
+    j["checks"].push_back(
+        band_check("normal_stress_equals_wall", mean_of(sigma_err), "<=", kNormalWallTolerance,
+                   "|interior mean of sigma_zz / the wall's sigma_n - 1|, mean over "
+                   "the snapshots after the start"));
+    j["e_band_cg_minus_timeseries"] = mean_of(e_diff);
   }
   out.mean_profile = mean_profile(late);
   if (!late.empty()) {
     const auto z = out.mean_profile.values("z_over_d50");
-    const double fwhm = peak_width_at_half_maximum(z, shear_rate_magnitude(out.mean_profile),
-                                                   {0.0, 0.5 * s.height_m / d50});
+    const double fwhm = coarse_graining::peak_width_at_half_maximum(
+        z, shear_rate_magnitude(out.mean_profile), {0.0, 0.5 * s.height_m / d50});
     auto r = out.mean_profile.values("velocity_x_m_s");
     for (double& v : r) v /= s.shear.velocity_m_s;
-    const double width = velocity_band_width(z, r, 0.0);
+    const double width = coarse_graining::velocity_band_width(z, r, 0.0);
     j["band_fwhm_d50"] = fwhm;
-    j["band_fwhm_as_velocity_width_d50"] = fwhm * kVelocityWidthPerFwhm;
+    j["band_fwhm_as_velocity_width_d50"] = fwhm * coarse_graining::kVelocityWidthPerFwhm;
     j["band_velocity_width_d50"] = width >= 0.0 ? nlohmann::json(width) : nlohmann::json(nullptr);
   }
   // Like with like: the band breathes in a stick-slip residual, so an instantaneous width differs
@@ -204,8 +206,8 @@ BandChecks band_checks(const dem::Scene& s, const dem::Numerics& n, const io::Cs
   // the snapshots of a truth run); the same snapshot's grains are the kernel-free reference, seen
   // through the kernel's smear (0.6-0.8 d50 wider at w 0.5 d50 on truth runs without it).
   if (!band_diff.empty())
-    j["checks"].push_back(check(
-        "band_thickness_agrees", mean(band_diff), "<=", kBandToleranceD50,
+    j["checks"].push_back(band_check(
+        "band_thickness_agrees", mean_of(band_diff), "<=", kBandToleranceD50,
         "|0.9 -> 0.1 width of the coarse-grained velocity - sqrt(W^2 + (2.563 w)^2)|, d50, with W "
         "that of the grains' velocities binned by centre in the same snapshot (the kernel of width "
         "w smears an erfc band so), mean over the snapshots of the second half of the travel"));
@@ -215,4 +217,4 @@ BandChecks band_checks(const dem::Scene& s, const dem::Numerics& n, const io::Cs
   return out;
 }
 
-}  // namespace iwb::coarse_graining
+}  // namespace iwb::dem

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "coarse_graining/band_checks.hpp"
+#include "dem/band_checks.hpp"
 #include "io/run_directory.hpp"
 
 using namespace iwb;
@@ -42,20 +42,20 @@ io::CsvTable series() {
   return t;
 }
 
-bool passed(const coarse_graining::BandChecks& c, const std::string& name) {
+bool passed(const dem::BandChecks& c, const std::string& name) {
   for (const auto& check : c.json["checks"])
     if (check["name"] == name) return check["passed"].get<bool>();
   FAIL("no check named " << name);
   return false;
 }
 
-coarse_graining::BandChecks checks_of(const dem::Scene& s, const io::CsvTable& p,
-                                      const coarse_graining::BinnedProfile& grain_velocity = {}) {
+dem::BandChecks checks_of(const dem::Scene& s, const io::CsvTable& p,
+                          const coarse_graining::BinnedProfile& grain_velocity = {}) {
   const double d50 = s.particles.d50_m;
   const double grains = 0.6 * kTopD50 * d50 * s.area_m2();
-  return coarse_graining::band_checks(
-      s, dem::derive(s), series(),
-      {{0.0, p, grains, grain_velocity}, {1.0, p, grains, grain_velocity}}, 0.5 * d50);
+  return dem::band_checks(s, dem::derive(s), series(),
+                          {{0.0, p, grains, grain_velocity}, {1.0, p, grains, grain_velocity}},
+                          0.5 * d50);
 }
 
 // v / v_wall of an erfc band of standard deviation sigma centred 8 d50 above the wall (1 there).
@@ -78,7 +78,7 @@ coarse_graining::BinnedProfile grains_with_band(double sigma) {
   return b;
 }
 
-const nlohmann::json& check_named(const coarse_graining::BandChecks& c, const std::string& name) {
+const nlohmann::json& check_named(const dem::BandChecks& c, const std::string& name) {
   for (const auto& check : c.json["checks"])
     if (check["name"] == name) return check;
   FAIL("no check named " << name);

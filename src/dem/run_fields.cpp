@@ -1,4 +1,4 @@
-#include "coarse_graining/run_fields.hpp"
+#include "dem/run_fields.hpp"
 
 #include <fmt/core.h>
 
@@ -7,9 +7,9 @@
 #include <map>
 #include <regex>
 
-#include "coarse_graining/band_checks.hpp"
 #include "coarse_graining/fields.hpp"
 #include "common/errors.hpp"
+#include "dem/band_checks.hpp"
 #include "dem/numerics.hpp"
 #include "dem/scene.hpp"
 #include "io/csv_table.hpp"
@@ -17,7 +17,7 @@
 #include "io/run_directory.hpp"
 #include "io/vtk_files.hpp"
 
-namespace iwb::coarse_graining {
+namespace iwb::dem {
 
 namespace fs = std::filesystem;
 
@@ -61,7 +61,7 @@ const io::VtkArray& array_in(const io::VtkArray* a, const fs::path& file, const 
   return *a;
 }
 
-Snapshot read_snapshot(const fs::path& vtk, long step) {
+coarse_graining::Snapshot read_snapshot(const fs::path& vtk, long step) {
   const fs::path pf = vtk / fmt::format("particles_{}.vtp", step),
                  cf = vtk / fmt::format("contacts_{}.vtp", step);
   const io::PointCloud p = io::read_points(pf);
@@ -69,7 +69,7 @@ Snapshot read_snapshot(const fs::path& vtk, long step) {
   const auto& m = array_in(p.find("mass_kg"), pf, "mass_kg");
   const auto& v = array_in(p.find("velocity_m_s"), pf, "velocity_m_s");
   const auto& w = array_in(p.find("angular_velocity_rad_s"), pf, "angular_velocity_rad_s");
-  Snapshot s;
+  coarse_graining::Snapshot s;
   for (std::size_t i = 0; i < p.points.size(); ++i)
     s.grains.push_back({p.points[i], vec3(v, i), vec3(w, i), r.values[i], m.values[i]});
   const io::Segments c = io::read_segments(cf);
@@ -80,14 +80,15 @@ Snapshot read_snapshot(const fs::path& vtk, long step) {
   return s;
 }
 
-std::pair<double, double> height_range(const Snapshot& s) {
+std::pair<double, double> height_range(const coarse_graining::Snapshot& s) {
   double lo = 1e300, hi = -1e300;
   for (const auto& g : s.grains)
     lo = std::min(lo, g.position.z()), hi = std::max(hi, g.position.z());
   return {lo, hi};
 }
 
-io::ImageGrid image_of(const PlaneGrid& grid, const FieldSet& f, double width_y) {
+io::ImageGrid image_of(const coarse_graining::PlaneGrid& grid, const coarse_graining::FieldSet& f,
+                       double width_y) {
   io::ImageGrid im{
       grid.nx(), 1, grid.nz(), {0.0, 0.5 * width_y, grid.z_lo()}, {grid.hx(), grid.hx(), grid.hz()},
       {}};
@@ -95,8 +96,8 @@ io::ImageGrid image_of(const PlaneGrid& grid, const FieldSet& f, double width_y)
   return im;
 }
 
-io::CsvTable profile_table(const HeightProfile& grid, const FieldSet& f, double wall_mean,
-                           double d50) {
+io::CsvTable profile_table(const coarse_graining::HeightProfile& grid,
+                           const coarse_graining::FieldSet& f, double wall_mean, double d50) {
   io::CsvTable t;
   t.columns = {"z_over_d50"};
   for (const auto& field : f.fields) t.columns.push_back(field.name);
@@ -144,17 +145,18 @@ io::CsvTable profile_of(const RunContext& c, const fs::path& dir, const Snapshot
   const fs::path vti = dir / "fields" / fmt::format("fields_{}.vti", f.step);
   const fs::path csv = dir / "fields" / fmt::format("profile_{}.csv", f.step);
   if (!force && fs::exists(vti) && fs::exists(csv)) return io::read_csv_table(csv);
-  const Snapshot s = read_snapshot(dir / "vtk", f.step);
-  const GaussianKernel kernel(c.width);
-  const PeriodicCell cell{c.scene.length_m, c.scene.width_m};
+  const coarse_graining::Snapshot s = read_snapshot(dir / "vtk", f.step);
+  const coarse_graining::GaussianKernel kernel(c.width);
+  const coarse_graining::PeriodicCell cell{c.scene.length_m, c.scene.width_m};
   const auto [lo, hi] = height_range(s);
-  const PlaneGrid plane(kernel, cell, kPlaneSpacingPerWidth * c.width,
-                        lo - kPlaneMarginWidths * c.width, hi + kPlaneMarginWidths * c.width);
-  io::write_image(vti, image_of(plane, coarse_grain(s, plane), c.scene.width_m));
+  const coarse_graining::PlaneGrid plane(kernel, cell, kPlaneSpacingPerWidth * c.width,
+                                         lo - kPlaneMarginWidths * c.width,
+                                         hi + kPlaneMarginWidths * c.width);
+  io::write_image(vti, image_of(plane, coarse_graining::coarse_grain(s, plane), c.scene.width_m));
   // the profile spans the kernel's whole reach, so that its integrals conserve mass
-  const HeightProfile profile(kernel, cell, kProfileSpacingPerWidth * c.width, lo - kernel.reach(),
-                              hi + kernel.reach());
-  const io::CsvTable t = profile_table(profile, coarse_grain(s, profile),
+  const coarse_graining::HeightProfile profile(kernel, cell, kProfileSpacingPerWidth * c.width,
+                                               lo - kernel.reach(), hi + kernel.reach());
+  const io::CsvTable t = profile_table(profile, coarse_graining::coarse_grain(s, profile),
                                        c.scene.wall.mean_height_m(), c.numerics.d50);
   io::write_atomically(csv, t.to_csv());
   return t;
@@ -164,7 +166,7 @@ io::CsvTable profile_of(const RunContext& c, const fs::path& dir, const Snapshot
 // by centre (the band check's kernel-free profile).
 struct GrainsOfSnapshot {
   double volume_m3 = 0.0;
-  BinnedProfile velocity;
+  coarse_graining::BinnedProfile velocity;
 };
 
 GrainsOfSnapshot grains_of(const RunContext& c, const fs::path& vtk, long step) {
@@ -181,7 +183,7 @@ GrainsOfSnapshot grains_of(const RunContext& c, const fs::path& vtk, long step) 
     z.push_back((p.points[i].z() - base) / d50);
     vx.push_back(speed > 0.0 ? v.values[3 * i] / speed : 0.0);
   }
-  g.velocity = bin_means(z, vx, 0.0, c.scene.outputs.profile_bin_d50);
+  g.velocity = coarse_graining::bin_means(z, vx, 0.0, c.scene.outputs.profile_bin_d50);
   return g;
 }
 
@@ -216,4 +218,4 @@ nlohmann::json coarse_grain_run(const fs::path& dir, const RunFieldsOptions& opt
   return checks.json;
 }
 
-}  // namespace iwb::coarse_graining
+}  // namespace iwb::dem

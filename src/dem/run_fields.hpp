@@ -15,7 +15,7 @@
 #include <optional>
 #include <string>
 
-namespace iwb::coarse_graining {
+namespace iwb::dem {
 
 struct RunFieldsOptions {
   std::optional<double> width_d50;  // else the scene's [coarse_graining] width_d50
@@ -27,4 +27,4 @@ struct RunFieldsOptions {
 nlohmann::json coarse_grain_run(const std::filesystem::path& run_dir,
                                 const RunFieldsOptions& options);
 
-}  // namespace iwb::coarse_graining
+}  // namespace iwb::dem
