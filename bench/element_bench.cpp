@@ -162,6 +162,9 @@ nlohmann::json run_element_bench(const ElementBenchOptions& opt) {
   std::vector<std::string> notes;
   bool used_extra = false, used_declared = false;
   for (const auto& spec : models::model_registry()) {
+    if (!opt.models.empty() &&
+        std::find(opt.models.begin(), opt.models.end(), spec.name) == opt.models.end())
+      continue;
     const auto& declared = spec.declaration.example_parameters;
     if (missing_tables(base, spec).empty()) {
       out.push_back(bench_model(spec, base, spec.name, opt));

@@ -6,6 +6,8 @@
 // skipped with a note when that file is not there.
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 namespace iwb::bench {
 
@@ -13,6 +15,7 @@ struct ElementBenchOptions {
   int repeats = 5;  // the test time is the best of these
   // Seed Table 5.3 Toyoura: the set of the seed's intergranular-strain examples (5.7.5).
   std::filesystem::path igs_params = "data/params/table_5_3_toyoura.toml";
+  std::vector<std::string> models;  // only these (names of `iwb models`); empty: every model
 };
 
 nlohmann::json run_element_bench(const ElementBenchOptions& options);

@@ -8,6 +8,7 @@
 #include "bench/dem_bench.hpp"
 #include "bench/element_bench.hpp"
 #include "bench/integrator_bench.hpp"
+#include "models/registry.hpp"
 
 namespace iwb::app {
 
@@ -25,7 +26,13 @@ void add_bench_element_command(CLI::App& bench, CommandList& commands) {
                    "parameter set of the -igs models (Table 5.1 has no [intergranular_strain]); "
                    "they are skipped when it is not there")
       ->capture_default_str();
+  element
+      ->add_option(
+          "--models", o->models,
+          "only these models, comma-separated (names of `iwb models`); default every model")
+      ->delimiter(',');
   commands.add(element, [o](const CommandContext&) {
+    for (const auto& m : o->models) models::find_model(m);  // an unknown name refused, exit 2
     bench::run_element_bench(*o);
     return 0;
   });
