@@ -170,25 +170,14 @@ std::vector<CyclicVerdict> judge_cycles(const DemRun& dem,
 }
 
 nlohmann::json to_json(const std::vector<CyclicVerdict>& verdicts) {
-  auto opt = [](const std::optional<double>& x) {
-    return x ? nlohmann::json(*x) : nlohmann::json(nullptr);
-  };
   nlohmann::json out = nlohmann::json::array();
-  for (const auto& v : verdicts)
-    out.push_back({{"quantity", v.quantity},
-                   {"where", v.where},
-                   {"unit", ""},
-                   {"dem", opt(v.dem)},
-                   {"dem_seed_sd", opt(v.dem_sd)},
-                   {"seeds", v.seeds},
-                   {"dem_t_interval_95", opt(v.dem_ci)},
-                   {"detection_limit", opt(v.detection_limit)},
-                   {"seeds_needed",
-                    v.seeds_needed ? nlohmann::json(*v.seeds_needed) : nlohmann::json(nullptr)},
-                   {"model", opt(v.model)},
-                   {"relative_error", opt(v.error)},
-                   {"tolerance", v.tolerance},
-                   {"verdict", v.verdict}});
+  for (const auto& v : verdicts) {
+    auto j = shared_verdict_json(v);
+    j["quantity"] = v.quantity;
+    j["where"] = v.where;
+    j["unit"] = "";
+    out.push_back(j);
+  }
   return out;
 }
 

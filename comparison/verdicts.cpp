@@ -147,27 +147,15 @@ std::vector<std::string> failing(const std::vector<Verdict>& verdicts) {
 }
 
 nlohmann::json to_json(const std::vector<Verdict>& verdicts) {
-  auto opt = [](const std::optional<double>& x) {
-    return x ? nlohmann::json(*x) : nlohmann::json(nullptr);
-  };
   nlohmann::json out = nlohmann::json::array();
   for (const auto& v : verdicts) {
     const auto& q = quantity(v.key);
-    out.push_back({{"quantity", v.key},
-                   {"name", q.name},
-                   {"unit", q.unit},
-                   {"dem", opt(v.dem)},
-                   {"dem_seed_sd", opt(v.dem_sd)},
-                   {"seeds", v.seeds},
-                   {"dem_t_interval_95", opt(v.dem_ci)},
-                   {"detection_limit", opt(v.detection_limit)},
-                   {"seeds_needed",
-                    v.seeds_needed ? nlohmann::json(*v.seeds_needed) : nlohmann::json(nullptr)},
-                   {"notes", v.notes},
-                   {"model", opt(v.model)},
-                   {"relative_error", opt(v.error)},
-                   {"tolerance", v.tolerance},
-                   {"verdict", v.verdict}});
+    auto j = shared_verdict_json(v);
+    j["quantity"] = v.key;
+    j["name"] = q.name;
+    j["unit"] = q.unit;
+    j["notes"] = v.notes;
+    out.push_back(j);
   }
   return out;
 }

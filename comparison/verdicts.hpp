@@ -72,4 +72,22 @@ std::vector<std::string> failing(const std::vector<Verdict>& verdicts);
 
 nlohmann::json to_json(const std::vector<Verdict>& verdicts);
 
+// The JSON fields every verdict shares, monotonic or cyclic (a V with dem, dem_sd, seeds, dem_ci,
+// detection_limit, seeds_needed, model, error, tolerance, verdict): the DEM's seed statistics,
+// the model's value and error, the tolerance and the word; null where a value is absent.
+template <class V>
+nlohmann::json shared_verdict_json(const V& v) {
+  const auto value = [](const auto& x) { return x ? nlohmann::json(*x) : nlohmann::json(nullptr); };
+  return {{"dem", value(v.dem)},
+          {"dem_seed_sd", value(v.dem_sd)},
+          {"seeds", v.seeds},
+          {"dem_t_interval_95", value(v.dem_ci)},
+          {"detection_limit", value(v.detection_limit)},
+          {"seeds_needed", value(v.seeds_needed)},
+          {"model", value(v.model)},
+          {"relative_error", value(v.error)},
+          {"tolerance", v.tolerance},
+          {"verdict", v.verdict}};
+}
+
 }  // namespace iwb::comparison
