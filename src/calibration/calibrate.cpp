@@ -12,28 +12,40 @@
 #include "fitting/least_squares.hpp"
 #include "models/hypoplastic/parameters.hpp"
 #include "models/hypoplastic/von_wolffersdorff.hpp"
+#include "models/registry.hpp"
 
 namespace iwb::calibration {
 
 namespace {
 
-// The box the optimiser searches: the parameter table's bounds (HypoplasticParameters::table)
-// narrowed to what sands show, because BOBYQA needs finite bounds. h_s is fitted as ln h_s.
+// The box the optimiser searches: each parameter's declared calibration box (ParameterSpec), the
+// range sands span inside the physical bounds, finite because BOBYQA needs finite bounds; h_s is
+// declared logarithmic and fitted as ln h_s.
 struct BoxEntry {
-  const char* key;
+  std::string key;
   double lower, upper;
   bool logarithmic;
 };
-constexpr BoxEntry kBox[] = {
-    {"phi_c_deg", 15.0, 50.0, false}, {"hs_kPa", 1e4, 1e8, true}, {"n", 0.1, 0.9, false},
-    {"ec0", 0.3, 2.0, false},         {"ed0", 0.2, 1.5, false},   {"ei0", 0.4, 2.5, false},
-    {"alpha", 0.01, 1.0, false},      {"beta", 0.1, 5.0, false},
-};
+using Boxes = std::vector<BoxEntry>;
 
-const BoxEntry& box(const std::string& key) {
-  for (const auto& b : kBox)
-    if (key == b.key) return b;
-  throw std::logic_error("no calibration box for " + key);
+// The table a model is calibrated on: the one of its tables whose parameters declare boxes.
+const models::ParameterTable& calibrated_table(const std::string& model) {
+  for (const auto* t : models::find_model(model).tables)
+    for (const auto& e : t->entries)
+      if (e.calibration) return *t;
+  throw InputError(fmt::format(
+      "calibrate: model '{}' declares no calibration box for any parameter; it cannot be "
+      "calibrated",
+      model));
+}
+
+Boxes declared_boxes(const models::ParameterTable& table) {
+  Boxes out;
+  for (const auto& e : table.entries)
+    if (e.calibration)
+      out.push_back(
+          {e.key, e.calibration->lower, e.calibration->upper, e.calibration->logarithmic});
+  return out;
 }
 
 double to_fit(const BoxEntry& b, double v) {
@@ -64,7 +76,10 @@ using Indices = std::vector<std::size_t>;
 struct Calibrator {
   const std::vector<SoilTest>& tests;
   const CalibrationOptions& options;
+  std::string table;  // the model's calibrated table
+  Boxes boxes;
   models::ParameterValues current;
+  ObjectiveWeights weights;  // of the fit under way: unit for the stages, the options' jointly
   int evaluations = 0;
   std::vector<std::string> notes;
   // Set once e_d0 and e_i0 are found unidentifiable: every trial then takes them from its e_c0
@@ -72,45 +87,43 @@ struct Calibrator {
   bool limits_follow_ec0 = false;
   double ei0_over_ec0 = kEi0OverEc0, ed0_over_ec0 = kEd0OverEc0;
 
+  const BoxEntry& box(const std::string& key) const {
+    for (const auto& b : boxes)
+      if (key == b.key) return b;
+    throw std::logic_error("no calibration box for " + key);
+  }
+  bool is_fixed(const std::string& key) const { return options.fixed.count(key) > 0; }
+  // The fixed parameters at their given values, over whatever a stage or a trial set.
+  void pin(models::ParameterValues& v) const {
+    for (const auto& [k, value] : options.fixed) v[k] = value;
+  }
+  Keys free(const Keys& keys) const {
+    Keys out;
+    for (const auto& k : keys)
+      if (!is_fixed(k)) out.push_back(k);
+    return out;
+  }
+
   models::ModelInputs inputs(const models::ParameterValues& v) const {
     models::ModelInputs in;
-    in.tables["hypoplastic"] = v;
+    in.tables[table] = v;
     in.source = "calibration trial";
     return in;
   }
 
-  // Scaled residuals of one test, kUnreachedResidual for rows the model did not reach.
-  // The test's scales: measured over its seeds (seed_scatter.hpp) where given, else declared.
-  void append_residuals(const SoilTest& t, const Simulated& s, std::vector<double>& r) const {
-    const double declared_stress = kStressRatioScale * t.sigma0_kPa;
-    const auto or_declared = [](double measured, double declared) {
-      return measured > 0.0 ? measured : declared;
-    };
-    const double tau_scale = or_declared(t.scales.tau_kPa, declared_stress);
-    const double sigma_scale = or_declared(t.scales.sigma_n_kPa, declared_stress);
-    const double e_scale = or_declared(t.scales.e, kVoidRatioScale);
-    for (std::size_t i = 1; i < t.rows(); ++i) {
-      const bool reached = i < s.rows();
-      const auto add = [&](double model, double measured, double scale) {
-        r.push_back(reached ? (model - measured) / scale : kUnreachedResidual);
-      };
-      if (t.kind == SoilTestKind::kOedometer) {
-        add(reached ? s.e[i] : 0.0, t.e[i], e_scale);
-        continue;
-      }
-      add(reached ? s.tau_kPa[i] : 0.0, t.tau_kPa[i], tau_scale);
-      if (t.boundary == driver::BoundaryKind::kCV)
-        add(reached ? s.sigma_n_kPa[i] : 0.0, t.sigma_n_kPa[i], sigma_scale);
-      else
-        add(reached ? s.e[i] : 0.0, t.e[i], e_scale);
-    }
-  }
-
+  // Scaled residuals of every weighted group (objectives.hpp), each times sqrt(weight).
   Eigen::VectorXd residuals(const models::ParameterValues& v, const Indices& which) {
     ++evaluations;
-    std::vector<double> r;
-    for (const std::size_t i : which)
-      append_residuals(tests[i], simulate(tests[i], options.model, inputs(v)), r);
+    std::vector<double> r, group;
+    for (const std::size_t i : which) {
+      const Simulated s = simulate(tests[i], options.model, inputs(v));
+      for (const auto g : kObjectiveGroups) {
+        if (weights[g] == 0.0) continue;
+        group.clear();
+        append_group_residuals(g, tests[i], s, group);
+        for (const double x : group) r.push_back(std::sqrt(weights[g]) * x);
+      }
+    }
     return Eigen::Map<Eigen::VectorXd>(r.data(), Eigen::Index(r.size()));
   }
 
@@ -119,11 +132,15 @@ struct Calibrator {
     for (std::size_t k = 0; k < keys.size(); ++k)
       v[keys[k]] = from_fit(box(keys[k]), x(Eigen::Index(k)));
     if (limits_follow_ec0) set_limits_from_ec0(v, ei0_over_ec0, ed0_over_ec0);
+    pin(v);
     return v;
   }
 
-  fitting::LeastSquaresResult fit(const Keys& keys, const Indices& which, int max_evaluations,
+  // Fits the free ones of `keys` (none free: nothing to do, an empty result).
+  fitting::LeastSquaresResult fit(const Keys& all_keys, const Indices& which, int max_evaluations,
                                   double initial_step_share = 0.0, int polish_iterations = 0) {
+    const Keys keys = free(all_keys);
+    if (keys.empty()) return {};
     fitting::LeastSquaresProblem p;
     const auto n = Eigen::Index(keys.size());
     p.start.resize(n), p.lower.resize(n), p.upper.resize(n), p.difference_step.resize(n);
@@ -182,6 +199,7 @@ Indices critical_tests(const Calibrator& c) {
 }
 
 void stage_phi_c(Calibrator& c, const Indices& critical) {
+  if (c.is_fixed("phi_c_deg")) return;
   if (critical.empty()) {
     c.notes.push_back(
         "A: no simple-shear test ends at a critical state (tau/sigma_n and e stationary "
@@ -227,6 +245,7 @@ double smallest_admissible_ec0(const Calibrator& c) {
 }
 
 void stage_void_ratios(Calibrator& c, const Indices& critical) {
+  if (c.is_fixed("ec0")) return;
   if (critical.empty()) {
     c.notes.push_back(
         "C: no critical state reached; e_c0 starts from the loosest test and is left to the joint "
@@ -249,6 +268,7 @@ void stage_void_ratios(Calibrator& c, const Indices& critical) {
   const bool raised = admissible > c.current["ec0"];
   c.current["ec0"] = std::max(c.current["ec0"], admissible);
   set_limits_from_ec0(c.current);
+  c.pin(c.current);
   c.notes.push_back(fmt::format(
       "C: e_c0 = {:.4f} from the critical void ratios of {} test(s){}; e_i0 = "
       "{} e_c0, e_d0 = {} e_c0 as starting values",
@@ -290,7 +310,7 @@ Eigen::VectorXd factor_uncertainty(Calibrator& c, const Keys& keys, const Calibr
     c.*factor += spread;
     c.fit(keys, c.all(), kFactorRefitEvaluations, kJointInitialStepShare, o.polish_iterations);
     for (std::size_t k = 0; k < keys.size(); ++k) {
-      const auto& b = box(keys[k]);
+      const auto& b = c.box(keys[k]);
       const double shift = to_fit(b, c.current.at(keys[k])) - to_fit(b, estimate.at(keys[k]));
       variance(Eigen::Index(k)) += shift * shift;
     }
@@ -314,6 +334,99 @@ bool unidentified(const fitting::LeastSquaresResult& r, const BoxEntry& b, Eigen
          s > kUnidentifiedShareOfBox * (to_fit(b, b.upper) - to_fit(b, b.lower));
 }
 
+// The joint fit of every free parameter with the options' weights; e_d0 and e_i0 tied to e_c0 by
+// the factors when the tests cannot identify them, and the rest refitted.
+struct JointFit {
+  fitting::LeastSquaresResult result;
+  Keys keys, by_factor;
+  Eigen::VectorXd systematic;  // per key: the factors' share of its sigma (factor_uncertainty)
+};
+
+JointFit joint_fit(Calibrator& c, const CalibrationOptions& o) {
+  c.weights = o.weights;
+  JointFit j;
+  for (const auto& b : c.boxes)
+    if (!c.is_fixed(b.key)) j.keys.push_back(b.key);
+  if (j.keys.empty()) throw InputError("calibrate: every parameter is fixed; nothing to fit");
+  j.result =
+      c.fit(j.keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
+  for (const char* limit : {"ed0", "ei0"}) {
+    const auto it = std::find(j.keys.begin(), j.keys.end(), limit);
+    if (it != j.keys.end() &&
+        unidentified(j.result, c.box(limit), Eigen::Index(it - j.keys.begin())))
+      j.by_factor.push_back(limit);
+  }
+  if (!j.by_factor.empty()) {  // fix them by the factors and refit the rest
+    c.limits_follow_ec0 = true;
+    std::erase_if(j.keys, [&](const std::string& k) { return k == "ed0" || k == "ei0"; });
+    j.result = c.fit(j.keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare,
+                     o.polish_iterations);
+  }
+  j.systematic = j.by_factor.empty() ? Eigen::VectorXd::Zero(Eigen::Index(j.keys.size()))
+                                     : factor_uncertainty(c, j.keys, o);
+  return j;
+}
+
+// Within a thousandth of the box (in the fitted variable) of an edge: the fit wanted beyond it.
+std::string at_bound(const BoxEntry& b, double value) {
+  constexpr double kEdgeShare = 1e-3;
+  const double lo = to_fit(b, b.lower), hi = to_fit(b, b.upper), x = to_fit(b, value);
+  if (x - lo <= kEdgeShare * (hi - lo)) return "lower";
+  if (hi - x <= kEdgeShare * (hi - lo)) return "upper";
+  return "";
+}
+
+ParameterEstimate estimate_of(const Calibrator& c, const BoxEntry& b, const JointFit& j) {
+  const double none = std::numeric_limits<double>::infinity();
+  ParameterEstimate e{
+      b.key, c.current.at(b.key), none, none, 0.0, none, false, false, "", "", b.lower, b.upper};
+  const auto it = std::find(j.keys.begin(), j.keys.end(), b.key);
+  if (c.is_fixed(b.key)) {
+    e.identified = e.fixed = true;
+    e.sigma = e.sigma_statistical = e.sigma_at_scatter = 0.0;
+    e.how = "fixed at the value given (--fix), not fitted";
+  } else if (it == j.keys.end()) {
+    e.how = fmt::format(
+        "not identifiable from these tests: set to {} e_c0 (Herle & Gudehus 1999 factor)",
+        b.key == "ei0" ? kEi0OverEc0 : kEd0OverEc0);
+  } else {
+    const auto k = Eigen::Index(it - j.keys.begin());
+    e.at_bound = at_bound(b, e.value);
+    e.identified = !unidentified(j.result, b, k);
+    // ln h_s: sigma(h_s) = h_s sigma(ln h_s) to first order
+    const double scale = b.logarithmic ? e.value : 1.0;
+    e.sigma_statistical = scale * j.result.sigma(k);
+    e.sigma_systematic = scale * j.systematic(k);
+    e.sigma = std::hypot(e.sigma_statistical, e.sigma_systematic);
+    e.sigma_at_scatter = scale * identifiability_sigma(j.result, k);
+    e.how = e.identified
+                ? (e.sigma_systematic > 0.0
+                       ? "joint fit (Gauss-Newton sigma with the e_d0, e_i0 factors' share)"
+                       : "joint fit (Gauss-Newton sigma)")
+                : fmt::format(
+                      "NOT IDENTIFIED: at the declared scatter its sigma would be {:.3g}, "
+                      "beyond {} of its box [{:g}, {:g}]",
+                      e.sigma_at_scatter, kUnidentifiedShareOfBox, b.lower, b.upper);
+  }
+  return e;
+}
+
+// Fixed keys the model's table declares, at values inside their bounds; InputError otherwise.
+void check_fixed(const models::ParameterTable& table, const Boxes& boxes,
+                 const models::ParameterValues& fixed) {
+  for (const auto& [key, value] : fixed) {
+    const bool calibrated =
+        std::any_of(boxes.begin(), boxes.end(), [&](const BoxEntry& b) { return b.key == key; });
+    const auto* spec = table.find(key);
+    if (!calibrated)
+      throw InputError(
+          fmt::format("--fix {}: [{}] has no calibrated parameter '{}'", key, table.name, key));
+    if (!spec->admits(value))
+      throw InputError(
+          fmt::format("--fix {}={:g}: outside the declared range {}", key, value, spec->range()));
+  }
+}
+
 }  // namespace
 
 models::ParameterValues CalibrationResult::values() const {
@@ -325,7 +438,7 @@ models::ParameterValues CalibrationResult::values() const {
 TestFit test_fit(const SoilTest& t, const std::string& model,
                  const models::ParameterValues& values) {
   models::ModelInputs in;
-  in.tables["hypoplastic"] = values;
+  in.tables[calibrated_table(model).name] = values;
   in.source = "calibrated set";
   const Simulated s = simulate(t, model, in);
   TestFit f{t.name,
@@ -352,92 +465,83 @@ TestFit test_fit(const SoilTest& t, const std::string& model,
     rmse("tau_kPa", s.tau_kPa, t.tau_kPa);
     rmse("sigma_n_kPa", s.sigma_n_kPa, t.sigma_n_kPa);
   }
+  if (t.kind == SoilTestKind::kSimpleShear && t.boundary == driver::BoundaryKind::kCNL &&
+      s.rows() == t.rows()) {
+    f.peak_rate_model = peak_dilatancy_rate(t.control, s.e, s.rows());
+    f.peak_rate_measured = peak_dilatancy_rate(t.control, t.e, t.rows());
+  }
   return f;
+}
+
+std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::string& model,
+                                 const models::ParameterValues& values,
+                                 const ObjectiveWeights& weights) {
+  models::ModelInputs in;
+  in.tables[calibrated_table(model).name] = values;
+  in.source = "calibrated set";
+  std::vector<std::vector<double>> residuals(kObjectiveGroups.size());
+  for (const auto& t : tests) {
+    const Simulated s = simulate(t, model, in);
+    for (const auto g : kObjectiveGroups)
+      append_group_residuals(g, t, s, residuals[std::size_t(g)]);
+  }
+  std::vector<GroupFit> out;
+  for (const auto g : kObjectiveGroups) {
+    const auto& r = residuals[std::size_t(g)];
+    double squares = 0.0;
+    for (const double x : r) squares += x * x;
+    out.push_back(
+        {g, weights[g], r.size(), r.empty() ? 0.0 : std::sqrt(squares / double(r.size()))});
+  }
+  return out;
 }
 
 CalibrationResult calibrate(const std::vector<SoilTest>& tests, const CalibrationOptions& o) {
   if (tests.empty()) throw InputError("calibrate: no soil tests given");
   const auto t0 = std::chrono::steady_clock::now();
-  Calibrator c{tests, o, starting_values(tests), 0, {}};
-  const Indices critical = critical_tests(c);
-  stage_phi_c(c, critical);
-  // h_s, n and e_c0 depend on each other only weakly (e_c0 through exp(-(3 sigma_n/h_s)^n) ~ 0.9,
-  // the oedometric curve through the limits): two passes settle them.
-  const int passes = c.of_kind(SoilTestKind::kOedometer).empty() ? 1 : 2;
-  for (int pass = 0; pass < passes; ++pass) {
-    stage_compression(c, o);
-    stage_void_ratios(c, critical);
+  const auto& table = calibrated_table(o.model);
+  const Boxes boxes = declared_boxes(table);
+  check_fixed(table, boxes, o.fixed);
+  Calibrator c{tests, o, table.name, boxes, o.start.value_or(starting_values(tests)), {}, 0, {}};
+  c.pin(c.current);
+  if (o.start) {
+    c.notes.push_back("start: the given set (the staged estimate A-D skipped)");
+  } else {
+    const Indices critical = critical_tests(c);
+    stage_phi_c(c, critical);
+    // h_s, n and e_c0 depend on each other only weakly (e_c0 through exp(-(3 sigma_n/h_s)^n) ~
+    // 0.9, the oedometric curve through the limits): two passes settle them.
+    const int passes = c.of_kind(SoilTestKind::kOedometer).empty() ? 1 : 2;
+    for (int pass = 0; pass < passes; ++pass) {
+      stage_compression(c, o);
+      stage_void_ratios(c, critical);
+    }
+    stage_density(c, o);
   }
-  stage_density(c, o);
-
-  Keys keys;
-  for (const auto& b : kBox) keys.push_back(b.key);
-  auto joint =
-      c.fit(keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
-  Keys by_factor;
-  for (const char* limit : {"ed0", "ei0"}) {
-    const auto k = Eigen::Index(std::find(keys.begin(), keys.end(), limit) - keys.begin());
-    if (unidentified(joint, box(limit), k)) by_factor.push_back(limit);
-  }
-  if (!by_factor.empty()) {  // fix them by the factors and refit the rest
-    c.limits_follow_ec0 = true;
-    std::erase_if(keys, [&](const std::string& k) { return k == "ed0" || k == "ei0"; });
-    joint =
-        c.fit(keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
-  }
-  const Eigen::VectorXd systematic = by_factor.empty()
-                                         ? Eigen::VectorXd::Zero(Eigen::Index(keys.size()))
-                                         : factor_uncertainty(c, keys, o);
-  c.notes.push_back(
-      fmt::format("E: joint fit of {} parameters on {} tests: RMS residual {:.3g} scatter "
-                  "units, {} ({} evaluations in all)",
-                  keys.size(), tests.size(), joint.rmse, joint.stop_reason, c.evaluations));
+  const JointFit joint = joint_fit(c, o);
+  c.notes.push_back(fmt::format(
+      "E: joint fit of {} parameters on {} tests: RMS residual {:.3g} (weighted) "
+      "scatter units, {} ({} evaluations in all)",
+      joint.keys.size(), tests.size(), joint.result.rmse, joint.result.stop_reason, c.evaluations));
 
   CalibrationResult out;
   out.model = o.model;
-  out.converged = joint.converged;
-  if (!joint.converged)
+  out.table = table.name;
+  out.converged = joint.result.converged;
+  if (!joint.result.converged)
     c.notes.push_back(
         "E: the joint fit did NOT converge (it stopped at its limit): the estimates "
         "and their sigmas are not to be trusted");
-  const double m = double(joint.residuals.size()), p = double(keys.size());
-  out.s2 = joint.residuals.squaredNorm() / std::max(m - p, 1.0);
-  for (const auto& b : kBox) {
-    const double none = std::numeric_limits<double>::infinity();
-    ParameterEstimate e{b.key,  c.current.at(b.key), none, none, 0.0, none, false, "", b.lower,
-                        b.upper};
-    const auto it = std::find(keys.begin(), keys.end(), b.key);
-    if (it == keys.end()) {
-      e.how = fmt::format(
-          "not identifiable from these tests: set to {} e_c0 (Herle & Gudehus 1999 factor)",
-          std::string(b.key) == "ei0" ? kEi0OverEc0 : kEd0OverEc0);
-    } else {
-      const auto k = Eigen::Index(it - keys.begin());
-      e.identified = !unidentified(joint, b, k);
-      // ln h_s: sigma(h_s) = h_s sigma(ln h_s) to first order
-      const double scale = b.logarithmic ? e.value : 1.0;
-      e.sigma_statistical = scale * joint.sigma(k);
-      e.sigma_systematic = scale * systematic(k);
-      e.sigma = std::hypot(e.sigma_statistical, e.sigma_systematic);
-      e.sigma_at_scatter = b.logarithmic ? e.value * identifiability_sigma(joint, k)
-                                         : identifiability_sigma(joint, k);
-      e.how = e.identified
-                  ? (e.sigma_systematic > 0.0
-                         ? "joint fit (Gauss-Newton sigma with the e_d0, e_i0 factors' share)"
-                         : "joint fit (Gauss-Newton sigma)")
-                  : fmt::format(
-                        "NOT IDENTIFIED: at the declared scatter its sigma would be {:.3g}, "
-                        "beyond {} of its box [{:g}, {:g}]",
-                        e.sigma_at_scatter, kUnidentifiedShareOfBox, b.lower, b.upper);
-    }
-    out.parameters.push_back(e);
-  }
-  for (const auto& k : by_factor)
+  const double m = double(joint.result.residuals.size()), p = double(joint.keys.size());
+  out.s2 = joint.result.residuals.squaredNorm() / std::max(m - p, 1.0);
+  for (const auto& b : boxes) out.parameters.push_back(estimate_of(c, b, joint));
+  for (const auto& k : joint.by_factor)
     c.notes.push_back(
         fmt::format("{} is not identifiable from these tests (sigma beyond {} of its box): "
                     "set from e_c0 by the usual factor",
                     k, kUnidentifiedShareOfBox));
   for (const auto& t : tests) out.tests.push_back(test_fit(t, o.model, c.current));
+  out.objectives = group_fits(tests, o.model, c.current, o.weights);
   out.notes = c.notes;
   out.evaluations = c.evaluations;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -14,11 +14,14 @@
 //             declared scatter above kUnidentifiedShareOfBox of its calibration box) is flagged;
 //             e_d0 and e_i0 so flagged are set from e_c0 by the factors and the rest refitted, and
 //             the output says so.
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "calibration/objectives.hpp"
 #include "calibration/soil_test.hpp"
 #include "models/parameters.hpp"
 
@@ -56,6 +59,12 @@ inline constexpr double kCriticalVoidChange = 0.002;
 
 struct CalibrationOptions {
   std::string model = "vw3d";
+  // The joint fit's objective (objectives.hpp); the staged start always weighs every group 1.
+  ObjectiveWeights weights = {};
+  // Parameters held at a given value and not fitted (keys of the model's calibrated table).
+  models::ParameterValues fixed = {};
+  // A start for the joint fit in place of the staged estimate (a Pareto front's previous point).
+  std::optional<models::ParameterValues> start = {};
   int max_evaluations_per_stage = 300;
   int max_evaluations_joint = 100;  // BOBYQA's share; Levenberg-Marquardt finishes (fitting/)
   int polish_iterations = 300;
@@ -72,6 +81,8 @@ struct ParameterEstimate {
   // `identified`, and what a noisy test of the same design would give.
   double sigma_at_scatter = 0.0;
   bool identified = true;
+  bool fixed = false;               // held at a given value (CalibrationOptions::fixed)
+  std::string at_bound;             // "lower" or "upper" when fitted onto its box's edge, else ""
   std::string how;                  // which stage or rule set it
   double lower = 0.0, upper = 0.0;  // calibration box
 };
@@ -86,32 +97,62 @@ struct TestFit {
   std::string name, test, boundary, status;
   std::size_t rows_reached = 0, rows = 0;
   std::vector<ChannelError> rmse;
+  // CNL simple shear run to its end: the peak dilatancy rate d eps_n / d gamma (objectives.hpp)
+  double peak_rate_model = NAN, peak_rate_measured = NAN;
+};
+
+// One objective group at the fitted set: its weight, how many residuals it has and their RMS in
+// scatter units (unweighted: comparable across weightings).
+struct GroupFit {
+  ObjectiveGroup group;
+  double weight = 1.0;
+  std::size_t residuals = 0;
+  double rms = 0.0;
 };
 
 struct CalibrationResult {
   std::string model;
+  std::string table;  // the parameter table fitted ("hypoplastic")
+  std::vector<GroupFit> objectives;
   std::vector<ParameterEstimate> parameters;
   std::vector<TestFit> tests;
   std::vector<TestFit> held_out;   // tests left out of the fit and predicted with its set
   std::vector<std::string> notes;  // what was assumed, what was not identifiable, stage summaries
-  double s2 = 0.0;                 // residual variance of the joint fit in scatter units
+  double s2 = 0.0;                 // residual variance of the joint fit in (weighted) scatter units
   int evaluations = 0;
   double seconds = 0.0;
   bool converged = false;  // the joint fit stopped on its convergence test, not on a limit
   models::ParameterValues values() const;
 };
 
+// InputError for no tests, a model without calibration boxes, and a fixed key the model does not
+// declare or a fixed value outside its bounds.
 CalibrationResult calibrate(const std::vector<SoilTest>& tests,
                             const CalibrationOptions& options = {});
+
+// Each objective group's RMS (unweighted, scatter units) over `tests` run with `values`.
+std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::string& model,
+                                 const models::ParameterValues& values,
+                                 const ObjectiveWeights& weights);
 
 // A test run through `model` with a parameter set: its RMSE per column and end values. For the
 // tests of a fit, and for a test held out of it (a prediction).
 TestFit test_fit(const SoilTest& test, const std::string& model,
                  const models::ParameterValues& values);
 
+struct ParetoFront;
+
 // The parameter file (data/params format, header comment: source and fit quality) and
-// calibration.json next to it.
+// calibration.json next to it; with a front, also pareto.csv/.json, its figure (pareto.svg, .png,
+// .gp) and pareto/point-K.toml, each point's parameter file (pareto_files.cpp). All or nothing.
 void write_calibration(const CalibrationResult& result, const std::filesystem::path& toml_file,
-                       const std::vector<SoilTest>& tests, const std::string& command_line);
+                       const std::vector<SoilTest>& tests, const std::string& command_line,
+                       const ParetoFront* front = nullptr);
+
+// The parameter file's text, and calibration.json's content.
+std::string parameter_file_text(const CalibrationResult& r, const std::vector<SoilTest>& tests,
+                                const std::string& command_line);
+nlohmann::json calibration_json(const CalibrationResult& r, const std::vector<SoilTest>& tests,
+                                const std::string& command_line);
 
 }  // namespace iwb::calibration

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "calibration/calibrate.hpp"
+#include "calibration/objectives.hpp"
 
 namespace iwb::calibration {
 
@@ -36,6 +37,16 @@ double row_scatter(const std::vector<const SoilTest*>& members,
   return rows > 1 ? std::sqrt(sum_of_variances / double(rows - 1)) : 0.0;
 }
 
+// Sample SD across the members of their peak dilatancy rates (CNL shear).
+double rate_scatter(const std::vector<const SoilTest*>& members) {
+  std::vector<double> rates;
+  for (const auto* m : members) rates.push_back(peak_dilatancy_rate(m->control, m->e, m->rows()));
+  double mean = 0.0, squares = 0.0;
+  for (const double r : rates) mean += r / double(rates.size());
+  for (const double r : rates) squares += (r - mean) * (r - mean);
+  return std::sqrt(squares / double(rates.size() - 1));
+}
+
 }  // namespace
 
 void measure_seed_scatter(std::vector<SoilTest>& tests) {
@@ -57,6 +68,8 @@ void measure_seed_scatter(std::vector<SoilTest>& tests) {
         shear ? std::max(stress_floor, row_scatter(members, &SoilTest::tau_kPa)) : stress_floor;
     s.sigma_n_kPa =
         shear ? std::max(stress_floor, row_scatter(members, &SoilTest::sigma_n_kPa)) : stress_floor;
+    if (shear && tests[i].boundary == driver::BoundaryKind::kCNL)
+      s.dilatancy_rate = std::max(kDilatancyRateScale, rate_scatter(members));
     for (const auto j : group) tests[j].scales = s;
   }
 }

@@ -16,7 +16,8 @@ bool same_design(const SoilTest& a, const SoilTest& b);
 // For each design run with at least two seeds, sets every member's `scales` to the RMS over rows
 // (row by row, from the first row after the start, up to the shortest member) of the sample
 // standard deviation across the seeds, per quantity, never below the declared scale
-// (calibrate.hpp). Tests run once keep the declared scales.
+// (calibrate.hpp); for CNL shear also the sample SD of the peak dilatancy rate across the seeds
+// (objectives.hpp), never below kDilatancyRateScale. Tests run once keep the declared scales.
 void measure_seed_scatter(std::vector<SoilTest>& tests);
 
 }  // namespace iwb::calibration

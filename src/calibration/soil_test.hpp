@@ -22,7 +22,8 @@ const char* to_string(SoilTestKind k);
 // same test was run with several seeds (seed_scatter.hpp).
 struct ResidualScales {
   double tau_kPa = 0.0, sigma_n_kPa = 0.0, e = 0.0;
-  int replicates = 1;  // tests of this design the scatter was measured over
+  double dilatancy_rate = 0.0;  // of the peak d eps_n / d gamma (CNL shear; objectives.hpp)
+  int replicates = 1;           // tests of this design the scatter was measured over
 };
 
 struct SoilTest {

@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
+#include "calibration/pareto.hpp"
 #include "calibration/seed_scatter.hpp"
 #include "common/errors.hpp"
 #include "io/output_path.hpp"
@@ -20,34 +22,38 @@ namespace iwb::app {
 namespace {
 
 struct CalibrateCommand {
-  std::vector<std::string> runs, held_out;
-  std::string model = "vw3d", params_out;
+  std::vector<std::string> runs, held_out, weights, fixed;
+  std::string model = "vw3d", params_out, pareto;
+  int points = 5;
 };
 
+constexpr const char* kCalibrateHelp =
+    "Calibrate the hypoplastic parameters (phi_c, h_s, n, e_c0, e_d0, e_i0, alpha, beta) from "
+    "soil-test run directories, in the order of Herle & Gudehus (1999): phi_c from the critical "
+    "state of the simple-shear tests, h_s and n from the oedometric curves, e_c0 from the critical "
+    "void ratios, alpha and beta from peak, dilatancy and stiffness, then all jointly (NLopt "
+    "BOBYQA "
+    "within each parameter's declared calibration box, finished by Levenberg-Marquardt). Prints "
+    "per "
+    "test the RMSE in its units, per objective group its RMS, and per parameter the estimate and "
+    "its one-sigma (Gauss-Newton) uncertainty; parameters the tests cannot identify are flagged, "
+    "e_d0 and e_i0 then set from e_c0 by the usual factors.\n"
+    "The objective is three groups of residuals, each (model - measured) / scatter: 'oedometer' "
+    "(e-paths), 'shear' (simple-shear tau and e, or tau and sigma_n under CV) and 'dilatancy' (per "
+    "CNL shear test the peak rate d eps_n/d gamma and the total dilation). The scatter is declared "
+    "(0.01 sigma0 for stresses, 0.002 for e, 0.01 for a rate) or, for a test given with several "
+    "seeds, measured across them when larger. --weight GROUP=W multiplies a group's squares (1: "
+    "each residual one measurement); --pareto A,B traces the front between two groups, each point "
+    "a whole calibration (src/calibration/README.md).\n"
+    "Writes the parameter file and calibration.json next to it; with --pareto also pareto.csv, "
+    "pareto.json, pareto.svg and pareto/point-K.toml.\n"
+    "Examples:\n"
+    "  iwb calibrate runs/soil/* -o data/params/calibrated_sand.toml\n"
+    "  iwb calibrate runs/soil/* --weight dilatancy=10 -o dilatant.toml\n"
+    "  iwb calibrate runs/soil/* --pareto oedometer,dilatancy --points 7 -o front/sand.toml";
+
 CLI::App* add_calibrate_options(CLI::App& app, CalibrateCommand& c) {
-  auto* calibrate = app.add_subcommand(
-      "calibrate",
-      "Calibrate the hypoplastic parameters (phi_c, h_s, n, e_c0, e_d0, e_i0, alpha, beta) from "
-      "soil-test "
-      "run directories, in the order of Herle & Gudehus (1999): phi_c from the critical state of "
-      "the "
-      "simple-shear tests, h_s and n from the oedometric curves, e_c0 from the critical void "
-      "ratios, "
-      "alpha and beta from peak, dilatancy and stiffness, then all jointly (NLopt BOBYQA within "
-      "the "
-      "parameter bounds, finished by Levenberg-Marquardt). Soil tests that do not reach a critical "
-      "state leave "
-      "phi_c and e_c0 to the joint fit. Prints per test the RMSE in its units and per parameter "
-      "the estimate and "
-      "its one-sigma (Gauss-Newton) uncertainty; parameters the tests cannot identify are flagged, "
-      "e_d0 and e_i0 then set from e_c0 by the usual factors. A residual counts in units of the "
-      "measurement scatter: 0.01 sigma0 for stresses and 0.002 for e as declared, or, for a test "
-      "given "
-      "with several seeds (same test, boundary, sigma0 and preparation in their manifests), the "
-      "scatter "
-      "measured across them when larger. Writes the parameter file and calibration.json next to "
-      "it.\n"
-      "Example: iwb calibrate runs/soil/* --model vw3d -o data/params/calibrated_sand.toml");
+  auto* calibrate = app.add_subcommand("calibrate", kCalibrateHelp);
   calibrate->add_option("runs", c.runs, "soil-test run directories")
       ->required()
       ->check(input_directory());
@@ -60,10 +66,46 @@ CLI::App* add_calibrate_options(CLI::App& app, CalibrateCommand& c) {
   calibrate->add_option("--model", c.model, "continuum model whose parameters are fitted")
       ->check(CLI::IsMember({"vw3d"}))
       ->capture_default_str();
+  calibrate->add_option("--weight", c.weights,
+                        "GROUP=W, repeatable: weight of an objective group (oedometer, shear, "
+                        "dilatancy; default 1 each, 0 leaves a group out)");
+  calibrate->add_option("--fix", c.fixed,
+                        "KEY=VALUE, repeatable: hold a parameter at a value instead of fitting "
+                        "it (phi_c_deg=30)");
+  auto* pareto = calibrate->add_option(
+      "--pareto", c.pareto,
+      "A,B: trace the Pareto front between two objective groups (each point a "
+      "calibration that gives A the share s of the pair's weight)");
+  calibrate
+      ->add_option("--points", c.points,
+                   "points of the front besides the one at the given weights (with --pareto)")
+      ->needs(pareto)
+      ->check(CLI::Range(calibration::kMinParetoPoints, calibration::kMaxParetoPoints))
+      ->capture_default_str();
   calibrate->add_option("--out,-o", c.params_out, "parameter file to write (data/params format)")
       ->required()
       ->check(output_file());
   return calibrate;
+}
+
+// --fix KEY=VALUE items; InputError naming the item (the keys are checked against the model's
+// table by calibrate()).
+models::ParameterValues parse_fixed(const std::vector<std::string>& items) {
+  models::ParameterValues out;
+  for (const auto& item : items) {
+    const auto eq = item.find('=');
+    std::size_t used = 0;
+    double v = NAN;
+    try {
+      if (eq != std::string::npos) v = std::stod(item.substr(eq + 1), &used);
+    } catch (const std::exception&) {
+    }
+    if (eq == std::string::npos || used == 0 || used != item.size() - eq - 1 || !std::isfinite(v))
+      throw InputError(fmt::format("--fix {}: expected KEY=VALUE with a finite number", item));
+    if (!out.emplace(item.substr(0, eq), v).second)
+      throw InputError(fmt::format("--fix {}: '{}' fixed twice", item, item.substr(0, eq)));
+  }
+  return out;
 }
 
 // Tests that identify none of the parameters (a single oedometer, say) give no parameter set:
@@ -72,35 +114,39 @@ CLI::App* add_calibrate_options(CLI::App& app, CalibrateCommand& c) {
 void refuse_if_nothing_identified(const calibration::CalibrationResult& r,
                                   const std::vector<std::string>& runs) {
   if (std::any_of(r.parameters.begin(), r.parameters.end(),
-                  [](const auto& p) { return p.identified; }))
+                  [](const auto& p) { return p.identified && !p.fixed; }))
     return;
   throw InputError(
       fmt::format("{}: the {} soil test(s) given identify none of the {} parameters of {} (each "
-                  "one's sigma exceeds a quarter of "
-                  "its box); give oedometer and simple-shear tests, dense and loose, that reach "
-                  "the critical state; "
-                  "no parameter file written",
+                  "one's sigma exceeds a quarter of its box); give oedometer and simple-shear "
+                  "tests, dense and loose, that reach the critical state; no parameter file "
+                  "written",
                   fmt::join(runs, ", "), runs.size(), r.parameters.size(), r.model));
 }
 
-int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
-  io::require_file_destination(c.params_out, "-o");  // before minutes of fitting, not after
-  std::vector<calibration::SoilTest> tests;
-  for (const auto& dir : c.runs) tests.push_back(calibration::read_soil_test(dir));
-  std::vector<calibration::SoilTest> held_out;  // read now: a bad one is refused before the fit
-  for (const auto& dir : c.held_out) held_out.push_back(calibration::read_soil_test(dir));
-  calibration::measure_seed_scatter(tests);
-  calibration::CalibrationOptions opt;
-  opt.model = c.model;
-  const auto r = calibration::calibrate(tests, opt);
-  refuse_if_nothing_identified(r, c.runs);
-  for (const auto& n : r.notes) fmt::print("{}\n", n);
-  fmt::print("\n{:<40} {:<12} {}\n", "test", "", "RMSE");
-  for (const auto& t : r.tests) {
+void print_test_rows(const std::vector<calibration::TestFit>& fits, bool with_ends) {
+  for (const auto& t : fits) {
     fmt::print("{:<40} {:<12}", t.name, t.test + (t.boundary.empty() ? "" : " " + t.boundary));
-    for (const auto& ch : t.rmse) fmt::print(" {} {:.3g}", ch.column, ch.rmse);
+    for (const auto& ch : t.rmse)
+      if (with_ends)
+        fmt::print(" {} {:.3g} ({:.4g} / {:.4g})", ch.column, ch.rmse, ch.end_model,
+                   ch.end_measured);
+      else
+        fmt::print(" {} {:.3g}", ch.column, ch.rmse);
+    if (std::isfinite(t.peak_rate_model))
+      fmt::print(" peak rate {:.3f} ({:.3f})", t.peak_rate_model, t.peak_rate_measured);
     fmt::print("{}\n", t.status == "complete" ? "" : "  (" + t.status + ")");
   }
+}
+
+void print_result(const calibration::CalibrationResult& r) {
+  for (const auto& n : r.notes) fmt::print("{}\n", n);
+  fmt::print("\n{:<40} {:<12} {}\n", "test", "", "RMSE (peak dilatancy rate: model (measured))");
+  print_test_rows(r.tests, false);
+  fmt::print("\n{:<10} {:>8} {:>10} {:>12}\n", "objective", "weight", "residuals", "RMS");
+  for (const auto& g : r.objectives)
+    fmt::print("{:<10} {:>8.4g} {:>10} {:>12.4g}\n", calibration::to_string(g.group), g.weight,
+               g.residuals, g.rms);
   // sigma: from this fit's residuals; at scatter: had the residuals the declared scatter (what
   // decides "identified"; the two differ most for noise-free synthetic targets)
   const auto text = [](double v) {
@@ -109,21 +155,61 @@ int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
   fmt::print("\n{:<10} {:>12} {:>12} {:>12}  {}\n", "parameter", "estimate", "sigma", "at scatter",
              "how");
   for (const auto& p : r.parameters)
-    fmt::print("{:<10} {:>12.8g} {:>12} {:>12}  {}\n", p.key, p.value, text(p.sigma),
-               text(p.sigma_at_scatter), p.how);
-  auto result = r;
-  for (const auto& t : held_out)
-    result.held_out.push_back(calibration::test_fit(t, c.model, r.values()));
-  if (!result.held_out.empty()) fmt::print("\nheld out, predicted: RMSE (end: model / measured)\n");
-  for (const auto& t : result.held_out) {
-    fmt::print("{:<40} {:<12}", t.name, t.test + (t.boundary.empty() ? "" : " " + t.boundary));
-    for (const auto& ch : t.rmse)
-      fmt::print(" {} {:.3g} ({:.4g} / {:.4g})", ch.column, ch.rmse, ch.end_model, ch.end_measured);
-    fmt::print("{}\n", t.status == "complete" ? "" : "  (" + t.status + ")");
+    fmt::print("{:<10} {:>12.8g} {:>12} {:>12}  {}{}\n", p.key, p.value, text(p.sigma),
+               text(p.sigma_at_scatter), p.how,
+               p.at_bound.empty() ? "" : "; ON ITS " + p.at_bound + " BOUND");
+}
+
+void print_front(const calibration::ParetoFront& f) {
+  fmt::print("\nPareto front, {} against {} ({} points, {:.0f} s):\n{:>9} {:>10} {:>10}  {}\n",
+             calibration::to_string(f.b), calibration::to_string(f.a), f.points.size(), f.seconds,
+             "share", calibration::to_string(f.a), calibration::to_string(f.b), "on a bound");
+  for (const auto& p : f.points) {
+    std::string bounds;
+    for (const auto& e : p.result.parameters)
+      if (!e.at_bound.empty())
+        bounds += fmt::format("{}{} ({})", bounds.empty() ? "" : ", ", e.key, e.at_bound);
+    fmt::print("{:>9.6g} {:>10.4g} {:>10.4g}  {}{}\n", p.share, p.rms_a, p.rms_b, bounds,
+               p.given ? "  <- the given weights" : "");
   }
-  calibration::write_calibration(result, c.params_out, tests, command_line);
-  fmt::print("\n{} evaluations, {:.1f} s -> {} and {}\n", r.evaluations, r.seconds, c.params_out,
-             (std::filesystem::path(c.params_out).parent_path() / "calibration.json").string());
+  for (const auto& n : f.notes) fmt::print("note: {}\n", n);
+}
+
+int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
+  io::require_file_destination(c.params_out, "-o");  // before minutes of fitting, not after
+  calibration::CalibrationOptions opt;
+  opt.model = c.model;
+  opt.weights = calibration::parse_weights(c.weights);
+  opt.fixed = parse_fixed(c.fixed);
+  std::optional<std::pair<calibration::ObjectiveGroup, calibration::ObjectiveGroup>> pair;
+  if (!c.pareto.empty()) pair = calibration::parse_pareto_groups(c.pareto);
+  std::vector<calibration::SoilTest> tests;
+  for (const auto& dir : c.runs) tests.push_back(calibration::read_soil_test(dir));
+  std::vector<calibration::SoilTest> held_out;  // read now: a bad one is refused before the fit
+  for (const auto& dir : c.held_out) held_out.push_back(calibration::read_soil_test(dir));
+  calibration::measure_seed_scatter(tests);
+  std::optional<calibration::ParetoFront> front;
+  if (pair)
+    front = calibration::trace_front(tests, opt, pair->first, pair->second, c.points,
+                                     [](const std::string& line) {
+                                       fmt::print("{}\n", line);
+                                       std::fflush(stdout);  // a front takes minutes
+                                     });
+  auto result = front ? front->given().result : calibration::calibrate(tests, opt);
+  refuse_if_nothing_identified(result, c.runs);
+  print_result(result);
+  for (const auto& t : held_out)
+    result.held_out.push_back(calibration::test_fit(t, c.model, result.values()));
+  if (!result.held_out.empty()) fmt::print("\nheld out, predicted: RMSE (end: model / measured)\n");
+  print_test_rows(result.held_out, true);
+  if (front) print_front(*front);
+  calibration::write_calibration(result, c.params_out, tests, command_line,
+                                 front ? &*front : nullptr);
+  fmt::print("\n{} evaluations, {:.1f} s -> {} and {}{}\n",
+             front ? front->evaluations : result.evaluations,
+             front ? front->seconds : result.seconds, c.params_out,
+             (std::filesystem::path(c.params_out).parent_path() / "calibration.json").string(),
+             front ? " and the front (pareto.csv, pareto.json, pareto.svg, pareto/)" : "");
   return 0;
 }
 
