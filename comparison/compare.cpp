@@ -23,11 +23,6 @@ namespace {
 // kappa_r in [floor, 1] for a model that reads wall roughness; fixed at 1 for one that does not (a
 // 3D continuum model, the reference models of seed 3.3, a user's model): d_s is then fitted alone,
 // and the model's own parameters stay as given (fitting them is `iwb assess`'s, issue 17).
-FitBounds fit_bounds(const std::string& model) {
-  FitBounds b;
-  if (!models::find_model(model).uses_roughness) b.kappa_min = b.kappa_max = 1.0;
-  return b;
-}
 
 std::pair<double, std::string> predicted_kappa(const models::ModelSpec& spec, const DemRun& dem,
                                                const models::ModelInputs& parameters) {
@@ -128,6 +123,12 @@ json headline(const json& predicted, const json& fitted, const Feasibility& scan
 }
 
 }  // namespace
+
+FitBounds fit_bounds(const std::string& model) {
+  FitBounds b;
+  if (!models::find_model(model).uses_roughness) b.kappa_min = b.kappa_max = 1.0;
+  return b;
+}
 
 double gutjahr_kappa_r(double R_n, double log_base) {
   if (!(R_n > 0.0)) return models::kKappaRFloor;

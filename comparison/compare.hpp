@@ -37,6 +37,10 @@ struct CompareOptions {
   std::string roughness_scheme, f_c;
 };
 
+// The (kappa_r, d_s) box of a fit: kappa_r in [floor, 1] for a model that reads wall roughness,
+// fixed at 1 for one that does not (d_s is then fitted alone).
+FitBounds fit_bounds(const std::string& model);
+
 // kappa_r from the wall's R_n by Gutjahr's eq. 5.35 in the given log base; a flat wall (R_n = 0)
 // gets the floor models::kKappaRFloor.
 double gutjahr_kappa_r(double R_n, double log_base = 10.0);

@@ -14,8 +14,20 @@ namespace iwb::comparison {
 
 namespace {
 
+// Equal on every key both record. A key one side lacks was added to the scene schema after that
+// run was made (the resolved scene records every key with its value, defaults included), so the
+// older run had it at its default: runs of one scene made before and after such an addition are
+// seeds of each other (issue 36: seeds 4 and 5 of the truth cells were made after the schema
+// gained particles.suction_kPa, surface_tension_N_m and shear.post_cyclic_mm).
+bool equal_where_both_record(const nlohmann::json& a, const nlohmann::json& b) {
+  if (!a.is_object() || !b.is_object()) return a == b;
+  for (const auto& [key, value] : a.items())
+    if (b.contains(key) && !equal_where_both_record(value, b.at(key))) return false;
+  return true;
+}
+
 void check_same_scene(const DemRun& run, const DemRun& seed) {
-  if (seed.scene_but_seed != run.scene_but_seed)
+  if (!same_scene_but_seed(run, seed))
     throw InputError(
         fmt::format("{}: not a seed of {}: its scene differs in more than the seed "
                     "(manifest.json /scene/resolved)",
@@ -115,6 +127,10 @@ std::vector<const DemRun*> admitted(const std::vector<const DemRun*>& all, SeedS
 
 }  // namespace
 
+bool same_scene_but_seed(const DemRun& a, const DemRun& b) {
+  return equal_where_both_record(a.scene_but_seed, b.scene_but_seed);
+}
+
 SeedScatter seed_scatter(const DemRun& run, const std::vector<DemRun>& other_seeds) {
   SeedScatter out;
   std::vector<const DemRun*> all = {&run};
@@ -139,7 +155,7 @@ SeedScatter seed_scatter(const DemRun& run, const std::vector<DemRun>& other_see
 std::vector<DemRun> seeds_of(const DemRun& run, const std::vector<DemRun>& candidates) {
   std::vector<DemRun> out;
   for (const auto& c : candidates)
-    if (c.scene_but_seed == run.scene_but_seed && !std::filesystem::equivalent(c.dir, run.dir))
+    if (same_scene_but_seed(c, run) && !std::filesystem::equivalent(c.dir, run.dir))
       out.push_back(c);
   return out;
 }

@@ -47,6 +47,11 @@ struct SeedScatter {
 // anything but the seed. Runs localised at the plate are left out while another run is left.
 SeedScatter seed_scatter(const DemRun& run, const std::vector<DemRun>& other_seeds);
 
+// Whether two runs ran one scene but for the seed: their resolved scenes (manifest.json
+// /scene/resolved) agree on every key both record; a key only one records was added to the schema
+// after the other run, which then had its default.
+bool same_scene_but_seed(const DemRun& a, const DemRun& b);
+
 // The runs among `candidates` (other than `run` itself) whose scene is run's but for the seed.
 std::vector<DemRun> seeds_of(const DemRun& run, const std::vector<DemRun>& candidates);
 

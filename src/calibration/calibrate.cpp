@@ -489,9 +489,15 @@ std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::
   for (const auto g : kObjectiveGroups) {
     const auto& r = residuals[std::size_t(g)];
     double squares = 0.0;
-    for (const double x : r) squares += x * x;
-    out.push_back(
-        {g, weights[g], r.size(), r.empty() ? 0.0 : std::sqrt(squares / double(r.size()))});
+    std::size_t unreached = 0;
+    for (const double x : r)
+      if (x == kUnreachedResidual)
+        ++unreached;
+      else
+        squares += x * x;
+    const std::size_t reached = r.size() - unreached;
+    out.push_back({g, weights[g], r.size(),
+                   reached == 0 ? 0.0 : std::sqrt(squares / double(reached)), unreached});
   }
   return out;
 }

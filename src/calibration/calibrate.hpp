@@ -102,12 +102,14 @@ struct TestFit {
 };
 
 // One objective group at the fitted set: its weight, how many residuals it has and their RMS in
-// scatter units (unweighted: comparable across weightings).
+// scatter units (unweighted: comparable across weightings), the rows the model did not reach
+// apart (their penalty would swamp the RMS: one in 90 makes it 105).
 struct GroupFit {
   ObjectiveGroup group;
   double weight = 1.0;
   std::size_t residuals = 0;
-  double rms = 0.0;
+  double rms = 0.0;           // over the residuals of rows the model reached
+  std::size_t unreached = 0;  // residuals of rows it did not reach (kUnreachedResidual each)
 };
 
 struct CalibrationResult {

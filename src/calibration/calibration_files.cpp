@@ -70,6 +70,7 @@ nlohmann::json calibration_json(const CalibrationResult& r, const std::vector<So
     j["objectives"][to_string(g.group)] = {{"weight", g.weight},
                                            {"residuals", g.residuals},
                                            {"rms_scatter_units", g.rms},
+                                           {"unreached_residuals", g.unreached},
                                            {"what", describe(g.group)}};
   for (const auto& p : r.parameters)
     j["parameters"].push_back(

@@ -218,6 +218,27 @@ TEST_CASE("seeds: a run of another scene is refused, seeds of one scene are foun
   CHECK(s.rows == a.u_x_mm.size());
 }
 
+// Seeds 4 and 5 of the truth cells were made after the scene schema gained three keys; their
+// resolved scenes record them (at their defaults), the older seeds' do not. They are one cell; a
+// key both record with different values still splits runs.
+TEST_CASE("seeds: a key only a newer run records does not split a cell, a value both record does",
+          "[comparison][verdicts]") {
+  auto older = comparison::load_dem_run(
+      test::write_synthetic_dem({.name = "schema_old", .seed = 1, .tau_noise_kPa = 0.5}));
+  auto newer = comparison::load_dem_run(
+      test::write_synthetic_dem({.name = "schema_new", .seed = 2, .tau_noise_kPa = 0.5}));
+  REQUIRE(comparison::same_scene_but_seed(older, newer));
+  newer.scene_but_seed["shear"]["post_cyclic_mm"] = 0.0;
+  newer.scene_but_seed["particles"]["suction_kPa"] = 0.0;
+  CHECK(comparison::same_scene_but_seed(older, newer));
+  CHECK(comparison::same_scene_but_seed(newer, older));
+  CHECK(comparison::seeds_of(older, {older, newer}).size() == 1);
+  CHECK(comparison::seed_scatter(older, {newer}).runs.size() == 2);
+  newer.scene_but_seed["particles"]["d50_mm"] = 1.0;  // recorded by both, and different
+  CHECK_FALSE(comparison::same_scene_but_seed(older, newer));
+  CHECK_THROWS_WITH(comparison::seed_scatter(older, {newer}), Catch::Contains("not a seed of"));
+}
+
 TEST_CASE(
     "a seed that sheared at the plate is left out of the cell, a drifting residual is counted",
     "[comparison][verdicts]") {

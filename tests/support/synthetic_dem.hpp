@@ -31,6 +31,8 @@ struct SyntheticDem {
   // (runs that differ only in the seed are seeds of one scene to the comparison layer).
   int seed = 0;
   double tau_noise_kPa = 0.0, u_n_noise_mm = 0.0;
+  // tau written times this: a "DEM" the generating model's form cannot follow (1: its own curve)
+  double tau_scale = 1.0;
 };
 
 inline constexpr double kSyntheticHeightD50 = 20.0;  // specimen height of the synthetic profile
@@ -69,7 +71,7 @@ inline std::filesystem::path write_synthetic_dem(const SyntheticDem& spec) {
     const double dun = i == 0 ? 0.0 : spec.u_n_noise_mm * noise(random);
     ts += fmt::format("{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},4\n", 0.01 * double(i),
                       r.gamma_x * spec.d_s_mm, r.eps_n * spec.d_s_mm + dun, st.sigma_n,
-                      st.tau_x + dtau, e, e);
+                      spec.tau_scale * st.tau_x + dtau, e, e);
   }
   io::write_atomically(dir / "timeseries.csv", ts);
   io::write_atomically(dir / "profiles.csv",

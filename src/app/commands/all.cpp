@@ -41,6 +41,7 @@ void add_all_commands(CLI::App& app, CommandList& commands) {
       app, "soiltest", "Soil element tests in the soil-test contract (src/calibration/README.md).");
   add_soiltest_synthetic_command(soiltest, commands);
   add_calibrate_command(app, commands);
+  add_form_limit_command(app, commands);
   add_tradeoff_command(app, commands);
   add_plan_command(app, commands);
   add_pile_command(app, commands);

@@ -143,10 +143,11 @@ void print_result(const calibration::CalibrationResult& r) {
   for (const auto& n : r.notes) fmt::print("{}\n", n);
   fmt::print("\n{:<40} {:<12} {}\n", "test", "", "RMSE (peak dilatancy rate: model (measured))");
   print_test_rows(r.tests, false);
-  fmt::print("\n{:<10} {:>8} {:>10} {:>12}\n", "objective", "weight", "residuals", "RMS");
+  fmt::print("\n{:<10} {:>8} {:>10} {:>12}  {}\n", "objective", "weight", "residuals", "RMS",
+             "rows not reached");
   for (const auto& g : r.objectives)
-    fmt::print("{:<10} {:>8.4g} {:>10} {:>12.4g}\n", calibration::to_string(g.group), g.weight,
-               g.residuals, g.rms);
+    fmt::print("{:<10} {:>8.4g} {:>10} {:>12.4g}  {}\n", calibration::to_string(g.group), g.weight,
+               g.residuals, g.rms, g.unreached);
   // sigma: from this fit's residuals; at scatter: had the residuals the declared scatter (what
   // decides "identified"; the two differ most for noise-free synthetic targets)
   const auto text = [](double v) {

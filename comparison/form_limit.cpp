@@ -1,0 +1,371 @@
+#include "comparison/form_limit.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "common/errors.hpp"
+#include "comparison/compare.hpp"
+#include "comparison/fit.hpp"
+#include "comparison/verdicts.hpp"
+#include "fitting/least_squares.hpp"
+#include "io/json_file.hpp"
+#include "io/run_directory.hpp"
+
+namespace iwb::comparison {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// The material unknowns: every parameter of the model's tables with a declared calibration box.
+std::vector<Unknown> material_unknowns(const models::ModelSpec& spec) {
+  std::vector<Unknown> out;
+  for (const auto* table : spec.tables)
+    for (const auto& e : table->entries)
+      if (e.calibration)
+        out.push_back(
+            {{e.key, models::FitParameter::Target::kParameter, table->name, e.key,
+              e.calibration->lower, e.calibration->upper, false, e.calibration->logarithmic},
+             e.calibration->lower,
+             e.calibration->upper});
+  return out;
+}
+
+// A wall: the runs of one R_n and d50 share its kappa_r and d_s.
+struct Wall {
+  double R_n, d50_mm;
+  std::string name() const { return fmt::format("R_n {:g}, d50 {:g} mm", R_n, d50_mm); }
+};
+
+struct Problem {
+  std::vector<DemRun> runs;  // the fit runs, then the held-out ones
+  std::size_t fitted = 0;
+  std::vector<SeedScatter> scatters;  // per run: its cell among all runs given
+  std::vector<FitTargets> targets;
+  std::vector<Variant> starts;  // per run: the predicted variant of the soil-test set
+  std::vector<std::size_t> wall_of;
+  std::vector<Wall> walls;
+  std::vector<Unknown> unknowns;  // the material ones first, then each wall's fit parameters
+  std::size_t materials = 0, per_wall = 0;
+
+  std::size_t unknown_of(std::size_t wall, std::size_t f) const {
+    return materials + wall * per_wall + f;
+  }
+  Variant variant_at(std::size_t run, const Eigen::VectorXd& x) const {
+    Variant v = starts[run];
+    for (std::size_t k = 0; k < materials; ++k) set_value(v, unknowns[k].what, at(k, x));
+    for (std::size_t f = 0; f < per_wall; ++f) {
+      const auto k = unknown_of(wall_of[run], f);
+      set_value(v, unknowns[k].what, at(k, x));
+    }
+    return v;
+  }
+  double at(std::size_t k, const Eigen::VectorXd& x) const {
+    return unknowns[k].what.logarithmic ? std::exp(x(Eigen::Index(k))) : x(Eigen::Index(k));
+  }
+  double to_x(std::size_t k, double v) const {
+    return unknowns[k].what.logarithmic ? std::log(v) : v;
+  }
+};
+
+std::size_t wall_index(std::vector<Wall>& walls, const DemRun& r) {
+  for (std::size_t w = 0; w < walls.size(); ++w)
+    if (std::abs(walls[w].R_n - r.R_n) < 1e-9 && std::abs(walls[w].d50_mm - r.d50_mm) < 1e-9)
+      return w;
+  walls.push_back({r.R_n, r.d50_mm});
+  return walls.size() - 1;
+}
+
+// The wall's fit parameters of the model's declaration, boxes in the wall's d50 where per d50.
+void add_wall_unknowns(Problem& p, const models::ModelSpec& spec) {
+  for (const auto& w : p.walls)
+    for (const auto& f : spec.declaration.fit) {
+      const double scale = f.per_d50 ? w.d50_mm : 1.0;
+      Unknown u{f, f.lower * scale, f.upper * scale};
+      u.what.name = fmt::format("{} ({})", f.name, w.name());
+      p.unknowns.push_back(u);
+    }
+}
+
+Problem set_up(const FormLimitOptions& o, const models::ModelInputs& soil_set) {
+  const auto& spec = models::find_model(o.model);
+  Problem p;
+  for (const auto& d : o.fit_runs) p.runs.push_back(load_dem_run(d));
+  p.fitted = p.runs.size();
+  for (const auto& d : o.held_out) p.runs.push_back(load_dem_run(d));
+  for (const auto& r : p.runs) {
+    p.scatters.push_back(seed_scatter(r, seeds_of(r, p.runs)));
+    p.targets.push_back(joint_targets(r, p.scatters.back()));
+    p.starts.push_back(standard_variants(r, o.model, soil_set).front());
+    p.wall_of.push_back(wall_index(p.walls, r));
+  }
+  p.unknowns = material_unknowns(spec);
+  p.materials = p.unknowns.size();
+  p.per_wall = spec.declaration.fit.size();
+  add_wall_unknowns(p, spec);
+  return p;
+}
+
+void check_inputs(const FormLimitOptions& o) {
+  const auto& spec = models::find_model(o.model);
+  if (material_unknowns(spec).empty())
+    throw InputError(fmt::format(
+        "form-limit: model '{}' declares no calibration box for any parameter: there are no "
+        "declared bounds to fit its form within",
+        o.model));
+  if (o.fit_runs.empty()) throw InputError("form-limit: no run to fit (--runs)");
+  for (const auto& h : o.held_out)
+    for (const auto& f : o.fit_runs)
+      if (fs::exists(h) && fs::exists(f) && fs::equivalent(h, f))
+        throw InputError(
+            fmt::format("form-limit: {} is given both to fit (--runs) and to hold out (--held-out)",
+                        h.string()));
+}
+
+struct Fitted {
+  Eigen::VectorXd x;
+  fitting::LeastSquaresResult result;
+  double seconds = 0.0;
+};
+
+Fitted fit(const Problem& p, const FormLimitOptions& o) {
+  const auto n = Eigen::Index(p.unknowns.size());
+  fitting::LeastSquaresProblem lsq;
+  lsq.start.resize(n), lsq.lower.resize(n), lsq.upper.resize(n), lsq.difference_step.resize(n);
+  for (std::size_t k = 0; k < p.unknowns.size(); ++k) {
+    const auto& u = p.unknowns[k];
+    const auto i = Eigen::Index(k);
+    lsq.lower(i) = p.to_x(k, u.lower), lsq.upper(i) = p.to_x(k, u.upper);
+    // the start: the soil-test set, and each wall's predicted kappa_r and d_s (its first run's)
+    std::size_t run = 0;
+    if (k >= p.materials)
+      while (p.wall_of[run] != (k - p.materials) / p.per_wall) ++run;
+    lsq.start(i) =
+        std::clamp(p.to_x(k, value_of(p.starts[run], u.what)), lsq.lower(i), lsq.upper(i));
+    lsq.difference_step(i) = 1e-4 * (lsq.upper(i) - lsq.lower(i));
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  int evaluations = 0;
+  lsq.residuals = [&](const Eigen::VectorXd& x) {
+    std::vector<double> r;
+    for (std::size_t i = 0; i < p.fitted; ++i) {
+      const auto one =
+          fit_residuals(p.runs[i], replay(p.runs[i], p.variant_at(i, x)), p.targets[i]);
+      r.insert(r.end(), one.data(), one.data() + one.size());
+    }
+    const Eigen::VectorXd out = Eigen::Map<Eigen::VectorXd>(r.data(), Eigen::Index(r.size()));
+    if (++evaluations % 100 == 0 && o.progress)
+      o.progress(fmt::format(
+          "form limit: {} evaluations, RMS {:.4g} scatter units, {:.0f} s", evaluations,
+          std::sqrt(out.squaredNorm() / double(out.size())),
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()));
+    return out;
+  };
+  fitting::LeastSquaresSettings s;
+  s.max_evaluations = o.max_evaluations;
+  s.polish_iterations = o.polish_iterations;
+  Fitted f{{}, fitting::fit_least_squares(lsq, s), 0.0};
+  f.x = f.result.x;
+  f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return f;
+}
+
+// The soil-test set's sigma per key, from its calibration.json (parameters[].sigma).
+std::map<std::string, double> soil_sigmas(const FormLimitOptions& o) {
+  std::map<std::string, double> out;
+  const auto file =
+      o.calibration.empty() ? fs::path(o.params).parent_path() / "calibration.json" : o.calibration;
+  if (!fs::exists(file)) return out;
+  const auto j = io::read_json_file(file);
+  for (const auto& e : j.value("parameters", json::array()))
+    if (e.contains("sigma") && e["sigma"].is_number())
+      out[e["key"].get<std::string>()] = e["sigma"].get<double>();
+  return out;
+}
+
+json parameters_json(const Problem& p, const Fitted& f, const models::ModelInputs& soil_set,
+                     const std::map<std::string, double>& sigmas) {
+  json out = json::array();
+  for (std::size_t k = 0; k < p.unknowns.size(); ++k) {
+    const auto& u = p.unknowns[k];
+    const double v = p.at(k, f.x);
+    const double sigma =
+        u.what.logarithmic ? v * f.result.sigma(Eigen::Index(k)) : f.result.sigma(Eigen::Index(k));
+    const double width = p.to_x(k, u.upper) - p.to_x(k, u.lower), x = f.x(Eigen::Index(k));
+    json e = {{"name", u.what.name},
+              {"value", v},
+              {"sigma", std::isfinite(sigma) ? json(sigma) : json()},
+              {"box", {u.lower, u.upper}},
+              {"at_bound", std::abs(x - p.to_x(k, u.lower)) < 1e-3 * width ||
+                               std::abs(x - p.to_x(k, u.upper)) < 1e-3 * width}};
+    if (k < p.materials) {
+      const double soil = soil_set.tables.at(u.what.table).at(u.what.key);
+      e["soil_test_value"] = soil;
+      const auto s = sigmas.find(u.what.key);
+      if (s != sigmas.end() && s->second > 0.0) {
+        e["soil_test_sigma"] = s->second;
+        e["moved_in_soil_test_sigmas"] = (v - soil) / s->second;
+      }
+    }
+    out.push_back(e);
+  }
+  return out;
+}
+
+// A quantity's verdicts for one run: the soil-test set predicted (kappa_r from the wall, d_s 5
+// d50), fitted (kappa_r and d_s to this run), and the form limit; the cause where the prediction
+// breaks.
+json run_verdicts(const Problem& p, std::size_t i, const Variant& form_limit,
+                  const FormLimitOptions& o) {
+  const auto& dem = p.runs[i];
+  const auto tolerances = tolerances_for(dem);
+  const auto own = fit_kappa_and_ds(dem, p.starts[i], p.targets[i], fit_bounds(o.model));
+  Variant fitted = p.starts[i];
+  fitted.inputs.roughness.kappa_r = own.kappa_r, fitted.d_s_mm = own.d_s_mm;
+  const auto judged = [&](const Variant& v) {
+    return judge(dem, p.scatters[i], replay(dem, v), tolerances);
+  };
+  const auto predicted = judged(p.starts[i]), fit_ds = judged(fitted), limit = judged(form_limit);
+  json q = json::object();
+  for (std::size_t k = 0; k < limit.size(); ++k) {
+    const auto word = [](const Verdict& v) { return v.verdict; };
+    json e = {{"dem", limit[k].dem ? json(*limit[k].dem) : json()},
+              {"tolerance", limit[k].tolerance},
+              {"soil_test_predicted",
+               {{"error", predicted[k].error ? json(*predicted[k].error) : json()},
+                {"verdict", word(predicted[k])}}},
+              {"soil_test_fitted_kappa_ds",
+               {{"error", fit_ds[k].error ? json(*fit_ds[k].error) : json()},
+                {"verdict", word(fit_ds[k])}}},
+              {"form_limit",
+               {{"error", limit[k].error ? json(*limit[k].error) : json()},
+                {"verdict", word(limit[k])}}}};
+    if (predicted[k].verdict == "breaks")
+      e["cause"] = limit[k].verdict == "breaks" ? "form" : "calibration";
+    q[limit[k].key] = e;
+  }
+  return {{"dir", dem.dir.string()},
+          {"role", i < p.fitted ? "fitted" : "held out"},
+          {"wall", p.walls[p.wall_of[i]].name()},
+          {"boundary", driver::to_string(dem.boundary)},
+          {"seeds", p.scatters[i].runs.size()},
+          {"quantities", q}};
+}
+
+std::string markdown(const json& j) {
+  std::string md = fmt::format(
+      "# Form limit of {} ({} fitted runs, {} held out)\n\nFitted: every material parameter with "
+      "a calibration box and each wall's fit parameters, jointly (src: comparison/form_limit.hpp); "
+      "RMS {:.3g} scatter units, {} evaluations, {:.0f} s, {}.\n\n| parameter | form limit | "
+      "soil-test "
+      "set | moved (soil-test sigmas) | on a bound |\n|---|---|---|---|---|\n",
+      j["model"].get<std::string>(), j["fit_runs"].size(), j["held_out"].size(),
+      j["rms_scaled"].get<double>(), j["evaluations"].get<int>(), j["seconds"].get<double>(),
+      j["stop"].get<std::string>());
+  const auto num = [](const json& v, const char* f) {
+    return v.is_number() ? fmt::format(fmt::runtime(f), v.get<double>()) : std::string("-");
+  };
+  const auto percent = [](const json& v) {
+    return v.is_number() ? fmt::format("{:+.0f} %", 100.0 * v.get<double>()) : std::string("-");
+  };
+  for (const auto& e : j["parameters"])
+    md += fmt::format("| {} | {} | {} | {} | {} |\n", e["name"].get<std::string>(),
+                      num(e["value"], "{:.5g}"), num(e.value("soil_test_value", json()), "{:.5g}"),
+                      num(e.value("moved_in_soil_test_sigmas", json()), "{:+.1f}"),
+                      e["at_bound"].get<bool>() ? "yes" : "");
+  if (j.contains("elsewhere")) {
+    md +=
+        "\nWhat the form limit costs elsewhere:\n\n| what | soil-test set | form limit "
+        "|\n|---|---|---|\n";
+    for (const auto& e : j["elsewhere"])
+      md += fmt::format("| {} | {}{} | {}{} |\n", e["what"].get<std::string>(),
+                        num(e["soil_test"], "{:.4g}"), e.value("soil_test_note", ""),
+                        num(e["form_limit"], "{:.4g}"), e.value("form_limit_note", ""));
+  }
+  md +=
+      "\n| run | role | quantity | DEM | tolerance | predicted error | fitted kappa_r, d_s | form "
+      "limit | cause |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : j["runs"])
+    for (const auto& [key, q] : r["quantities"].items()) {
+      const auto cell = [&](const char* variant) {
+        return fmt::format("{} ({})", percent(q[variant]["error"]),
+                           q[variant]["verdict"].get<std::string>());
+      };
+      md +=
+          fmt::format("| {} | {} | {} | {} | {:.0f} % | {} | {} | {} | {} |\n",
+                      fs::path(r["dir"].get<std::string>()).filename().string(),
+                      r["role"].get<std::string>(), key, num(q["dem"], "{:.4g}"),
+                      100.0 * q["tolerance"].get<double>(), cell("soil_test_predicted"),
+                      cell("soil_test_fitted_kappa_ds"), cell("form_limit"), q.value("cause", ""));
+    }
+  return md;
+}
+
+// The fitted material set as a parameter file, usable with `iwb compare --params`.
+std::string parameter_file(const Problem& p, const Fitted& f, const FormLimitOptions& o) {
+  std::map<std::string, std::string> tables;
+  for (std::size_t k = 0; k < p.materials; ++k)
+    tables[p.unknowns[k].what.table] +=
+        fmt::format("{} = {:.9g}\n", p.unknowns[k].what.key, p.at(k, f.x));
+  std::string s = fmt::format(
+      "# The form limit of {} (`iwb form-limit`, {}): the material set fitted jointly with kappa_r "
+      "and d_s to DEM runs, not a soil calibration. form_limit.json says on which runs.\n# "
+      "Command: {}\n",
+      o.model, io::utc_timestamp(), o.command_line);
+  for (const auto& [name, body] : tables) s += fmt::format("[{}]\n{}", name, body);
+  return s;
+}
+
+}  // namespace
+
+json run_form_limit(const FormLimitOptions& o) {
+  check_inputs(o);
+  const auto soil_set = validated_parameters(o.model, o.params);
+  const Problem p = set_up(o, soil_set);  // InputError for a bad run, before anything is written
+  io::prepare_run_directory(o.out, o.force);
+  json manifest = {{"kind", "form_limit"},
+                   {"command_line", o.command_line},
+                   {"started", io::utc_timestamp()},
+                   {"status", "running"}};
+  io::write_manifest(o.out, manifest);
+  const Fitted f = fit(p, o);
+  json j = {
+      {"kind", "form_limit"},
+      {"model", o.model},
+      {"soil_test_parameters", o.params},
+      {"fit_runs", json::array()},
+      {"held_out", json::array()},
+      {"walls", json::array()},
+      {"rms_scaled", f.result.rmse},
+      {"evaluations", f.result.evaluations},
+      {"seconds", f.seconds},
+      {"converged", f.result.converged},
+      {"stop", f.result.stop_reason},
+      {"parameters", parameters_json(p, f, soil_set, soil_sigmas(o))},
+      {"soil_test_calibration", o.calibration.empty() ? json() : json(o.calibration.string())},
+      {"runs", json::array()}};
+  for (const auto& d : o.fit_runs) j["fit_runs"].push_back(d.string());
+  for (const auto& d : o.held_out) j["held_out"].push_back(d.string());
+  for (const auto& w : p.walls) j["walls"].push_back(w.name());
+  for (std::size_t i = 0; i < p.runs.size(); ++i) {
+    Variant v = p.variant_at(i, f.x);
+    v.label = "form limit";
+    j["runs"].push_back(run_verdicts(p, i, v, o));
+  }
+  if (o.elsewhere)
+    j["elsewhere"] = o.elsewhere(p.variant_at(0, f.x).inputs.tables, soil_set.tables);
+  io::write_atomically(o.out / "form_limit.json", j.dump(2) + "\n");
+  io::write_atomically(o.out / "form_limit.md", markdown(j));
+  io::write_atomically(o.out / "form_limit.toml", parameter_file(p, f, o));
+  manifest["finished"] = io::utc_timestamp();
+  manifest["status"] = "complete";
+  manifest["files"] = {"form_limit.json", "form_limit.md", "form_limit.toml"};
+  io::write_manifest(o.out, manifest);
+  return j;
+}
+
+}  // namespace iwb::comparison

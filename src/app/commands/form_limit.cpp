@@ -1,0 +1,123 @@
+// `iwb form-limit`: an interface model's best fit of every declared parameter to DEM runs, which
+// tells a verdict's form from its calibration (comparison/form_limit.hpp).
+#include "comparison/form_limit.hpp"
+
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "app/command_list.hpp"
+#include "app/commands/commands.hpp"
+#include "app/option_checks.hpp"
+#include "calibration/calibrate.hpp"
+#include "calibration/seed_scatter.hpp"
+
+namespace iwb::app {
+
+namespace {
+
+constexpr const char* kFormLimitHelp =
+    "The form limit of an interface model on DEM runs (issue 38): every material parameter with a "
+    "declared calibration box (iwb models) and kappa_r and d_s for each wall (R_n, d50), fitted "
+    "jointly to the --runs (tau and the free normal quantity, each in units of the cell's seed "
+    "scatter, as compare's joint fit; BOBYQA within the boxes, then Levenberg-Marquardt), from the "
+    "soil-test set of --params. The --held-out runs are predicted with the result. Every run is "
+    "judged on the quantities of interest three ways: the soil-test set predicted (kappa_r from "
+    "the wall, d_s 5 d50), the soil-test set with kappa_r and d_s fitted to the run, and the form "
+    "limit. A quantity the prediction breaks is put down to the form when it still breaks at the "
+    "form limit (no parameter set inside the boxes meets it), else to the calibration. Writes "
+    "form_limit.json, form_limit.md (tables) and form_limit.toml (the fitted set, for compare "
+    "--params); each parameter's move from the soil-test set in that set's sigmas when a "
+    "calibration.json sits beside --params.\n"
+    "Example: iwb form-limit --runs data/reference/truth2_seeds45/runs/s4_cnl-50 --held-out "
+    "data/reference/truth2_seeds45/runs/s5_cnl-50 --model hvwe --params "
+    "data/params/truth_grains_epsd2.toml -o runs/form-limit";
+
+struct FormLimitCommand {
+  comparison::FormLimitOptions options;
+  std::vector<std::string> runs, held_out, soil_tests;
+  std::string out, calibration;
+};
+
+// The soil tests' RMS per objective group (calibration/objectives.hpp) with each set: what the
+// form limit's material set costs where the soil-test set was calibrated. The soil model is the
+// one calibrate fits (vw3d) on the same [hypoplastic] table.
+comparison::FormLimitOptions::Elsewhere soil_test_costs(const std::vector<std::string>& dirs) {
+  if (dirs.empty()) return {};
+  auto tests = std::make_shared<std::vector<calibration::SoilTest>>();
+  for (const auto& d : dirs) tests->push_back(calibration::read_soil_test(d));
+  calibration::measure_seed_scatter(*tests);
+  return [tests](const auto& form, const auto& soil) {
+    const auto costs = [&](const auto& tables) {
+      return calibration::group_fits(*tests, "vw3d", tables.at("hypoplastic"), {});
+    };
+    const auto at_form = costs(form), at_soil = costs(soil);
+    const auto not_reached = [](const calibration::GroupFit& g) {
+      return g.unreached
+                 ? fmt::format(" ({} of {} residuals not reached)", g.unreached, g.residuals)
+                 : std::string();
+    };
+    nlohmann::json rows = nlohmann::json::array();
+    for (std::size_t g = 0; g < at_form.size(); ++g)
+      if (at_form[g].residuals > 0)
+        rows.push_back(
+            {{"what", fmt::format("soil tests ({}), RMS in scatter units: {}", tests->size(),
+                                  calibration::to_string(at_form[g].group))},
+             {"soil_test", at_soil[g].rms},
+             {"form_limit", at_form[g].rms},
+             {"soil_test_note", not_reached(at_soil[g])},
+             {"form_limit_note", not_reached(at_form[g])}});
+    return rows;
+  };
+}
+
+}  // namespace
+
+void add_form_limit_command(CLI::App& app, CommandList& commands) {
+  auto c = std::make_shared<FormLimitCommand>();
+  auto* cmd = app.add_subcommand("form-limit", kFormLimitHelp);
+  cmd->add_option("--runs", c->runs, "DEM run directories to fit")
+      ->required()
+      ->check(input_directory());
+  cmd->add_option("--held-out", c->held_out, "DEM run directories to predict with the fitted set")
+      ->check(input_directory());
+  cmd->add_option("--model", c->options.model, "interface model (iwb models)")
+      ->capture_default_str();
+  cmd->add_option("--params", c->options.params, "the soil-test parameter file (data/params/)")
+      ->required()
+      ->check(input_file());
+  cmd->add_option("--calibration", c->calibration,
+                  "the soil-test set's calibration.json, for its sigmas (default: the one beside "
+                  "--params, if any)")
+      ->check(input_file());
+  cmd->add_option("--soil-tests", c->soil_tests,
+                  "soil-test run directories: each objective group's RMS with the soil-test set "
+                  "and with the form limit's, what the form limit costs there")
+      ->check(input_directory());
+  cmd->add_option("--out,-o", c->out, "output directory")->required()->check(output_directory());
+  cmd->add_option("--max-evaluations", c->options.max_evaluations,
+                  "BOBYQA's budget before Levenberg-Marquardt finishes")
+      ->capture_default_str()
+      ->check(whole_in(10, 1000000));
+  cmd->add_flag("--force", c->options.force, "replace an earlier form limit in the same directory");
+  commands.add(cmd, [c](const CommandContext& context) {
+    auto o = c->options;
+    for (const auto& r : c->runs) o.fit_runs.push_back(r);
+    for (const auto& r : c->held_out) o.held_out.push_back(r);
+    o.out = c->out;
+    o.calibration = c->calibration;
+    o.elsewhere = soil_test_costs(c->soil_tests);  // read now: a bad test is refused before the fit
+    o.command_line = context.command_line;
+    o.progress = [](const std::string& line) {
+      fmt::print("{}\n", line);
+      std::fflush(stdout);
+    };
+    const auto j = comparison::run_form_limit(o);
+    fmt::print("form limit: RMS {:.4g} scatter units after {} evaluations ({:.0f} s) -> {}\n",
+               j["rms_scaled"].get<double>(), j["evaluations"].get<int>(),
+               j["seconds"].get<double>(), (o.out / "form_limit.md").string());
+    return 0;
+  });
+}
+
+}  // namespace iwb::app
