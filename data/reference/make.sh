@@ -17,7 +17,7 @@ WORK=${WORK:-runs/reference}  # the full campaigns (VTK, engine inputs and logs)
 DEST=data/reference
 # The campaign on the converged truth (clamped plate, epsd2, 10 mm; issue 20 item 4). Its CNL runs
 # at R_n 0.5 and 0.25 are the convergence study's (EXTRA_CNL), the sweeps hold the rest.
-SWEEPS=(truth2_rn truth2_cns truth2_d50 truth2_stress)
+SWEEPS=(truth2_rn truth2_cns truth2_d50 truth2_stress truth2_seeds45)
 EXTRA_CNL=(data/convergence/truth_clamped data/convergence/truth_clamped_rn025)
 stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(restore sweeps crosscheck copy compare report)
@@ -66,7 +66,7 @@ runs_of() {
       local n; n=$(basename "$r")
       case "$1" in
       all) echo "$r" ;;
-      cnl) [[ $n == *_cnl ]] && echo "$r" ;;
+      cnl) [[ $n == *_cnl || $n == *_cnl-50 ]] && echo "$r" ;;  # truth2_seeds45 names the stress
       cns) [[ $n == *_cns-* ]] && echo "$r" ;;
       cnl200) [[ $n == *_cnl-200 ]] && echo "$r" ;;
       esac
