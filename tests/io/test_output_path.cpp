@@ -65,14 +65,16 @@ TEST_CASE("output: a staged directory appears only when committed and replaces t
 
 TEST_CASE("calibrate -o naming a directory is refused before fitting, leaving no temporary file",
           "[io][calibration]") {
-  fs::remove_all(kWork);
-  fs::create_directories(kWork / "params");
+  // its own directory: the other cases of this file empty kWork, and ctest runs them beside it
+  const fs::path work = fs::path(IWB_TEST_RUNS_DIR) / "output_path_calibrate";
+  fs::remove_all(work);
+  fs::create_directories(work / "params");
   const auto r = test::run_iwb({"calibrate", "data/calibration/dem_default_grains/oedometer-dense",
-                                "-o", (kWork / "params").string()});
+                                "-o", (work / "params").string()});
   CHECK(r.exit_code == 2);
   // refused by the option's check, before anything is fitted
   CHECK_THAT(r.output, Catch::StartsWith("error: iwb calibrate: --out: " +
-                                         (kWork / "params").string() + ": is a directory"));
-  CHECK(test::files_under(kWork).empty());
-  CHECK_FALSE(has_temporary(kWork));
+                                         (work / "params").string() + ": is a directory"));
+  CHECK(test::files_under(work).empty());
+  CHECK_FALSE(has_temporary(work));
 }
