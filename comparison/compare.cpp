@@ -5,6 +5,7 @@
 #include "common/errors.hpp"
 #include "comparison/cyclic_verdicts.hpp"
 #include "comparison/feasibility.hpp"
+#include "comparison/form_limit.hpp"
 #include "comparison/metrics.hpp"
 #include "comparison/verdicts.hpp"
 #include "io/parameter_file.hpp"
@@ -97,18 +98,22 @@ std::vector<DemRun> load_seeds(const CompareOptions& opt) {
 json manifest_of(const CompareOptions& opt) {
   json seeds = json::array();
   for (const auto& d : opt.seed_dirs) seeds.push_back(d.string());
-  return {{"kind", "comparison"},
-          {"workbench", {{"name", "iwb"}, {"version", IWB_VERSION}}},
-          {"command_line", opt.command_line},
-          {"inputs",
-           {{"dem_run", opt.dem_dir.string()},
-            {"dem_manifest_sha256", io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json"))},
-            {"seed_runs", seeds},
-            {"parameters", opt.params},
-            {"parameters_sha256", io::sha256_hex(io::read_file(opt.params))},
-            {"predicted_d_s_over_d50", opt.predicted_ds_d50}}},
-          {"started", io::utc_timestamp()},
-          {"status", "running"}};
+  return {
+      {"kind", "comparison"},
+      {"workbench", {{"name", "iwb"}, {"version", IWB_VERSION}}},
+      {"command_line", opt.command_line},
+      {"inputs",
+       {{"dem_run", opt.dem_dir.string()},
+        {"dem_manifest_sha256", io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json"))},
+        {"seed_runs", seeds},
+        {"parameters", opt.params},
+        {"parameters_sha256", io::sha256_hex(io::read_file(opt.params))},
+        {"predicted_d_s_over_d50", opt.predicted_ds_d50},
+        {"form_limit", opt.form_limit.empty() ? json() : json(opt.form_limit.string())},
+        {"form_limit_sha256",
+         opt.form_limit.empty() ? json() : json(io::sha256_hex(io::read_file(opt.form_limit)))}}},
+      {"started", io::utc_timestamp()},
+      {"status", "running"}};
 }
 
 // The headline: which quantities the predicted and the jointly fitted model hold, and the scan.
@@ -199,6 +204,20 @@ std::vector<cycles::CyclicQuantities> cycles_of_seeds(const DemRun& dem,
   return out;
 }
 
+namespace {
+// Each "breaks" of every variant labelled with its cause from the form-limit record (issue 38).
+void label_causes(json& variants, const json& record, const fs::path& dem_dir, const DemRun& dem) {
+  const auto limit =
+      form_limit_verdicts(record, dem_dir, dem.R_n, dem.d50_mm, driver::to_string(dem.boundary));
+  for (auto& v : variants)
+    for (auto& verdict : v["verdicts"]) {
+      const auto it = limit.find(verdict["quantity"].get<std::string>());
+      if (it == limit.end()) continue;
+      if (const auto c = cause_of(verdict["verdict"], it->second); !c.empty()) verdict["cause"] = c;
+    }
+}
+}  // namespace
+
 models::ModelInputs validated_parameters(const std::string& model, const std::string& params) {
   models::ModelInputs in;
   in.tables = io::load_parameter_file(params);
@@ -213,6 +232,8 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
   const SeedScatter scatter = seed_scatter(dem, seeds);  // InputError for a seed of another scene
   const Tolerances tolerances = tolerances_for(dem);
   const models::ModelInputs params = validated_parameters(opt.model, opt.params);
+  const json form_limit =  // read and checked before anything is written
+      opt.form_limit.empty() ? json() : read_form_limit(opt.form_limit, opt.model);
   auto candidates = standard_variants(dem, opt.model, params, opt.predicted_ds_d50);
   if (!opt.roughness_scheme.empty() || !opt.f_c.empty())  // refused before anything is written
     for (auto& v : candidates) chosen_roughness(opt, v.inputs.roughness);
@@ -255,6 +276,7 @@ nlohmann::json run_comparison(const CompareOptions& opt) {
           {"verdicts", to_json(judge_cycles(dem, seed_cycles, model_cyclic))}};
     }
   }
+  if (!form_limit.is_null()) label_causes(variants, form_limit, opt.dem_dir, dem);
   const Feasibility scan =
       scan_feasibility(dem, scatter, predicted, tolerances, kScanPoints, bounds);
   json tol = json::object();

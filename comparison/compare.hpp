@@ -35,6 +35,9 @@ struct CompareOptions {
   // The wall's scheme for every variant instead of the model's default (one it declares), and
   // Arnold & Herle's f_c reading (ERRATA 9): empty = the defaults.
   std::string roughness_scheme, f_c;
+  // A form-limit record of the model (iwb form-limit's form_limit.json): each "breaks" then says
+  // whether the form or the calibration broke (comparison/form_limit.hpp). Empty: none.
+  std::filesystem::path form_limit;
 };
 
 // The (kappa_r, d_s) box of a fit: kappa_r in [floor, 1] for a model that reads wall roughness,

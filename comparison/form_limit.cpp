@@ -38,7 +38,7 @@ std::vector<Unknown> material_unknowns(const models::ModelSpec& spec) {
 // A wall: the runs of one R_n and d50 share its kappa_r and d_s.
 struct Wall {
   double R_n, d50_mm;
-  std::string name() const { return fmt::format("R_n {:g}, d50 {:g} mm", R_n, d50_mm); }
+  std::string name() const { return wall_name(R_n, d50_mm); }
 };
 
 struct Problem {
@@ -244,8 +244,8 @@ json run_verdicts(const Problem& p, std::size_t i, const Variant& form_limit,
               {"form_limit",
                {{"error", limit[k].error ? json(*limit[k].error) : json()},
                 {"verdict", word(limit[k])}}}};
-    if (predicted[k].verdict == "breaks")
-      e["cause"] = limit[k].verdict == "breaks" ? "form" : "calibration";
+    if (const auto cause = cause_of(predicted[k].verdict, limit[k].verdict); !cause.empty())
+      e["cause"] = cause;
     q[limit[k].key] = e;
   }
   return {{"dir", dem.dir.string()},
@@ -321,6 +321,49 @@ std::string parameter_file(const Problem& p, const Fitted& f, const FormLimitOpt
 }
 
 }  // namespace
+
+std::string wall_name(double R_n, double d50_mm) {
+  return fmt::format("R_n {:g}, d50 {:g} mm", R_n, d50_mm);
+}
+
+std::string cause_of(const std::string& verdict, const std::string& form_limit_verdict) {
+  if (verdict != "breaks" || form_limit_verdict.empty()) return "";
+  return form_limit_verdict == "breaks" ? "form" : "calibration";
+}
+
+json read_form_limit(const fs::path& file, const std::string& model) {
+  const auto j = io::read_json_file(file);
+  if (j.value("kind", "") != "form_limit" || !j.contains("runs"))
+    throw InputError(
+        fmt::format("--form-limit {}: not a form-limit record (iwb form-limit's "
+                    "form_limit.json)",
+                    file.string()));
+  if (j.value("model", "") != model)
+    throw InputError(fmt::format("--form-limit {}: a form limit of {}, not of {}", file.string(),
+                                 j.value("model", "?"), model));
+  return j;
+}
+
+std::map<std::string, std::string> form_limit_verdicts(const json& record, const fs::path& dem_dir,
+                                                       double R_n, double d50_mm,
+                                                       const std::string& boundary) {
+  const json* match = nullptr;
+  for (const auto& r : record["runs"]) {
+    const fs::path d = r.value("dir", "");
+    if (fs::exists(d) && fs::exists(dem_dir) && fs::equivalent(d, dem_dir)) {
+      match = &r;
+      break;
+    }
+    if (!match && r.value("wall", "") == wall_name(R_n, d50_mm) &&
+        r.value("boundary", "") == boundary)
+      match = &r;
+  }
+  std::map<std::string, std::string> out;
+  if (match)
+    for (const auto& [key, q] : (*match)["quantities"].items())
+      out[key] = q["form_limit"]["verdict"].get<std::string>();
+  return out;
+}
 
 json run_form_limit(const FormLimitOptions& o) {
   check_inputs(o);

@@ -47,4 +47,23 @@ struct FormLimitOptions {
 // file.
 nlohmann::json run_form_limit(const FormLimitOptions& options);
 
+// How a form-limit record names a wall: "R_n 0.5, d50 2 mm".
+std::string wall_name(double R_n, double d50_mm);
+
+// The form-limit record `file` (form_limit.json) read for `model`: InputError naming the file
+// when it is not one, or is another model's (a form limit says nothing of another model's form).
+nlohmann::json read_form_limit(const std::filesystem::path& file, const std::string& model);
+
+// Per quantity, the form limit's verdict for a run of this wall and boundary in `record` (the
+// run itself when the record holds it, else the first run of its wall and boundary); empty when
+// the record has no such run.
+std::map<std::string, std::string> form_limit_verdicts(const nlohmann::json& record,
+                                                       const std::filesystem::path& dem_dir,
+                                                       double R_n, double d50_mm,
+                                                       const std::string& boundary);
+
+// A "breaks" verdict's cause: "form" when the form limit also breaks the quantity, else
+// "calibration"; empty for other verdicts or a quantity the form limit did not judge.
+std::string cause_of(const std::string& verdict, const std::string& form_limit_verdict);
+
 }  // namespace iwb::comparison

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "common/errors.hpp"
+#include "comparison/form_limit.hpp"
 #include "comparison/seed_scatter.hpp"
 #include "io/json_file.hpp"
 #include "io/output_path.hpp"
@@ -28,14 +29,17 @@ Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
     return Earlier::kIncomplete;
   json seeds = json::array();
   for (const auto& d : opt.seed_dirs) seeds.push_back(d.string());
-  const bool same = m.value("/inputs/dem_manifest_sha256"_json_pointer, std::string()) ==
-                        io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json")) &&
-                    m.value("/inputs/seed_runs"_json_pointer, json()) == seeds &&
-                    m.value("/inputs/predicted_d_s_over_d50"_json_pointer, json()) ==
-                        json(opt.predicted_ds_d50) &&
-                    m.value("/inputs/parameters_sha256"_json_pointer, std::string()) ==
-                        io::sha256_hex(io::read_file(opt.params)) &&
-                    io::read_json_file(dir / "compare.json").value("model", "") == opt.model;
+  const bool same =
+      m.value("/inputs/dem_manifest_sha256"_json_pointer, std::string()) ==
+          io::sha256_hex(io::read_file(opt.dem_dir / "manifest.json")) &&
+      m.value("/inputs/seed_runs"_json_pointer, json()) == seeds &&
+      m.value("/inputs/predicted_d_s_over_d50"_json_pointer, json()) ==
+          json(opt.predicted_ds_d50) &&
+      m.value("/inputs/form_limit_sha256"_json_pointer, json()) ==
+          (opt.form_limit.empty() ? json() : json(io::sha256_hex(io::read_file(opt.form_limit)))) &&
+      m.value("/inputs/parameters_sha256"_json_pointer, std::string()) ==
+          io::sha256_hex(io::read_file(opt.params)) &&
+      io::read_json_file(dir / "compare.json").value("model", "") == opt.model;
   return same ? Earlier::kSameInputs : Earlier::kOtherInputs;
 }
 
@@ -109,6 +113,7 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
   std::vector<DemRun> dems;
   for (const auto& d : opt.dem_dirs) dems.push_back(load_dem_run(d, opt.allow_partial));
   validated_parameters(opt.model, opt.params);
+  if (!opt.form_limit.empty()) read_form_limit(opt.form_limit, opt.model);
   fs::create_directories(opt.out);
   json manifest = {
       {"kind", "hypothesis set"}, {"command_line", opt.command_line}, {"model", opt.model},
@@ -122,6 +127,7 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
       CompareOptions c{opt.dem_dirs[i],   opt.model, opt.params,      opt.out / names[i],
                        opt.allow_partial, opt.force, opt.command_line};
       c.predicted_ds_d50 = opt.predicted_ds_d50;
+      c.form_limit = opt.form_limit;
       for (const auto& seed : seeds_of(dems[i], dems)) c.seed_dirs.push_back(seed.dir);
       if (compare_or_reuse(c)) outcome.reused.push_back(names[i]);
       outcome.compare_dirs.push_back(c.out);

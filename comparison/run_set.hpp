@@ -22,6 +22,7 @@ struct RunSetOptions {
   bool force = false;  // replace complete comparisons of other inputs
   std::string command_line;
   double predicted_ds_d50 = kDefaultPredictedDsD50;
+  std::filesystem::path form_limit;  // CompareOptions::form_limit
 };
 
 struct RunSetOutcome {

@@ -80,6 +80,12 @@ std::string statistics_note(const json& verdicts) {
 
 }  // namespace
 
+// "breaks (form)", "breaks (calibration)" where a form-limit record said which (issue 38).
+std::string with_cause(const json& verdict) {
+  const std::string word = verdict["verdict"];
+  return verdict.contains("cause") ? word + " (" + verdict["cause"].get<std::string>() + ")" : word;
+}
+
 Table verdict_table(const json& cmp) {
   Table t{{"quantity", "DEM", "predicted model", "fitted model", "tolerance", "detects",
            "predicted", "fitted"},
@@ -92,8 +98,7 @@ Table verdict_table(const json& cmp) {
     const std::string unit = p["unit"];
     t.rows.push_back({p["name"].get<std::string>() + (unit.empty() ? "" : " (" + unit + ")"),
                       with_interval(p), model_cell(p), model_cell(fit[i]), percent(p["tolerance"]),
-                      percent(p["detection_limit"]), p["verdict"].get<std::string>(),
-                      fit[i]["verdict"].get<std::string>()});
+                      percent(p["detection_limit"]), with_cause(p), with_cause(fit[i])});
   }
   return t;
 }

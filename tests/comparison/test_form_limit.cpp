@@ -88,3 +88,32 @@ TEST_CASE("a form limit refuses a run given both to fit and to hold out", "[comp
   CHECK_THROWS_WITH(comparison::run_form_limit(o),
                     Catch::Contains("is given both to fit (--runs) and to hold out"));
 }
+
+TEST_CASE("compare with a form-limit record says which broke, and refuses another model's record",
+          "[comparison]") {
+  const auto o = form_limit_of("form_limit_label", 1.0);
+  comparison::run_form_limit(o);
+  comparison::CompareOptions c;
+  c.dem_dir = o.held_out.front();
+  c.seed_dirs = o.fit_runs;
+  c.model = "hvwe";
+  c.params = o.params;
+  c.out = fs::path(IWB_TEST_RUNS_DIR) / "comparison" / "form_limit_label_compare";
+  c.force = true;
+  c.form_limit = o.out / "form_limit.json";
+  const auto result = comparison::run_comparison(c);
+  const auto& predicted =
+      result["variants"][result["verdicts"]["predicted_variant"].get<std::size_t>()]["verdicts"];
+  bool peak_labelled = false;
+  for (const auto& v : predicted) {
+    INFO(v.dump());
+    // a cause on every break and on nothing else
+    CHECK(v.contains("cause") == (v["verdict"] == "breaks"));
+    if (v["quantity"] == "peak_friction" && v["verdict"] == "breaks")
+      peak_labelled = v["cause"] == "calibration";
+  }
+  CHECK(peak_labelled);  // phi_c 33 against 28: the peak breaks, and the form could meet it
+  c.model = "ahe";
+  CHECK_THROWS_WITH(comparison::run_comparison(c),
+                    Catch::Contains("a form limit of hvwe, not of ahe"));
+}

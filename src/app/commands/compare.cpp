@@ -41,6 +41,7 @@ int compare_set(const CompareCommand& o, const CommandContext& context) {
                                 c.force,
                                 context.command_line};
   opt.predicted_ds_d50 = c.predicted_ds_d50;
+  opt.form_limit = c.form_limit;
   const auto outcome = comparison::run_hypothesis_set(opt);
   fmt::print("{} run(s) compared ({} reused) -> {}\n", outcome.compare_dirs.size(),
              outcome.reused.size(), opt.out.string());
@@ -134,6 +135,11 @@ void add_compare_command(CLI::App& app, CommandList& commands) {
                    "kappa_r (ERRATA 9); with --roughness-scheme arnold-herle")
       ->check(CLI::IsMember({"1/kappa_r", "kappa_r"}))
       ->excludes("--runs");
+  compare
+      ->add_option("--form-limit", copt.form_limit,
+                   "a form-limit record of the model (iwb form-limit's form_limit.json): each "
+                   "breaking quantity then says whether the model's form or its calibration broke")
+      ->check(input_file());
   compare->add_flag("--allow-partial", copt.allow_partial,
                     "compare a failed or interrupted DEM run");
   compare->add_flag("--force", copt.force, "replace an earlier comparison in the same directory");
