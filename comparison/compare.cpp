@@ -110,6 +110,7 @@ json manifest_of(const CompareOptions& opt) {
         {"parameters_sha256", io::sha256_hex(io::read_file(opt.params))},
         {"predicted_d_s_over_d50", opt.predicted_ds_d50},
         {"form_limit", opt.form_limit.empty() ? json() : json(opt.form_limit.string())},
+        {"pooled_scatter", opt.pooled ? to_json(*opt.pooled) : json()},
         {"form_limit_sha256",
          opt.form_limit.empty() ? json() : json(io::sha256_hex(io::read_file(opt.form_limit)))}}},
       {"started", io::utc_timestamp()},
@@ -229,7 +230,8 @@ models::ModelInputs validated_parameters(const std::string& model, const std::st
 nlohmann::json run_comparison(const CompareOptions& opt) {
   const DemRun dem = load_dem_run(opt.dem_dir, opt.allow_partial);
   const std::vector<DemRun> seeds = load_seeds(opt);
-  const SeedScatter scatter = seed_scatter(dem, seeds);  // InputError for a seed of another scene
+  SeedScatter scatter = seed_scatter(dem, seeds);  // InputError for a seed of another scene
+  if (opt.pooled) apply_pooling(scatter, *opt.pooled);
   const Tolerances tolerances = tolerances_for(dem);
   const models::ModelInputs params = validated_parameters(opt.model, opt.params);
   const json form_limit =  // read and checked before anything is written

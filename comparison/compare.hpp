@@ -8,10 +8,12 @@
 // every quantity hold: where none does, that is a finding about the model, not a failed fit.
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "comparison/fit.hpp"
+#include "comparison/pooled_scatter.hpp"
 #include "comparison/replay.hpp"
 
 namespace iwb::comparison {
@@ -38,6 +40,9 @@ struct CompareOptions {
   // A form-limit record of the model (iwb form-limit's form_limit.json): each "breaks" then says
   // whether the form or the calibration broke (comparison/form_limit.hpp). Empty: none.
   std::filesystem::path form_limit;
+  // The set's seed scatter pooled across cells (pooled_scatter.hpp), for `iwb compare --runs`;
+  // none: the cell's own.
+  std::optional<PooledScatter> pooled;
 };
 
 // The (kappa_r, d_s) box of a fit: kappa_r in [floor, 1] for a model that reads wall roughness,

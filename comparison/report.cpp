@@ -243,7 +243,8 @@ std::string table_html(const Table& t) {
 bool set_file(const fs::path& p) {
   const auto n = p.filename().string();
   return fs::exists(p.parent_path() / "hypotheses.json") &&
-         (n == "hypotheses.json" || n == "hypotheses.md" || n == "manifest.json");
+         (n == "hypotheses.json" || n == "hypotheses.md" || n == "manifest.json" ||
+          n == "pooled_scatter.json");
 }
 
 struct ReportInputs {

@@ -35,6 +35,8 @@ Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
       m.value("/inputs/seed_runs"_json_pointer, json()) == seeds &&
       m.value("/inputs/predicted_d_s_over_d50"_json_pointer, json()) ==
           json(opt.predicted_ds_d50) &&
+      m.value("/inputs/pooled_scatter"_json_pointer, json()) ==
+          (opt.pooled ? to_json(*opt.pooled) : json()) &&
       m.value("/inputs/form_limit_sha256"_json_pointer, json()) ==
           (opt.form_limit.empty() ? json() : json(io::sha256_hex(io::read_file(opt.form_limit)))) &&
       m.value("/inputs/parameters_sha256"_json_pointer, std::string()) ==
@@ -106,6 +108,23 @@ RunRecord load_run_record(const fs::path& compare_dir) {
   return r;
 }
 
+namespace {
+// One seed scatter per cell of the set (runs of one scene but for the seed), for the pooling.
+std::vector<SeedScatter> cell_scatters(const std::vector<DemRun>& dems) {
+  std::vector<SeedScatter> out;
+  std::vector<bool> done(dems.size(), false);
+  for (std::size_t i = 0; i < dems.size(); ++i) {
+    if (done[i]) continue;
+    std::vector<DemRun> seeds;
+    for (std::size_t j = i + 1; j < dems.size(); ++j)
+      if (!done[j] && same_scene_but_seed(dems[i], dems[j]))
+        seeds.push_back(dems[j]), done[j] = true;
+    out.push_back(seed_scatter(dems[i], seeds));
+  }
+  return out;
+}
+}  // namespace
+
 RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
   if (opt.dem_dirs.empty()) throw InputError("--runs: no DEM run directories given");
   const auto names = run_names(opt.dem_dirs);
@@ -119,6 +138,8 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
       {"kind", "hypothesis set"}, {"command_line", opt.command_line}, {"model", opt.model},
       {"parameters", opt.params}, {"started", io::utc_timestamp()},   {"status", "running"}};
   io::write_manifest(opt.out, manifest);
+  const PooledScatter pooled = pool_scatter(cell_scatters(dems));
+  io::write_atomically(opt.out / "pooled_scatter.json", to_json(pooled).dump(2) + "\n");
   RunSetOutcome outcome;
   std::vector<RunRecord> records;
   try {
@@ -128,6 +149,7 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
                        opt.allow_partial, opt.force, opt.command_line};
       c.predicted_ds_d50 = opt.predicted_ds_d50;
       c.form_limit = opt.form_limit;
+      if (opt.pool_scatter) c.pooled = pooled;
       for (const auto& seed : seeds_of(dems[i], dems)) c.seed_dirs.push_back(seed.dir);
       if (compare_or_reuse(c)) outcome.reused.push_back(names[i]);
       outcome.compare_dirs.push_back(c.out);

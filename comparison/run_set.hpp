@@ -23,6 +23,7 @@ struct RunSetOptions {
   std::string command_line;
   double predicted_ds_d50 = kDefaultPredictedDsD50;
   std::filesystem::path form_limit;  // CompareOptions::form_limit
+  bool pool_scatter = true;          // pool the seed scatter across cells where Levene allows
 };
 
 struct RunSetOutcome {

@@ -98,6 +98,7 @@ void quantity_scatter(const std::vector<const DemRun*>& all, SeedScatter& out) {
     out.quantity_mean[k] = ms.mean;
     out.quantity_sd[k] = ms.sd;
   }
+  out.quantity_values = values;
 }
 
 std::string summary_text(const DemRun& r, const char* key) {

@@ -40,6 +40,11 @@ struct SeedScatter {
   SeriesScatter tau, u_n, sigma_n;
   // per quantity of interest: mean and standard deviation over the seeds, each from its own curve
   std::map<std::string, double> quantity_mean, quantity_sd;
+  std::map<std::string, std::vector<double>> quantity_values;  // each admitted run's, in order
+  // Where the SD was pooled across cells (pooled_scatter.hpp): its degrees of freedom (the
+  // interval's t then has these, not seeds - 1) and a note for the verdict.
+  std::map<std::string, int> quantity_dof;
+  std::map<std::string, std::string> quantity_note;
   bool from_seeds() const { return runs.size() >= 2; }
 };
 

@@ -33,8 +33,8 @@ double floor_of(const QuantityInfo& q, double d50_mm) {
 }
 
 // What the verdict rests on: the t-interval, the detection limit, the seeds the tolerance needs.
-void add_statistics(Verdict& v, double scale) {
-  const SeedInterval i = seed_interval(v.dem_sd, v.seeds, v.tolerance, scale);
+void add_statistics(Verdict& v, double scale, std::optional<int> dof) {
+  const SeedInterval i = seed_interval(v.dem_sd, v.seeds, v.tolerance, scale, dof);
   v.dem_ci = i.ci, v.detection_limit = i.detection_limit, v.seeds_needed = i.seeds_needed;
 }
 
@@ -107,8 +107,12 @@ std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const 
     if (needs_end(q.key) && !reached_end) v.model = std::nullopt;
     const double scale = v.dem ? std::max(std::abs(*v.dem), floor_of(q, dem.d50_mm)) : 1.0;
     if (v.model && v.dem) v.error = (*v.model - *v.dem) / scale;
-    add_statistics(v, scale);
+    const auto dof = scatter.quantity_dof.find(q.key);
+    add_statistics(v, scale,
+                   dof == scatter.quantity_dof.end() ? std::nullopt : std::optional(dof->second));
     v.notes = notes_for(q.key, scatter);
+    if (const auto note = scatter.quantity_note.find(q.key); note != scatter.quantity_note.end())
+      v.notes.push_back(note->second);
     v.verdict = verdict_word(v.model ? v.error : std::nullopt, v.tolerance, scale, v.dem_ci);
     out.push_back(v);
   }
@@ -116,13 +120,20 @@ std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const 
 }
 
 SeedInterval seed_interval(std::optional<double> sd, std::size_t seeds, double tolerance,
-                           double scale) {
+                           double scale, std::optional<int> dof) {
   SeedInterval i{std::nullopt, tolerance, std::nullopt};
   if (!sd) return i;
-  i.ci = statistics::t_half_width(*sd, int(seeds));
+  const double target = kResolvedShareOfTolerance * tolerance * scale;
+  if (dof) {  // a pooled SD: t with its own degrees of freedom, whatever the cell's seeds
+    const double t = statistics::t_quantile(*dof);
+    if (seeds >= 2) i.ci = t * *sd / std::sqrt(double(seeds));
+    for (int n = 2; n <= kMostSeedsWorthSaying && !i.seeds_needed && *sd > 0.0; ++n)
+      if (t * *sd / std::sqrt(double(n)) <= target) i.seeds_needed = n;
+  } else {
+    i.ci = statistics::t_half_width(*sd, int(seeds));
+    i.seeds_needed = statistics::values_needed(*sd, target, kMostSeedsWorthSaying);
+  }
   if (i.ci) i.detection_limit = tolerance + *i.ci / scale;
-  i.seeds_needed = statistics::values_needed(*sd, kResolvedShareOfTolerance * tolerance * scale,
-                                             kMostSeedsWorthSaying);
   return i;
 }
 

@@ -59,8 +59,9 @@ struct SeedInterval {
   std::optional<double> ci, detection_limit;
   std::optional<int> seeds_needed;
 };
+// `dof`: the SD's degrees of freedom where it is not the seeds' own (a pooled SD); else seeds - 1.
 SeedInterval seed_interval(std::optional<double> sd, std::size_t seeds, double tolerance,
-                           double scale);
+                           double scale, std::optional<int> dof = std::nullopt);
 // "holds" within the tolerance, "within DEM scatter" when the miss lies inside the seed interval,
 // else "breaks"; "not reached" without an error.
 std::string verdict_word(std::optional<double> error, double tolerance, double scale,

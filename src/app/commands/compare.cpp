@@ -28,6 +28,7 @@ struct CompareCommand {
   comparison::CompareOptions options;
   std::string dem_dir, out;
   std::vector<std::string> set_runs, seed_runs;
+  bool own_scatter = false;
 };
 
 // `iwb compare --runs`: the set's comparisons, then the hypothesis verdicts.
@@ -42,6 +43,7 @@ int compare_set(const CompareCommand& o, const CommandContext& context) {
                                 context.command_line};
   opt.predicted_ds_d50 = c.predicted_ds_d50;
   opt.form_limit = c.form_limit;
+  opt.pool_scatter = !o.own_scatter;
   const auto outcome = comparison::run_hypothesis_set(opt);
   fmt::print("{} run(s) compared ({} reused) -> {}\n", outcome.compare_dirs.size(),
              outcome.reused.size(), opt.out.string());
@@ -135,6 +137,10 @@ void add_compare_command(CLI::App& app, CommandList& commands) {
                    "kappa_r (ERRATA 9); with --roughness-scheme arnold-herle")
       ->check(CLI::IsMember({"1/kappa_r", "kappa_r"}))
       ->excludes("--runs");
+  compare->add_flag("--own-scatter", o->own_scatter,
+                    "with --runs: each cell's own seed scatter, not the set's pooled one (pooled "
+                    "per quantity where Levene's test about the median does not reject equal "
+                    "relative scatter across cells of 3 or more runs; pooled_scatter.json)");
   compare
       ->add_option("--form-limit", copt.form_limit,
                    "a form-limit record of the model (iwb form-limit's form_limit.json): each "
