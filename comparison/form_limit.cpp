@@ -150,6 +150,9 @@ Fitted fit(const Problem& p, const FormLimitOptions& o) {
   }
   const auto t0 = std::chrono::steady_clock::now();
   int evaluations = 0;
+  // BOBYQA's budget, then each Levenberg-Marquardt iteration's central-difference Jacobian (2 n)
+  // and its step: the most the fit can take (it usually stops earlier)
+  const int budget = o.max_evaluations + o.polish_iterations * (2 * int(n) + 1);
   lsq.residuals = [&](const Eigen::VectorXd& x) {
     std::vector<double> r;
     for (std::size_t i = 0; i < p.fitted; ++i) {
@@ -158,11 +161,15 @@ Fitted fit(const Problem& p, const FormLimitOptions& o) {
       r.insert(r.end(), one.data(), one.data() + one.size());
     }
     const Eigen::VectorXd out = Eigen::Map<Eigen::VectorXd>(r.data(), Eigen::Index(r.size()));
-    if (++evaluations % 100 == 0 && o.progress)
+    if (++evaluations % 100 == 0 && o.progress) {
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       o.progress(fmt::format(
-          "form limit: {} evaluations, RMS {:.4g} scatter units, {:.0f} s", evaluations,
-          std::sqrt(out.squaredNorm() / double(out.size())),
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()));
+          "form limit: {} of at most {} evaluations, RMS {:.4g} scatter units, {:.0f} s, ETA at "
+          "most ~{:.0f} s",
+          evaluations, budget, std::sqrt(out.squaredNorm() / double(out.size())), seconds,
+          seconds / evaluations * std::max(0, budget - evaluations)));
+    }
     return out;
   };
   fitting::LeastSquaresSettings s;
