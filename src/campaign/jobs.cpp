@@ -30,14 +30,16 @@ std::string describe(const std::vector<Setting>& settings) {
 
 namespace {
 
-// A value as it reads in a file name: 0.5, 2 (also for 2.0), cnl; anything else outside
-// [a-z0-9.-] becomes '-'.
-std::string name_part(const io::TomlScalar& value) {
+// A value as it reads in a file name: 0.5, 2 (also for 2.0), cnl, a list by its first and last
+// values (0.5..1.7); anything else outside [a-z0-9.-] becomes '-'.
+std::string name_part(const io::TomlValue& value) {
   std::string text = std::visit(
       [](const auto& v) -> std::string {
         using T = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<T, std::string>)
           return v;
+        else if constexpr (std::is_same_v<T, std::vector<double>>)  // a list by its ends: 0.5..1.7
+          return fmt::format("{}..{}", v.front(), v.back());
         else if constexpr (std::is_same_v<T, double>)
           return fmt::format("{}", v);  // shortest round trip
         else
@@ -63,7 +65,7 @@ bool is_path_key(const std::string& dotted) {
 
 // A file names a job by its stem (file-sandblasted_like-6.3, not
 // file-..-walls-sandblasted-like.csv-6.3).
-std::string file_stem(const io::TomlScalar& value) {
+std::string file_stem(const io::TomlValue& value) {
   const auto* text = std::get_if<std::string>(&value);
   return text != nullptr ? fs::path(*text).stem().string() : io::to_toml(value);
 }
@@ -78,7 +80,7 @@ std::string job_name(const std::string& engine, bool several_engines,
     for (std::size_t k = 0; k < combination[i]->size(); ++k) {
       if (k > 0) name += '-';
       const auto& [key, value] = (*combination[i])[k];
-      name += name_part(is_path_key(key) ? io::TomlScalar(file_stem(value)) : value);
+      name += name_part(is_path_key(key) ? io::TomlValue(file_stem(value)) : value);
     }
   }
   return name.empty() ? "base" : name;

@@ -59,7 +59,7 @@ void collect_settings(const toml::table& table, const std::string& prefix, const
     if (const auto* sub = node->as_table())
       collect_settings(*sub, key, where, out);
     else
-      out.emplace_back(key, io::scalar_of(*node, fmt::format("{} {}", where, key)));
+      out.emplace_back(key, io::toml_value_of(*node, fmt::format("{} {}", where, key)));
   }
 }
 
@@ -96,7 +96,7 @@ Axis read_axis(io::TableReader& t) {
     if (const auto* table = v.as_table())
       collect_settings(*table, a.key, t.where("values") + ":", value);
     else
-      value.emplace_back(a.key, io::scalar_of(v, t.where("values")));
+      value.emplace_back(a.key, io::toml_value_of(v, t.where("values")));
     if (value.empty())
       throw InputError(fmt::format("{}: an empty table sets nothing", t.where("values")));
     a.values.push_back(std::move(value));

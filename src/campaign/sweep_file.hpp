@@ -12,7 +12,7 @@
 
 namespace iwb::campaign {
 
-using Setting = std::pair<std::string, io::TomlScalar>;  // dotted scene key, value
+using Setting = std::pair<std::string, io::TomlValue>;  // dotted scene key, value
 
 // One value of an axis: usually one key, but an inline table sets several keys of one table
 // together ({type = "CNS", K_kPa_per_mm = 50}: K is refused by the scene under CNL and CV).

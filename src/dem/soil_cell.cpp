@@ -296,7 +296,7 @@ std::string cell_scene_text(const std::string& text, const std::string& source,
   const double travel_mm = oedometer(c) ? d50_mm : c.gamma * c.height_d50 * d50_mm;
   const std::string what =
       oedometer(c) ? "oedometer" : fmt::format("simple shear {}", driver::to_string(c.boundary));
-  const auto set = [&](const std::string& key, const io::TomlScalar& v) {
+  const auto set = [&](const std::string& key, const io::TomlValue& v) {
     io::set_dotted(root, key, v, source);
   };
   set("description",

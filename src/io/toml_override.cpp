@@ -1,6 +1,7 @@
 #include "io/toml_override.hpp"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <sstream>
 
@@ -9,22 +10,34 @@
 
 namespace iwb::io {
 
-TomlScalar scalar_of(const toml::node& node, const std::string& where) {
+TomlValue toml_value_of(const toml::node& node, const std::string& where) {
   if (auto v = node.as_integer()) return v->get();
   if (auto v = node.as_floating_point()) return v->get();
   if (auto v = node.as_boolean()) return v->get();
   if (auto v = node.as_string()) return v->get();
+  if (const auto* a = node.as_array(); a && !a->empty()) {  // a list of numbers, or nothing
+    std::vector<double> out;
+    for (const auto& e : *a) {
+      const auto x = e.value<double>();
+      if (!x) break;
+      out.push_back(*x);
+    }
+    if (out.size() == a->size()) return out;
+  }
   throw InputError(
-      fmt::format("{} = {}: a number, a boolean or a string is needed", where, describe(node)));
+      fmt::format("{} = {}: a number, a boolean, a string or a list of numbers is needed", where,
+                  describe(node)));
 }
 
-std::string to_toml(const TomlScalar& value) {
+std::string to_toml(const TomlValue& value) {
   std::ostringstream os;
   std::visit(
       [&os](const auto& v) {
         using T = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<T, std::string>)
           os << toml::value<std::string>(v);
+        else if constexpr (std::is_same_v<T, std::vector<double>>)
+          os << fmt::format("[{}]", fmt::join(v, ", "));
         else if constexpr (std::is_same_v<T, bool>)
           os << (v ? "true" : "false");
         else
@@ -35,12 +48,23 @@ std::string to_toml(const TomlScalar& value) {
 }
 
 namespace {
-void insert_scalar(toml::table& table, const std::string& key, const TomlScalar& value) {
-  std::visit([&](const auto& v) { table.insert_or_assign(key, v); }, value);
+void insert_value(toml::table& table, const std::string& key, const TomlValue& value) {
+  std::visit(
+      [&](const auto& v) {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::vector<double>>) {
+          toml::array a;
+          for (const double x : v) a.push_back(x);
+          table.insert_or_assign(key, std::move(a));
+        } else {
+          table.insert_or_assign(key, v);
+        }
+      },
+      value);
 }
 }  // namespace
 
-void set_dotted(toml::table& root, const std::string& dotted_key, const TomlScalar& value,
+void set_dotted(toml::table& root, const std::string& dotted_key, const TomlValue& value,
                 const std::string& source) {
   toml::table* table = &root;
   std::string path;
@@ -58,10 +82,13 @@ void set_dotted(toml::table& root, const std::string& dotted_key, const TomlScal
   if (leaf.empty() || dotted_key.front() == '.')
     throw InputError(
         fmt::format("{}: '{}' is not a dotted key (e.g. wall.height_d50)", source, dotted_key));
-  if (auto* existing = table->get(leaf); existing && (existing->is_table() || existing->is_array()))
+  const bool list = std::holds_alternative<std::vector<double>>(value);
+  // a list replaces a list and a scalar a scalar: the scene's key is one or the other
+  if (auto* existing = table->get(leaf);
+      existing && (existing->is_table() || existing->is_array() != list))
     throw InputError(fmt::format("{}: cannot set '{}' = {}: it holds {} in the base", source,
                                  dotted_key, to_toml(value), describe(*existing)));
-  insert_scalar(*table, leaf, value);
+  insert_value(*table, leaf, value);
 }
 
 std::string serialise(const toml::table& root) {

@@ -36,3 +36,25 @@ TEST_CASE("to_toml writes values as TOML does", "[io]") {
   CHECK(io::to_toml(true) == "true");
   CHECK(io::to_toml(std::string("CNL")) == "'CNL'");  // toml++ writes literal strings
 }
+
+// A grading is a list: the gradings campaign (data/sweeps/grains_cu*.toml) sets d_over_d50 and
+// mass_fraction by an axis value; a list replaces a list, never a scalar or a table.
+TEST_CASE("a list of numbers is read, written and set in place of the base's list", "[io]") {
+  const auto doc = io::parse_toml_text("a = [0.5, 1, 1.7]\nb = [1, 'x']\nc = []\n", "v.toml");
+  const auto a = io::toml_value_of(*doc.get("a"), "v.toml a");
+  REQUIRE(std::holds_alternative<std::vector<double>>(a));
+  CHECK(std::get<std::vector<double>>(a) == std::vector<double>{0.5, 1.0, 1.7});
+  CHECK(io::to_toml(a) == "[0.5, 1, 1.7]");
+  CHECK_THROWS_WITH(io::toml_value_of(*doc.get("b"), "v.toml b"),
+                    Catch::Contains("v.toml b") && Catch::Contains("a list of numbers"));
+  CHECK_THROWS_AS(io::toml_value_of(*doc.get("c"), "v.toml c"), InputError);
+  auto root = io::parse_toml_text("[particles]\nd_over_d50 = [0.8, 1.0, 1.2]\nd50_mm = 2.0\n", "s");
+  io::set_dotted(root, "particles.d_over_d50", std::vector<double>{0.3, 1.0, 2.2}, "t");
+  const auto again = io::parse_toml_text(io::serialise(root), "again.toml");
+  const auto* list = again["particles"]["d_over_d50"].as_array();
+  REQUIRE(list != nullptr);
+  CHECK(list->size() == 3);
+  CHECK(list->get(2)->value<double>() == 2.2);
+  CHECK_THROWS_WITH(io::set_dotted(root, "particles.d50_mm", std::vector<double>{1.0}, "t"),
+                    Catch::Contains("cannot set"));
+}

@@ -21,7 +21,7 @@ namespace {
 
 fs::path tiny_scene(const fs::path& dir) {
   auto root = io::parse_toml_text(io::read_file("data/scenes/smoke.toml"), "smoke.toml");
-  const std::vector<std::pair<std::string, io::TomlScalar>> cut = {
+  const std::vector<std::pair<std::string, io::TomlValue>> cut = {
       {"specimen.height_d50", 4.0},
       {"specimen.particles", std::int64_t(180)},
       {"shear.inertial_number", 1e-2},
