@@ -164,9 +164,6 @@ std::vector<Variant> standard_variants(const DemRun& dem, const std::string& mod
   return out;
 }
 
-namespace {
-// --roughness-scheme and --f-c applied to a variant's wall; InputError for what the model does not
-// take.
 void chosen_roughness(const CompareOptions& opt, models::Roughness& r) {
   const auto& support = models::find_model(opt.model).declaration.roughness;
   if (!opt.roughness_scheme.empty()) {
@@ -186,7 +183,6 @@ void chosen_roughness(const CompareOptions& opt, models::Roughness& r) {
     r.f_c = models::parse_arnold_herle_factor(opt.f_c, "--f-c");
   }
 }
-}  // namespace
 
 // The cyclic quantities of the runs the seed statistics rest on (seed_scatter's: the compared run
 // first unless it was left out), as the monotonic verdicts'.

@@ -62,6 +62,10 @@ std::vector<Variant> standard_variants(const DemRun& dem, const std::string& mod
 
 nlohmann::json run_comparison(const CompareOptions& options);
 
+// --roughness-scheme and --f-c of `options` applied to a variant's wall; InputError for what the
+// model does not take (checked before a comparison or a set writes anything).
+void chosen_roughness(const CompareOptions& options, models::Roughness& roughness);
+
 // The parameter file read and validated for `model` (InputError naming the file, key and value):
 // checked before a comparison writes anything.
 models::ModelInputs validated_parameters(const std::string& model, const std::string& params);

@@ -35,6 +35,8 @@ Earlier earlier_comparison(const fs::path& dir, const CompareOptions& opt) {
       m.value("/inputs/seed_runs"_json_pointer, json()) == seeds &&
       m.value("/inputs/predicted_d_s_over_d50"_json_pointer, json()) ==
           json(opt.predicted_ds_d50) &&
+      m.value("/inputs/roughness_scheme"_json_pointer, std::string()) == opt.roughness_scheme &&
+      m.value("/inputs/f_c"_json_pointer, std::string()) == opt.f_c &&
       m.value("/inputs/pooled_scatter"_json_pointer, json()) ==
           (opt.pooled ? to_json(*opt.pooled) : json()) &&
       m.value("/inputs/form_limit_sha256"_json_pointer, json()) ==
@@ -133,6 +135,12 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
   for (const auto& d : opt.dem_dirs) dems.push_back(load_dem_run(d, opt.allow_partial));
   validated_parameters(opt.model, opt.params);
   if (!opt.form_limit.empty()) read_form_limit(opt.form_limit, opt.model);
+  if (!opt.roughness_scheme.empty() || !opt.f_c.empty()) {
+    CompareOptions c;
+    c.model = opt.model, c.roughness_scheme = opt.roughness_scheme, c.f_c = opt.f_c;
+    models::Roughness r{models::find_model(opt.model).declaration.roughness.default_scheme, 1.0};
+    chosen_roughness(c, r);  // refused here, before OUT is made
+  }
   fs::create_directories(opt.out);
   json manifest = {
       {"kind", "hypothesis set"}, {"command_line", opt.command_line}, {"model", opt.model},
@@ -149,6 +157,7 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
                        opt.allow_partial, opt.force, opt.command_line};
       c.predicted_ds_d50 = opt.predicted_ds_d50;
       c.form_limit = opt.form_limit;
+      c.roughness_scheme = opt.roughness_scheme, c.f_c = opt.f_c;
       if (opt.pool_scatter) c.pooled = pooled;
       for (const auto& seed : seeds_of(dems[i], dems)) c.seed_dirs.push_back(seed.dir);
       if (compare_or_reuse(c)) outcome.reused.push_back(names[i]);

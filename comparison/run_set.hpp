@@ -22,8 +22,9 @@ struct RunSetOptions {
   bool force = false;  // replace complete comparisons of other inputs
   std::string command_line;
   double predicted_ds_d50 = kDefaultPredictedDsD50;
-  std::filesystem::path form_limit;  // CompareOptions::form_limit
-  bool pool_scatter = true;          // pool the seed scatter across cells where Levene allows
+  std::filesystem::path form_limit;   // CompareOptions::form_limit
+  std::string roughness_scheme, f_c;  // CompareOptions' (empty: the model's defaults)
+  bool pool_scatter = true;           // pool the seed scatter across cells where Levene allows
 };
 
 struct RunSetOutcome {

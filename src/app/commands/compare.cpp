@@ -43,6 +43,7 @@ int compare_set(const CompareCommand& o, const CommandContext& context) {
                                 context.command_line};
   opt.predicted_ds_d50 = c.predicted_ds_d50;
   opt.form_limit = c.form_limit;
+  opt.roughness_scheme = c.roughness_scheme, opt.f_c = c.f_c;
   opt.pool_scatter = !o.own_scatter;
   const auto outcome = comparison::run_hypothesis_set(opt);
   fmt::print("{} run(s) compared ({} reused) -> {}\n", outcome.compare_dirs.size(),
@@ -125,18 +126,16 @@ void add_compare_command(CLI::App& app, CommandList& commands) {
       ->check(input_file());
   compare->add_option("--out,-o", o->out, "output directory (default runs/compare-<dem run>)")
       ->check(output_directory());
-  compare
-      ->add_option("--roughness-scheme", copt.roughness_scheme,
-                   "the wall's roughness scheme for every variant instead of the model's default "
-                   "(one the model "
-                   "declares: iwb models)")
-      ->excludes("--runs");
+  compare->add_option(
+      "--roughness-scheme", copt.roughness_scheme,
+      "the wall's roughness scheme for every variant instead of the model's default "
+      "(one the model "
+      "declares: iwb models)");
   compare
       ->add_option("--f-c", copt.f_c,
                    "Arnold & Herle's rate factor: 1/kappa_r (eq. 5.40 as printed, default) or "
                    "kappa_r (ERRATA 9); with --roughness-scheme arnold-herle")
-      ->check(CLI::IsMember({"1/kappa_r", "kappa_r"}))
-      ->excludes("--runs");
+      ->check(CLI::IsMember({"1/kappa_r", "kappa_r"}));
   compare->add_flag("--own-scatter", o->own_scatter,
                     "with --runs: each cell's own seed scatter, not the set's pooled one (pooled "
                     "per quantity where Levene's test about the median does not reject equal "
