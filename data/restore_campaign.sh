@@ -8,6 +8,7 @@ from=$1 to=$2
 [ -d "$from/runs" ] || exit 0  # nothing committed yet
 mkdir -p "$to/runs"
 restored=0
+shopt -s nullglob  # a campaign whose first run is not complete has an empty runs/
 for run in "$from"/runs/*/; do
   name=$(basename "$run")
   [ -e "$to/runs/$name" ] && continue
