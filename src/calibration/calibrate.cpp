@@ -28,15 +28,44 @@ struct BoxEntry {
 };
 using Boxes = std::vector<BoxEntry>;
 
-// The table a model is calibrated on: the one of its tables whose parameters declare boxes.
-const models::ParameterTable& calibrated_table(const std::string& model) {
-  for (const auto* t : models::find_model(model).tables)
-    for (const auto& e : t->entries)
-      if (e.calibration) return *t;
+// The table a model is calibrated on: `name`, or the first of its tables whose parameters declare
+// boxes.
+const models::ParameterTable& calibrated_table(const std::string& model, const std::string& name) {
+  const auto declares_boxes = [](const models::ParameterTable& t) {
+    return std::any_of(t.entries.begin(), t.entries.end(),
+                       [](const auto& e) { return e.calibration.has_value(); });
+  };
+  std::string tables;
+  for (const auto* t : models::find_model(model).tables) {
+    if (!declares_boxes(*t)) continue;
+    if (name.empty() || t->name == name) return *t;
+    tables += (tables.empty() ? "" : ", ") + t->name;
+  }
+  if (!name.empty())
+    throw InputError(fmt::format(
+        "calibrate --table {}: model '{}' has no such table with calibration boxes (it has: {})",
+        name, model, tables.empty() ? "none" : tables));
   throw InputError(fmt::format(
       "calibrate: model '{}' declares no calibration box for any parameter; it cannot be "
       "calibrated",
       model));
+}
+
+// Every table of the model but the fitted one must be held at given values.
+void check_held(const std::string& model, const std::string& fitted,
+                const std::map<std::string, models::ParameterValues>& held) {
+  for (const auto* t : models::find_model(model).tables)
+    if (t->name != fitted && held.count(t->name) == 0)
+      throw InputError(fmt::format(
+          "calibrate: model '{}' needs [{}] held while [{}] is fitted; give a parameter file "
+          "with it (--params)",
+          model, t->name, fitted));
+}
+
+// The hypoplastic table has a recipe (Herle & Gudehus's stages A-D); any other table starts at
+// the middle of its boxes (geometric for a logarithmic box) and goes straight to the joint fit.
+bool has_staged_start(const models::ParameterTable& table) {
+  return &table == &models::HypoplasticParameters::table();
 }
 
 Boxes declared_boxes(const models::ParameterTable& table) {
@@ -106,6 +135,7 @@ struct Calibrator {
 
   models::ModelInputs inputs(const models::ParameterValues& v) const {
     models::ModelInputs in;
+    in.tables = options.held;
     in.tables[table] = v;
     in.source = "calibration trial";
     return in;
@@ -288,8 +318,9 @@ void stage_density(Calibrator& c, const CalibrationOptions& o) {
                   c.current["alpha"], c.current["beta"], r.rmse, r.stop_reason));
 }
 
-// Start: middle-of-the-box exponents, void ratios around the loosest initial state.
-models::ParameterValues starting_values(const std::vector<SoilTest>& tests) {
+// Start of the hypoplastic recipe: middle-of-the-box exponents, void ratios around the loosest
+// initial state.
+models::ParameterValues staged_starting_values(const std::vector<SoilTest>& tests) {
   double loosest = 0.0;
   for (const auto& t : tests) loosest = std::max(loosest, t.e0);
   models::ParameterValues v{{"phi_c_deg", 30.0},     {"hs_kPa", 1e6}, {"n", 0.3},
@@ -348,6 +379,10 @@ JointFit joint_fit(Calibrator& c, const CalibrationOptions& o) {
   for (const auto& b : c.boxes)
     if (!c.is_fixed(b.key)) j.keys.push_back(b.key);
   if (j.keys.empty()) throw InputError("calibrate: every parameter is fixed; nothing to fit");
+  if (c.residuals(c.current, c.all()).size() == 0)
+    throw InputError(
+        "calibrate: no test gives a residual to a group of weight > 0 (--weight); nothing to "
+        "fit");
   j.result =
       c.fit(j.keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
   for (const char* limit : {"ed0", "ei0"}) {
@@ -427,6 +462,14 @@ void check_fixed(const models::ParameterTable& table, const Boxes& boxes,
   }
 }
 
+// Any other table: the middle of each box.
+models::ParameterValues box_middles(const Boxes& boxes) {
+  models::ParameterValues v;
+  for (const auto& b : boxes)
+    v[b.key] = from_fit(b, 0.5 * (to_fit(b, b.lower) + to_fit(b, b.upper)));
+  return v;
+}
+
 }  // namespace
 
 models::ParameterValues CalibrationResult::values() const {
@@ -435,11 +478,15 @@ models::ParameterValues CalibrationResult::values() const {
   return v;
 }
 
-TestFit test_fit(const SoilTest& t, const std::string& model,
-                 const models::ParameterValues& values) {
+models::ModelInputs CalibrationResult::inputs() const {
   models::ModelInputs in;
-  in.tables[calibrated_table(model).name] = values;
+  in.tables = held;
+  in.tables[table] = values();
   in.source = "calibrated set";
+  return in;
+}
+
+TestFit test_fit(const SoilTest& t, const std::string& model, const models::ModelInputs& in) {
   const Simulated s = simulate(t, model, in);
   TestFit f{t.name,
             to_string(t.kind),
@@ -461,7 +508,7 @@ TestFit test_fit(const SoilTest& t, const std::string& model,
                       end_model, end_data});
   };
   rmse("e", s.e, t.e);
-  if (t.kind == SoilTestKind::kSimpleShear) {
+  if (is_shear(t.kind)) {
     rmse("tau_kPa", s.tau_kPa, t.tau_kPa);
     rmse("sigma_n_kPa", s.sigma_n_kPa, t.sigma_n_kPa);
   }
@@ -474,11 +521,7 @@ TestFit test_fit(const SoilTest& t, const std::string& model,
 }
 
 std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::string& model,
-                                 const models::ParameterValues& values,
-                                 const ObjectiveWeights& weights) {
-  models::ModelInputs in;
-  in.tables[calibrated_table(model).name] = values;
-  in.source = "calibrated set";
+                                 const models::ModelInputs& in, const ObjectiveWeights& weights) {
   std::vector<std::vector<double>> residuals(kObjectiveGroups.size());
   for (const auto& t : tests) {
     const Simulated s = simulate(t, model, in);
@@ -496,6 +539,7 @@ std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::
       else
         squares += x * x;
     const std::size_t reached = r.size() - unreached;
+    if (r.empty()) continue;  // no test of this group
     out.push_back({g, weights[g], r.size(),
                    reached == 0 ? 0.0 : std::sqrt(squares / double(reached)), unreached});
   }
@@ -505,13 +549,26 @@ std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::
 CalibrationResult calibrate(const std::vector<SoilTest>& tests, const CalibrationOptions& o) {
   if (tests.empty()) throw InputError("calibrate: no soil tests given");
   const auto t0 = std::chrono::steady_clock::now();
-  const auto& table = calibrated_table(o.model);
+  const auto& table = calibrated_table(o.model, o.table);
   const Boxes boxes = declared_boxes(table);
   check_fixed(table, boxes, o.fixed);
-  Calibrator c{tests, o, table.name, boxes, o.start.value_or(starting_values(tests)), {}, 0, {}};
+  check_held(o.model, table.name, o.held);
+  const bool staged = has_staged_start(table) && !o.start;
+  Calibrator c{tests,
+               o,
+               table.name,
+               boxes,
+               o.start.value_or(staged ? staged_starting_values(tests) : box_middles(boxes)),
+               {},
+               0,
+               {}};
   c.pin(c.current);
   if (o.start) {
     c.notes.push_back("start: the given set (the staged estimate A-D skipped)");
+  } else if (!staged) {
+    c.notes.push_back(
+        fmt::format("start: the middle of each calibration box of [{}] (no staged recipe for it){}",
+                    table.name, o.held.empty() ? "" : "; the model's other tables held as given"));
   } else {
     const Indices critical = critical_tests(c);
     stage_phi_c(c, critical);
@@ -533,6 +590,7 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
   CalibrationResult out;
   out.model = o.model;
   out.table = table.name;
+  out.held = o.held;
   out.converged = joint.result.converged;
   if (!joint.result.converged)
     c.notes.push_back(
@@ -546,8 +604,9 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
         fmt::format("{} is not identifiable from these tests (sigma beyond {} of its box): "
                     "set from e_c0 by the usual factor",
                     k, kUnidentifiedShareOfBox));
-  for (const auto& t : tests) out.tests.push_back(test_fit(t, o.model, c.current));
-  out.objectives = group_fits(tests, o.model, c.current, o.weights);
+  const models::ModelInputs fitted = c.inputs(c.current);
+  for (const auto& t : tests) out.tests.push_back(test_fit(t, o.model, fitted));
+  out.objectives = group_fits(tests, o.model, fitted, o.weights);
   out.notes = c.notes;
   out.evaluations = c.evaluations;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

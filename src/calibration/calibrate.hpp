@@ -16,6 +16,7 @@
 //             the output says so.
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -24,6 +25,7 @@
 #include "calibration/objectives.hpp"
 #include "calibration/soil_test.hpp"
 #include "models/parameters.hpp"
+#include "models/registry.hpp"
 
 namespace iwb::calibration {
 
@@ -59,6 +61,13 @@ inline constexpr double kCriticalVoidChange = 0.002;
 
 struct CalibrationOptions {
   std::string model = "vw3d";
+  // The table fitted: empty for the model's first table that declares calibration boxes
+  // ([hypoplastic] of vw3d). Its staged start (A-D) is the hypoplastic table's recipe; another
+  // table (the -igs models' [intergranular_strain]) starts at the middle of its boxes.
+  std::string table = {};
+  // The model's other tables, held at these values (a monotonic set while the intergranular
+  // strain is fitted); every table the model needs but the fitted one must be here.
+  std::map<std::string, models::ParameterValues> held = {};
   // The joint fit's objective (objectives.hpp); the staged start always weighs every group 1.
   ObjectiveWeights weights = {};
   // Parameters held at a given value and not fitted (keys of the model's calibrated table).
@@ -115,6 +124,7 @@ struct GroupFit {
 struct CalibrationResult {
   std::string model;
   std::string table;  // the parameter table fitted ("hypoplastic")
+  std::map<std::string, models::ParameterValues> held;  // the other tables, as given
   std::vector<GroupFit> objectives;
   std::vector<ParameterEstimate> parameters;
   std::vector<TestFit> tests;
@@ -125,6 +135,8 @@ struct CalibrationResult {
   double seconds = 0.0;
   bool converged = false;  // the joint fit stopped on its convergence test, not on a limit
   models::ParameterValues values() const;
+  // The model's inputs with the fitted set: the held tables and the fitted one.
+  models::ModelInputs inputs() const;
 };
 
 // InputError for no tests, a model without calibration boxes, and a fixed key the model does not
@@ -132,15 +144,15 @@ struct CalibrationResult {
 CalibrationResult calibrate(const std::vector<SoilTest>& tests,
                             const CalibrationOptions& options = {});
 
-// Each objective group's RMS (unweighted, scatter units) over `tests` run with `values`.
+// Each objective group's RMS (unweighted, scatter units) over `tests` run with `inputs`; groups
+// no test gives a residual to are left out.
 std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::string& model,
-                                 const models::ParameterValues& values,
+                                 const models::ModelInputs& inputs,
                                  const ObjectiveWeights& weights);
 
 // A test run through `model` with a parameter set: its RMSE per column and end values. For the
 // tests of a fit, and for a test held out of it (a prediction).
-TestFit test_fit(const SoilTest& test, const std::string& model,
-                 const models::ParameterValues& values);
+TestFit test_fit(const SoilTest& test, const std::string& model, const models::ModelInputs& inputs);
 
 struct ParetoFront;
 

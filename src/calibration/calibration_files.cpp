@@ -41,6 +41,10 @@ std::string parameter_file_text(const CalibrationResult& r, const std::vector<So
   s += fmt::format("# Command: {}\n[{}]\n", command_line, r.table);
   for (const auto& p : r.parameters)
     s += fmt::format("{} = {:.9g}  # {} ({})\n", p.key, p.value, sigma_text(p), p.how);
+  for (const auto& [table, values] : r.held) {
+    s += fmt::format("\n# held as given (--params), not fitted\n[{}]\n", table);
+    for (const auto& [key, value] : values) s += fmt::format("{} = {:.9g}\n", key, value);
+  }
   return s;
 }
 
@@ -57,6 +61,8 @@ nlohmann::json calibration_json(const CalibrationResult& r, const std::vector<So
   nlohmann::json j;
   j["kind"] = "calibration";
   j["model"] = r.model;
+  j["table"] = r.table;
+  if (!r.held.empty()) j["held"] = r.held;
   j["command_line"] = command_line;
   j["finished"] = io::utc_timestamp();
   j["wall_seconds"] = r.seconds;

@@ -19,6 +19,8 @@ const char* to_string(ObjectiveGroup g) {
       return "shear";
     case ObjectiveGroup::kDilatancy:
       return "dilatancy";
+    case ObjectiveGroup::kCyclic:
+      return "cyclic";
   }
   return "?";
 }
@@ -32,6 +34,8 @@ const char* describe(ObjectiveGroup g) {
     case ObjectiveGroup::kDilatancy:
       return "per CNL simple-shear test, the peak dilatancy rate d eps_n/d gamma and the total "
              "dilation (e at the end)";
+    case ObjectiveGroup::kCyclic:
+      return "the cyclic simple-shear paths, row by row: tau and e (CNL), tau and sigma_n (CV)";
   }
   return "?";
 }
@@ -107,6 +111,19 @@ double or_declared(double measured, double declared) {
   return measured > 0.0 ? measured : declared;
 }
 
+// The group whose residuals are a test's path, row by row.
+ObjectiveGroup path_group(SoilTestKind k) {
+  switch (k) {
+    case SoilTestKind::kOedometer:
+      return ObjectiveGroup::kOedometer;
+    case SoilTestKind::kSimpleShear:
+      return ObjectiveGroup::kShear;
+    case SoilTestKind::kCyclicShear:
+      return ObjectiveGroup::kCyclic;
+  }
+  return ObjectiveGroup::kShear;
+}
+
 void append_path_residuals(ObjectiveGroup g, const SoilTest& t, const Simulated& s,
                            std::vector<double>& r) {
   const double declared_stress = kStressRatioScale * t.sigma0_kPa;
@@ -114,7 +131,7 @@ void append_path_residuals(ObjectiveGroup g, const SoilTest& t, const Simulated&
   const double sigma_scale = or_declared(t.scales.sigma_n_kPa, declared_stress);
   const double e_scale = or_declared(t.scales.e, kVoidRatioScale);
   const bool oedometer = t.kind == SoilTestKind::kOedometer;
-  if (oedometer != (g == ObjectiveGroup::kOedometer)) return;
+  if (g != path_group(t.kind)) return;
   for (std::size_t i = 1; i < t.rows(); ++i) {
     const bool reached = i < s.rows();
     const auto add = [&](const std::vector<double>& model, double measured, double scale) {

@@ -9,6 +9,9 @@
 //   dilatancy  per CNL simple-shear test, the peak dilatancy rate d eps_n / d gamma and the total
 //              dilation (e at the end): the two numbers an interface's dilation is judged by,
 //              which a whole-path fit can trade away for its many rows (data/dilatancy/).
+//   cyclic     the cyclic simple-shear paths, row by row as `shear`: what the intergranular
+//              strain's parameters are fitted to (issue 34), weighed apart from the monotonic
+//              paths so that a front can trade one against the other.
 #include <array>
 #include <string>
 #include <vector>
@@ -18,9 +21,10 @@
 
 namespace iwb::calibration {
 
-enum class ObjectiveGroup { kOedometer, kShear, kDilatancy };
-inline constexpr std::array<ObjectiveGroup, 3> kObjectiveGroups{
-    ObjectiveGroup::kOedometer, ObjectiveGroup::kShear, ObjectiveGroup::kDilatancy};
+enum class ObjectiveGroup { kOedometer, kShear, kDilatancy, kCyclic };
+inline constexpr std::array<ObjectiveGroup, 4> kObjectiveGroups{
+    ObjectiveGroup::kOedometer, ObjectiveGroup::kShear, ObjectiveGroup::kDilatancy,
+    ObjectiveGroup::kCyclic};
 
 const char* to_string(ObjectiveGroup g);
 // One line: what the group's residuals are (for --help and the outputs).
@@ -29,7 +33,7 @@ const char* describe(ObjectiveGroup g);
 ObjectiveGroup objective_group(const std::string& name, const std::string& where);
 
 struct ObjectiveWeights {
-  std::array<double, kObjectiveGroups.size()> weight{1.0, 1.0, 1.0};
+  std::array<double, kObjectiveGroups.size()> weight{1.0, 1.0, 1.0, 1.0};
   double& operator[](ObjectiveGroup g) { return weight[std::size_t(g)]; }
   double operator[](ObjectiveGroup g) const { return weight[std::size_t(g)]; }
 };

@@ -8,14 +8,25 @@
 
 namespace iwb::calibration {
 
+namespace {
+
+double largest_gamma(const SoilTest& t) {
+  double g = 0.0;
+  for (const double x : t.control) g = std::max(g, std::abs(x));
+  return g;
+}
+
+}  // namespace
+
 bool same_design(const SoilTest& a, const SoilTest& b) {
   // sigma0 within 5 %: an oedometer records the stress its servo reached (10.19 and 10.05 kPa for
-  // two seeds of a 10 kPa start); designs of a campaign differ by factors of 2 or more.
-  constexpr double kSameStress = 0.05;
+  // two seeds of a 10 kPa start); designs of a campaign differ by factors of 2 or more. The same
+  // holds for the amplitude of cyclic tests.
+  constexpr double kSame = 0.05;
+  const auto close = [](double x, double y) { return std::abs(x - y) <= kSame * std::max(x, y); };
   return a.kind == b.kind && a.boundary == b.boundary && a.specimen == b.specimen &&
-         a.source == b.source &&
-         std::abs(a.sigma0_kPa - b.sigma0_kPa) <=
-             kSameStress * std::max(a.sigma0_kPa, b.sigma0_kPa);
+         a.source == b.source && close(a.sigma0_kPa, b.sigma0_kPa) &&
+         (a.kind != SoilTestKind::kCyclicShear || close(largest_gamma(a), largest_gamma(b)));
 }
 
 namespace {
@@ -60,7 +71,7 @@ void measure_seed_scatter(std::vector<SoilTest>& tests) {
     std::vector<const SoilTest*> members;
     for (const auto j : group) members.push_back(&tests[j]);
     const double stress_floor = kStressRatioScale * tests[i].sigma0_kPa;
-    const bool shear = tests[i].kind == SoilTestKind::kSimpleShear;
+    const bool shear = is_shear(tests[i].kind);
     ResidualScales s;
     s.replicates = int(group.size());
     s.e = std::max(kVoidRatioScale, row_scatter(members, &SoilTest::e));
@@ -68,7 +79,8 @@ void measure_seed_scatter(std::vector<SoilTest>& tests) {
         shear ? std::max(stress_floor, row_scatter(members, &SoilTest::tau_kPa)) : stress_floor;
     s.sigma_n_kPa =
         shear ? std::max(stress_floor, row_scatter(members, &SoilTest::sigma_n_kPa)) : stress_floor;
-    if (shear && tests[i].boundary == driver::BoundaryKind::kCNL)
+    if (tests[i].kind == SoilTestKind::kSimpleShear &&
+        tests[i].boundary == driver::BoundaryKind::kCNL)
       s.dilatancy_rate = std::max(kDilatancyRateScale, rate_scatter(members));
     for (const auto j : group) tests[j].scales = s;
   }

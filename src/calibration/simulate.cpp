@@ -60,8 +60,9 @@ Simulated simulate(const SoilTest& test, const std::string& model_name,
   models::StateVector initial;
   try {
     model = models::find_model(model_name).make(inputs);
-    initial =
-        model->initial_state({test.sigma0_kPa, initial_K0(test, model_name, inputs), test.e0});
+    models::InitialState start{test.sigma0_kPa, initial_K0(test, model_name, inputs), test.e0};
+    start.delta_along_compression = true;  // the cell was consolidated vertically (soil_cell.hpp)
+    initial = model->initial_state(start);
   } catch (const InputError& e) {
     out.status = fmt::format("refused: {}", e.what());
     return out;

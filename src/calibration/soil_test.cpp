@@ -15,7 +15,23 @@ namespace iwb::calibration {
 namespace fs = std::filesystem;
 
 const char* to_string(SoilTestKind k) {
-  return k == SoilTestKind::kOedometer ? "oedometer" : "simpleshear";
+  switch (k) {
+    case SoilTestKind::kOedometer:
+      return "oedometer";
+    case SoilTestKind::kSimpleShear:
+      return "simpleshear";
+    case SoilTestKind::kCyclicShear:
+      return "cyclicshear";
+  }
+  return "?";
+}
+
+SoilTestKind soil_test_kind(const std::string& name, const std::string& where) {
+  for (const auto k :
+       {SoilTestKind::kOedometer, SoilTestKind::kSimpleShear, SoilTestKind::kCyclicShear})
+    if (name == to_string(k)) return k;
+  throw InputError(
+      fmt::format("{} = '{}': allowed oedometer, simpleshear or cyclicshear", where, name));
 }
 
 std::size_t SoilTest::loading_end() const {
@@ -51,17 +67,19 @@ double require_positive(const nlohmann::json& m, const std::string& key, const f
   return v;
 }
 
+constexpr const char* kTestNames = "\"oedometer\", \"simpleshear\" or \"cyclicshear\"";
+
 void read_header(SoilTest& t, const fs::path& file) {
   const auto m = read_manifest(file);
   if (require<std::string>(m, "kind", file, "\"soiltest\"") != "soiltest")
     throw InputError(
         fmt::format("{}: key 'kind' = {} should be \"soiltest\"", file.string(), m["kind"].dump()));
-  const auto test = require<std::string>(m, "test", file, "\"oedometer\" or \"simpleshear\"");
+  const auto test = require<std::string>(m, "test", file, kTestNames);
   if (test == "oedometer") {
     t.kind = SoilTestKind::kOedometer;
     t.sigma0_kPa = require_positive(m, "sigma_v0_kPa", file, "initial vertical stress, kPa");
-  } else if (test == "simpleshear") {
-    t.kind = SoilTestKind::kSimpleShear;
+  } else if (test == "simpleshear" || test == "cyclicshear") {
+    t.kind = soil_test_kind(test, file.string() + ": key 'test'");
     t.sigma0_kPa = require_positive(m, "sigma_n0_kPa", file, "initial normal stress, kPa");
     t.boundary =
         driver::parse_boundary_kind(require<std::string>(m, "boundary", file, "\"CNL\" or \"CV\""),
@@ -70,8 +88,8 @@ void read_header(SoilTest& t, const fs::path& file) {
       throw InputError(
           fmt::format("{}: key 'boundary' = \"CNS\": soil tests are CNL or CV", file.string()));
   } else {
-    throw InputError(fmt::format(
-        "{}: key 'test' = \"{}\" should be \"oedometer\" or \"simpleshear\"", file.string(), test));
+    throw InputError(
+        fmt::format("{}: key 'test' = \"{}\" should be {}", file.string(), test, kTestNames));
   }
   t.e0 = require_positive(m, "e0", file, "initial void ratio");
   if (m.contains("K0")) t.K0 = require_positive(m, "K0", file, "initial lateral stress ratio");
@@ -90,7 +108,27 @@ std::size_t line_of(std::size_t row) {
   return row + 2;
 }
 
+// Cyclic gamma: every row moves (a repeated row has no direction), and it reverses at least once
+// (else it is a monotonic test, and the calibration would judge it as one).
+void check_cyclic(const SoilTest& t, const fs::path& file) {
+  int reversals = 0;
+  for (std::size_t i = 1; i < t.rows(); ++i) {
+    const double step = t.control[i] - t.control[i - 1];
+    if (step == 0.0)
+      throw InputError(fmt::format(
+          "{}:{}: column 'gamma' = {:g} repeats the row before: cyclic shear moves every row",
+          file.string(), line_of(i), t.control[i]));
+    if (i > 1 && step * (t.control[i - 1] - t.control[i - 2]) < 0.0) ++reversals;
+  }
+  if (reversals == 0)
+    throw InputError(fmt::format(
+        "{}: column 'gamma' never reverses: a cyclic shear test reverses at least once (a "
+        "monotonic one is test \"simpleshear\")",
+        file.string()));
+}
+
 void check_monotonic(const SoilTest& t, const fs::path& file) {
+  if (t.kind == SoilTestKind::kCyclicShear) return check_cyclic(t, file);
   const char* column = t.kind == SoilTestKind::kOedometer ? "sigma_v_kPa" : "gamma";
   const std::size_t peak = t.kind == SoilTestKind::kOedometer ? t.loading_end() : t.rows() - 1;
   for (std::size_t i = 1; i < t.rows(); ++i) {
@@ -172,7 +210,7 @@ void write_soil_test_files(const SoilTest& t, const fs::path& dir, const nlohman
   if (t.kind == SoilTestKind::kOedometer) {
     m["sigma_v0_kPa"] = t.sigma0_kPa;
     m["oedometer_path"] = t.loading_end() + 1 < t.rows() ? "loading-unloading" : "loading";
-  } else {
+  } else {  // simple or cyclic shear
     m["sigma_n0_kPa"] = t.sigma0_kPa;
     m["boundary"] = driver::to_string(t.boundary);
   }

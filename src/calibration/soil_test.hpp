@@ -1,7 +1,8 @@
 #pragma once
 // The soil-test run-directory contract (README.md here): element tests on the soil alone, from a
 // DEM cell or a continuum model, that the hypoplastic parameters are calibrated against.
-//   manifest.json   kind "soiltest", test "oedometer" | "simpleshear", initial state, source
+//   manifest.json   kind "soiltest", test "oedometer" | "simpleshear" | "cyclicshear", initial
+//                   state, source
 //   timeseries.csv  named, unit-carrying columns; compression positive (CONVENTIONS.md)
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -13,9 +14,17 @@
 
 namespace iwb::calibration {
 
-enum class SoilTestKind { kOedometer, kSimpleShear };
+// kCyclicShear: simple shear whose gamma reverses (cycles 0 -> +A -> -A -> 0), the test the
+// intergranular strain's parameters are calibrated on (issue 34).
+enum class SoilTestKind { kOedometer, kSimpleShear, kCyclicShear };
 
 const char* to_string(SoilTestKind k);
+// The kind of a name as to_string writes it; InputError naming `where` otherwise.
+SoilTestKind soil_test_kind(const std::string& name, const std::string& where);
+// Simple shear, monotonic or cyclic: rows gamma, tau_kPa, sigma_n_kPa, e under CNL or CV.
+inline bool is_shear(SoilTestKind k) {
+  return k != SoilTestKind::kOedometer;
+}
 
 // What one unit of a residual is worth, per quantity, in the quantity's own unit: the scatter of
 // the measurement. 0: the declared scales of calibrate.hpp. Set from the seed scatter when the
@@ -41,6 +50,7 @@ struct SoilTest {
 
   // One entry per row of timeseries.csv. Oedometer: sigma_kPa = sigma_v (the control), e and
   // eps_v measured. Simple shear: gamma (the control), tau_kPa, sigma_kPa = sigma_n, e measured.
+  // Cyclic shear: the same, gamma reversing at the amplitudes.
   std::vector<double> control;  // sigma_v_kPa (oedometer) or gamma (simple shear)
   std::vector<double> e, eps_v, tau_kPa, sigma_n_kPa;
   // Written after the contract's columns, not read back (a DEM cell's sigma_h, K0, coordination).
@@ -54,7 +64,8 @@ struct SoilTest {
 // Reads and validates a soil-test directory. InputError naming the file (and line, key, value)
 // for: a missing file, a wrong or missing manifest key, a missing column, a non-number or NaN,
 // fewer than kMinimumRows rows, and a control that is not monotonic (gamma must increase;
-// sigma_v must increase to its maximum and then, if unloaded, decrease).
+// sigma_v must increase to its maximum and then, if unloaded, decrease; cyclic gamma must change
+// from row to row and reverse at least once).
 SoilTest read_soil_test(const std::filesystem::path& dir);
 
 inline constexpr std::size_t kMinimumRows = 3;

@@ -17,7 +17,24 @@ std::vector<double> geometric(double from, double to, int n) {
   return v;
 }
 
+// 0 -> +A -> -A -> 0, `cycles` times, `rows` rows a quarter cycle.
+std::vector<double> cyclic_control(const SyntheticSpec& s) {
+  std::vector<double> g{0.0};
+  const int quarters = 4 * s.cycles;
+  for (int q = 0; q < quarters; ++q) {
+    // quarter q runs from the phase q to q + 1; the displacement is A times a triangle wave
+    for (int i = 1; i <= s.rows; ++i) {
+      const double phase = q + double(i) / s.rows;  // in quarter cycles
+      const double within = std::fmod(phase, 4.0);
+      const double wave = within <= 1.0 ? within : within <= 3.0 ? 2.0 - within : within - 4.0;
+      g.push_back(s.gamma_amplitude * wave);
+    }
+  }
+  return g;
+}
+
 std::vector<double> control_of(const SyntheticSpec& s) {
+  if (s.kind == SoilTestKind::kCyclicShear) return cyclic_control(s);
   if (s.kind == SoilTestKind::kSimpleShear) {
     std::vector<double> g;
     for (int i = 0; i <= s.rows; ++i) g.push_back(s.gamma_max * i / s.rows);

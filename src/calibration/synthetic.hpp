@@ -19,7 +19,10 @@ struct SyntheticSpec {
   double sigma_max_kPa = 2000.0;
   double sigma_end_kPa = 100.0;
   double gamma_max = 1.0;  // simple shear: monotonic to this engineering shear strain
-  int rows = 40;           // data rows per branch
+  // cyclic shear: 0 -> +A -> -A -> 0 `cycles` times, A = gamma_amplitude
+  double gamma_amplitude = 0.01;
+  int cycles = 3;
+  int rows = 40;  // data rows per branch (cyclic: per quarter cycle)
 };
 
 // The test `spec` describes, run through `spec.model` with `inputs`; source "synthetic:<model>"

@@ -25,12 +25,17 @@ namespace {
 constexpr double kOedometerStartKPa = 10.0;
 constexpr double kSimpleShearStartKPa = 50.0;
 constexpr double kTimeseriesRows = 200.0;  // simple shear: rows over the whole travel
+// cyclic shear: rows a quarter cycle, enough for the secant stiffness at 10 % of the amplitude
+constexpr double kRowsPerQuarterCycle = 40.0;
 constexpr int kVtkSnapshots = 4;
 constexpr int kProfileWindows = 4;
 constexpr double kGravity = 9.81;  // m/s2, as in the templates
 
 bool oedometer(const SoilCellSpec& c) {
   return c.test == SoilTestKind::kOedometer;
+}
+bool cyclic(const SoilCellSpec& c) {
+  return c.test == SoilTestKind::kCyclicShear;
 }
 
 double preparation_friction(SoilDensity d, const Scene& scene) {
@@ -190,9 +195,9 @@ double profile_linearity(const io::CsvTable& profiles) {
 }
 
 SoilTest simple_shear_result(const Scene& cell, const ContractTables& tables,
-                             const nlohmann::json& facts) {
+                             const nlohmann::json& facts, SoilTestKind kind) {
   SoilTest t;
-  t.kind = SoilTestKind::kSimpleShear;
+  t.kind = kind;
   t.boundary = cell.boundary.kind;
   const auto& sh = facts.at("shear");
   const double h0 = cell_height(cell, sh.at("z0_m").get<double>());
@@ -206,8 +211,10 @@ SoilTest simple_shear_result(const Scene& cell, const ContractTables& tables,
   std::vector<double> ux_out, un_out, plate_out;
   for (std::size_t i = 0; i < ux.size(); ++i) {
     const double gamma = ux[i] * 1e-3 / h0;
-    if (!t.control.empty() && !(gamma > t.control.back()))
-      continue;  // the contract: gamma increases
+    // the contract: gamma increases (monotonic) or moves every row (cyclic)
+    if (!t.control.empty() && (kind == SoilTestKind::kCyclicShear ? gamma == t.control.back()
+                                                                  : !(gamma > t.control.back())))
+      continue;
     t.control.push_back(gamma);
     t.tau_kPa.push_back(tau[i]);
     t.sigma_n_kPa.push_back(sn[i]);
@@ -293,9 +300,16 @@ std::string cell_scene_text(const std::string& text, const std::string& source,
   for (const char* table : {"specimen", "wall", "plate", "boundary", "shear", "output"})
     root.erase(table);
   const double d50_mm = base.particles.d50_m * 1e3;
-  const double travel_mm = oedometer(c) ? d50_mm : c.gamma * c.height_d50 * d50_mm;
-  const std::string what =
-      oedometer(c) ? "oedometer" : fmt::format("simple shear {}", driver::to_string(c.boundary));
+  const double amplitude_mm = c.gamma_amplitude * c.height_d50 * d50_mm;
+  const double travel_mm = oedometer(c) ? d50_mm
+                           : cyclic(c)  ? 4.0 * amplitude_mm * c.cycles
+                                        : c.gamma * c.height_d50 * d50_mm;
+  const double row_mm =
+      cyclic(c) ? amplitude_mm / kRowsPerQuarterCycle : travel_mm / kTimeseriesRows;
+  const std::string what = oedometer(c)
+                               ? "oedometer"
+                               : fmt::format("{} shear {}", cyclic(c) ? "cyclic" : "simple",
+                                             driver::to_string(c.boundary));
   const auto set = [&](const std::string& key, const io::TomlValue& v) {
     io::set_dotted(root, key, v, source);
   };
@@ -314,8 +328,13 @@ std::string cell_scene_text(const std::string& text, const std::string& source,
   set("boundary.type", std::string(oedometer(c) ? "CNL" : driver::to_string(c.boundary)));
   set("boundary.sigma_n_kPa", c.initial_stress_kPa());
   set("shear.inertial_number", c.inertial_number);
-  set("shear.displacement_mm", travel_mm);  // the oedometer does not shear: a placeholder of 1 d50
-  set("output.timeseries_every_mm", travel_mm / kTimeseriesRows);
+  if (cyclic(c)) {
+    set("shear.amplitude_mm", amplitude_mm);
+    set("shear.cycles", std::int64_t(c.cycles));
+  } else {
+    set("shear.displacement_mm", travel_mm);  // the oedometer does not shear: a placeholder
+  }
+  set("output.timeseries_every_mm", row_mm);
   set("output.profile_windows", std::int64_t(kProfileWindows));
   set("output.profile_bin_d50", 0.5);
   set("output.vtk_every_mm", travel_mm / kVtkSnapshots);
@@ -343,7 +362,7 @@ RunOutcome run_soil_test(const std::string& text, const std::string& source, con
       t = oedometer_result(cell, run->facts);
     } else {
       const ContractTables tables = engine.assemble(run->ctx, run->facts);
-      t = simple_shear_result(cell, tables, run->facts);
+      t = simple_shear_result(cell, tables, run->facts, c.test);
       io::write_atomically(opt.out / "profiles.csv", tables.profiles.to_csv());
       auto summary = to_json(summarize(cell, tables.timeseries, tables.profiles));
       summary["profile_linearity_r2"] = profile_linearity(tables.profiles);

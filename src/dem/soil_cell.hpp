@@ -4,11 +4,12 @@
 //
 // The cell is the scene with its geometry replaced: a box periodic in x and y (fixed: zero lateral
 // strain) between two rough sawtooth meshes, the bottom one fixed (oedometer) or moved in +x
-// (simple shear), the top one servo-controlled (oedometer, CNL) or held (CV). Same grains, same
-// contact law (walls carry the grains' friction), same engine inputs: LIGGGHTS's consolidate.in
-// (YADE: interface_shear.py's consolidate stage) prepares the specimen at the first stress with a
-// preparation friction that sets the density (0: dense, high: loose), shear.in (shear) shears it,
-// oedometer.in (oedometer) loads and unloads it in ramped and held steps.
+// (simple shear; back and forth in cyclic shear), the top one servo-controlled (oedometer, CNL) or
+// held (CV). Same grains, same contact law (walls carry the grains' friction), same engine inputs:
+// LIGGGHTS's consolidate.in (YADE: interface_shear.py's consolidate stage) prepares the specimen at
+// the first stress with a preparation friction that sets the density (0: dense, high: loose),
+// shear.in (shear) shears it, oedometer.in (oedometer) loads and unloads it in ramped and held
+// steps.
 #include <string>
 
 #include "calibration/soil_test.hpp"
@@ -41,6 +42,9 @@ struct SoilCellSpec {
   double sigma0_kPa = 0.0;       // 0: 10 kPa (oedometer) or 50 kPa (simple shear)
   double sigma_max_kPa = 400.0;  // oedometer: the largest level
   double gamma = 1.0;            // simple shear: wall travel / target cell height
+  // cyclic shear: 0 -> +A -> -A -> 0 `cycles` times, A = gamma_amplitude x target cell height
+  double gamma_amplitude = 0.01;
+  int cycles = 3;
   double length_d50 = 12.0, width_d50 = 4.0, height_d50 = 10.0;  // the cell (target height)
   double inertial_number = 1e-3;  // simple shear: gamma_dot d50 sqrt(rho / sigma_n)
   int load_levels = 10;           // oedometer: geometric levels from sigma0 to sigma_max ...

@@ -97,6 +97,10 @@ struct InitialState {
   std::optional<std::array<double, 3>> delta = std::nullopt;
   // Every other input a model declares (src/models/declaration.hpp): "OCR", "T_K", "s_kPa", ...
   std::map<std::string, double, std::less<>> named = {};
+  // Without `delta` (last, so that positional initialisers stay valid): true starts it fully
+  // mobilised along the vertical compression that prepared the specimen, [-R, 0, 0] (rho = 1), as a
+  // soil test's cell was consolidated; false takes the seed's default (5.6).
+  bool delta_along_compression = false;
 };
 
 struct NamedValue {

@@ -100,7 +100,9 @@ TEST_CASE("malformed soil-test directories are refused naming file, line and col
     auto m = nlohmann::json::parse(manifest);
     m["test"] = "triaxial";
     write_text(dir / "manifest.json", m.dump());
-    refused("manifest.json: key 'test' = \"triaxial\" should be \"oedometer\" or \"simpleshear\"");
+    refused(
+        "manifest.json: key 'test' = \"triaxial\" should be \"oedometer\", \"simpleshear\" or "
+        "\"cyclicshear\"");
   }
   SECTION("simple shear without a boundary") {
     auto m = nlohmann::json::parse(manifest);
@@ -115,4 +117,34 @@ TEST_CASE("malformed soil-test directories are refused naming file, line and col
     write_text(dir / "manifest.json", m.dump());
     refused("manifest.json: key 'e0' = -0.5 must be positive");
   }
+}
+
+TEST_CASE(
+    "cyclic shear reads back with its reversals; a repeated or never-reversing gamma is "
+    "refused",
+    "[calibration][cyclic]") {
+  calibration::SyntheticSpec s;
+  s.model = "vw3d-igs";
+  s.kind = calibration::SoilTestKind::kCyclicShear;
+  s.boundary = driver::BoundaryKind::kCV;
+  s.e0 = 0.75;
+  s.gamma_amplitude = 1e-3;
+  s.cycles = 1;
+  s.rows = 4;
+  const auto t = calibration::synthesise(s, test::table_5_3_toyoura());
+  const auto dir = fresh_dir("cyclic");
+  calibration::write_soil_test(t, dir, false, {});
+  const auto back = calibration::read_soil_test(dir);
+  CHECK(back.kind == calibration::SoilTestKind::kCyclicShear);
+  REQUIRE(back.rows() == 17);
+  CHECK(back.control[8] == Approx(0.0).margin(1e-15));  // half a cycle: back through zero
+  const auto refused = [&](const std::string& csv, const std::string& what) {
+    write_text(dir / "timeseries.csv", csv);
+    CHECK_THROWS_WITH(calibration::read_soil_test(dir), Catch::Contains(what));
+  };
+  const std::string header = "gamma,tau_kPa,sigma_n_kPa,e\n";
+  refused(header + "0,0,100,0.75\n0.001,5,100,0.75\n0.001,5,100,0.75\n0,0,100,0.75\n",
+          "timeseries.csv:4: column 'gamma' = 0.001 repeats the row before");
+  refused(header + "0,0,100,0.75\n0.001,5,100,0.75\n0.002,6,100,0.75\n",
+          "column 'gamma' never reverses: a cyclic shear test reverses at least once");
 }

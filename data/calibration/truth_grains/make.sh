@@ -12,6 +12,9 @@
 # NAME names the data set: truth_grains (default) are the grains with LIGGGHTS's cdt rolling
 # resistance, as truth.toml had them until epsd2 (their committed scenes/ pin that); with
 # NAME=truth_grains_epsd2 the same tests of truth.toml's grains as they are now (epsd2).
+# DESIGNS=cyclic (with NAME=truth_grains_epsd2_igs) runs cyclic simple-shear tests instead and
+# calibrates vw3d-igs's intergranular strain on them with truth_grains_epsd2's hypoplastic set
+# held (issue 34 item 3; ../truth_grains_epsd2_igs/README.md).
 set -euo pipefail
 IWB=${IWB:-build/iwb}
 NAME=${NAME:-truth_grains}
@@ -23,8 +26,9 @@ SEEDS=(1 2 3)
 # The cell: 12 x 6 x 12 d50 (about 1100 grains), twice the 602-grain cell of the earlier
 # calibration, whose seed scatter was large (data/calibration/dem_default_grains/seeds).
 CELL=(--length 12 --width 6 --height 12)
+DESIGNS=${DESIGNS:-monotonic}
 # name and options; CNL-dense-200 is held out of the fit and predicted (README.md).
-TESTS=(
+MONOTONIC_TESTS=(
   "oedometer-dense|--test oedometer --density dense --sigma 10 --sigma-max 800 --load-levels 10 --unload-levels 5"
   "oedometer-loose|--test oedometer --density loose --sigma 10 --sigma-max 800 --load-levels 10 --unload-levels 5"
   "simpleshear-CNL-dense-50|--test simpleshear --bc CNL --density dense --sigma 50 --gamma 0.5 --inertial-number 3e-4"
@@ -37,7 +41,26 @@ TESTS=(
   "simpleshear-CNL-dense-200|--test simpleshear --bc CNL --density dense --sigma 200 --gamma 0.5 --inertial-number 3e-4"
 )
 
-HELD_OUT=simpleshear-CNL-dense-200  # left out of the fit and predicted (README.md)
+# Cyclic simple shear of the dense specimen at the interface truth's 50 kPa: an amplitude near
+# the small-strain range and one four times larger, CV and CNL; CNL at the amplitude between is
+# held out and predicted. Three cycles each (the interface cells degrade most in the first ones).
+CYCLIC_TESTS=(
+  "cyclic-CV-0.005|--test cyclicshear --bc CV --density dense --sigma 50 --amplitude 0.005 --cycles 3 --inertial-number 3e-4"
+  "cyclic-CNL-0.005|--test cyclicshear --bc CNL --density dense --sigma 50 --amplitude 0.005 --cycles 3 --inertial-number 3e-4"
+  "cyclic-CV-0.02|--test cyclicshear --bc CV --density dense --sigma 50 --amplitude 0.02 --cycles 3 --inertial-number 3e-4"
+  "cyclic-CNL-0.02|--test cyclicshear --bc CNL --density dense --sigma 50 --amplitude 0.02 --cycles 3 --inertial-number 3e-4"
+  "cyclic-CNL-0.01|--test cyclicshear --bc CNL --density dense --sigma 50 --amplitude 0.01 --cycles 3 --inertial-number 3e-4"
+)
+case $DESIGNS in
+  monotonic) TESTS=("${MONOTONIC_TESTS[@]}"); HELD_OUT=simpleshear-CNL-dense-200 ;;
+  cyclic) TESTS=("${CYCLIC_TESTS[@]}"); HELD_OUT=cyclic-CNL-0.01 ;;
+  *) echo "make.sh: DESIGNS=$DESIGNS: allowed monotonic or cyclic" >&2; exit 2 ;;
+esac
+# The fit's model and what it holds: vw3d's eight parameters, or (cyclic) the intergranular strain
+# of vw3d-igs with the monotonic calibration of the same grains held.
+FIT=(--model vw3d)
+[ "$DESIGNS" = cyclic ] && FIT=(--model vw3d-igs --table intergranular_strain
+                                --params data/params/truth_grains_epsd2.toml)
 
 # The fit of every committed test but HELD_OUT, which is predicted; its output (calibrate.txt,
 # calibration.json and the parameter file) here, the parameter file also in data/params/.
@@ -47,7 +70,7 @@ calibrate_all() {
     d=${d%/}
     if [ "$(basename "$d")" = "$HELD_OUT" ]; then held+=("$d"); else fit+=("$d"); fi
   done
-  "$IWB" calibrate "${fit[@]}" --held-out "${held[@]}" --model vw3d -o "$DEST/truth_grains.toml" |
+  "$IWB" calibrate "${fit[@]}" --held-out "${held[@]}" "${FIT[@]}" -o "$DEST/truth_grains.toml" |
     tee "$DEST/calibrate.txt"
   cp "$DEST/truth_grains.toml" "data/params/$NAME.toml"
 }

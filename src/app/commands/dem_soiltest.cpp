@@ -23,8 +23,7 @@ struct DemSoiltestCommand {
 
 int run_dem_soiltest(const DemSoiltestCommand& c, const CommandContext& context) {
   dem::SoilCellSpec spec = c.spec;
-  spec.test = c.test == "oedometer" ? calibration::SoilTestKind::kOedometer
-                                    : calibration::SoilTestKind::kSimpleShear;
+  spec.test = calibration::soil_test_kind(c.test, "--test");
   spec.boundary = driver::parse_boundary_kind(c.bc, "--bc");
   spec.density = dem::parse_soil_density(c.density, "--density");
   const bool oed = spec.test == calibration::SoilTestKind::kOedometer;
@@ -41,7 +40,7 @@ int run_dem_soiltest(const DemSoiltestCommand& c, const CommandContext& context)
       stderr,
       "iwb dem soiltest: {} of {} in {} ({}, {:g} kPa, cell {:g} x {:g} x {:g} d50, {} rank(s)) -> "
       "{}\n",
-      oed ? "oedometer" : "simple shear " + c.bc, c.scene, spec.engine, c.density,
+      oed ? std::string("oedometer") : c.test + " " + c.bc, c.scene, spec.engine, c.density,
       spec.initial_stress_kPa(), spec.length_d50, spec.width_d50, spec.height_d50, c.np,
       dir.string());
   const auto outcome = dem::run_soil_test(io::read_file(c.scene), c.scene, spec, opt);
@@ -75,6 +74,9 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
       "--inertial-number; CNL keeps sigma_n (--sigma, 50 kPa) by the servo, CV holds the plate; "
       "rows "
       "gamma, tau_kPa, sigma_n_kPa, e (+ profiles.csv: is the shear homogeneous?)\n"
+      "  cyclicshear: the bottom plate moves 0 -> +A -> -A -> 0, --cycles times, A = --amplitude "
+      "x target height; CNL or CV as simple shear; 40 rows a quarter cycle (what `iwb calibrate "
+      "--model vw3d-igs --table intergranular_strain` fits)\n"
       "Example: iwb dem soiltest data/scenes/default.toml --test simpleshear --bc CV --density "
       "loose "
       "--out runs/soil/loose-cv");
@@ -82,8 +84,8 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
                 "scene TOML file (its [particles], seed and [consolidation] are used)")
       ->required()
       ->check(input_file());
-  s->add_option("--test", c->test, "oedometer or simpleshear")
-      ->check(CLI::IsMember({"oedometer", "simpleshear"}))
+  s->add_option("--test", c->test, "oedometer, simpleshear or cyclicshear")
+      ->check(CLI::IsMember({"oedometer", "simpleshear", "cyclicshear"}))
       ->capture_default_str();
   s->add_option("--engine", c->spec.engine,
                 "DEM engine: liggghts or yade (the same cell, stress program and rows; YADE is "
@@ -106,6 +108,13 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
       ->capture_default_str();
   s->add_option("--gamma", c->spec.gamma, "simple shear: final shear strain")
       ->check(number_in(positive(kMaxShearStrain)))
+      ->capture_default_str();
+  s->add_option("--amplitude", c->spec.gamma_amplitude,
+                "cyclic shear: amplitude A of gamma (wall travel / target cell height)")
+      ->check(number_in(positive(1.0)))
+      ->capture_default_str();
+  s->add_option("--cycles", c->spec.cycles, "cyclic shear: number of cycles")
+      ->check(whole_in(1, 1000))
       ->capture_default_str();
   s->add_option("--height", c->spec.height_d50, "target cell height (z) in d50")
       ->check(number_in(closed(4.0, 100.0), "d50"))

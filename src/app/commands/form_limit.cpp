@@ -49,7 +49,10 @@ comparison::FormLimitOptions::Elsewhere soil_test_costs(const std::vector<std::s
   calibration::measure_seed_scatter(*tests);
   return [tests](const auto& form, const auto& soil) {
     const auto costs = [&](const auto& tables) {
-      return calibration::group_fits(*tests, "vw3d", tables.at("hypoplastic"), {});
+      models::ModelInputs in;
+      in.tables["hypoplastic"] = tables.at("hypoplastic");
+      in.source = "form limit";
+      return calibration::group_fits(*tests, "vw3d", in, {});
     };
     const auto at_form = costs(form), at_soil = costs(soil);
     const auto not_reached = [](const calibration::GroupFit& g) {

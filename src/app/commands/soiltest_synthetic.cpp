@@ -32,15 +32,21 @@ CLI::App* add_synthetic_options(CLI::App& soiltest, SyntheticCommand& c) {
       "--sigma-end\n"
       "  simpleshear: monotonic shear to --gamma under --bc CNL (sigma_n held) or CV (volume "
       "held)\n"
+      "  cyclicshear: gamma 0 -> +A -> -A -> 0 (A = --amplitude), --cycles times, under --bc; the "
+      "model starts with its intergranular strain (if any) along the vertical compression that "
+      "prepared the specimen\n"
       "Example: iwb soiltest synthetic --params data/params/table_5_2_hostun.toml --test "
       "simpleshear "
-      "--bc CV --e0 0.70 -o runs/soil/dense-cv");
+      "--bc CV --e0 0.70 -o runs/soil/dense-cv\n"
+      "Example: iwb soiltest synthetic --model vw3d-igs --params "
+      "data/params/table_5_3_toyoura.toml --test cyclicshear --amplitude 0.002 --cycles 3 --bc CV "
+      "-o runs/soil/cyclic-cv");
   s->add_option("--model", c.spec.model, "continuum model (iwb models)")->capture_default_str();
   s->add_option("--params", c.params, "parameter file (data/params/)")
       ->required()
       ->check(input_file());
-  s->add_option("--test", c.test, "oedometer or simpleshear")
-      ->check(CLI::IsMember({"oedometer", "simpleshear"}))
+  s->add_option("--test", c.test, "oedometer, simpleshear or cyclicshear")
+      ->check(CLI::IsMember({"oedometer", "simpleshear", "cyclicshear"}))
       ->capture_default_str();
   s->add_option("--bc", c.bc, "simple shear boundary: CNL or CV")
       ->check(CLI::IsMember({"CNL", "CV"}))
@@ -62,7 +68,14 @@ CLI::App* add_synthetic_options(CLI::App& soiltest, SyntheticCommand& c) {
   s->add_option("--gamma", c.spec.gamma_max, "simple shear: final engineering shear strain")
       ->check(number_in(positive(kMaxShearStrain)))
       ->capture_default_str();
-  s->add_option("--rows", c.spec.rows, "data rows per branch")
+  s->add_option("--amplitude", c.spec.gamma_amplitude,
+                "cyclic shear: amplitude A of the engineering shear strain")
+      ->check(number_in(positive(kMaxShearStrain)))
+      ->capture_default_str();
+  s->add_option("--cycles", c.spec.cycles, "cyclic shear: number of cycles")
+      ->check(whole_in(1, 1000))
+      ->capture_default_str();
+  s->add_option("--rows", c.spec.rows, "data rows per branch (cyclic: per quarter cycle)")
       ->check(whole_in(3, 100000))
       ->capture_default_str();
   s->add_option("--out,-o", c.out, "run directory")->required()->check(output_directory());
@@ -71,8 +84,7 @@ CLI::App* add_synthetic_options(CLI::App& soiltest, SyntheticCommand& c) {
 }
 
 int run_synthetic(SyntheticCommand c, const std::string& command_line) {
-  c.spec.kind = c.test == "oedometer" ? calibration::SoilTestKind::kOedometer
-                                      : calibration::SoilTestKind::kSimpleShear;
+  c.spec.kind = calibration::soil_test_kind(c.test, "--test");
   c.spec.boundary = driver::parse_boundary_kind(c.bc, "--bc");
   if (c.e0 > 0.0) c.spec.e0 = c.e0;
   models::ModelInputs in;
@@ -89,7 +101,7 @@ int run_synthetic(SyntheticCommand c, const std::string& command_line) {
           {{"source", c.params}, {"sha256", io::sha256_hex(io::read_file(c.params))}}}}},
        {"finished", io::utc_timestamp()}});
   fmt::print("{} {}{} from {} (e0 = {:.4f}, sigma0 = {:g} kPa): {} rows -> {}\n", c.test,
-             c.test == "simpleshear" ? c.bc + " " : "", c.spec.model, c.params, t.e0, t.sigma0_kPa,
+             c.test == "oedometer" ? "" : c.bc + " ", c.spec.model, c.params, t.e0, t.sigma0_kPa,
              t.rows(), c.out);
   return 0;
 }

@@ -233,7 +233,9 @@ class HypoplasticModel final : public Model {
   // the element's algebra (delta_x is a tensor component, hence gamma = 2 delta_x).
   typename Ops::template Tensor<double> initial_intergranular_strain(
       const InitialState& init) const {
-    const auto d = init.delta.value_or(seed_initial_intergranular_strain(igs_->R));
+    const auto d = init.delta.value_or(init.delta_along_compression
+                                           ? compression_intergranular_strain(igs_->R)
+                                           : seed_initial_intergranular_strain(igs_->R));
     return kin_.template intergranular<double>(
         kin_.template stretching<double>(InterfaceStrain{d[0], 2.0 * d[1], 2.0 * d[2]}));
   }

@@ -42,6 +42,10 @@ struct IntergranularStrainParameters {
 // delta_x = delta_y = R / sqrt(3), as [delta_n, delta_x, delta_y] tensor components. Note its
 // norm with the interface weights is 2R/sqrt(3) > R (README of src/models/hypoplastic).
 std::array<double, 3> seed_initial_intergranular_strain(double R);
+// After vertical (oedometric) compression alone: delta = R along -e_n, [-R, 0, 0], rho = 1. The
+// start of a soil test's cell, which was consolidated by compressing it vertically: its first
+// shear is then a 90 deg turn (m_T), a later reversal 180 deg (m_R).
+std::array<double, 3> compression_intergranular_strain(double R);
 
 template <class Ops, class S>
 struct IntergranularRates {
