@@ -115,6 +115,7 @@ struct Calibrator {
   // by these factors (varied by factor_uncertainty to give the systematic sigma).
   bool limits_follow_ec0 = false;
   double ei0_over_ec0 = kEi0OverEc0, ed0_over_ec0 = kEd0OverEc0;
+  const models::ParameterTable* declared = nullptr;  // the fitted table's declaration
 
   const BoxEntry& box(const std::string& key) const {
     for (const auto& b : boxes)
@@ -160,10 +161,39 @@ struct Calibrator {
   models::ParameterValues with(const Keys& keys, const Eigen::VectorXd& x) const {
     models::ParameterValues v = current;
     for (std::size_t k = 0; k < keys.size(); ++k)
-      v[keys[k]] = from_fit(box(keys[k]), x(Eigen::Index(k)));
+      if (!order_of(keys[k])) v[keys[k]] = from_fit(box(keys[k]), x(Eigen::Index(k)));
+    for (std::size_t k = 0; k < keys.size(); ++k)  // after their partners
+      if (order_of(keys[k])) {
+        const auto [lo, hi] = span(keys[k], v);
+        v[keys[k]] = from_fit(box(keys[k]), lo + x(Eigen::Index(k)) * (hi - lo));
+      }
     if (limits_follow_ec0) set_limits_from_ec0(v, ei0_over_ec0, ed0_over_ec0);
     pin(v);
     return v;
+  }
+
+  // The order whose lower member `key` is (m_T of m_T <= m_R), when `key` is fitted: it is then
+  // fitted as a share in [0, 1] of the way from its box's lower edge to its partner, so that no
+  // trial breaks the order. Why: the model refuses such a set, and against that penalty wall the
+  // fit of DEM cyclic tests (which ask for m_T = m_R) returned no sigma at all; holding the
+  // member at its partner instead trapped a fit from the middle of the boxes (a target with m_T
+  // 2, m_R 5 fitted as 4.95 and 4.95).
+  const models::ParameterTable::AtMost* order_of(const std::string& key) const {
+    for (const auto& o : declared->at_most)
+      if (o.lower == key && !is_fixed(key)) return &o;
+    return nullptr;
+  }
+  // The range in fit space an ordered key spans at the partner's value in `v`.
+  std::pair<double, double> span(const std::string& key, const models::ParameterValues& v) const {
+    const auto& b = box(key);
+    const double lo = to_fit(b, b.lower);
+    return {lo, std::max(lo, to_fit(b, std::min(b.upper, v.at(order_of(key)->upper))))};
+  }
+  // The optimiser's variable of `key` at `v`: the fit-space value, or an ordered key's share.
+  double variable(const std::string& key, const models::ParameterValues& v) const {
+    if (!order_of(key)) return to_fit(box(key), v.at(key));
+    const auto [lo, hi] = span(key, v);
+    return hi > lo ? std::clamp((to_fit(box(key), v.at(key)) - lo) / (hi - lo), 0.0, 1.0) : 0.0;
   }
 
   // Fits the free ones of `keys` (none free: nothing to do, an empty result).
@@ -176,9 +206,10 @@ struct Calibrator {
     p.start.resize(n), p.lower.resize(n), p.upper.resize(n), p.difference_step.resize(n);
     for (Eigen::Index k = 0; k < n; ++k) {
       const auto& b = box(keys[std::size_t(k)]);
-      p.lower(k) = to_fit(b, b.lower);
-      p.upper(k) = to_fit(b, b.upper);
-      p.start(k) = to_fit(b, current.at(b.key));
+      const bool share = order_of(b.key) != nullptr;
+      p.lower(k) = share ? 0.0 : to_fit(b, b.lower);
+      p.upper(k) = share ? 1.0 : to_fit(b, b.upper);
+      p.start(k) = variable(b.key, current);
       // Steps well above the integrator's relative tolerance (simulate.cpp), far below the box.
       p.difference_step(k) = 1e-4 * (p.upper(k) - p.lower(k));
     }
@@ -359,8 +390,11 @@ double identifiability_sigma(const fitting::LeastSquaresResult& r, Eigen::Index 
   return std::sqrt(std::max(s2, 1.0) * r.unit_covariance(k, k));
 }
 
-bool unidentified(const fitting::LeastSquaresResult& r, const BoxEntry& b, Eigen::Index k) {
-  const double s = identifiability_sigma(r, k);
+// `variable_scale`: fit space per unit of the optimiser's variable (an ordered key's share spans
+// its range below its partner; 1 otherwise).
+bool unidentified(const fitting::LeastSquaresResult& r, const BoxEntry& b, Eigen::Index k,
+                  double variable_scale = 1.0) {
+  const double s = variable_scale * identifiability_sigma(r, k);
   return !std::isfinite(s) ||
          s > kUnidentifiedShareOfBox * (to_fit(b, b.upper) - to_fit(b, b.lower));
 }
@@ -426,10 +460,14 @@ ParameterEstimate estimate_of(const Calibrator& c, const BoxEntry& b, const Join
         b.key == "ei0" ? kEi0OverEc0 : kEd0OverEc0);
   } else {
     const auto k = Eigen::Index(it - j.keys.begin());
+    const auto* order = c.order_of(b.key);
+    // an ordered key's share to fit space (with its partner held: first order), then ln h_s:
+    // sigma(h_s) = h_s sigma(ln h_s)
+    const auto [lo, hi] = order ? c.span(b.key, c.current) : std::pair{0.0, 1.0};
+    const double scale = (b.logarithmic ? e.value : 1.0) * (hi - lo);
     e.at_bound = at_bound(b, e.value);
-    e.identified = !unidentified(j.result, b, k);
-    // ln h_s: sigma(h_s) = h_s sigma(ln h_s) to first order
-    const double scale = b.logarithmic ? e.value : 1.0;
+    if (order && j.result.x(k) >= 1.0 - 1e-3) e.at_bound = "order";
+    e.identified = !unidentified(j.result, b, k, hi - lo);
     e.sigma_statistical = scale * j.result.sigma(k);
     e.sigma_systematic = scale * j.systematic(k);
     e.sigma = std::hypot(e.sigma_statistical, e.sigma_systematic);
@@ -442,6 +480,11 @@ ParameterEstimate estimate_of(const Calibrator& c, const BoxEntry& b, const Join
                       "NOT IDENTIFIED: at the declared scatter its sigma would be {:.3g}, "
                       "beyond {} of its box [{:g}, {:g}]",
                       e.sigma_at_scatter, kUnidentifiedShareOfBox, b.lower, b.upper);
+  }
+  if (e.at_bound == "order") {
+    const auto* order = c.order_of(b.key);
+    e.how += fmt::format("; AT ITS ORDER {} <= {} ({}): the tests ask for beyond it", order->lower,
+                         order->upper, order->why);
   }
   return e;
 }
@@ -562,6 +605,7 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
                {},
                0,
                {}};
+  c.declared = &table;
   c.pin(c.current);
   if (o.start) {
     c.notes.push_back("start: the given set (the staged estimate A-D skipped)");

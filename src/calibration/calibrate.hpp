@@ -90,9 +90,10 @@ struct ParameterEstimate {
   // `identified`, and what a noisy test of the same design would give.
   double sigma_at_scatter = 0.0;
   bool identified = true;
-  bool fixed = false;               // held at a given value (CalibrationOptions::fixed)
-  std::string at_bound;             // "lower" or "upper" when fitted onto its box's edge, else ""
-  std::string how;                  // which stage or rule set it
+  bool fixed = false;    // held at a given value (CalibrationOptions::fixed)
+  std::string at_bound;  // "lower"/"upper": fitted onto its box's edge; "order": held at a declared
+                         // order (m_T <= m_R); else ""
+  std::string how;       // which stage or rule set it
   double lower = 0.0, upper = 0.0;  // calibration box
 };
 

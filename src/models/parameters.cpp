@@ -65,6 +65,11 @@ void validate(const ParameterTable& table, const ParameterValues& values,
       throw InputError(fmt::format("{}: key '{}' = {:g} is out of range; allowed {} ({})", source,
                                    spec.key, it->second, spec.range(), spec.doc));
   }
+  for (const auto& o : table.at_most)
+    if (!(values.at(o.lower) <= values.at(o.upper)))
+      throw InputError(fmt::format("{}: [{}] must satisfy {} <= {} ({}); got {} = {:g}, {} = {:g}",
+                                   source, table.name, o.lower, o.upper, o.why, o.lower,
+                                   values.at(o.lower), o.upper, values.at(o.upper)));
 }
 
 void require_below(const ParameterValues& values, const std::string& lower,

@@ -49,6 +49,13 @@ struct ParameterTable {
   // Groups of keys of which exactly one is given, the others derived by the model (HCC's M or
   // phi_c_deg, ERRATA 15); read by validate() once a table declares one.
   std::vector<std::vector<std::string>> one_of = {};
+  // Pairs that must keep an order: `lower` <= `upper` (the intergranular strain's m_T <= m_R).
+  // Read by validate(), and by the calibration, which holds a trial's `lower` at `upper` rather
+  // than let the optimiser step into a refusal (a penalty wall the Jacobian cannot cross).
+  struct AtMost {
+    std::string lower, upper, why;
+  };
+  std::vector<AtMost> at_most = {};
   const ParameterSpec* find(const std::string& key) const;
 };
 

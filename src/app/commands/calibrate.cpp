@@ -143,12 +143,16 @@ void refuse_if_nothing_identified(const calibration::CalibrationResult& r,
   if (std::any_of(r.parameters.begin(), r.parameters.end(),
                   [](const auto& p) { return p.identified && !p.fixed; }))
     return;
-  throw InputError(
-      fmt::format("{}: the {} soil test(s) given identify none of the {} parameters of {} (each "
-                  "one's sigma exceeds a quarter of its box); give oedometer and simple-shear "
-                  "tests, dense and loose, that reach the critical state; no parameter file "
-                  "written",
-                  fmt::join(runs, ", "), runs.size(), r.parameters.size(), r.model));
+  const std::string give =
+      r.held.empty() ? "give oedometer and simple-shear tests, dense and loose, that reach the "
+                       "critical state"
+                     : "give tests that move them (the intergranular strain: cyclic shear at two "
+                       "amplitudes, CV and CNL)";
+  throw InputError(fmt::format(
+      "{}: the {} soil test(s) given identify none of the {} parameters of [{}] of {} (each "
+      "one's sigma exceeds a quarter of its box; the fit is printed above); {}; no parameter "
+      "file written",
+      fmt::join(runs, ", "), runs.size(), r.parameters.size(), r.table, r.model, give));
 }
 
 void print_test_rows(const std::vector<calibration::TestFit>& fits, bool with_ends) {
@@ -183,9 +187,10 @@ void print_result(const calibration::CalibrationResult& r) {
   fmt::print("\n{:<10} {:>12} {:>12} {:>12}  {}\n", "parameter", "estimate", "sigma", "at scatter",
              "how");
   for (const auto& p : r.parameters)
-    fmt::print("{:<10} {:>12.8g} {:>12} {:>12}  {}{}\n", p.key, p.value, text(p.sigma),
-               text(p.sigma_at_scatter), p.how,
-               p.at_bound.empty() ? "" : "; ON ITS " + p.at_bound + " BOUND");
+    fmt::print(
+        "{:<10} {:>12.8g} {:>12} {:>12}  {}{}\n", p.key, p.value, text(p.sigma),
+        text(p.sigma_at_scatter), p.how,
+        p.at_bound.empty() || p.at_bound == "order" ? "" : "; ON ITS " + p.at_bound + " BOUND");
 }
 
 void print_front(const calibration::ParetoFront& f) {
@@ -226,8 +231,8 @@ int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
                                        std::fflush(stdout);  // a front takes minutes
                                      });
   auto result = front ? front->given().result : calibration::calibrate(tests, opt);
+  print_result(result);  // also when refused below: what the fit found says why
   refuse_if_nothing_identified(result, c.runs);
-  print_result(result);
   for (const auto& t : held_out)
     result.held_out.push_back(calibration::test_fit(t, c.model, result.inputs()));
   if (!result.held_out.empty()) fmt::print("\nheld out, predicted: RMSE (end: model / measured)\n");

@@ -61,20 +61,16 @@ const ParameterTable& IntergranularStrainParameters::table() {
                                      "eq. 5.45",
                                      ParameterRole::kMaterial,
                                      kChiBox},
-                                }};
+                                },
+                                {},
+                                {{"m_T", "m_R", "a reversal is the stiffest change of direction"}}};
   return t;
 }
 
 IntergranularStrainParameters IntergranularStrainParameters::from(const ParameterValues& v,
                                                                   const std::string& source) {
-  validate(table(), v, source);
-  const double m_R = v.at("m_R"), m_T = v.at("m_T");
-  if (!(m_T <= m_R))
-    throw InputError(
-        fmt::format("{}: stiffness factors must satisfy m_T <= m_R (a reversal is the "
-                    "stiffest change of direction); got m_T = {:g}, m_R = {:g}",
-                    source, m_T, m_R));
-  return {v.at("R"), m_R, m_T, v.at("beta_r"), v.at("chi")};
+  validate(table(), v, source);  // bounds and m_T <= m_R (the table's at_most)
+  return {v.at("R"), v.at("m_R"), v.at("m_T"), v.at("beta_r"), v.at("chi")};
 }
 
 std::array<double, 3> seed_initial_intergranular_strain(double R) {
