@@ -17,7 +17,9 @@ io::CsvTable front_table(const ParetoFront& f) {
   io::CsvTable t;
   t.columns = {"share", fmt::format("weight_{}", to_string(f.a)),
                fmt::format("weight_{}", to_string(f.b))};
-  for (const auto g : kObjectiveGroups) t.columns.push_back(fmt::format("rms_{}", to_string(g)));
+  // the groups the tests have (the same at every point: the same tests)
+  for (const auto& g : f.points.front().result.objectives)
+    t.columns.push_back(fmt::format("rms_{}", to_string(g.group)));
   t.columns.insert(t.columns.end(), {"s2", "given", "converged"});
   for (const auto& p : f.points.front().result.parameters) t.columns.push_back(p.key);
   for (const auto& p : f.points) {

@@ -135,6 +135,47 @@ std::map<std::string, models::ParameterValues> held_tables(const std::string& fi
   return tables;
 }
 
+void print_test_rows(const std::vector<calibration::TestFit>& fits, bool with_ends,
+                     std::FILE* out = stdout) {
+  for (const auto& t : fits) {
+    fmt::print(out, "{:<40} {:<12}", t.name, t.test + (t.boundary.empty() ? "" : " " + t.boundary));
+    for (const auto& ch : t.rmse)
+      if (with_ends)
+        fmt::print(out, " {} {:.3g} ({:.4g} / {:.4g})", ch.column, ch.rmse, ch.end_model,
+                   ch.end_measured);
+      else
+        fmt::print(out, " {} {:.3g}", ch.column, ch.rmse);
+    if (std::isfinite(t.peak_rate_model))
+      fmt::print(out, " peak rate {:.3f} ({:.3f})", t.peak_rate_model, t.peak_rate_measured);
+    fmt::print(out, "{}\n", t.status == "complete" ? "" : "  (" + t.status + ")");
+  }
+}
+
+// To stderr when the calibration is refused (stdout stays empty for bad input).
+void print_result(const calibration::CalibrationResult& r, std::FILE* out = stdout) {
+  for (const auto& n : r.notes) fmt::print(out, "{}\n", n);
+  fmt::print(out, "\n{:<40} {:<12} {}\n", "test", "",
+             "RMSE (peak dilatancy rate: model (measured))");
+  print_test_rows(r.tests, false, out);
+  fmt::print(out, "\n{:<10} {:>8} {:>10} {:>12}  {}\n", "objective", "weight", "residuals", "RMS",
+             "rows not reached");
+  for (const auto& g : r.objectives)
+    fmt::print(out, "{:<10} {:>8.4g} {:>10} {:>12.4g}  {}\n", calibration::to_string(g.group),
+               g.weight, g.residuals, g.rms, g.unreached);
+  // sigma: from this fit's residuals; at scatter: had the residuals the declared scatter (what
+  // decides "identified"; the two differ most for noise-free synthetic targets)
+  const auto text = [](double v) {
+    return std::isfinite(v) ? fmt::format("{:.3g}", v) : std::string("undefined");
+  };
+  fmt::print(out, "\n{:<10} {:>12} {:>12} {:>12}  {}\n", "parameter", "estimate", "sigma",
+             "at scatter", "how");
+  for (const auto& p : r.parameters)
+    fmt::print(
+        out, "{:<10} {:>12.8g} {:>12} {:>12}  {}{}\n", p.key, p.value, text(p.sigma),
+        text(p.sigma_at_scatter), p.how,
+        p.at_bound.empty() || p.at_bound == "order" ? "" : "; ON ITS " + p.at_bound + " BOUND");
+}
+
 // Tests that identify none of the parameters (a single oedometer, say) give no parameter set:
 // nothing is written and the input is refused (exit 2), rather than a file of starting values
 // flagged NOT IDENTIFIED (issue 37).
@@ -143,6 +184,7 @@ void refuse_if_nothing_identified(const calibration::CalibrationResult& r,
   if (std::any_of(r.parameters.begin(), r.parameters.end(),
                   [](const auto& p) { return p.identified && !p.fixed; }))
     return;
+  print_result(r, stderr);  // what the fit found says why
   const std::string give =
       r.held.empty() ? "give oedometer and simple-shear tests, dense and loose, that reach the "
                        "critical state"
@@ -153,44 +195,6 @@ void refuse_if_nothing_identified(const calibration::CalibrationResult& r,
       "one's sigma exceeds a quarter of its box; the fit is printed above); {}; no parameter "
       "file written",
       fmt::join(runs, ", "), runs.size(), r.parameters.size(), r.table, r.model, give));
-}
-
-void print_test_rows(const std::vector<calibration::TestFit>& fits, bool with_ends) {
-  for (const auto& t : fits) {
-    fmt::print("{:<40} {:<12}", t.name, t.test + (t.boundary.empty() ? "" : " " + t.boundary));
-    for (const auto& ch : t.rmse)
-      if (with_ends)
-        fmt::print(" {} {:.3g} ({:.4g} / {:.4g})", ch.column, ch.rmse, ch.end_model,
-                   ch.end_measured);
-      else
-        fmt::print(" {} {:.3g}", ch.column, ch.rmse);
-    if (std::isfinite(t.peak_rate_model))
-      fmt::print(" peak rate {:.3f} ({:.3f})", t.peak_rate_model, t.peak_rate_measured);
-    fmt::print("{}\n", t.status == "complete" ? "" : "  (" + t.status + ")");
-  }
-}
-
-void print_result(const calibration::CalibrationResult& r) {
-  for (const auto& n : r.notes) fmt::print("{}\n", n);
-  fmt::print("\n{:<40} {:<12} {}\n", "test", "", "RMSE (peak dilatancy rate: model (measured))");
-  print_test_rows(r.tests, false);
-  fmt::print("\n{:<10} {:>8} {:>10} {:>12}  {}\n", "objective", "weight", "residuals", "RMS",
-             "rows not reached");
-  for (const auto& g : r.objectives)
-    fmt::print("{:<10} {:>8.4g} {:>10} {:>12.4g}  {}\n", calibration::to_string(g.group), g.weight,
-               g.residuals, g.rms, g.unreached);
-  // sigma: from this fit's residuals; at scatter: had the residuals the declared scatter (what
-  // decides "identified"; the two differ most for noise-free synthetic targets)
-  const auto text = [](double v) {
-    return std::isfinite(v) ? fmt::format("{:.3g}", v) : std::string("undefined");
-  };
-  fmt::print("\n{:<10} {:>12} {:>12} {:>12}  {}\n", "parameter", "estimate", "sigma", "at scatter",
-             "how");
-  for (const auto& p : r.parameters)
-    fmt::print(
-        "{:<10} {:>12.8g} {:>12} {:>12}  {}{}\n", p.key, p.value, text(p.sigma),
-        text(p.sigma_at_scatter), p.how,
-        p.at_bound.empty() || p.at_bound == "order" ? "" : "; ON ITS " + p.at_bound + " BOUND");
 }
 
 void print_front(const calibration::ParetoFront& f) {
@@ -231,8 +235,8 @@ int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
                                        std::fflush(stdout);  // a front takes minutes
                                      });
   auto result = front ? front->given().result : calibration::calibrate(tests, opt);
-  print_result(result);  // also when refused below: what the fit found says why
   refuse_if_nothing_identified(result, c.runs);
+  print_result(result);
   for (const auto& t : held_out)
     result.held_out.push_back(calibration::test_fit(t, c.model, result.inputs()));
   if (!result.held_out.empty()) fmt::print("\nheld out, predicted: RMSE (end: model / measured)\n");
