@@ -198,3 +198,26 @@ TEST_CASE("DEM soil cell: as-scene density prepares the cell as the scene's spec
   CHECK(friction("loose") == 1.0);
   CHECK_THROWS_WITH(dem::parse_soil_density("medium", "--density"), Catch::Contains("as-scene"));
 }
+
+// The cyclic cell (issue 34): the plate's amplitude is A x target height in d50 x d50 (the
+// contract's gamma = travel / height), three cycles and nothing after them, and a row every
+// fortieth of A so that a reversal's secant at 10 % of A has rows to rest on.
+TEST_CASE("DEM soil cell: cyclic shear moves the plate by A times the target height",
+          "[dem][cyclic]") {
+  const std::string scene = "data/scenes/truth.toml";
+  const auto text = io::read_file(scene);
+  dem::SoilCellSpec c;
+  c.test = SoilTestKind::kCyclicShear;
+  c.boundary = driver::BoundaryKind::kCV;
+  c.gamma_amplitude = 0.005;
+  c.cycles = 3;
+  c.height_d50 = 12.0;
+  const auto cell = dem::parse_scene(dem::cell_scene_text(text, scene, c), "cell");
+  const double d50 = dem::parse_scene(text, scene).particles.d50_m;
+  const double A = 0.005 * 12.0 * d50;  // 0.12 mm for d50 = 2 mm
+  CHECK(cell.shear.amplitude_m == Approx(A));
+  CHECK(cell.shear.cycles == 3);
+  CHECK(cell.shear.travel_m() == Approx(12.0 * A));  // 4 A a cycle, no post-cyclic shear
+  CHECK(cell.outputs.timeseries_every_m == Approx(A / 40.0));
+  CHECK(cell.boundary.kind == driver::BoundaryKind::kCV);
+}
