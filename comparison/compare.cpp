@@ -223,18 +223,26 @@ models::ModelInputs validated_parameters(const std::string& model, const std::st
   return in;
 }
 
-nlohmann::json run_comparison(const CompareOptions& opt) {
-  const DemRun dem = load_dem_run(opt.dem_dir, opt.allow_partial);
-  const std::vector<DemRun> seeds = load_seeds(opt);
-  SeedScatter scatter = seed_scatter(dem, seeds);  // InputError for a seed of another scene
-  if (opt.pooled) apply_pooling(scatter, *opt.pooled);
-  const Tolerances tolerances = tolerances_for(dem);
-  const models::ModelInputs params = validated_parameters(opt.model, opt.params);
-  const json form_limit =  // read and checked before anything is written
-      opt.form_limit.empty() ? json() : read_form_limit(opt.form_limit, opt.model);
-  auto candidates = standard_variants(dem, opt.model, params, opt.predicted_ds_d50);
-  if (!opt.roughness_scheme.empty() || !opt.f_c.empty())  // refused before anything is written
-    for (auto& v : candidates) chosen_roughness(opt, v.inputs.roughness);
+ComparisonInputs read_comparison_inputs(const CompareOptions& opt) {
+  ComparisonInputs in{opt, load_dem_run(opt.dem_dir, opt.allow_partial), load_seeds(opt)};
+  in.scatter = seed_scatter(in.dem, in.seeds);  // InputError for a seed of another scene
+  if (opt.pooled) apply_pooling(in.scatter, *opt.pooled);
+  in.tolerances = tolerances_for(in.dem);
+  in.form_limit = opt.form_limit.empty() ? json() : read_form_limit(opt.form_limit, opt.model);
+  in.candidates = standard_variants(in.dem, opt.model, validated_parameters(opt.model, opt.params),
+                                    opt.predicted_ds_d50);
+  if (!opt.roughness_scheme.empty() || !opt.f_c.empty())
+    for (auto& v : in.candidates) chosen_roughness(opt, v.inputs.roughness);
+  return in;
+}
+
+nlohmann::json run_comparison(const CompareOptions& options) {
+  return run_comparison(read_comparison_inputs(options));
+}
+
+nlohmann::json run_comparison(const ComparisonInputs& in) {
+  const auto& [opt, dem, seeds, scatter, tolerances, form_limit, given] = in;
+  auto candidates = given;
   io::prepare_run_directory(opt.out, opt.force);
   json manifest = manifest_of(opt);
   if (!opt.roughness_scheme.empty()) manifest["inputs"]["roughness_scheme"] = opt.roughness_scheme;

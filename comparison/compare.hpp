@@ -15,6 +15,8 @@
 #include "comparison/fit.hpp"
 #include "comparison/pooled_scatter.hpp"
 #include "comparison/replay.hpp"
+#include "comparison/seed_scatter.hpp"
+#include "comparison/verdicts.hpp"
 
 namespace iwb::comparison {
 
@@ -60,7 +62,23 @@ std::vector<Variant> standard_variants(const DemRun& dem, const std::string& mod
                                        const models::ModelInputs& parameters,
                                        double predicted_ds_d50 = kDefaultPredictedDsD50);
 
-nlohmann::json run_comparison(const CompareOptions& options);
+// Everything a comparison reads, read and checked (InputError naming the file, key or option)
+// before anything is written: the DEM run and its seeds, the parameter file for the model, the
+// roughness options, the form-limit record. `options.out` is not looked at yet.
+struct ComparisonInputs {
+  CompareOptions options;
+  DemRun dem;
+  std::vector<DemRun> seeds;
+  SeedScatter scatter;
+  Tolerances tolerances;
+  nlohmann::json form_limit;        // null: none
+  std::vector<Variant> candidates;  // standard_variants, with the roughness options applied
+};
+ComparisonInputs read_comparison_inputs(const CompareOptions& options);
+
+// Writes the comparison into `options.out` (refused if it holds an earlier run, without force).
+nlohmann::json run_comparison(const ComparisonInputs& inputs);
+nlohmann::json run_comparison(const CompareOptions& options);  // the two steps above
 
 // --roughness-scheme and --f-c of `options` applied to a variant's wall; InputError for what the
 // model does not take (checked before a comparison or a set writes anything).

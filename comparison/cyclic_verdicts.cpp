@@ -14,14 +14,6 @@ constexpr double kPeakTolerance = 0.10, kRatioTolerance = 0.10, kUnTolerance = 0
 constexpr double kUnFloorD50 = 0.02;  // as the monotonic dilation's floor (quantities.cpp)
 constexpr double kFrictionFloor = 0.01;
 
-// The cycles a reader looks at first: 1, 2, 5 and the last (those that exist).
-std::vector<int> judged_cycles(int cycles) {
-  std::vector<int> out;
-  for (int c : {1, 2, 5, cycles})
-    if (c <= cycles && std::find(out.begin(), out.end(), c) == out.end()) out.push_back(c);
-  return out;
-}
-
 // Mean and SD (n - 1) of the values the seeds have; the SD needs two.
 struct SeedValues {
   std::optional<double> mean, sd;
@@ -99,6 +91,13 @@ std::optional<double> at_cycle(const cycles::CyclicQuantities& q, int c,
 
 }  // namespace
 
+std::vector<int> judged_cycles(int cycles) {
+  std::vector<int> out;
+  for (int c : {1, 2, 5, cycles})
+    if (c <= cycles && std::find(out.begin(), out.end(), c) == out.end()) out.push_back(c);
+  return out;
+}
+
 std::vector<double> cyclic_travel(const DemRun& dem) {
   return cycles::travel_at_speed(
       dem.t_s, dem.scene_but_seed.value("/shear/velocity_mm_s"_json_pointer, 0.0));
@@ -153,7 +152,6 @@ std::vector<CyclicVerdict> judge_cycles(const DemRun& dem,
             each([&](const auto& s) { return at_cycle(s, c, q.get); }), at_cycle(m, c, q.get),
             q.tolerance, q.floor);
   if (d.post_cyclic) {
-    const auto mp = m.post_cyclic;
     const auto peak = [](const auto& s) {
       return s.post_cyclic ? std::optional(s.post_cyclic->peak_friction) : std::nullopt;
     };

@@ -30,6 +30,10 @@ namespace iwb::comparison {
 // is monotonic.
 std::optional<cycles::Program> cyclic_program(const DemRun& dem);
 
+// The cycles a reader looks at first, judged and drawn: 1, 2, 5 and the last of `cycles` (each
+// once, those that exist).
+std::vector<int> judged_cycles(int cycles);
+
 // A cyclic run's travel at each row: its wall moves at v throughout (no ramp with cycles), so v t.
 std::vector<double> cyclic_travel(const DemRun& dem);
 

@@ -48,8 +48,8 @@ Figure curves_figure(const std::string& name, const std::string& title, const st
     }
   f.plot = "plot ";
   for (std::size_t i = 0; i < curves.size(); ++i)
-    f.plot += fmt::format("{}{} using {}:{} skip 1 with lines lw 2 title {}", i ? ", " : "",
-                          gnuplot_string(name + ".csv"), 2 * i + 1, 2 * i + 2,
+    f.plot += fmt::format("{}{} using {}:{} skip 1 {} title {}", i ? ", " : "",
+                          gnuplot_string(name + ".csv"), 2 * i + 1, 2 * i + 2, curves[i].style,
                           gnuplot_string(curves[i].title));
   return f;
 }

@@ -25,10 +25,14 @@ struct Figure {
 struct PlotCurve {
   std::string title;
   std::vector<double> x, y;
+  std::string style = "with lines lw 2";  // gnuplot's "with ..." and its line style
 };
 
+// The style of the reference curve a figure draws last (the DEM): thick and black.
+inline const char* kReferenceStyle = "with lines lw 3 lc rgb '#000000'";
+
 // A figure of such curves: its CSV holds an x and a y column per curve (shorter curves padded with
-// nan, which the plot skips), drawn as lines.
+// nan, which the plot skips), each drawn in its style.
 Figure curves_figure(const std::string& name, const std::string& title, const std::string& xlabel,
                      const std::string& ylabel, const std::vector<PlotCurve>& curves);
 

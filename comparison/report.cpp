@@ -8,6 +8,9 @@
 
 #include "common/errors.hpp"
 #include "comparison/band_figures.hpp"
+#include "comparison/cyclic_figures.hpp"
+#include "comparison/cyclic_verdicts.hpp"
+#include "comparison/dem_run.hpp"
 #include "comparison/figure.hpp"
 #include "comparison/html.hpp"
 #include "comparison/quantities.hpp"
@@ -50,9 +53,7 @@ std::string dem_on_top_plot(const Figure& f, std::size_t variants, bool band) {
   for (std::size_t v = 0; v < variants; ++v)
     plot += fmt::format("{} using 1:{} skip 1 with lines lw 1.5 title {}, ", data, v + 3,
                         gnuplot_string(f.titles[v + 1]));
-  return plot +
-         fmt::format("{} using 1:2 skip 1 with lines lw 3 lc rgb '#000000' title 'DEM (this run)'",
-                     data);
+  return plot + fmt::format("{} using 1:2 skip 1 {} title 'DEM (this run)'", data, kReferenceStyle);
 }
 
 // One figure of `column` (tau, sigma_n or u_n) against u_x: the DEM and the variants `shown`
@@ -311,6 +312,9 @@ struct LoadedComparison {
   nlohmann::json cmp, manifest, dem_manifest, summary;
   io::CsvTable curves, profiles;
   std::optional<io::CsvTable> seeds;
+  // a cyclic run's program and the DEM's travel at each row (src/cycles/)
+  std::optional<cycles::Program> program;
+  std::vector<double> travel_mm;
   std::string dem_status() const { return dem_manifest.value("status", std::string("?")); }
 };
 
@@ -360,6 +364,14 @@ LoadedComparison load_comparison(const fs::path& dir) {
   c.summary = io::read_json_file(c.dem_dir / "summary.json");
   c.profiles = io::read_csv_table(c.dem_dir / "profiles.csv");
   check_curves(c);
+  if (c.cmp.contains("cyclic") && !c.cmp["cyclic"].is_null()) {  // null: a monotonic run
+    const auto dem = load_dem_run(c.dem_dir, true);
+    c.program = cyclic_program(dem);
+    if (!c.program)
+      throw InputError(fmt::format("{}: judged as cyclic, but the DEM run's scene {} has no cycles",
+                                   (dir / "compare.json").string(), c.dem_dir.string()));
+    c.travel_mm = cyclic_travel(dem);
+  }
   return c;
 }
 
@@ -374,7 +386,16 @@ std::string dem_status_warning(const LoadedComparison& c) {
 }
 
 std::string verdict_section(const nlohmann::json& cmp) {
-  std::string h = "<h3>Verdicts</h3>\n" + table_html(verdict_table(cmp)) + "<ul>";
+  const Table cycles = cyclic_verdict_table(cmp);
+  std::string h;
+  if (!cycles.rows.empty())
+    h += "<h3>Verdicts per cycle</h3>\n" + table_html(cycles) +
+         "<p>Each DEM value is the mean over the cell's seeds at that cycle with its 95 % "
+         "t-interval; the model's relative error in brackets.</p>\n<h3>Verdicts on the whole "
+         "path (the monotonic quantities)</h3>\n";
+  else
+    h += "<h3>Verdicts</h3>\n";
+  h += table_html(verdict_table(cmp)) + "<ul>";
   for (const auto& f : verdict_findings(cmp)) h += "<li>" + escape_html(f) + "</li>";
   return h + fmt::format(
                  "</ul><p>Fit weights: {}. Relative errors against max(|DEM|, a floor); "
@@ -388,7 +409,8 @@ std::string verdict_section(const nlohmann::json& cmp) {
 // where they will be, under `files`.
 Section comparison_section(const LoadedComparison& c, std::size_t k,
                            const io::StagedDirectory& files, const fs::path& html) {
-  const auto& [dir, dem_dir, cmp, manifest, dem_manifest, summary, curves, profiles, seeds] = c;
+  const auto& [dir, dem_dir, cmp, manifest, dem_manifest, summary, curves, profiles, seeds, program,
+               travel_mm] = c;
   const std::string fig_name = fmt::format("{}-{}", k, dir.filename().string());
   const fs::path fig_dir = files.path() / fig_name;
   fs::create_directories(fig_dir);
@@ -396,14 +418,17 @@ Section comparison_section(const LoadedComparison& c, std::size_t k,
   std::vector<std::size_t> shown;
   for (const char* which : {"predicted_variant", "tau_only_variant", "fitted_variant"})
     if (cmp["verdicts"].contains(which)) shown.push_back(cmp["verdicts"][which].get<std::size_t>());
-  std::vector<Figure> figs = {
-      versus_u_x("tau_ux", "tau (kPa)", "tau_dem_kPa", "tau_model_kPa", curves, vs, shown,
-                 seed_band(seeds, "tau_mean_kPa", "tau_sd_kPa")),
-      versus_u_x("un_ux", "u_n (mm), dilation positive", "u_n_dem_mm", "u_n_model_mm", curves, vs,
-                 shown, seed_band(seeds, "u_n_mean_mm", "u_n_sd_mm")),
-      versus_u_x("sigman_ux", "sigma_n (kPa)", "sigma_n_dem_kPa", "sigma_n_model_kPa", curves, vs,
-                 shown, seed_band(seeds, "sigma_n_mean_kPa", "sigma_n_sd_kPa")),
-      velocity_profile(profiles, summary)};
+  std::vector<Figure> figs;
+  if (program)  // loops drawn over one another along u_x would hide every cycle
+    figs = cyclic_figures(cmp, curves, travel_mm, *program, shown);
+  else
+    figs = {versus_u_x("tau_ux", "tau (kPa)", "tau_dem_kPa", "tau_model_kPa", curves, vs, shown,
+                       seed_band(seeds, "tau_mean_kPa", "tau_sd_kPa")),
+            versus_u_x("un_ux", "u_n (mm), dilation positive", "u_n_dem_mm", "u_n_model_mm", curves,
+                       vs, shown, seed_band(seeds, "u_n_mean_mm", "u_n_sd_mm")),
+            versus_u_x("sigman_ux", "sigma_n (kPa)", "sigma_n_dem_kPa", "sigma_n_model_kPa", curves,
+                       vs, shown, seed_band(seeds, "sigma_n_mean_kPa", "sigma_n_sd_kPa"))};
+  figs.push_back(velocity_profile(profiles, summary));
   std::vector<ShearZoneMark> marks;
   for (const auto& [which, label] :
        {std::pair{"predicted_variant", "d_s predicted"}, {"fitted_variant", "d_s fitted"}})
@@ -422,10 +447,11 @@ Section comparison_section(const LoadedComparison& c, std::size_t k,
     }
   for (auto& f : band_figures(dem_dir, marks)) figs.push_back(std::move(f));
   std::vector<std::string> notes(figs.size());
-  if (cmp["dem"]["boundary"] == "CNL")
-    notes[2] =
-        ". Under CNL every model follows the DEM's measured sigma_n by construction: its curves "
-        "lie under the DEM's";
+  for (std::size_t i = 0; i < figs.size(); ++i)
+    if (figs[i].name == "sigman_ux" && cmp["dem"]["boundary"] == "CNL")
+      notes[i] =
+          ". Under CNL every model follows the DEM's measured sigma_n by construction: its curves "
+          "lie under the DEM's";
   Section out;
   std::string& body = out.html;
   body += fmt::format("<section id=\"run-{}\"><h2>{} against {} ({} engine, {})</h2>\n", k,
@@ -504,6 +530,30 @@ std::string glance_table(const std::vector<LoadedComparison>& comparisons) {
          "this boundary condition.</p>\n";
 }
 
+// Cyclic runs judged by more than one model (an -igs model and its plain counterpart): their
+// per-cycle verdicts side by side, one table per DEM run.
+std::string models_beside(const std::vector<LoadedComparison>& comparisons) {
+  std::vector<std::pair<std::string, std::vector<nlohmann::json>>> by_run;
+  for (const auto& c : comparisons) {
+    if (!c.program) continue;
+    const std::string run = fs::weakly_canonical(c.dem_dir).string();
+    auto it =
+        std::find_if(by_run.begin(), by_run.end(), [&](const auto& g) { return g.first == run; });
+    if (it == by_run.end()) by_run.push_back({run, {}}), it = by_run.end() - 1;
+    it->second.push_back(c.cmp);
+  }
+  std::string h;
+  for (const auto& [run, cmps] : by_run)
+    if (cmps.size() > 1)
+      h +=
+          fmt::format("<h3>{}</h3>\n", escape_html(cmps.front()["dem"]["dir"].get<std::string>())) +
+          table_html(cyclic_models_table(cmps));
+  if (h.empty()) return h;
+  return "<section><h2>Cyclic verdicts, model beside model</h2>\n<p>Each cell: the model's value "
+         "(its error against the DEM's seed mean) and its verdict.</p>\n" +
+         h + "</section>\n";
+}
+
 }  // namespace
 
 std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs::path& html) {
@@ -518,8 +568,8 @@ std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs:
   if (html.has_parent_path()) fs::create_directories(html.parent_path());
   io::StagedDirectory files(html.parent_path() / (html.stem().string() + "_files"));
   std::vector<fs::path> figures;
-  std::string body =
-      "<section><h2>Verdicts at a glance</h2>\n" + glance_table(comparisons) + "</section>\n";
+  std::string body = "<section><h2>Verdicts at a glance</h2>\n" + glance_table(comparisons) +
+                     "</section>\n" + models_beside(comparisons);
   for (std::size_t i = 0; i < hypotheses.size(); ++i)
     body += hypotheses_section(hypotheses[i], sets[i]);
   for (std::size_t k = 0; k < comparisons.size(); ++k) {

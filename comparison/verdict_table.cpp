@@ -103,26 +103,60 @@ Table verdict_table(const json& cmp) {
   return t;
 }
 
+namespace {
+
+// The cyclic verdicts of a comparison's predicted or fitted variant (empty for a monotonic run).
+const json& cyclic_verdicts_of(const json& cmp, const char* which) {
+  static const json none = json::array();
+  const auto& variant = cmp["variants"][cmp["verdicts"][which].get<std::size_t>()];
+  return variant.contains("cyclic") ? variant["cyclic"]["verdicts"] : none;
+}
+
+std::string cyclic_cell(const json& x) {
+  if (!x["model"].is_number()) return std::string("not reached");
+  return fmt::format("{:.3g} ({:+.0f} %)", x["model"].get<double>(),
+                     100 * x["relative_error"].get<double>());
+}
+
+}  // namespace
+
+Table cyclic_models_table(const std::vector<json>& comparisons) {
+  Table t{{"quantity", "where", "DEM"}, {}};
+  if (comparisons.empty()) return t;
+  const auto& first = cyclic_verdicts_of(comparisons.front(), "predicted_variant");
+  for (const auto& c : comparisons)
+    for (const char* which : {"predicted", "fitted"})
+      t.columns.push_back(c["model"].get<std::string>() + " " + which);
+  for (const auto& row : first) {
+    std::vector<std::string> cells = {row["quantity"], row["where"],
+                                      row["dem"].is_number() ? with_interval(row) : "-"};
+    for (const auto& c : comparisons)
+      for (const char* which : {"predicted_variant", "fitted_variant"}) {
+        const auto& verdicts = cyclic_verdicts_of(c, which);
+        const auto same = std::find_if(verdicts.begin(), verdicts.end(), [&](const json& x) {
+          return x["quantity"] == row["quantity"] && x["where"] == row["where"];
+        });
+        cells.push_back(same == verdicts.end()
+                            ? "-"
+                            : cyclic_cell(*same) + " " + (*same)["verdict"].get<std::string>());
+      }
+    t.rows.push_back(cells);
+  }
+  return t;
+}
+
 Table cyclic_verdict_table(const json& cmp) {
   Table t{{"quantity", "where", "DEM", "predicted model", "fitted model", "tolerance", "detects",
            "predicted", "fitted"},
           {}};
-  const auto& v = cmp["variants"];
-  const auto& pred = v[cmp["verdicts"]["predicted_variant"].get<std::size_t>()];
-  const auto& fit = v[cmp["verdicts"]["fitted_variant"].get<std::size_t>()];
-  if (!pred.contains("cyclic")) return t;
-  const auto& p = pred["cyclic"]["verdicts"];
-  const auto& f = fit["cyclic"]["verdicts"];
-  auto cell = [](const json& x) {
-    if (!x["model"].is_number()) return std::string("not reached");
-    return fmt::format("{:.3g} ({:+.0f} %)", x["model"].get<double>(),
-                       100 * x["relative_error"].get<double>());
-  };
+  const auto& p = cyclic_verdicts_of(cmp, "predicted_variant");
+  const auto& f = cyclic_verdicts_of(cmp, "fitted_variant");
   for (std::size_t i = 0; i < p.size(); ++i)
     t.rows.push_back({p[i]["quantity"].get<std::string>(), p[i]["where"].get<std::string>(),
-                      p[i]["dem"].is_number() ? with_interval(p[i]) : "-", cell(p[i]), cell(f[i]),
-                      percent(p[i]["tolerance"]), percent(p[i]["detection_limit"]),
-                      p[i]["verdict"].get<std::string>(), f[i]["verdict"].get<std::string>()});
+                      p[i]["dem"].is_number() ? with_interval(p[i]) : "-", cyclic_cell(p[i]),
+                      cyclic_cell(f[i]), percent(p[i]["tolerance"]),
+                      percent(p[i]["detection_limit"]), p[i]["verdict"].get<std::string>(),
+                      f[i]["verdict"].get<std::string>()});
   return t;
 }
 

@@ -21,6 +21,12 @@ Table verdict_table(const nlohmann::json& compare);
 // quantity at a cycle; empty rows for a monotonic run.
 Table cyclic_verdict_table(const nlohmann::json& compare);
 
+// Models judged along one cyclic run side by side (issue 34: does intergranular strain improve
+// on its plain model, and where?): the rows of cyclic_verdict_table, the DEM once, then for each
+// comparison its predicted and its fitted model (value, error, verdict). Empty when the first is
+// not cyclic; a quantity a comparison did not judge is "-".
+Table cyclic_models_table(const std::vector<nlohmann::json>& comparisons);
+
 // The sentences under the table: what the predicted and fitted models hold, and the scan.
 std::vector<std::string> verdict_findings(const nlohmann::json& compare);
 

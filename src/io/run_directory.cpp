@@ -56,13 +56,17 @@ std::string utc_timestamp() {
   return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::chrono::system_clock::now()));
 }
 
+void require_new_run_directory(const fs::path& dir, bool force) {
+  if (!force && fs::exists(dir / "manifest.json"))
+    throw InputError(
+        fmt::format("{}: holds an earlier run (manifest.json); choose another --out "
+                    "or pass --force to replace it",
+                    dir.string()));
+}
+
 void prepare_run_directory(const fs::path& dir, bool force) {
+  require_new_run_directory(dir, force);
   if (fs::exists(dir / "manifest.json")) {
-    if (!force)
-      throw InputError(
-          fmt::format("{}: holds an earlier run (manifest.json); choose another --out "
-                      "or pass --force to replace it",
-                      dir.string()));
     // Replaced, not overwritten: files the new run does not write again (a snapshot at a step
     // it never reaches) would otherwise pass for its own. Only a directory with a manifest, that
     // is a run of ours, is emptied; its lock (directory_lock.hpp), held by the caller, stays.

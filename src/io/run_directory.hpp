@@ -19,6 +19,9 @@ std::string utc_timestamp();  // ISO 8601, seconds
 // of the earlier run passes for the new one's (but its lock file, DirectoryLock, held by the
 // caller).
 void prepare_run_directory(const std::filesystem::path& dir, bool force);
+// prepare_run_directory's refusal alone, for a command that prepares several directories and
+// checks them all before it writes any.
+void require_new_run_directory(const std::filesystem::path& dir, bool force);
 
 void write_manifest(const std::filesystem::path& dir, const nlohmann::json& manifest);
 

@@ -13,8 +13,11 @@
 #include "common/errors.hpp"
 #include "comparison/run_set.hpp"
 #include "comparison/verdict_table.hpp"
+#include "io/run_directory.hpp"
 
 namespace iwb::app {
+
+namespace fs = std::filesystem;
 
 void print_hypothesis_checks(const nlohmann::json& hypotheses) {
   for (const auto& check : hypotheses["checks"])
@@ -26,6 +29,7 @@ namespace {
 
 struct CompareCommand {
   comparison::CompareOptions options;
+  std::vector<std::string> models = {"hvwe"};
   std::string dem_dir, out;
   std::vector<std::string> set_runs, seed_runs;
   bool own_scatter = false;
@@ -33,7 +37,10 @@ struct CompareCommand {
 
 // `iwb compare --runs`: the set's comparisons, then the hypothesis verdicts.
 int compare_set(const CompareCommand& o, const CommandContext& context) {
-  const auto& c = o.options;
+  if (o.models.size() > 1)
+    throw InputError("--model: a set (--runs) is compared with one model; give one");
+  auto c = o.options;
+  c.model = o.models.front();
   comparison::RunSetOptions opt{{o.set_runs.begin(), o.set_runs.end()},
                                 c.model,
                                 c.params,
@@ -53,23 +60,62 @@ int compare_set(const CompareCommand& o, const CommandContext& context) {
   return 0;
 }
 
-int compare_run(const CompareCommand& o, const CommandContext& context) {
+// One model into OUT, several each into OUT/<model>: every model's inputs and directory checked
+// before any comparison is written.
+std::vector<comparison::ComparisonInputs> inputs_per_model(const CompareCommand& o,
+                                                           const CommandContext& context) {
   if (o.dem_dir.empty()) throw InputError("compare: give a DEM run directory or --runs DIR...");
-  auto opt = o.options;
-  opt.dem_dir = o.dem_dir;
-  opt.out = o.out.empty() ? std::filesystem::path("runs") /
-                                ("compare-" + std::filesystem::path(o.dem_dir).filename().string())
-                          : std::filesystem::path(o.out);
-  opt.command_line = context.command_line;
-  opt.seed_dirs.assign(o.seed_runs.begin(), o.seed_runs.end());
-  const auto result = comparison::run_comparison(opt);
+  const fs::path out =
+      o.out.empty() ? fs::path("runs") / ("compare-" + fs::path(o.dem_dir).filename().string())
+                    : fs::path(o.out);
+  if (o.models.size() > 1 && !o.options.form_limit.empty())
+    throw InputError("--form-limit: a form-limit record is one model's; give one --model with it");
+  std::vector<comparison::ComparisonInputs> each;
+  for (const auto& model : o.models) {
+    for (const auto& earlier : each)
+      if (earlier.options.model == model)
+        throw InputError(fmt::format("--model {}: given twice", model));
+    auto opt = o.options;
+    opt.model = model;
+    opt.dem_dir = o.dem_dir;
+    opt.out = o.models.size() > 1 ? out / model : out;
+    opt.command_line = context.command_line;
+    opt.seed_dirs.assign(o.seed_runs.begin(), o.seed_runs.end());
+    io::require_new_run_directory(opt.out, opt.force);
+    each.push_back(comparison::read_comparison_inputs(opt));
+  }
+  return each;
+}
+
+void print_verdicts(const nlohmann::json& result, bool with_cycles) {
   const auto cyclic = comparison::cyclic_verdict_table(result);
-  if (!cyclic.rows.empty())
+  if (with_cycles && !cyclic.rows.empty())
     fmt::print("Cycles (issue 34):\n{}\nMonotonic quantities over the whole path:\n",
                comparison::to_text(cyclic));
   fmt::print("{}", comparison::to_text(comparison::verdict_table(result)));
   for (const auto& f : comparison::verdict_findings(result)) fmt::print("{}\n", f);
-  fmt::print("-> {} (iwb report {})\n", opt.out.string(), opt.out.string());
+}
+
+int compare_run(const CompareCommand& o, const CommandContext& context) {
+  const auto each = inputs_per_model(o, context);
+  std::vector<nlohmann::json> results;
+  std::string dirs;
+  for (const auto& in : each) {
+    results.push_back(comparison::run_comparison(in));
+    dirs += " " + in.options.out.string();
+  }
+  if (results.size() == 1) {
+    print_verdicts(results.front(), true);
+  } else {
+    const auto beside = comparison::cyclic_models_table(results);
+    if (!beside.rows.empty())
+      fmt::print("Cycles, model beside model (issue 34):\n{}", comparison::to_text(beside));
+    for (std::size_t k = 0; k < results.size(); ++k) {
+      fmt::print("\n{} ({}):\n", o.models[k], each[k].options.out.string());
+      print_verdicts(results[k], false);
+    }
+  }
+  fmt::print("->{} (iwb report{})\n", dirs, dirs);
   return 0;
 }
 
@@ -120,7 +166,13 @@ void add_compare_command(CLI::App& app, CommandList& commands) {
                    "d_s of the predicted variant, in d50")
       ->capture_default_str()
       ->check(number_in(closed(0.5, 100.0), "d50"));
-  compare->add_option("--model", copt.model, "continuum model (iwb models)")->capture_default_str();
+  compare
+      ->add_option("--model", o->models,
+                   "continuum model (iwb models); several, comma-separated (an -igs model and its "
+                   "plain counterpart: hvwe-igs,hvwe), are each judged along the same run into "
+                   "OUT/<model>, their cyclic verdicts printed side by side")
+      ->delimiter(',')
+      ->capture_default_str();
   compare->add_option("--params", copt.params, "parameter file (data/params/)")
       ->required()
       ->check(input_file());
