@@ -1,7 +1,8 @@
 """Per-cycle means over the seeds of a cyclic cell, with the 95 % Student-t half-width (README.md
 here): peak tau/sigma_n towards +A and -A, sigma_n / sigma_n0 and u_n at the cycle's end, the loop's
 dissipated energy and the reversal secants, at the cycles given, then the post-cyclic peak and u_n
-change. Run from the repository root:
+change. The same for the shaft of a pile cycled in settlement (data/piles/cyclic/). Run from the
+repository root:
   /usr/bin/python3 data/cyclic/cycle_table.py data/cyclic/cyclic_small/runs/cns-200_s* [--cycles 1,2,5,10,20]"""
 import json
 import statistics as st
@@ -22,7 +23,8 @@ ROWS = [("peak +tau/sigma_n", lambda c: c["peak_friction_positive"]),
         ("sigma_n / sigma_n0 at the cycle's end", lambda c: c["sigma_n_ratio"]),
         ("u_n at the cycle's end (mm)", lambda c: c["u_n_end_mm"]),
         ("loop energy (J/m^2)", lambda c: c["dissipated_energy_J_m2"]),
-        ("reversal secant over 50 % of A at +A (kPa/mm)", lambda c: c["reversal_at_plus"]["secant_50_kPa_per_mm"])]
+        ("reversal secant over 50 % of A at +A (kPa/mm)", lambda c: c["reversal_at_plus"]["secant_50_kPa_per_mm"]),
+        ("tau at +A (kPa; a pile's shaft friction)", lambda c: c["reversal_at_plus"]["tau_kPa"])]
 
 
 def main(args):
@@ -31,7 +33,8 @@ def main(args):
         i = args.index("--cycles")
         cycles = [int(x) for x in args[i + 1].split(",")]
         args = args[:i] + args[i + 2:]
-    runs = [json.load(open(f"{d}/summary.json"))["cyclic"] for d in args]
+    # a DEM run's summary has them under "cyclic", a pile's (iwb pile, cyclic_settlement) "cycles"
+    runs = [(lambda s: s.get("cyclic") or s["cycles"])(json.load(open(f"{d}/summary.json"))) for d in args]
     print(f"{len(runs)} runs: " + ", ".join(args) + "\n")
     print("| quantity | " + " | ".join(f"cycle {k}" for k in cycles) + " |")
     print("|---|" + "---|" * len(cycles))
