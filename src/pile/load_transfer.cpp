@@ -97,7 +97,10 @@ PileSnapshot LoadTransfer::snapshot() const {
   PileSnapshot s;
   s.head_settlement_mm = w_(0), s.tip_settlement_mm = w_(n);
   s.base_load_kN = base_kN_per_mm_ * w_(n);
-  for (const auto& p : points_) s.shaft_load_kN += p.committed().tau_kPa * shaft_area_m2_;
+  for (const auto& p : points_) {
+    s.shaft_load_kN += p.committed().tau_kPa * shaft_area_m2_;
+    s.shaft_sigma_n_mean_kPa += p.committed().sigma_n_kPa / double(n);
+  }
   s.head_load_kN =
       bar_kN_per_mm_ * (w_(0) - w_(1)) + 0.5 * points_[0].committed().tau_kPa * shaft_area_m2_;
   s.newton_iterations = last_iterations_;

@@ -15,6 +15,7 @@ namespace iwb::pile {
 struct PileSnapshot {
   double head_settlement_mm = 0.0, head_load_kN = 0.0, base_load_kN = 0.0, shaft_load_kN = 0.0;
   double tip_settlement_mm = 0.0;
+  double shaft_sigma_n_mean_kPa = 0.0;  // over the shaft's stress points (equal areas)
   int newton_iterations = 0;
 };
 

@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "comparison/figure.hpp"
+#include "cycles/cycle_quantities.hpp"
 #include "io/directory_lock.hpp"
 #include "io/output_path.hpp"
 #include "io/run_directory.hpp"
@@ -31,12 +32,15 @@ std::vector<double> head_path(const Loading& l) {
   const auto ramp = [&](double from, double to) {
     for (int k = 1; k <= q; ++k) t.push_back(from + (to - from) * k / q);
   };
-  if (l.mean_kN > 0.0) ramp(0.0, l.mean_kN);
+  // a load about its mean, or a settlement about 0
+  const bool load = l.kind == LoadingKind::kCyclicLoad;
+  const double mean = load ? l.mean_kN : 0.0, amplitude = load ? l.amplitude_kN : l.amplitude_mm;
+  if (mean > 0.0) ramp(0.0, mean);
   for (int c = 0; c < l.cycles; ++c) {
-    ramp(l.mean_kN, l.mean_kN + l.amplitude_kN);
-    ramp(l.mean_kN + l.amplitude_kN, l.mean_kN);
-    ramp(l.mean_kN, l.mean_kN - l.amplitude_kN);
-    ramp(l.mean_kN - l.amplitude_kN, l.mean_kN);
+    ramp(mean, mean + amplitude);
+    ramp(mean + amplitude, mean);
+    ramp(mean, mean - amplitude);
+    ramp(mean - amplitude, mean);
   }
   return t;
 }
@@ -45,13 +49,13 @@ std::vector<double> head_path(const Loading& l) {
 // point fails, in two halves, down to 1/2^kSubdivisions of the step.
 constexpr int kSubdivisions = 8;
 
-PileSnapshot advance(LoadTransfer& pile, LoadingKind kind, double from, double to, int depth) {
+PileSnapshot advance(LoadTransfer& pile, const Loading& l, double from, double to, int depth) {
   try {
-    return kind == LoadingKind::kSettlement ? pile.settle_to(to) : pile.load_to(to);
+    return l.settlement_given() ? pile.settle_to(to) : pile.load_to(to);
   } catch (const ConvergenceError&) {
     if (depth >= kSubdivisions) throw;
-    advance(pile, kind, from, 0.5 * (from + to), depth + 1);
-    return advance(pile, kind, 0.5 * (from + to), to, depth + 1);
+    advance(pile, l, from, 0.5 * (from + to), depth + 1);
+    return advance(pile, l, 0.5 * (from + to), to, depth + 1);
   }
 }
 
@@ -71,7 +75,7 @@ Analysis analyse(const PileSpec& spec, const ShaftMaterial& material, int elemen
   std::sort(pending.begin(), pending.end());
   for (double target : head_path(spec.loading)) {
     try {
-      a.curve.push_back(advance(pile, spec.loading.kind, previous, target, 0));
+      a.curve.push_back(advance(pile, spec.loading, previous, target, 0));
       previous = target;
     } catch (const std::exception& e) {
       a.status = fmt::format("failed: {}", e.what());
@@ -94,11 +98,11 @@ Analysis analyse(const PileSpec& spec, const ShaftMaterial& material, int elemen
 std::string curve_csv(const std::vector<PileSnapshot>& c) {
   std::string out =
       "step,head_settlement_mm,head_load_kN,shaft_load_kN,base_load_kN,tip_settlement_mm,newton_"
-      "iterations\n";
+      "iterations,shaft_sigma_n_mean_kPa\n";
   for (std::size_t k = 0; k < c.size(); ++k)
-    out += fmt::format("{},{},{},{},{},{},{}\n", k, c[k].head_settlement_mm, c[k].head_load_kN,
+    out += fmt::format("{},{},{},{},{},{},{},{}\n", k, c[k].head_settlement_mm, c[k].head_load_kN,
                        c[k].shaft_load_kN, c[k].base_load_kN, c[k].tip_settlement_mm,
-                       c[k].newton_iterations);
+                       c[k].newton_iterations, c[k].shaft_sigma_n_mean_kPa);
   return out;
 }
 
@@ -111,19 +115,37 @@ std::string profiles_csv(const Analysis& a) {
   return out;
 }
 
-// The quantity mesh convergence is judged on: the head load at the last settlement, or the head
-// settlement at the last load.
+// The quantity mesh convergence is judged on: the head load at the last settlement, the head
+// settlement at the end of the last load cycle, or the shaft's mean normal stress at the end of
+// the last settlement cycle (its friction fatigue).
 double end_value(const PileSpec& spec, const Analysis& a) {
-  return spec.loading.kind == LoadingKind::kSettlement ? a.curve.back().head_load_kN
-                                                       : a.curve.back().head_settlement_mm;
+  switch (spec.loading.kind) {
+    case LoadingKind::kSettlement:
+      return a.curve.back().head_load_kN;
+    case LoadingKind::kCyclicLoad:
+      return a.curve.back().head_settlement_mm;
+    case LoadingKind::kCyclicSettlement:
+      return a.curve.back().shaft_sigma_n_mean_kPa;
+  }
+  return NAN;
+}
+
+const char* end_quantity(const PileSpec& spec) {
+  switch (spec.loading.kind) {
+    case LoadingKind::kSettlement:
+      return "head load at the last settlement, kN";
+    case LoadingKind::kCyclicLoad:
+      return "head settlement at the end of the last cycle, mm";
+    case LoadingKind::kCyclicSettlement:
+      return "the shaft's mean normal stress at the end of the last cycle, kPa";
+  }
+  return "";
 }
 
 json mesh_convergence(const PileSpec& spec,
                       const std::vector<std::pair<int, const Analysis*>>& runs) {
   json j;
-  j["quantity"] = spec.loading.kind == LoadingKind::kSettlement
-                      ? "head load at the last settlement, kN"
-                      : "head settlement at the end of the last cycle, mm";
+  j["quantity"] = end_quantity(spec);
   std::vector<double> v;
   for (const auto& [n, a] : runs) {
     j["elements"].push_back(n);
@@ -140,6 +162,28 @@ json mesh_convergence(const PileSpec& spec,
     }
   }
   return j;
+}
+
+// The shaft as one interface under the head's displacement cycles (issue 34, item 6): tau the
+// shaft load over the shaft's area, sigma_n its mean normal stress, u_n the mean normal
+// displacement (sigma_n - sigma_n0) / K of the cavity's spring; measured per cycle by the
+// definitions the DEM's cyclic cells are (src/cycles/). The head's targets land on the reversals,
+// so the travel is the sum of their steps.
+cycles::CyclicQuantities shaft_cycles(const PileSpec& spec, const Analysis& a) {
+  const double area_m2 = M_PI * spec.pile.diameter_m * spec.pile.length_m;
+  const double K = 4.0 * spec.soil.shear_modulus_kPa / (spec.pile.diameter_m * 1000.0);
+  cycles::Path p;
+  const double sigma_n0 = a.curve.front().shaft_sigma_n_mean_kPa;
+  for (const auto& s : a.curve) {
+    p.travel_mm.push_back(p.travel_mm.empty() ? 0.0
+                                              : p.travel_mm.back() + std::abs(s.head_settlement_mm -
+                                                                              p.u_x_mm.back()));
+    p.u_x_mm.push_back(s.head_settlement_mm);
+    p.tau_kPa.push_back(s.shaft_load_kN / area_m2);
+    p.sigma_n_kPa.push_back(s.shaft_sigma_n_mean_kPa);
+    p.u_n_mm.push_back((s.shaft_sigma_n_mean_kPa - sigma_n0) / K);
+  }
+  return cycles::cyclic_quantities(p, {spec.loading.amplitude_mm, spec.loading.cycles, 0.0});
 }
 
 std::vector<fs::path> draw_figures(const PileSpec& spec, const Analysis& a, const fs::path& out) {
@@ -172,6 +216,19 @@ std::vector<fs::path> draw_figures(const PileSpec& spec, const Analysis& a, cons
                                   "depth below the head (m, negative)", curves),
         staged.path()));
   }
+  if (spec.loading.kind == LoadingKind::kCyclicSettlement && a.curve.size() > 2) {
+    comparison::PlotCurve ratio{
+        "sigma_n / sigma_n0 at the cycle's end", {}, {}, "with linespoints lw 2 pt 7"},
+        peak{"peak tau / sigma_n towards +A", {}, {}, "with linespoints lw 2 pt 5"};
+    for (const auto& c : shaft_cycles(spec, a).cycles) {
+      ratio.x.push_back(c.number), ratio.y.push_back(c.sigma_n_ratio);
+      peak.x.push_back(c.number), peak.y.push_back(c.peak_friction_positive);
+    }
+    svgs.push_back(comparison::draw(
+        comparison::curves_figure("shaft_cycles", "The shaft over the cycles (" + model + ")",
+                                  "cycle N", "ratio", {ratio, peak}),
+        staged.path()));
+  }
   staged.commit();
   return svgs;
 }
@@ -180,16 +237,24 @@ json summary_of(const PileSpec& spec, const Analysis& a, const json& convergence
   double capacity = 0.0;
   for (const auto& s : a.curve) capacity = std::max(capacity, s.head_load_kN);
   const auto& end = a.curve.back();
-  return {{"status", a.status},
-          {"model", spec.interface.model},
-          {"elements", spec.pile.elements},
-          {"largest_head_load_kN", capacity},
-          {"end",
-           {{"head_settlement_mm", end.head_settlement_mm},
-            {"head_load_kN", end.head_load_kN},
-            {"shaft_load_kN", end.shaft_load_kN},
-            {"base_load_kN", end.base_load_kN}}},
-          {"mesh_convergence", convergence}};
+  json out = {{"status", a.status},
+              {"model", spec.interface.model},
+              {"elements", spec.pile.elements},
+              {"largest_head_load_kN", capacity},
+              {"end",
+               {{"head_settlement_mm", end.head_settlement_mm},
+                {"head_load_kN", end.head_load_kN},
+                {"shaft_load_kN", end.shaft_load_kN},
+                {"base_load_kN", end.base_load_kN}}},
+              {"mesh_convergence", convergence}};
+  if (spec.loading.kind == LoadingKind::kCyclicSettlement && a.curve.size() > 2) {
+    out["cycles"] = cycles::to_json(shaft_cycles(spec, a));
+    out["cycles_definition"] =
+        "the shaft as one interface: tau = shaft load / (pi D L), sigma_n the mean over the "
+        "shaft's stress points, u_n = (sigma_n - sigma_n0) / K, u_x the head's settlement; per "
+        "cycle as src/cycles/ measures the DEM's cyclic cells";
+  }
+  return out;
 }
 
 }  // namespace

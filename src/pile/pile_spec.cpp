@@ -72,9 +72,15 @@ Loading read_loading(io::TableReader t) {
     l.amplitude_kN = t.positive("amplitude_kN");
     l.cycles = t.count("cycles");
     l.increments_per_quarter = t.count("increments_per_quarter");
+  } else if (kind == "cyclic_settlement") {
+    l.kind = LoadingKind::kCyclicSettlement;
+    l.amplitude_mm = t.positive("amplitude_mm", 1e4);
+    l.cycles = t.count("cycles");
+    l.increments_per_quarter = t.count("increments_per_quarter");
   } else {
-    throw InputError(fmt::format("{} = \"{}\"; allowed \"settlement\" or \"cyclic_load\"",
-                                 t.where("kind"), kind));
+    throw InputError(
+        fmt::format("{} = \"{}\"; allowed \"settlement\", \"cyclic_load\" or \"cyclic_settlement\"",
+                    t.where("kind"), kind));
   }
   if (const auto* loads = t.node("profile_loads_kN")) {
     const auto* array = loads->as_array();

@@ -31,14 +31,19 @@ struct InterfaceSpec {
   std::map<std::string, double> initial;  // the model's other [initial] inputs (e0, OCR, delta...)
 };
 
-enum class LoadingKind { kSettlement, kCyclicLoad };
+// kCyclicSettlement: the head displaced 0 -> +A -> -A -> 0 `cycles` times, as the DEM's cyclic
+// interface cells are (issue 34, item 6): the shaft's friction fatigue under displacement cycles.
+enum class LoadingKind { kSettlement, kCyclicLoad, kCyclicSettlement };
 
 struct Loading {
   LoadingKind kind = LoadingKind::kSettlement;
   double settlement_mm = 0.0;  // kSettlement: the head pushed to this settlement
   int increments = 0;
   double mean_kN = 0.0, amplitude_kN = 0.0;  // kCyclicLoad: head load mean +- amplitude
+  double amplitude_mm = 0.0;                 // kCyclicSettlement: head settlement +- amplitude
   int cycles = 0, increments_per_quarter = 0;
+  // the head's settlement is prescribed (kSettlement, kCyclicSettlement), else its load
+  bool settlement_given() const { return kind != LoadingKind::kCyclicLoad; }
   std::vector<double> profile_loads_kN;  // profiles written where the head load first reaches these
 };
 

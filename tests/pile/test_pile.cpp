@@ -2,7 +2,8 @@
 // elastic Mohr-Coulomb interface that never yields) against the closed-form head stiffness of a
 // compressible pile on uniform springs with a base spring, with second-order mesh convergence; a
 // rigid-plastic shaft (psi = 0, no cohesion, no base) whose capacity is pi D tan(phi) K0 gamma' L^2
-// / 2; the head load equal to shaft plus base at every step.
+// / 2, and the same shaft cycled in settlement; the head load equal to shaft plus base at every
+// step.
 #include <fmt/core.h>
 
 #include <catch2/catch.hpp>
@@ -93,4 +94,47 @@ TEST_CASE(
              base = curve.values("base_load_kN");
   for (std::size_t r = 0; r < head.size(); ++r)
     CHECK(head[r] == Approx(shaft[r] + base[r]).margin(1e-9 * capacity));
+}
+
+TEST_CASE(
+    "pile: a rigid-plastic shaft cycled in settlement slips at tan(phi) both ways, carries +- pi D "
+    "tan(phi) K0 gamma' L^2 / 2 at +-A and keeps its normal stress (psi = 0)",
+    "[pile][cyclic]") {
+  // A = 5 mm, far beyond the slip's elastic part and the pile's shortening under its capacity
+  // (P L / 2 EA = 0.28 mm): at +-A every stress point slips, at tau = +-tan(phi) sigma_n0(z)
+  constexpr double kA = 5.0;
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "pile" / "plastic_cycles";
+  const auto file = write_case(
+      dir,
+      "E_kPa = 3e6\nnu = 0.25\nphi_i_deg = 30\npsi_deg = 0\nc_kPa = 0\ntension_cutoff_kPa = 0\n",
+      0.0, 10,
+      fmt::format("kind = \"cyclic_settlement\"\namplitude_mm = {}\ncycles = 3\n"
+                  "increments_per_quarter = 4\n",
+                  kA));
+  const auto out = run(file, dir / "run");
+  const double capacity = M_PI * kD * std::tan(M_PI / 6) * kK0 * kGamma * kL * kL / 2.0;
+  const auto curve = io::read_csv_table(out / "load_settlement.csv");
+  const auto w = curve.values("head_settlement_mm"), shaft = curve.values("shaft_load_kN");
+  int at_plus = 0, at_minus = 0;
+  for (std::size_t r = 0; r < w.size(); ++r) {
+    if (w[r] == Approx(kA).epsilon(1e-12)) {
+      ++at_plus;
+      CHECK(shaft[r] == Approx(capacity));
+    }
+    if (w[r] == Approx(-kA).epsilon(1e-12)) {
+      ++at_minus;
+      CHECK(shaft[r] == Approx(-capacity));
+    }
+  }
+  CHECK(at_plus == 3);
+  CHECK(at_minus == 3);
+  // the shaft as one interface: its mean tau over its mean sigma_n is tan(phi) at every depth's
+  // slip, so its peak friction each way is tan(phi); no dilatancy, so sigma_n stays sigma_n0
+  const auto cycles = io::read_json_file(out / "summary.json")["cycles"]["cycles"];
+  REQUIRE(cycles.size() == 3);
+  for (const auto& c : cycles) {
+    CHECK(c["peak_friction_positive"].get<double>() == Approx(std::tan(M_PI / 6)).epsilon(1e-9));
+    CHECK(c["peak_friction_negative"].get<double>() == Approx(std::tan(M_PI / 6)).epsilon(1e-9));
+    CHECK(c["sigma_n_ratio"].get<double>() == Approx(1.0).epsilon(1e-12));
+  }
 }

@@ -1,0 +1,15 @@
+set datafile separator ','
+set key below
+set grid
+set title 'axial force (kN) along the shaft (hvwe)'
+set xlabel 'axial force (kN)'
+set ylabel 'depth below the head (m, negative)'
+set datafile missing 'nan'
+
+set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'
+set output 'profile_axial.svg'
+plot 'profile_axial.csv' using 1:2 skip 1 with lines lw 2 title '2153.19 kN'
+set terminal pngcairo size 900,560 font 'sans,10' noenhanced
+set output 'profile_axial.png'
+replot
+unset output
