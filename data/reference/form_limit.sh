@@ -5,21 +5,30 @@
 # seeds 4 and 5 out and predicts them. The soil tests of the calibration say what each form limit
 # costs there. Writes data/reference/form_limit/<model>_<wall>/ (form_limit.json, .md, .toml,
 # manifest.json). Run from the repository root after building:
-#   data/reference/form_limit.sh [MODEL...]        (default: hvwe ahe hp1d)
-# IWB (build/iwb). Models on the [hypoplastic] table only (the soil-test set is a vw3d set); each fit is 1-4 minutes on one core; rerunning replaces its directory.
+#   data/reference/form_limit.sh [MODEL...]        (default: hvwe ahe hp1d mc lashkari)
+# IWB (build/iwb). Models on the [hypoplastic] table start from the grains' soil-test set (a vw3d
+# set) and say what the form limit costs on its soil tests; mc and lashkari, which have no
+# soil-test set on these grains, start from the seed's Tables 4.3 and 4.7 (their "calibration"
+# cause then means that table's set). Each fit is seconds (mc) to 4 minutes on one core; rerunning
+# replaces its directory.
 set -euo pipefail
 IWB=${IWB:-build/iwb}
 PARAMS=data/params/truth_grains_epsd2.toml
 CAL=data/calibration/truth_grains_epsd2
 SOIL=("$CAL"/seed*/*)
 models=("$@")
-[ ${#models[@]} -eq 0 ] && models=(hvwe ahe hp1d)
+[ ${#models[@]} -eq 0 ] && models=(hvwe ahe hp1d mc lashkari)
 RN05=(data/convergence/truth_clamped/runs/s{1,2,3} data/reference/truth2_cns/runs/sawtooth-2-0.5_s{1,2,3}_cns-50)
 RN05_HELD=(data/reference/truth2_seeds45/runs/s{4,5}_cnl-50 data/reference/truth2_seeds45/runs/s{4,5}_cns-50-50)
 RN01=(data/reference/truth2_rn/runs/sawtooth-2-0.1_s{1,2,3}_cnl data/reference/truth2_rn/runs/sawtooth-2-0.1_s{1,2,3}_cns-50)
 for model in "${models[@]}"; do
-  "$IWB" form-limit --runs "${RN05[@]}" --held-out "${RN05_HELD[@]}" --model "$model" --params "$PARAMS" \
-    --calibration "$CAL/calibration.json" --soil-tests "${SOIL[@]}" -o "data/reference/form_limit/${model}_rn05" --force
-  "$IWB" form-limit --runs "${RN01[@]}" --model "$model" --params "$PARAMS" \
-    --calibration "$CAL/calibration.json" --soil-tests "${SOIL[@]}" -o "data/reference/form_limit/${model}_rn01" --force
+  case $model in
+    mc) start=(--params data/params/table_4_3_mohr_coulomb.toml) ;;
+    lashkari) start=(--params data/params/table_4_7_lashkari.toml) ;;
+    *) start=(--params "$PARAMS" --calibration "$CAL/calibration.json" --soil-tests "${SOIL[@]}") ;;
+  esac
+  "$IWB" form-limit --runs "${RN05[@]}" --held-out "${RN05_HELD[@]}" --model "$model" "${start[@]}" \
+    -o "data/reference/form_limit/${model}_rn05" --force
+  "$IWB" form-limit --runs "${RN01[@]}" --model "$model" "${start[@]}" \
+    -o "data/reference/form_limit/${model}_rn01" --force
 done

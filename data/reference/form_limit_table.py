@@ -1,8 +1,9 @@
 """The form limits of data/reference/form_limit/ (form_limit.sh) as one table (README.md here, "Form
 or calibration"): per model and wall, the fit's RMS, per quantity how the soil-test set's
 prediction fares and why it breaks (form or calibration, over the runs it breaks on), the form
-limit's own verdicts, the parameters that moved most (in the soil-test set's sigmas) and what the
-form limit costs the soil tests. Run from the repository root:
+limit's own verdicts, the parameters that moved most (in the soil-test set's sigmas; without a
+soil-test calibration every parameter's start and end) with those left on a bound of their box,
+and what the form limit costs the soil tests. Run from the repository root:
   /usr/bin/python3 data/reference/form_limit_table.py"""
 import collections
 import glob
@@ -31,6 +32,13 @@ def main():
         moved = sorted((p for p in j["parameters"] if "moved_in_soil_test_sigmas" in p),
                        key=lambda p: -abs(p["moved_in_soil_test_sigmas"]))[:3]
         moves = ", ".join(f"{p['name']} {p['moved_in_soil_test_sigmas']:+.0f}" for p in moved)
+        # without a soil-test calibration (mc, lashkari: the seed's tables) no sigmas: the values
+        if not moved:
+            moves = "no soil-test sigmas; " + ", ".join(
+                f"{p['name']} {p['soil_test_value']:.3g} -> {p['value']:.3g}" for p in j["parameters"])
+        bound = [p["name"] for p in j["parameters"] if p.get("at_bound")]
+        if bound:
+            moves += "; on a bound: " + ", ".join(bound)
         costs = "; ".join(f"{e['what'].split(': ')[-1]} {e['soil_test']:.2f}{e.get('soil_test_note', '')} -> "
                           f"{e['form_limit']:.2f}{e.get('form_limit_note', '')}"
                           for e in j.get("elsewhere", []))
