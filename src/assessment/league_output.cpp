@@ -189,7 +189,13 @@ std::vector<json> ranked(std::vector<json> entries) {
   return entries;
 }
 
+// The form-limit column's cell of an entry (issue 38): what its prediction breaks and why.
+std::string causes_of(const json& e) {
+  return e.contains("form_limit") ? e["form_limit"]["causes"].get<std::string>() : "";
+}
+
 std::string league_markdown(const json& h, const std::vector<json>& entries) {
+  const bool with_causes = !h.value("form_limits", std::string()).empty();
   std::string md = fmt::format(
       "# Interface models on the DEM runs in {}\n\nReference: the seed mean of {} DEM run(s) ({}, "
       "{}). Each model is calibrated to them "
@@ -203,35 +209,48 @@ std::string league_markdown(const json& h, const std::vector<json>& entries) {
       "the seed's on the shear points, and the workbench's on shear and {} together, by which the "
       "table is ranked.\n\n"
       "| rank | model | UA_model shear | UA_model {} | UA_par | global (seed: shear) | global "
-      "(shear and {}) | status |\n"
-      "|---|---|---|---|---|---|---|---|\n",
+      "(shear and {}) | status |{}\n"
+      "|---|---|---|---|---|---|---|---|{}\n",
       h["scene"].get<std::string>(), h["runs"].size(), h["boundary"].get<std::string>(),
       h["wall"].get<std::string>(), h["uncertainty_samples"].get<int>(),
       h.value("parameter_uncertainty", "seed") == "fit"
           ? "each calibrated quantity spread by its own sigma from the fit to the runs"
           : "COVs of the seed's Table 4.8 and Appendix A",
       h["normal"].get<std::string>(), h["normal"].get<std::string>(),
-      h["normal"].get<std::string>());
+      h["normal"].get<std::string>(),
+      with_causes ? " what the prediction breaks, and why (form limit) |" : "",
+      with_causes ? "---|" : "");
   int rank = 0;
   for (const auto& e : entries)
-    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", ++rank,
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |{}\n", ++rank,
                       e["model"].get<std::string>(), num(e["model_uncertainty"]["shear_norm"]),
                       num(e["model_uncertainty"]["normal_norm"]), num(e["ua_par"]),
-                      num(e["global_shear"]), num(e["global"]), e["status"].get<std::string>());
+                      num(e["global_shear"]), num(e["global"]), e["status"].get<std::string>(),
+                      with_causes ? " " + causes_of(e) + " |" : "");
+  if (with_causes)
+    md += fmt::format(
+        "\nWhat the prediction breaks: each quantity that the model's own set (the soil-test "
+        "calibration, or the seed's table for the others), predicted with kappa_r from eq. 5.35 "
+        "and d_s = 5 d50, breaks on this wall and boundary, over the runs of its form-limit "
+        "record in {}: *form* where the form limit (every parameter fitted within its box) "
+        "breaks it too, else *calibration* (`iwb form-limit`, issue 38).\n",
+        h["form_limits"].get<std::string>());
   md += "\n![uncertainties](figures/league.svg)\n\n## Per model\n\n";
   for (const auto& e : entries) md += model_section(e);
   return md;
 }
 
 std::string league_csv(const std::vector<json>& entries) {
-  std::string out = "rank,model,ua_model_shear,ua_model_normal,ua_par,global_shear,global,status\n";
+  std::string out =
+      "rank,model,ua_model_shear,ua_model_normal,ua_par,global_shear,global,status,form_limit_"
+      "causes\n";
   int rank = 0;
   for (const auto& e : entries)
-    out +=
-        fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},\"{}\"\n", ++rank,
-                    e["model"].get<std::string>(), number(e["model_uncertainty"]["shear_norm"]),
-                    number(e["model_uncertainty"]["normal_norm"]), number(e["ua_par"]),
-                    number(e["global_shear"]), number(e["global"]), e["status"].get<std::string>());
+    out += fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},\"{}\",\"{}\"\n", ++rank,
+                       e["model"].get<std::string>(), number(e["model_uncertainty"]["shear_norm"]),
+                       number(e["model_uncertainty"]["normal_norm"]), number(e["ua_par"]),
+                       number(e["global_shear"]), number(e["global"]),
+                       e["status"].get<std::string>(), causes_of(e));
   return out;
 }
 

@@ -14,7 +14,8 @@ extra=()
 [ -n "${PARAMS:-}" ] && for m in hp1d ah ahe hvwe ahe-igs hvwe-igs; do extra+=(--params-for "$m=$PARAMS"); done
 league() {  # name, run directories
   local name=$1; shift
-  "$IWB" assess --reference "$@" --samples "$SAMPLES" --sobol-samples "$SOBOL" "${extra[@]}" -o "$DEST/$name"
+  "$IWB" assess --reference "$@" --samples "$SAMPLES" --sobol-samples "$SOBOL" "${extra[@]}" \
+    --form-limits data/reference/form_limit -o "$DEST/$name"
 }
 league truth_rn0.5 data/convergence/truth_clamped/runs/s{1,2,3}
 league truth_rn0.25 data/convergence/truth_clamped_rn025/runs/Rn0.25_s{1,2,3}

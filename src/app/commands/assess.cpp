@@ -306,6 +306,13 @@ void add_assess_command(CLI::App& app, CommandList& commands) {
                   "calibrated values; fit: each calibrated quantity spread by its own sigma from "
                   "the fit to the runs")
       ->check(CLI::IsMember({"seed", "fit"}));
+  cmd->add_option("--form-limits", o->form_limits,
+                  "with --reference: a directory of form-limit records (iwb form-limit's "
+                  "DIR/*/form_limit.json, e.g. data/reference/form_limit): each model's row says "
+                  "which quantities its prediction breaks on this wall and boundary, and whether "
+                  "its form or its calibration broke them")
+      ->check(CLI::ExistingDirectory)
+      ->needs("--reference");
   cmd->add_option("--threads", o->threads, "runs at once (default 0: every core)")
       ->check(whole_in(0, 1024));
   cmd->add_flag("--force", o->force,

@@ -12,6 +12,7 @@
 #include "assessment/league_output.hpp"
 #include "common/errors.hpp"
 #include "comparison/dem_run.hpp"
+#include "comparison/form_limit_causes.hpp"
 #include "dem/scene.hpp"
 #include "io/json_file.hpp"
 #include "io/parameter_sets.hpp"
@@ -114,7 +115,8 @@ int run_league(const AssessOptions& o) {
       {"uncertainty_samples", o.samples},
       {"sobol_samples", o.sobol_samples},
       {"models", names},
-      {"parameter_uncertainty", o.parameter_uncertainty}};
+      {"parameter_uncertainty", o.parameter_uncertainty},
+      {"form_limits", o.form_limits}};
   // an earlier league continues here: its model records say what they were made from, and only
   // those made from these inputs are reused
   const bool resume = std::filesystem::exists(dir / "manifest.json") &&
@@ -149,6 +151,11 @@ int run_league(const AssessOptions& o) {
     io::write_atomically(record, e.dump(1));
     entries.push_back(e);
   }
+  if (!o.form_limits.empty())  // read, not stored in the model records: they stay reusable
+    for (auto& e : entries)
+      e["form_limit"] = comparison::form_limit_cell(o.form_limits, e["model"].get<std::string>(),
+                                                    header["wall"].get<std::string>(),
+                                                    header["boundary"].get<std::string>());
   const auto table = assessment::ranked(entries);
   assessment::draw_league_figures(table, dir / "figures");
   io::write_atomically(dir / "league.csv", assessment::league_csv(table));

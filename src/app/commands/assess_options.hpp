@@ -10,6 +10,7 @@ struct AssessOptions {
   std::vector<std::string> reference, models, params_for;  // the league
   std::string distributions;                               // empty: the files built into iwb
   std::string parameter_uncertainty = "seed";
+  std::string form_limits;  // a directory of form-limit records: the league says why each breaks
   int sobol_samples = 0, threads = 0;
   bool force = false;
   bool convergence = false;  // the Sobol indices at N/16 ... N as well
