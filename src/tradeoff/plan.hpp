@@ -39,10 +39,23 @@ struct ModelErrors {
 };
 
 // Pure decision: the first model (in the order given) whose error + the DEM's noise floor meets
-// every stated tolerance; each model with its failures, as choose_dem.
+// every stated tolerance; each model with its failures, as choose_dem. When none does, "closest"
+// names the candidate whose worst failure is the smallest, and by how much (a failure that cannot
+// be measured counts as no closer than any measured one).
 nlohmann::json choose_model(const std::vector<ModelErrors>& models,
                             const dem::Requirements& requirements,
                             const nlohmann::json& noise_floor);
+
+// What plan tries, in order: each model of the ladder with the first parameter set, and a model
+// calibrated from soil tests (a calibration recipe) with each further set too (another
+// calibration of the same grains: a point of a Pareto front that weights the dilatancy, say);
+// named "model" for the first set and "model with <set's file stem>" for the others.
+struct Candidate {
+  std::string name, model;
+  std::size_t set = 0;  // index into the parameter sets
+};
+std::vector<Candidate> plan_candidates(const std::vector<std::string>& ladder,
+                                       const std::vector<std::string>& set_names);
 
 struct PlanOptions {
   std::filesystem::path scene_file;
@@ -53,6 +66,8 @@ struct PlanOptions {
   std::string command_line;
   assessment::ParameterSpread spread = assessment::ParameterSpread::kFitSigmas;
   int samples = 200;  // parameter samples per candidate
+  // further calibrations of the models calibrated from soil tests, tried after `params`
+  std::vector<io::ParameterSet> other_calibrations = {};
 };
 
 // `model` calibrated to the reference (the base seeds' mean) and judged: its global uncertainty

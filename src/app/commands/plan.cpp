@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 namespace {
 
 struct PlanCommand {
-  std::string scene, tradeoff, params, out, parameter_uncertainty = "fit";
+  std::string scene, tradeoff, out, parameter_uncertainty = "fit";
+  std::vector<std::string> params;
   int samples = 200;
 };
 
@@ -52,12 +53,16 @@ CLI::App* add_plan_options(CLI::App& app, PlanCommand& c) {
   plan->add_option(
       "--tradeoff", c.tradeoff,
       "tradeoff directory (default runs/tradeoff-<scene stem>)");  // run_plan says what to run
-  plan->add_option("--params", c.params,
-                   "parameter file of the continuum models (default: the set iwb validate chooses "
-                   "from those "
-                   "built into iwb: dem_default_grains.toml for the default scene's grains, else "
-                   "phi_c closest "
-                   "to the reference's residual friction)")
+  plan->add_option(
+          "--params", c.params,
+          "parameter files of the continuum models: the first for every model (default: "
+          "the set iwb validate chooses from those built into iwb: dem_default_grains.toml "
+          "for the default scene's grains, else phi_c closest to the reference's residual "
+          "friction); further files are other calibrations of the same grains (a point of "
+          "`iwb calibrate --pareto` that weights the dilatancy, say), tried after the "
+          "first for each model calibrated from soil tests, so that the plan can "
+          "recommend a model with the calibration that meets the tolerances, or say by "
+          "how much the closest misses")
       ->check(input_file());
   plan->add_option("--parameter-uncertainty", c.parameter_uncertainty,
                    "fit (default): each calibrated quantity spread by its own sigma from the fit "
@@ -94,7 +99,9 @@ int run_plan_command(const PlanCommand& c, const std::string& cl) {
   opt.spread = c.parameter_uncertainty == "seed" ? assessment::ParameterSpread::kSeedCovs
                                                  : assessment::ParameterSpread::kFitSigmas;
   opt.samples = c.samples;
-  opt.params = plan_parameters(opt, c.params, opt.params_why);
+  opt.params = plan_parameters(opt, c.params.empty() ? "" : c.params.front(), opt.params_why);
+  for (std::size_t k = 1; k < c.params.size(); ++k)
+    opt.other_calibrations.push_back(io::read_parameter_set(c.params[k]));
   const auto plan = tradeoff::run_plan(opt);
   const fs::path written =
       opt.out.empty() ? fs::path(plan["tradeoff"].get<std::string>()).parent_path() : opt.out;
