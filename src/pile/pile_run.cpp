@@ -73,26 +73,27 @@ Analysis analyse(const PileSpec& spec, const ShaftMaterial& material, int elemen
   double previous = 0.0;  // the head's last target reached
   std::vector<double> pending = spec.loading.profile_loads_kN;
   std::sort(pending.begin(), pending.end());
+  // the profiles at the last state reached when none was asked for, or the run stopped early
+  const auto ended = [&](std::string status) {
+    a.status = std::move(status);
+    if (a.profiles.empty()) a.profiles.push_back({a.curve.back().head_load_kN, pile.profile()});
+    return a;
+  };
   for (double target : head_path(spec.loading)) {
     try {
       a.curve.push_back(advance(pile, spec.loading, previous, target, 0));
       previous = target;
     } catch (const std::exception& e) {
-      a.status = fmt::format("failed: {}", e.what());
-      return a;
+      return ended(fmt::format("failed: {}", e.what()));
     }
     while (!pending.empty() && a.curve.back().head_load_kN >= pending.front() * (1.0 - 1e-12)) {
       a.profiles.push_back({pending.front(), pile.profile()});
       pending.erase(pending.begin());
     }
     if (opt.on_step) opt.on_step(++done, total);
-    if (opt.interrupt && opt.interrupt->load()) {
-      a.status = "interrupted";
-      return a;
-    }
+    if (opt.interrupt && opt.interrupt->load()) return ended("interrupted");
   }
-  if (a.profiles.empty()) a.profiles.push_back({a.curve.back().head_load_kN, pile.profile()});
-  return a;
+  return ended("complete");
 }
 
 std::string curve_csv(const std::vector<PileSnapshot>& c) {
