@@ -144,8 +144,7 @@ TEST_CASE(
     "(the profiles at the last state, the summary)",
     "[pile]") {
   // the rigid-plastic shaft carries pi D tan(phi) K0 gamma' L^2 / 2 = 227 kN, no base: 300 kN
-  // cannot be carried. (Today the run fails already at its first steps: Mohr-Coulomb shafts do not
-  // converge under load control at all, a defect of its own; the test holds either way.)
+  // cannot be carried, the head's Newton fails at the ramp's last step (and its subdivisions)
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "pile" / "beyond_capacity";
   const auto file = write_case(
       dir,

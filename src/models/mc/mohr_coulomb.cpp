@@ -181,7 +181,10 @@ class MohrCoulomb final : public TractionModel<MohrCoulomb> {
       lambda1 = (t_tr - cap) / p_.G, tau = S(cap), sigma_n = S(-p_.sigma_t);
       lambda2 = (-p_.sigma_t - sn_tr) / p_.E_oed - lambda1 * p_.tan_psi;
     }
-    const S shrink = value_of(t_tr) > 0.0 ? S(tau / t_tr) : S(0.0);
+    // tau's direction is kept; with no trial shear every case above leaves tau = t_tr = 0, and the
+    // factor 1 keeps the elastic derivative G (0 would make the tangent at rest shear-free: a
+    // pile's Newton under load control then never starts)
+    const S shrink = value_of(t_tr) > 0.0 ? S(tau / t_tr) : S(1.0);
     out(kTn) = -sigma_n, out(kTauX) = tx_tr * shrink, out(kTauY) = ty_tr * shrink;
     out(kEpsPN) += lambda1 * p_.tan_psi + lambda2;
     out(kGammaP) += lambda1;

@@ -105,6 +105,23 @@ TEST_CASE("mc: the closed-form increment's Dual derivative is its central differ
       *m, s, {{1e-4, 2e-3, 5e-4}, {-2e-4, 1e-3, 0.0}, {3e-5, 1e-5, 0.0}}, 1e-8, 1e-6, 1e-6);
 }
 
+TEST_CASE("mc: at rest (no shear, no increment) the increment's tangent is elastic: G and E_oed",
+          "[models]") {
+  // the tangent a caller starts Newton from (a pile under load control, an FE code's first
+  // iteration): d tau / d gamma = G and d sigma_n / d eps_n = E_oed at tau = 0 and d = 0, whatever
+  // direction the shear will take (seen 0 in tau while the direction of a zero tau was undefined)
+  const auto m = models::find_model("mc").make(inputs());
+  models::StateVector s(5);
+  s << -100.0, 0.0, 0.0, 0.0, 0.0;
+  models::StateVectorT<Dual> sd = s.cast<Dual>(), by_gamma, by_eps;
+  m->update(sd, {Dual(0.0), make_variable(0.0), Dual(0.0)}, by_gamma);
+  CHECK(derivative_of(by_gamma(1)) == Approx(kG).epsilon(1e-12));  // tau_x
+  CHECK(derivative_of(by_gamma(0)) == Approx(0.0).margin(1e-12));  // T_n
+  m->update(sd, {make_variable(0.0), Dual(0.0), Dual(0.0)}, by_eps);
+  CHECK(derivative_of(by_eps(0)) ==
+        Approx(kEoed).epsilon(1e-12));  // -sigma_n rises: T_n = -sigma_n
+}
+
 TEST_CASE("mc: an opening past the cut-off leaves sigma_n there and the shear on the surface",
           "[models]") {
   const auto m = models::find_model("mc").make(inputs(kPsi, 0.5));
