@@ -9,7 +9,8 @@
 # Environment: DEST, SWEEPS (required, in order of value); IWB (build/iwb: give a copy, so that a
 # rebuild does not change the binary under a running campaign); JOBS runs at once (2) with NP
 # ranks each (1): on 2 cores two one-rank runs finish 1.9 times as many runs per hour as one
-# two-rank run; WORK (runs/<DEST's name>); COMMIT=1 commits DEST after every copy (only that path);
+# two-rank run; WORK (runs/<DEST's name>); COMMIT=1 commits DEST/<sweep> after every copy (only
+# those paths);
 # IWB_CONSOLIDATED_DIR (WORK/consolidated: every cell of one wall and seed consolidates once).
 set -euo pipefail
 : "${DEST:?DEST=data/<campaign> is required}" "${SWEEPS:?SWEEPS=\"sweep names\" is required}"
@@ -24,12 +25,16 @@ export IWB_CONSOLIDATED_DIR=${IWB_CONSOLIDATED_DIR:-$PWD/$WORK/consolidated}
 stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(restore sweeps copy)
 
+# Commits the sweeps' directories only: a file edited by hand elsewhere under DEST (its README, a
+# script) is the editor's to commit, under its own message.
 copy_all() {
+  local copied=()
   for s in "${sweeps[@]}"; do
-    [ -f "$WORK/$s/sweep.json" ] && data/copy_campaign.sh "$WORK/$s" "$DEST/$s"
+    [ -f "$WORK/$s/sweep.json" ] && data/copy_campaign.sh "$WORK/$s" "$DEST/$s" && copied+=("$DEST/$s")
   done
-  if [ "$COMMIT" = 1 ] && [ -n "$(git status --porcelain -- "$DEST")" ]; then
-    git add -- "$DEST" && git commit -q -m "$DEST: compact results of the runs complete so far" -- "$DEST" ||
+  if [ "$COMMIT" = 1 ] && [ ${#copied[@]} -gt 0 ] && [ -n "$(git status --porcelain -- "${copied[@]}")" ]; then
+    git add -- "${copied[@]}" &&
+      git commit -q -m "$DEST: compact results of the runs complete so far" -- "${copied[@]}" ||
       echo "run_campaign: the commit of $DEST failed (tried again after the next copy)" >&2
   fi
   return 0
