@@ -38,13 +38,18 @@ def complete(run):
     return manifest.exists() and json.loads(manifest.read_text()).get("status") == "complete"
 
 
-print("| wall | R_n | runs | peak friction | residual friction | total dilation (mm) | first-layer slip | where it sheared (residual steady?) |")
-print("|---|---|---|---|---|---|---|---|")
-for label, rn, runs in CELLS:
-    summaries = [json.loads((r / "summary.json").read_text()) for r in runs if complete(r)]
-    if not summaries:
-        continue
-    q = lambda key: interval([s.get(key) for s in summaries])
-    where = "; ".join(f"{s['shear_mode']} ({s['residual_is']})" for s in summaries)
-    print(f"| {label} | {rn} | {len(summaries)} | {q('peak_friction')} | {q('residual_friction')} | "
-          f"{q('dilation_mm')} | {q('wall_slip')} | {where} |")
+def main():
+    print("| wall | R_n | runs | peak friction | residual friction | total dilation (mm) | first-layer slip | where it sheared (residual steady?) |")
+    print("|---|---|---|---|---|---|---|---|")
+    for label, rn, runs in CELLS:
+        summaries = [json.loads((r / "summary.json").read_text()) for r in runs if complete(r)]
+        if not summaries:
+            continue
+        q = lambda key: interval([s.get(key) for s in summaries])
+        where = "; ".join(f"{s['shear_mode']} ({s['residual_is']})" for s in summaries)
+        print(f"| {label} | {rn} | {len(summaries)} | {q('peak_friction')} | {q('residual_friction')} | "
+              f"{q('dilation_mm')} | {q('wall_slip')} | {where} |")
+
+
+if __name__ == "__main__":
+    main()
