@@ -8,8 +8,12 @@ it), and the cycle's end less the start (compaction when negative); means over t
 import csv
 import statistics as st
 import sys
+from pathlib import Path
 
 from scipy import stats
+
+sys.path.insert(0, str(Path(__file__).parent))  # cycle_table.py beside this file
+from cycle_table import cycles_option  # noqa: E402
 
 
 def interval(values):
@@ -32,11 +36,7 @@ def per_cycle(run, cycles):
 
 
 def main(args):
-    cycles = [1, 2, 5, 10, 20]
-    if "--cycles" in args:
-        i = args.index("--cycles")
-        cycles = [int(x) for x in args[i + 1].split(",")]
-        args = args[:i] + args[i + 2:]
+    cycles, args = cycles_option(args)
     runs = [per_cycle(r, cycles) for r in args]
     print(f"{len(runs)} runs: " + ", ".join(args) + "\n")
     print("| cycle | e at +A less e at 0 | e at -A less e at 0 | e at the cycle's end less e0 |")

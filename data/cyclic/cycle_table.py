@@ -27,12 +27,16 @@ ROWS = [("peak +tau/sigma_n", lambda c: c["peak_friction_positive"]),
         ("tau at +A (kPa; a pile's shaft friction)", lambda c: c["reversal_at_plus"]["tau_kPa"])]
 
 
+def cycles_option(args, default=(1, 2, 5, 10, 20)):
+    """The cycles of `--cycles 1,2,5` (else `default`), and the arguments without the option."""
+    if "--cycles" not in args:
+        return list(default), args
+    i = args.index("--cycles")
+    return [int(x) for x in args[i + 1].split(",")], args[:i] + args[i + 2:]
+
+
 def main(args):
-    cycles = [1, 2, 5, 10, 20]
-    if "--cycles" in args:
-        i = args.index("--cycles")
-        cycles = [int(x) for x in args[i + 1].split(",")]
-        args = args[:i] + args[i + 2:]
+    cycles, args = cycles_option(args)
     # a DEM run's summary has them under "cyclic", a pile's (iwb pile, cyclic_settlement) "cycles"
     runs = [(lambda s: s.get("cyclic") or s["cycles"])(json.load(open(f"{d}/summary.json"))) for d in args]
     print(f"{len(runs)} runs: " + ", ".join(args) + "\n")
@@ -50,4 +54,5 @@ def main(args):
         print("\nAfter the cycles: " + "; ".join(f"{k} {interval([p[k] for p in post])}" for k in keys))
 
 
-main(sys.argv[1:])
+if __name__ == "__main__":
+    main(sys.argv[1:])
