@@ -129,12 +129,12 @@ std::vector<Figure> cyclic_figures(const nlohmann::json& cmp, const io::CsvTable
   if (boundary != "CV")  // under CV u_n is held
     figs.push_back(against_n("u_n_n", "accumulated u_n at the end of each cycle (ratcheting)",
                              "u_n (mm), dilation positive", "u_n_end_mm", cmp, shown));
-  const RowRange cyclic_rows = rows_between(travel_mm, 0.0, program.cycles_travel_mm());
   if (boundary == "CV")
     figs.push_back(over_rows("stress_path", "Stress path over the cycles (CV)", "sigma_n (kPa)",
-                             "tau (kPa)", c, variants, shown, cyclic_rows, &Series::sigma_n,
-                             &Series::tau));
-  if (program.post_cyclic_mm > 0.0 && cmp["cyclic"].contains("post_cyclic"))
+                             "tau (kPa)", c, variants, shown,
+                             rows_between(travel_mm, 0.0, program.cycles_travel_mm()),
+                             &Series::sigma_n, &Series::tau));
+  if (cmp["cyclic"].value("post_cyclic", nlohmann::json()).is_object())  // the DEM reached it
     figs.push_back(over_rows("post_cyclic", "Post-cyclic monotonic shear: tau against u_x",
                              "u_x (mm)", "tau (kPa)", c, variants, shown,
                              rows_between(travel_mm, program.cycles_travel_mm(), travel_mm.back()),
