@@ -68,22 +68,23 @@ StabilitySweep StabilitySweep::full() {
 }
 
 namespace {
-// The declared diagnostic that is the critical void ratio, or -1.
-int critical_void_ratio_index(const models::ModelSpec& spec) {
+// The declared diagnostic of `role` (its index in the model's diagnostics), or -1.
+int diagnostic_index(const models::ModelSpec& spec, models::DiagnosticRole role) {
   const auto& d = spec.declaration.diagnostics;
   for (std::size_t i = 0; i < d.size(); ++i)
-    if (d[i].role == models::DiagnosticRole::kCriticalVoidRatio) return int(i);
+    if (d[i].role == role) return int(i);
   return -1;
 }
 }  // namespace
 
 DensityAxis density_axis_of(const models::ModelSpec& spec) {
-  const bool has_limits =
-      std::any_of(spec.declaration.diagnostics.begin(), spec.declaration.diagnostics.end(),
-                  [](const auto& d) { return d.name == "e_d"; });
+  // a model with the density limits e_d and e_i is placed by its density index
+  const bool has_limits = diagnostic_index(spec, models::DiagnosticRole::kMinVoidRatio) >= 0 &&
+                          diagnostic_index(spec, models::DiagnosticRole::kMaxVoidRatio) >= 0;
   if (!has_limits && models::find_initial_input(spec.declaration.initial, "OCR"))
     return DensityAxis::kOverconsolidationRatio;
-  if (!has_limits && critical_void_ratio_index(spec) >= 0) return DensityAxis::kStateParameter;
+  if (!has_limits && diagnostic_index(spec, models::DiagnosticRole::kCriticalVoidRatio) >= 0)
+    return DensityAxis::kStateParameter;
   if (!has_limits && spec.declaration.layout.void_ratio < 0) return DensityAxis::kNone;
   return DensityAxis::kDensityIndex;
 }
@@ -126,10 +127,11 @@ std::vector<StabilityPoint> StabilitySweep::points(const models::ModelSpec& spec
 
 namespace {
 
-double named(const std::vector<models::NamedValue>& values, const std::string& name) {
-  for (const auto& v : values)
-    if (v.name == name) return v.value;
-  return NAN;
+// The value of the diagnostic declared with `role` (diagnostics come in their declared order).
+double by_role(const models::ModelSpec& spec, const std::vector<models::NamedValue>& values,
+               models::DiagnosticRole role) {
+  const int i = diagnostic_index(spec, role);
+  return i >= 0 && std::size_t(i) < values.size() ? values[std::size_t(i)].value : NAN;
 }
 
 // Any void ratio the model admits at this stress: the limits scale together with pressure
@@ -229,11 +231,11 @@ models::StateVector prepare(const models::ModelSpec& spec, const models::Model& 
     // psi
     out.e_d = out.e_i = NAN;
     const auto probe = m.initial_state({p.sigma_n_kPa, K0, 1.0});
-    out.e_c = m.diagnostics(probe)[critical_void_ratio_index(spec)].value;
+    out.e_c = by_role(spec, m.diagnostics(probe), models::DiagnosticRole::kCriticalVoidRatio);
     out.e0 = out.e_c + p.density;
     return m.initial_state({p.sigma_n_kPa, K0, out.e0});
   }
-  const auto lim = limiting_void_ratios_at(m, p.sigma_n_kPa, K0);
+  const auto lim = limiting_void_ratios_at(spec, m, p.sigma_n_kPa, K0);
   out.e_d = lim[0];
   out.e_c = lim[1];
   out.e_i = lim[2];
@@ -248,9 +250,13 @@ void fail(StabilityResult& out, Outcome o, const std::string& message) {
 
 }  // namespace
 
-std::array<double, 3> limiting_void_ratios_at(const models::Model& m, double sigma_n, double K0) {
+std::array<double, 3> limiting_void_ratios_at(const models::ModelSpec& spec, const models::Model& m,
+                                              double sigma_n, double K0) {
+  using models::DiagnosticRole;
   const auto d = m.diagnostics(any_admissible_state(m, sigma_n, K0));
-  const std::array<double, 3> lim{named(d, "e_d"), named(d, "e_c"), named(d, "e_i")};
+  const std::array<double, 3> lim{by_role(spec, d, DiagnosticRole::kMinVoidRatio),
+                                  by_role(spec, d, DiagnosticRole::kCriticalVoidRatio),
+                                  by_role(spec, d, DiagnosticRole::kMaxVoidRatio)};
   if (!std::isfinite(lim[0]) || !std::isfinite(lim[2]))
     throw InputError(
         fmt::format("{} reports no limiting void ratios (e_d, e_i); the stability map "

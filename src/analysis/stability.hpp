@@ -98,8 +98,11 @@ struct StabilityResult {
 };
 
 // The void-ratio limits (e_d, e_c, e_i) of `model` at sigma_n (compression positive) and K0,
-// read from the model's diagnostics; InputError if it reports none or no admissible e exists.
-std::array<double, 3> limiting_void_ratios_at(const models::Model& model, double sigma_n_kPa,
+// read from its diagnostics by their declared roles (DiagnosticRole kMinVoidRatio,
+// kCriticalVoidRatio, kMaxVoidRatio), not by name; InputError if the model declares none or no
+// admissible e exists.
+std::array<double, 3> limiting_void_ratios_at(const models::ModelSpec& spec,
+                                              const models::Model& model, double sigma_n_kPa,
                                               double K0);
 
 // Runs one point; never throws for anything the point itself causes.

@@ -112,14 +112,15 @@ TEST_CASE("stability: a spent budget stops a point as budget exceeded after one 
 }
 
 TEST_CASE("stability: the limits placed for e0 are Bauer's, e_d and e_i in the ratio ed0 to ei0") {
-  const auto model = models::find_model("hvwe").make(test::table_5_1());
+  const auto& spec = models::find_model("hvwe");
+  const auto model = spec.make(test::table_5_1());
   for (double sigma : {1.0, 100.0, 1e4}) {
-    const auto lim = analysis::limiting_void_ratios_at(*model, sigma, test::kK0Oedometric51);
+    const auto lim = analysis::limiting_void_ratios_at(spec, *model, sigma, test::kK0Oedometric51);
     CHECK(lim[0] / lim[2] == Approx(0.61 / 1.09).epsilon(1e-12));
     CHECK(lim[1] / lim[2] == Approx(0.96 / 1.09).epsilon(1e-12));
   }
-  const auto at_1 = analysis::limiting_void_ratios_at(*model, 1.0, test::kK0Oedometric51);
-  const auto at_1e4 = analysis::limiting_void_ratios_at(*model, 1e4, test::kK0Oedometric51);
+  const auto at_1 = analysis::limiting_void_ratios_at(spec, *model, 1.0, test::kK0Oedometric51);
+  const auto at_1e4 = analysis::limiting_void_ratios_at(spec, *model, 1e4, test::kK0Oedometric51);
   CHECK(at_1e4[2] < at_1[2]);  // compression lowers the limits
 }
 
@@ -233,4 +234,22 @@ TEST_CASE(
       CHECK(std::isfinite(r.tau_end_kPa));
     }
   }
+}
+
+TEST_CASE("stability: the limits that place e0 are read by their declared roles, not their names",
+          "[stability]") {
+  // issue 33: the map read "e_d" by name. A model that names its limits otherwise but declares
+  // their roles is placed by its density index all the same, at Bauer's limits (Table 5.1: e_d /
+  // e_i = ed0 / ei0 = 0.61 / 1.09); one that declares no roles has no limits to place e0 by.
+  auto renamed = models::find_model("hvwe");
+  for (auto& d : renamed.declaration.diagnostics) d.name = "limit_" + d.name;
+  CHECK(analysis::density_axis_of(renamed) == analysis::DensityAxis::kDensityIndex);
+  const auto model = renamed.make(test::table_5_1());
+  const auto lim = analysis::limiting_void_ratios_at(renamed, *model, 100.0, test::kK0Oedometric51);
+  CHECK(lim[0] / lim[2] == Approx(0.61 / 1.09).epsilon(1e-12));
+  auto unroled = models::find_model("hvwe");
+  for (auto& d : unroled.declaration.diagnostics) d.role = models::DiagnosticRole::kNone;
+  CHECK_THROWS_WITH(
+      analysis::limiting_void_ratios_at(unroled, *model, 100.0, test::kK0Oedometric51),
+      Catch::Contains("reports no limiting void ratios"));
 }
