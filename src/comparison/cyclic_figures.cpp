@@ -74,7 +74,8 @@ Figure over_rows(const std::string& name, const std::string& title, const std::s
   std::vector<PlotCurve> plotted;
   for (std::size_t v : shown)
     plotted.push_back({label(variants[v]), slice(c.model[v].*x, rows), slice(c.model[v].*y, rows)});
-  plotted.push_back({"DEM", slice(c.dem.*x, rows), slice(c.dem.*y, rows), kReferenceStyle});
+  plotted.push_back(
+      {"DEM (this run)", slice(c.dem.*x, rows), slice(c.dem.*y, rows), kReferenceStyle});
   return curves_figure(name, title, xlabel, ylabel, plotted);
 }
 
@@ -88,6 +89,29 @@ PlotCurve per_cycle(const std::string& title, const nlohmann::json& cycles, cons
   return p;
 }
 
+// The DEM's seed mean at the judged cycles with its 95 % t-interval (as the verdicts have them),
+// where the comparison had seeds: the means as points, each interval as a vertical bar.
+void seed_means(const nlohmann::json& cmp, const char* key, std::vector<PlotCurve>& plotted) {
+  const auto& predicted = cmp["variants"][cmp["verdicts"]["predicted_variant"].get<std::size_t>()];
+  if (!predicted.contains("cyclic")) return;
+  PlotCurve means{"", {}, {}, "with points pt 6 ps 2 lw 2 lc rgb '#555555'"};
+  std::vector<PlotCurve> bars;
+  std::size_t seeds = 0;
+  for (const auto& v : predicted["cyclic"]["verdicts"]) {
+    if (v["quantity"] != key || !v["dem_t_interval_95"].is_number()) continue;
+    const std::string where = v["where"];
+    if (where.rfind("cycle ", 0) != 0) continue;
+    const double n = std::stod(where.substr(6)), mean = v["dem"], ci = v["dem_t_interval_95"];
+    means.x.push_back(n), means.y.push_back(mean);
+    bars.push_back({"", {n, n}, {mean - ci, mean + ci}, "with lines lw 2 lc rgb '#555555'"});
+    seeds = v["seeds"].get<std::size_t>();
+  }
+  if (means.x.empty()) return;
+  means.title = fmt::format("DEM, mean of {} seeds +- 95 % t-interval", seeds);
+  plotted.push_back(means);
+  plotted.insert(plotted.end(), bars.begin(), bars.end());
+}
+
 Figure against_n(const std::string& name, const std::string& title, const std::string& ylabel,
                  const char* key, const nlohmann::json& cmp,
                  const std::vector<std::size_t>& shown) {
@@ -98,7 +122,8 @@ Figure against_n(const std::string& name, const std::string& title, const std::s
       plotted.push_back(per_cycle(label(variant), variant["cyclic"]["model"]["cycles"], key,
                                   "with linespoints lw 2 pt 7"));
   }
-  plotted.push_back(per_cycle("DEM", cmp["cyclic"]["cycles"], key,
+  seed_means(cmp, key, plotted);
+  plotted.push_back(per_cycle("DEM (this run)", cmp["cyclic"]["cycles"], key,
                               "with linespoints lw 3 pt 7 ps 1.2 lc rgb '#000000'"));
   Figure f = curves_figure(name, title, "cycle N", ylabel, plotted);
   f.extra += "set xtics 1\n";

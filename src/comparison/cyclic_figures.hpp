@@ -5,6 +5,8 @@
 //   under CNS and CV, sigma_n at each cycle's end over sigma_n0 against N (the degradation behind
 //   friction fatigue);
 //   under CNL and CNS, the accumulated u_n at each cycle's end against N (ratcheting);
+//   (against N with the seeds' mean and 95 % t-interval at the judged cycles, where there are
+//   seeds, beside the compared run's own line);
 //   under CV, the stress path tau against sigma_n over the cycles;
 //   the post-cyclic monotonic shear, tau against u_x, where the program has one.
 // A loop's rows run from the last row at or before the cycle's start to the first at or after its

@@ -1,8 +1,8 @@
 // The report's cyclic section (issue 34, item 4) on a committed cyclic DEM run (R_n 0.5, CV,
 // A 1 mm, 10 cycles, then 5 mm): the loops are the DEM's own rows of each cycle and sigma_n over
 // N is the DEM's sigma_n at the cycle's end, both found here from timeseries.csv and the scene's
-// wall speed alone (travel = v t); hvwe and hvwe-igs, judged along the run in one call, stand side
-// by side.
+// wall speed alone (travel = v t), and so are the three seeds' mean and t-interval drawn beside it;
+// hvwe and hvwe-igs, judged along the run in one call, stand side by side.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -26,14 +26,17 @@ namespace {
 
 const fs::path kCyclicWork = fs::path(IWB_TEST_RUNS_DIR) / "cyclic_report";
 const fs::path kCyclicRun = "data/cyclic/cyclic_rn05/runs/cv_s1";
+const fs::path kSeeds[] = {"data/cyclic/cyclic_rn05/runs/cv_s2",
+                           "data/cyclic/cyclic_rn05/runs/cv_s3"};
 // a parameter file with an intergranular-strain table, so that hvwe-igs can run beside hvwe
 const fs::path kIgsParams = "data/params/truth_grains_epsd2_igs.toml";
 
 // hvwe and hvwe-igs judged along the run in one call, into OUT/hvwe and OUT/hvwe-igs
 std::pair<fs::path, fs::path> compared_by_both() {
   const fs::path out = kCyclicWork / "both";
-  const auto r = test::run_iwb({"compare", kCyclicRun.string(), "--params", kIgsParams.string(),
-                                "--model", "hvwe,hvwe-igs", "-o", out.string(), "--force"});
+  const auto r = test::run_iwb({"compare", kCyclicRun.string(), "--seeds", kSeeds[0].string(),
+                                kSeeds[1].string(), "--params", kIgsParams.string(), "--model",
+                                "hvwe,hvwe-igs", "-o", out.string(), "--force"});
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   CHECK_THAT(r.output, Catch::Contains("Cycles, model beside model"));
@@ -68,6 +71,25 @@ double interpolated(const std::vector<double>& x, const std::vector<double>& y, 
   if (k == 0) return y.front();
   if (k == x.size()) return y.back();
   return y[k - 1] + (y[k] - y[k - 1]) * (at - x[k - 1]) / (x[k] - x[k - 1]);
+}
+
+// sigma_n / sigma_n0 of `run` at the end of cycle n, from its time series and wall speed alone
+double ratio_at_cycle_end(const fs::path& run, int n) {
+  const auto ts = io::read_csv_table(run / "timeseries.csv");
+  const auto shear = io::read_json_file(run / "manifest.json")["scene"]["resolved"]["shear"];
+  const double v = shear["velocity_mm_s"], A = shear["amplitude_mm"];
+  const auto t = ts.values("t_s"), sigma_n = ts.values("sigma_n_kPa");
+  std::vector<double> travel;
+  for (double ti : t) travel.push_back(v * (ti - t.front()));
+  return interpolated(travel, sigma_n, 4 * A * n) / sigma_n.front();
+}
+
+// The curve of a figure's CSV at column pair `k` (x_k, y_k), nan padding dropped.
+std::vector<std::pair<double, double>> curve(const fs::path& csv, std::size_t k) {
+  std::vector<std::pair<double, double>> points;
+  for (const auto& r : figure_rows(csv))
+    if (!std::isnan(r[2 * k])) points.push_back({r[2 * k], r[2 * k + 1]});
+  return points;
 }
 
 }  // namespace
@@ -125,6 +147,25 @@ TEST_CASE(
   for (const auto& [n, value] : ratio)
     CHECK(value ==
           Approx(interpolated(travel, sigma_n, 4 * A * n) / sigma_n.front()).epsilon(1e-6));
+  // the three seeds' mean and 95 % t-interval (t(0.975, 2) = 4.303) at the judged cycles, drawn
+  // after the three variants: the means, then one bar per cycle
+  const auto means = curve(figures / "sigma_n_ratio_n.csv", 3);
+  REQUIRE(means.size() == 4);  // cycles 1, 2, 5, 10
+  for (std::size_t i = 0; i < means.size(); ++i) {
+    const int n = int(means[i].first);
+    std::vector<double> seeds = {ratio_at_cycle_end(kCyclicRun, n),
+                                 ratio_at_cycle_end(kSeeds[0], n),
+                                 ratio_at_cycle_end(kSeeds[1], n)};
+    const double mean = (seeds[0] + seeds[1] + seeds[2]) / 3.0;
+    double square = 0.0;
+    for (double x : seeds) square += (x - mean) * (x - mean);
+    const double half = 4.303 * std::sqrt(square / 2.0) / std::sqrt(3.0);
+    INFO("cycle " << n);
+    CHECK(means[i].second == Approx(mean).epsilon(1e-6));
+    const auto bar = curve(figures / "sigma_n_ratio_n.csv", 4 + i);
+    REQUIRE(bar.size() == 2);
+    CHECK(bar[1].second - bar[0].second == Approx(2.0 * half).epsilon(1e-3));
+  }
   // CV: the stress path is drawn, u_n (held) is not
   CHECK(fs::exists(figures / "stress_path.svg"));
   CHECK_FALSE(fs::exists(figures / "u_n_n.csv"));
