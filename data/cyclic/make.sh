@@ -11,6 +11,6 @@ set -euo pipefail
 # check's run, in cyclic_inertial/, made once before the campaign: README.md), the other BCs at
 # R_n 0.5, the small amplitude, the flat wall; flat x CV is cut first.
 export DEST=data/cyclic
-export SWEEPS=${SWEEPS:-cyclic_headline cyclic_rn05 cyclic_small cyclic_flat cyclic_flat_small cyclic_flat_cv}
+export SWEEPS=${SWEEPS:-cyclic_headline cyclic_rn05 cyclic_small cyclic_flat cyclic_flat_small cyclic_medium cyclic_flat_cv}
 export WORK=${WORK:-runs/cyclic}
 exec data/run_campaign.sh "$@"
