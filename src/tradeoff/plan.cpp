@@ -318,11 +318,14 @@ dem::Scene load_scene_to_plan(const fs::path& scene_file) {
   return scene;
 }
 
+namespace {
+// The further calibrations' files, for the record.
 json other_origins(const PlanOptions& opt) {
   json out = json::array();
   for (const auto& p : opt.other_calibrations) out.push_back(p.origin);
   return out;
 }
+}  // namespace
 
 json run_plan(const PlanOptions& opt) {
   const dem::Scene scene = load_scene_to_plan(opt.scene_file);
