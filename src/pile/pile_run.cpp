@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "common/errors.hpp"
 #include "comparison/figure.hpp"
@@ -169,8 +170,10 @@ json mesh_convergence(const PileSpec& spec,
 // shaft load over the shaft's area, sigma_n its mean normal stress, u_n the mean normal
 // displacement (sigma_n - sigma_n0) / K of the cavity's spring; measured per cycle by the
 // definitions the DEM's cyclic cells are (src/cycles/). The head's targets land on the reversals,
-// so the travel is the sum of their steps.
-cycles::CyclicQuantities shaft_cycles(const PileSpec& spec, const Analysis& a) {
+// so the travel is the sum of their steps. nullopt for other loadings, or too few rows.
+std::optional<cycles::CyclicQuantities> shaft_cycles(const PileSpec& spec, const Analysis& a) {
+  if (spec.loading.kind != LoadingKind::kCyclicSettlement || a.curve.size() <= 2)
+    return std::nullopt;
   const double area_m2 = M_PI * spec.pile.diameter_m * spec.pile.length_m;
   const double K = 4.0 * spec.soil.shear_modulus_kPa / (spec.pile.diameter_m * 1000.0);
   cycles::Path p;
@@ -187,7 +190,9 @@ cycles::CyclicQuantities shaft_cycles(const PileSpec& spec, const Analysis& a) {
   return cycles::cyclic_quantities(p, {spec.loading.amplitude_mm, spec.loading.cycles, 0.0});
 }
 
-std::vector<fs::path> draw_figures(const PileSpec& spec, const Analysis& a, const fs::path& out) {
+std::vector<fs::path> draw_figures(const PileSpec& spec, const Analysis& a,
+                                   const std::optional<cycles::CyclicQuantities>& per_cycle,
+                                   const fs::path& out) {
   io::StagedDirectory staged(out / "figures");
   comparison::PlotCurve head{"head", {}, {}}, shaft{"shaft", {}, {}}, base{"base", {}, {}};
   for (const auto& s : a.curve) {
@@ -217,11 +222,11 @@ std::vector<fs::path> draw_figures(const PileSpec& spec, const Analysis& a, cons
                                   "depth below the head (m, negative)", curves),
         staged.path()));
   }
-  if (spec.loading.kind == LoadingKind::kCyclicSettlement && a.curve.size() > 2) {
+  if (per_cycle) {
     comparison::PlotCurve ratio{
         "sigma_n / sigma_n0 at the cycle's end", {}, {}, "with linespoints lw 2 pt 7"},
         peak{"peak tau / sigma_n towards +A", {}, {}, "with linespoints lw 2 pt 5"};
-    for (const auto& c : shaft_cycles(spec, a).cycles) {
+    for (const auto& c : per_cycle->cycles) {
       ratio.x.push_back(c.number), ratio.y.push_back(c.sigma_n_ratio);
       peak.x.push_back(c.number), peak.y.push_back(c.peak_friction_positive);
     }
@@ -234,7 +239,8 @@ std::vector<fs::path> draw_figures(const PileSpec& spec, const Analysis& a, cons
   return svgs;
 }
 
-json summary_of(const PileSpec& spec, const Analysis& a, const json& convergence) {
+json summary_of(const PileSpec& spec, const Analysis& a,
+                const std::optional<cycles::CyclicQuantities>& shaft, const json& convergence) {
   double capacity = 0.0;
   for (const auto& s : a.curve) capacity = std::max(capacity, s.head_load_kN);
   const auto& end = a.curve.back();
@@ -248,8 +254,8 @@ json summary_of(const PileSpec& spec, const Analysis& a, const json& convergence
                 {"shaft_load_kN", end.shaft_load_kN},
                 {"base_load_kN", end.base_load_kN}}},
               {"mesh_convergence", convergence}};
-  if (spec.loading.kind == LoadingKind::kCyclicSettlement && a.curve.size() > 2) {
-    out["cycles"] = cycles::to_json(shaft_cycles(spec, a));
+  if (shaft) {
+    out["cycles"] = cycles::to_json(*shaft);
     out["cycles_definition"] =
         "the shaft as one interface: tau = shaft load / (pi D L), sigma_n the mean over the "
         "shaft's stress points, u_n = (sigma_n - sigma_n0) / K, u_x the head's settlement; per "
@@ -290,9 +296,10 @@ int run_pile(const PileSpec& spec, const PileRunOptions& opt) {
     mc += fmt::format("{},{},{}\n", meshes[i], runs[i].status == "complete" ? "complete" : "failed",
                       runs[i].status == "complete" ? end_value(spec, runs[i]) : NAN);
   io::write_atomically(opt.out / "mesh_convergence.csv", mc);
-  if (main.curve.size() > 1) draw_figures(spec, main, opt.out);
+  const auto shaft = shaft_cycles(spec, main);  // once, for the figures and the summary
+  if (main.curve.size() > 1) draw_figures(spec, main, shaft, opt.out);
   io::write_atomically(opt.out / "summary.json",
-                       summary_of(spec, main, convergence).dump(2) + "\n");
+                       summary_of(spec, main, shaft, convergence).dump(2) + "\n");
   m["status"] = main.status;
   m["finished"] = io::utc_timestamp();
   io::write_manifest(opt.out, m);
