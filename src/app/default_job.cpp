@@ -7,7 +7,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "io/element_run.hpp"
+#include "element/element_run.hpp"
 #include "io/parameter_sets.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
@@ -75,7 +75,7 @@ std::array<double, 4> max_differences(const Curve& a, const Curve& b) {
   return d;
 }
 
-Curve curve_of(const io::ElementRunOutcome& o, const models::Model& m) {
+Curve curve_of(const element::ElementRunOutcome& o, const models::Model& m) {
   Curve c;
   for (const auto& r : o.result.rows) {
     const auto s = m.stress(r.state);
@@ -108,10 +108,10 @@ int run_default_job(const std::filesystem::path& out, bool force, const std::str
     for (const std::string model : {"hvwe", "vw3d"}) {
       const std::string text = test_text(model, bc, parameters);
       const std::string name = fmt::format("<embedded:default {} {}>", model, bc);
-      const auto spec = io::parse_element_test(io::parse_toml_text(text, name), name, ".");
-      io::ElementRunOptions opt{out / fmt::format("{}-{}", model, bc), force, command_line, text,
-                                nullptr};
-      const auto outcome = io::run_element_to_directory(spec, opt);
+      const auto spec = element::parse_element_test(io::parse_toml_text(text, name), name, ".");
+      element::ElementRunOptions opt{out / fmt::format("{}-{}", model, bc), force, command_line,
+                                     text, nullptr};
+      const auto outcome = element::run_element_to_directory(spec, opt);
       const auto m = models::find_model(model).make(spec.inputs);
       curves[i++] = curve_of(outcome, *m);
       status = outcome.result.status;

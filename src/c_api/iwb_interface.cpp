@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "element/element_test_file.hpp"
 #include "integration/stress_point_integrator.hpp"
-#include "io/element_test_file.hpp"
 #include "io/parameter_file.hpp"
 #include "io/toml_reader.hpp"
 #include "models/registry.hpp"
@@ -87,7 +87,7 @@ std::unique_ptr<iwb_material> make_material(const char* model, iwb::models::Mode
                     model, kappa_r));
   }
   if (integration != nullptr && *integration != '\0')
-    m->settings = iwb::io::parse_integrator_settings(
+    m->settings = iwb::element::parse_integrator_settings(
         iwb::io::parse_toml_text(integration, "integration"), "integration");
   m->inputs = std::move(inputs);
   m->model =
@@ -209,8 +209,8 @@ iwb_status iwb_initial_state(const iwb_material* material, const char* const* ke
       require(keys[i] != nullptr, fmt::format("key {} is NULL", i));
       initial.insert_or_assign(keys[i], values[i]);
     }
-    const auto init = iwb::io::parse_initial_state(initial, material->spec->name, material->inputs,
-                                                   "initial state");
+    const auto init = iwb::element::parse_initial_state(initial, material->spec->name,
+                                                        material->inputs, "initial state");
     const auto s = material->model->initial_state(init);
     std::copy(s.data(), s.data() + s.size(), state);
   });

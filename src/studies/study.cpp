@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
-#include "io/element_run.hpp"
+#include "element/element_run.hpp"
 #include "io/parameter_sets.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_override.hpp"
@@ -48,7 +48,7 @@ std::map<std::string, fs::path> study_parameters(const std::vector<ClayCase>& ca
   return files;
 }
 
-ClayCurve curve_of(const io::ElementRunOutcome& o, const models::Model& m) {
+ClayCurve curve_of(const element::ElementRunOutcome& o, const models::Model& m) {
   ClayCurve c;
   c.status = o.result.status;
   for (const auto& r : o.result.rows) {
@@ -65,9 +65,10 @@ ClayCurve run_case(const std::string& study, const ClayCase& c, const fs::path& 
                    const StudyOptions& opt) {
   const std::string text = element_test_text(c, parameters.string());
   const std::string name = fmt::format("<study:{} {}>", study, c.name);
-  const auto spec = io::parse_element_test(io::parse_toml_text(text, name), name, ".");
-  io::ElementRunOptions run{opt.out / c.name, opt.force, opt.command_line, text, opt.interrupt};
-  const auto outcome = io::run_element_to_directory(spec, run);
+  const auto spec = element::parse_element_test(io::parse_toml_text(text, name), name, ".");
+  element::ElementRunOptions run{opt.out / c.name, opt.force, opt.command_line, text,
+                                 opt.interrupt};
+  const auto outcome = element::run_element_to_directory(spec, run);
   return curve_of(outcome, *models::find_model(c.model).make(spec.inputs));
 }
 

@@ -9,8 +9,8 @@
 #include <optional>
 #include <set>
 
-#include "io/element_run.hpp"
-#include "io/element_test_file.hpp"
+#include "element/element_run.hpp"
+#include "element/element_test_file.hpp"
 #include "io/toml_override.hpp"
 #include "io/toml_reader.hpp"
 #include "models/registry.hpp"
@@ -50,25 +50,25 @@ std::vector<GoldCase> all_cases() {
 
 // The path's template with the model's name; continuum models (vw3d) refuse [roughness], so it
 // goes.
-io::ElementTestSpec spec_of(const GoldCase& c) {
+element::ElementTestSpec spec_of(const GoldCase& c) {
   const std::string file = c.template_file().string();
   auto root = io::parse_toml_file(file);
   io::set_dotted(root, "model.name", c.model, file);
   if (!models::find_model(c.model).uses_roughness) root.erase("roughness");
-  return io::parse_element_test(root, file + " with model " + c.model,
-                                c.template_file().parent_path());
+  return element::parse_element_test(root, file + " with model " + c.model,
+                                     c.template_file().parent_path());
 }
 
 // A run directory as `iwb element` writes it, kept under build/test-runs/gold/ for inspection.
 // Empty, with the reason in `why`, when the run did not complete: a gold file of a failed run
 // would pin the failure, and one broken case must not hide the others.
 std::optional<fs::path> run(const GoldCase& c, std::string& why) {
-  io::ElementRunOptions opt;
+  element::ElementRunOptions opt;
   opt.out = fs::path(IWB_TEST_RUNS_DIR) / "gold" / c.model / c.path;
   opt.force = true;
   opt.command_line = "iwb_tests [gold]";
   try {
-    const auto outcome = io::run_element_to_directory(spec_of(c), opt);
+    const auto outcome = element::run_element_to_directory(spec_of(c), opt);
     why = outcome.result.status;
     if (outcome.result.complete()) return opt.out / "history.csv";
   } catch (const std::exception& e) {

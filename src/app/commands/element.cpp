@@ -8,8 +8,8 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "app/progress.hpp"
-#include "io/element_run.hpp"
-#include "io/element_test_file.hpp"
+#include "element/element_run.hpp"
+#include "element/element_test_file.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::app {
@@ -22,15 +22,15 @@ struct ElementOptions {
 };
 
 int run_element(const ElementOptions& o, const CommandContext& context) {
-  auto spec = io::load_element_test(o.test_file);
+  auto spec = element::load_element_test(o.test_file);
   for (const auto& w : spec.warnings) fmt::print(stderr, "warning: {}\n", w);
   const auto dir = o.out.empty()
                        ? std::filesystem::path("runs") / std::filesystem::path(o.test_file).stem()
                        : std::filesystem::path(o.out);
-  io::ElementRunOptions opt{dir, o.force, context.command_line, io::read_file(o.test_file),
-                            context.interrupt};
+  element::ElementRunOptions opt{dir, o.force, context.command_line, io::read_file(o.test_file),
+                                 context.interrupt};
   spec.settings.on_increment = increment_progress();
-  const auto outcome = io::run_element_to_directory(spec, opt);
+  const auto outcome = element::run_element_to_directory(spec, opt);
   const auto& r = outcome.result;
   // A failed or interrupted run is an error message: on stderr, with exit 1 (README).
   fmt::print(r.complete() ? stdout : stderr,

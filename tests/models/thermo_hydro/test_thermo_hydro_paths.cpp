@@ -8,7 +8,7 @@
 #include <tuple>
 
 #include "driver/element_test.hpp"
-#include "io/element_test_file.hpp"
+#include "element/element_test_file.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
 #include "models/registry.hpp"
@@ -31,7 +31,7 @@ End run(const std::string& model, const std::string& boundary, const std::string
                            "\"\n[initial]\n" + initial +
                            "\n[shear_zone]\nd_s_mm = 5\n[boundary]\ntype = \"" + boundary +
                            "\"\n[path]\nkind = \"stages\"\n" + stages;
-  const auto spec = io::parse_element_test(io::parse_toml_text(text, "t.toml"), "t.toml", ".");
+  const auto spec = element::parse_element_test(io::parse_toml_text(text, "t.toml"), "t.toml", ".");
   const auto m = models::find_model(spec.model).make(spec.inputs);
   const auto r =
       driver::run_element_test(*m, m->initial_state(spec.initial), spec.path, spec.settings);

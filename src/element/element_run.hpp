@@ -6,9 +6,9 @@
 #include <functional>
 #include <string>
 
-#include "io/element_test_file.hpp"
+#include "element/element_test_file.hpp"
 
-namespace iwb::io {
+namespace iwb::element {
 
 struct ElementRunOptions {
   std::filesystem::path out;
@@ -29,4 +29,4 @@ struct ElementRunOutcome {
 ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
                                            const ElementRunOptions& options);
 
-}  // namespace iwb::io
+}  // namespace iwb::element

@@ -1,4 +1,4 @@
-#include "io/element_test_file.hpp"
+#include "element/element_test_file.hpp"
 
 #include <fmt/core.h>
 
@@ -13,9 +13,12 @@
 #include "models/hypoplastic/intergranular_strain.hpp"
 #include "models/registry.hpp"
 
-namespace iwb::io {
+namespace iwb::element {
 
 namespace {
+
+using io::describe;
+using io::TableReader;
 
 using nlohmann::json;
 
@@ -43,11 +46,11 @@ void read_model(TableReader model, ElementTestSpec& spec, const std::filesystem:
                      " is missing (a parameter file path or inline tables)");
   if (const auto file = params->value<std::string>()) {
     const auto path = (base / *file).lexically_normal().string();
-    spec.inputs.tables = load_parameter_file(path);
+    spec.inputs.tables = io::load_parameter_file(path);
     spec.inputs.source = path;
     spec.parameter_source = path;
   } else if (const auto* inline_tables = params->as_table()) {
-    spec.inputs.tables = read_parameter_tables(*inline_tables, model.where("parameters"));
+    spec.inputs.tables = io::read_parameter_tables(*inline_tables, model.where("parameters"));
     spec.inputs.source = model.where("parameters");
     spec.parameter_source = "inline";
   } else {
@@ -585,7 +588,8 @@ models::InitialState parse_initial_state(const toml::table& initial, const std::
 }
 
 ElementTestSpec load_element_test(const std::string& path) {
-  return parse_element_test(parse_toml_file(path), path, std::filesystem::path(path).parent_path());
+  return parse_element_test(io::parse_toml_file(path), path,
+                            std::filesystem::path(path).parent_path());
 }
 
-}  // namespace iwb::io
+}  // namespace iwb::element

@@ -11,7 +11,7 @@
 #include "driver/element_test.hpp"
 #include "models/registry.hpp"
 
-namespace iwb::io {
+namespace iwb::element {
 
 struct ElementTestSpec {
   std::string source;  // file path, or "<embedded:NAME>"
@@ -44,4 +44,4 @@ ElementTestSpec load_element_test(const std::string& path);
 ElementTestSpec parse_element_test(const toml::table& root, const std::string& source,
                                    const std::filesystem::path& base_dir);
 
-}  // namespace iwb::io
+}  // namespace iwb::element

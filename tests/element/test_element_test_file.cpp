@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "common/errors.hpp"
-#include "io/element_run.hpp"
-#include "io/element_test_file.hpp"
+#include "element/element_run.hpp"
+#include "element/element_test_file.hpp"
 #include "io/toml_reader.hpp"
 #include "support/replaced.hpp"
 
@@ -38,8 +38,8 @@ gamma = 0.1
 increments = 100
 )";
 
-io::ElementTestSpec parse(const std::string& text) {
-  return io::parse_element_test(io::parse_toml_text(text, "t.toml"), "t.toml", ".");
+element::ElementTestSpec parse(const std::string& text) {
+  return element::parse_element_test(io::parse_toml_text(text, "t.toml"), "t.toml", ".");
 }
 
 std::string error_of(const std::string& text) {
@@ -120,7 +120,7 @@ TEST_CASE("parameter files: a relative path resolves against the test file", "[i
   text.replace(a, b - a, "parameters = \"p/sand.toml\"\n");
   std::ofstream(dir / "test.toml") << text;
   try {
-    io::load_element_test((dir / "test.toml").string());
+    element::load_element_test((dir / "test.toml").string());
     FAIL("expected an error");
   } catch (const InputError& e) {
     CHECK_THAT(std::string(e.what()),
@@ -190,11 +190,11 @@ TEST_CASE("a cyclic run directory holds cycles.csv, one row per cycle, listed in
       "[shear_zone]\nd_s_mm = 2\n";
   const auto spec = parse(text);
   const auto dir = std::filesystem::temp_directory_path() / "iwb-io-cycles";
-  io::ElementRunOptions opt;
+  element::ElementRunOptions opt;
   opt.out = dir;
   opt.force = true;
   opt.input_text = text;
-  const auto outcome = io::run_element_to_directory(spec, opt);
+  const auto outcome = element::run_element_to_directory(spec, opt);
   REQUIRE(outcome.result.complete());
   std::ifstream in(dir / "cycles.csv");
   std::string line;

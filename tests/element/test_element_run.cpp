@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "common/errors.hpp"
-#include "io/element_run.hpp"
-#include "io/element_test_file.hpp"
+#include "element/element_run.hpp"
+#include "element/element_test_file.hpp"
 #include "io/toml_reader.hpp"
 
 using namespace iwb;
@@ -21,13 +21,13 @@ std::string hp1d_test(const std::string& direction) {
          direction + "\" }\n";
 }
 
-io::ElementRunOutcome run(const std::string& text, const fs::path& dir) {
-  io::ElementRunOptions opt;
+element::ElementRunOutcome run(const std::string& text, const fs::path& dir) {
+  element::ElementRunOptions opt;
   opt.out = dir;
   opt.force = true;
   opt.input_text = text;
-  return io::run_element_to_directory(
-      io::parse_element_test(io::parse_toml_text(text, "t.toml"), "t.toml", "."), opt);
+  return element::run_element_to_directory(
+      element::parse_element_test(io::parse_toml_text(text, "t.toml"), "t.toml", "."), opt);
 }
 
 }  // namespace

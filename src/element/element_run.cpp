@@ -1,15 +1,15 @@
-#include "io/element_run.hpp"
+#include "element/element_run.hpp"
 
 #include <fmt/core.h>
 
 #include <chrono>
 
 #include "common/errors.hpp"
+#include "element/history_csv.hpp"
 #include "io/directory_lock.hpp"
-#include "io/history_csv.hpp"
 #include "io/run_directory.hpp"
 
-namespace iwb::io {
+namespace iwb::element {
 
 namespace {
 
@@ -50,20 +50,20 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
       {"signs",
        "compression positive; u_n > 0 is dilation; tau has the sign of the shear displacement"},
       {"units", "kPa, mm, degrees; strains dimensionless"}};
-  m["inputs"] = {{"test", {{"source", spec.source}, {"sha256", sha256_hex(opt.input_text)}}}};
+  m["inputs"] = {{"test", {{"source", spec.source}, {"sha256", io::sha256_hex(opt.input_text)}}}};
   if (spec.parameter_source != "inline")
     m["inputs"]["parameters"] = {{"source", spec.parameter_source},
-                                 {"sha256", sha256_hex(read_file(spec.parameter_source))}};
+                                 {"sha256", io::sha256_hex(io::read_file(spec.parameter_source))}};
   m["test"] = spec.resolved;
   m["warnings"] = spec.warnings;
   m["state_variables"] = model->state_names();
   m["files"] =
       nlohmann::json::array();  // each file as it is written, so the list never names a missing one
-  m["started"] = utc_timestamp();
+  m["started"] = io::utc_timestamp();
   m["status"] = "running";
-  const auto lock = DirectoryLock::take(opt.out, opt.command_line);  // until the run is written
-  prepare_run_directory(opt.out, opt.force);
-  write_manifest(opt.out, m);
+  const auto lock = io::DirectoryLock::take(opt.out, opt.command_line);  // until the run is written
+  io::prepare_run_directory(opt.out, opt.force);
+  io::write_manifest(opt.out, m);
 
   driver::RunSettings settings = spec.settings;
   settings.interrupt = opt.interrupt;
@@ -71,26 +71,27 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
   try {
     outcome.result = driver::run_element_test(*model, initial, spec.path, settings);
   } catch (const std::exception& e) {  // the manifest must not keep saying "running"
-    m["finished"] = utc_timestamp();
+    m["finished"] = io::utc_timestamp();
     m["status"] = fmt::format("failed: {}", e.what());
-    write_manifest(opt.out, m);
+    io::write_manifest(opt.out, m);
     throw;
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  write_atomically(opt.out / "history.csv", history_csv(*model, spec.zone, outcome.result.rows));
+  io::write_atomically(opt.out / "history.csv",
+                       history_csv(*model, spec.zone, outcome.result.rows));
   m["files"].push_back("history.csv");
   if (!outcome.result.cycles.empty()) {
-    write_atomically(opt.out / "cycles.csv", cycles_csv(spec.zone, outcome.result.cycles));
+    io::write_atomically(opt.out / "cycles.csv", cycles_csv(spec.zone, outcome.result.cycles));
     m["files"].push_back("cycles.csv");
   }
-  m["finished"] = utc_timestamp();
+  m["finished"] = io::utc_timestamp();
   m["wall_seconds"] = seconds;
   m["counters"] = counters_json(outcome.result);
   m["status"] = outcome.result.status;
-  write_manifest(opt.out, m);
+  io::write_manifest(opt.out, m);
   return outcome;
 }
 
-}  // namespace iwb::io
+}  // namespace iwb::element

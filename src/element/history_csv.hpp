@@ -7,7 +7,7 @@
 #include "driver/element_test.hpp"
 #include "models/model.hpp"
 
-namespace iwb::io {
+namespace iwb::element {
 
 std::string history_csv(const models::Model& model, const driver::ShearZone& zone,
                         const std::vector<driver::HistoryRow>& rows);
@@ -17,4 +17,4 @@ std::string history_csv(const models::Model& model, const driver::ShearZone& zon
 std::string cycles_csv(const driver::ShearZone& zone,
                        const std::vector<driver::CycleSummary>& cycles);
 
-}  // namespace iwb::io
+}  // namespace iwb::element

@@ -1,10 +1,10 @@
-#include "io/history_csv.hpp"
+#include "element/history_csv.hpp"
 
 #include <fmt/core.h>
 
 #include <cmath>
 
-namespace iwb::io {
+namespace iwb::element {
 
 namespace {
 
@@ -72,4 +72,4 @@ std::string cycles_csv(const driver::ShearZone& zone,
   return out;
 }
 
-}  // namespace iwb::io
+}  // namespace iwb::element
