@@ -1,6 +1,6 @@
 #include "element/element_test_file.hpp"
 
-#include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,6 @@
 #include "common/physical_limits.hpp"
 #include "io/parameter_file.hpp"
 #include "io/toml_reader.hpp"
-#include "models/hypoplastic/intergranular_strain.hpp"
 #include "models/registry.hpp"
 
 namespace iwb::element {
@@ -122,16 +121,6 @@ void read_roughness(std::optional<TableReader> r, ElementTestSpec& spec) {
   if (f_c) spec.resolved["roughness"]["f_c"] = models::to_string(spec.inputs.roughness.f_c);
 }
 
-bool has_intergranular_strain(const std::string& model) {
-  return models::find_initial_input(models::find_model(model).declaration.initial, "delta") !=
-         nullptr;
-}
-
-// Beyond this multiple of R an initial intergranular strain is taken as a units mistake (e.g. a
-// percentage): the seed's own default has ||delta|| = 2R/sqrt(3) = 1.155 R, see
-// src/models/hypoplastic/README.md.
-constexpr double kMaxInitialRho = 2.0;
-
 // The value as written, arrays included (describe() names only the type of an array).
 std::string written(const toml::node& node) {
   if (const auto* arr = node.as_array()) {
@@ -148,42 +137,60 @@ bool all_numbers(const toml::array& a) {
   return true;
 }
 
-// [initial] delta: [delta_n, delta_x, delta_y] (opening positive like eps_n, tensor components) or
-// "seed" (default): delta_n = 0, delta_x = delta_y = R/sqrt(3) after oedometric loading (seed 5.6).
-void read_delta(TableReader& t, ElementTestSpec& spec) {
-  const toml::node* node = t.node("delta");
-  if (!has_intergranular_strain(spec.model)) {
-    if (node != nullptr)
-      throw InputError(
-          fmt::format("{} = {}: model '{}' has no intergranular strain (use '{}-igs' or "
-                      "remove the key)",
-                      t.where("delta"), written(*node), spec.model, spec.model));
-    return;
-  }
-  const double R = spec.inputs.tables.at("intergranular_strain").at("R");  // validated by make()
+// A declared vector of [initial] (the intergranular strain's delta): three numbers, or the keyword
+// that names the model's default, which also applies when the key is absent; its size within the
+// declared range in units of the declared scale (R).
+void read_initial_vector(TableReader& t, const models::InitialInputSpec& in,
+                         ElementTestSpec& spec) {
+  const toml::node* node = t.node(in.key);
+  const std::string keyword = in.choices.front();
   std::string origin = "given";
-  std::array<double, 3> d{};
-  if (node == nullptr || node->value<std::string>() == std::optional<std::string>("seed")) {
-    d = models::seed_initial_intergranular_strain(R);
-    origin = "seed 5.6 after oedometric loading: [0, R/sqrt(3), R/sqrt(3)]";
+  std::array<double, 3> v{};
+  if (node == nullptr || node->value<std::string>() == std::optional<std::string>(keyword)) {
+    v = in.default_vector(spec.inputs);
+    origin = in.default_origin;
   } else {
     const auto* arr = node->as_array();
     if (arr == nullptr || arr->size() != 3 || !all_numbers(*arr))
+      throw InputError(fmt::format("{} = {} should be \"{}\" or three numbers {}", t.where(in.key),
+                                   written(*node), keyword,
+                                   fmt::format("[{0}_n, {0}_x, {0}_y]", in.key)));
+    for (int i = 0; i < 3; ++i) v[i] = arr->get(i)->value<double>().value();
+    const double scale = in.scale(spec.inputs);
+    const double size = in.norm(v) / scale;
+    if (!in.range.admits(size))
       throw InputError(
-          fmt::format("{} = {} should be \"seed\" or three numbers [delta_n, delta_x, "
-                      "delta_y]",
-                      t.where("delta"), written(*node)));
-    for (int i = 0; i < 3; ++i) d[i] = arr->get(i)->value<double>().value();
-    const double rho = std::sqrt(d[0] * d[0] + 2.0 * (d[1] * d[1] + d[2] * d[2])) / R;
-    if (!(rho <= kMaxInitialRho))
-      throw InputError(
-          fmt::format("{} = {}: ||delta|| = {:g} R is out of range; allowed [0, {:g}] R "
-                      "(R = {:g})",
-                      t.where("delta"), written(*node), rho, kMaxInitialRho, R));
+          fmt::format("{} = {}: ||{}|| = {:g} {} is out of range; allowed {} {} ({} = {:g})",
+                      t.where(in.key), written(*node), in.key, size, in.scale_name, in.range.text(),
+                      in.scale_name, in.scale_name, scale));
   }
-  spec.initial.delta = d;
-  spec.resolved["initial"]["delta"] = {
-      {"delta_n", d[0]}, {"delta_x", d[1]}, {"delta_y", d[2]}, {"origin", origin}};
+  models::set_initial_vector(spec.initial, in.key, v);
+  spec.resolved["initial"][in.key] = {
+      {in.key + "_n", v[0]}, {in.key + "_x", v[1]}, {in.key + "_y", v[2]}, {"origin", origin}};
+}
+
+// A key of [initial] that this model does not declare but others do (the -igs variants' delta):
+// say which take it, rather than the reader's bare "unknown key". A key already read (hp1d's K0,
+// ignored with a warning) is not refused.
+void refuse_inputs_of_other_models(TableReader& t, const ElementTestSpec& spec) {
+  const auto& declared = models::find_model(spec.model).declaration.initial;
+  for (const auto& other : models::model_registry())
+    for (const auto& in : other.declaration.initial) {
+      if (!t.has(in.key) || t.was_read(in.key) || models::find_initial_input(declared, in.key))
+        continue;
+      std::vector<std::string> variants;  // of this model, by name: hvwe-igs (not -exact-igs)
+      for (const auto& m : models::model_registry())
+        if (m.name.rfind(spec.model + "-", 0) == 0 &&
+            m.name.find('-', spec.model.size() + 1) == std::string::npos &&
+            models::find_initial_input(m.declaration.initial, in.key) != nullptr)
+          variants.push_back(m.name);
+      throw InputError(fmt::format("{} = {}: model '{}' takes no {} ({}; or remove the key)",
+                                   t.where(in.key), written(*t.node(in.key)), spec.model, in.doc,
+                                   variants.empty()
+                                       ? "`iwb models` says which do"
+                                       : fmt::format("{} {}", fmt::join(variants, ", "),
+                                                     variants.size() == 1 ? "does" : "do")));
+    }
 }
 
 // One declared number of [initial]: its range, its default when absent (K0 = 1 - sin phi_c, the
@@ -236,7 +243,10 @@ void read_initial(TableReader t, ElementTestSpec& spec) {
     spec.warnings.push_back(fmt::format("{} = {:g} is ignored: {} has no in-plane stress",
                                         t.where("K0"), t.number_in("K0", positive(kMaxK0)),
                                         spec.model));
-  read_delta(t, spec);
+  for (const auto& in : declared)
+    if (in.kind == models::InitialInputSpec::Kind::kKeywordOrVector3)
+      read_initial_vector(t, in, spec);
+  refuse_inputs_of_other_models(t, spec);
   t.finish();
 }
 

@@ -38,6 +38,7 @@ class TableReader {
 
   // InputError for the first key that was never read.
   void finish() const;
+  bool was_read(const std::string& key) const { return read_.count(key) > 0; }
 
   // "file: key 'path.increments'" for messages.
   std::string where(const std::string& key) const;

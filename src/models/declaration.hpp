@@ -61,6 +61,15 @@ struct InitialInputSpec {
   std::vector<std::string> choices = {};  // kChoice and keywords: "seed"
   // The value when absent, from the model's parameters (K0 = 1 - sin phi_c); empty: no default.
   std::function<double(const ModelInputs&)> default_value = {};
+  // kKeywordOrVector3: the vector the keyword (choices[0]) names, which is also the default, and
+  // what it is, for the manifest. A vector's size is checked against `range` in units of a scale
+  // its parameters set (the intergranular strain's ||delta|| <= 2 R). Declared by the model, so
+  // that a test file's reader knows nothing of what the vector is.
+  std::function<std::array<double, 3>(const ModelInputs&)> default_vector = {};
+  std::string default_origin = {};
+  std::string scale_name = {};  // "R"
+  std::function<double(const ModelInputs&)> scale = {};
+  std::function<double(const std::array<double, 3>&)> norm = {};
 };
 
 // The declared input `key` of a declaration, or nullptr.

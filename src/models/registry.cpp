@@ -151,6 +151,13 @@ void set_initial_input(InitialState& s, const std::string& key, double value) {
     s.named[key] = value;
 }
 
+void set_initial_vector(InitialState& s, const std::string& key, const std::array<double, 3>& v) {
+  if (key != "delta")
+    throw std::logic_error("a model declares the vector input '" + key +
+                           "' that an InitialState cannot hold");
+  s.delta = v;
+}
+
 InitialState offer(const ModelSpec& spec, const ModelInputs& inputs,
                    std::initializer_list<std::pair<std::string, double>> values) {
   InitialState s;

@@ -83,6 +83,9 @@ double critical_friction_angle(const ModelSpec& spec, const ModelInputs& inputs)
 // Puts a declared number input into an InitialState: the shared members, else `named`.
 void set_initial_input(InitialState& s, const std::string& key, double value);
 
+// Puts a declared vector input into an InitialState (the intergranular strain's "delta").
+void set_initial_vector(InitialState& s, const std::string& key, const std::array<double, 3>& v);
+
 // The initial state a caller that does not know the model offers it (the DEM replay, the soil-test
 // simulation, the stability map, the benches): each offered value the model declares, every other
 // declared number at its default (K0 = 1 - sin phi_c for sand; a fixed value always). Values the

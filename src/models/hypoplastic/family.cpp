@@ -10,6 +10,11 @@ namespace iwb::models {
 
 namespace {
 
+// R of the parameters' intergranular strain table: the scale of an initial intergranular strain.
+double intergranular_strain_R(const ModelInputs& in) {
+  return require_table(in, IntergranularStrainParameters::table().name).at("R");
+}
+
 // In the order a test file's [initial] is read (the first bad value is the one reported). The
 // default K0 is the oedometric 1 - sin phi_c of the phi_c_deg in `friction_table`.
 std::vector<InitialInputSpec> rate_form_initial_inputs(InPlaneStart start,
@@ -122,11 +127,22 @@ ModelSpec with_intergranular_strain(ModelSpec base, HypoplasticBuilder build,
   for (int i = 0; i < stress_size; ++i)
     d.layout.components.push_back({"delta" + d.layout.components[i].name.substr(1), "-",
                                    ComponentKind::kIntergranularStrain});
-  InitialInputSpec delta{"delta", "-",
-                         "initial intergranular strain [delta_n, delta_x, delta_y] "
-                         "(default: the seed's, R/sqrt3 in both shear directions)"};
-  delta.kind = InitialInputSpec::Kind::kVector3;
+  InitialInputSpec delta{"delta", "-", "initial intergranular strain [delta_n, delta_x, delta_y]"};
+  delta.kind = InitialInputSpec::Kind::kKeywordOrVector3;
   delta.need = InitialInputSpec::Need::kOptional;
+  delta.choices = {"seed"};
+  delta.default_vector = [](const ModelInputs& in) {
+    return seed_initial_intergranular_strain(intergranular_strain_R(in));
+  };
+  delta.default_origin = "seed 5.6 after oedometric loading: [0, R/sqrt(3), R/sqrt(3)]";
+  // Beyond 2 R an initial intergranular strain is taken as a units mistake (e.g. a percentage):
+  // the seed's own default has ||delta|| = 2R/sqrt(3) = 1.155 R (README).
+  delta.range = closed(0.0, 2.0);
+  delta.scale_name = "R";
+  delta.scale = intergranular_strain_R;
+  delta.norm = [](const std::array<double, 3>& d) {  // of the tensor: delta_x = delta_12 = delta_21
+    return std::sqrt(d[0] * d[0] + 2.0 * (d[1] * d[1] + d[2] * d[2]));
+  };
   d.initial.push_back(delta);
   d.diagnostics.push_back(
       {"rho", "-", "||delta|| / R (eq. 5.45)", DiagnosticRole::kIntergranularRho});
