@@ -165,9 +165,10 @@ TEST_CASE("initial intergranular strain: the seed's default, given values, and b
                  Catch::Contains("model 'hvwe' takes no initial intergranular strain") &&
                  Catch::Contains("(hvwe-igs does; or remove the key)"));
   // an input another family declares (hcthm's temperature) is named, not merely unknown
-  CHECK_THAT(error_of(replaced(kGood, "e0 = 0.8", "e0 = 0.8\nT_K = 300")),
-             Catch::Contains("key 'initial.T_K' = 300: model 'hvwe' takes no initial temperature") &&
-                 Catch::Contains("`iwb models` says which do"));
+  CHECK_THAT(
+      error_of(replaced(kGood, "e0 = 0.8", "e0 = 0.8\nT_K = 300")),
+      Catch::Contains("key 'initial.T_K' = 300: model 'hvwe' takes no initial temperature") &&
+          Catch::Contains("`iwb models` says which do"));
   CHECK_THAT(error_of(replaced(igs_file(), "chi = 1", "chi = 0")),
              Catch::Contains("key 'chi' = 0 is out of range; allowed (0, 100]"));
 }
