@@ -44,6 +44,10 @@ const char* kind_name(KeyKind k) {
       return "a tolerance";
     case KeyKind::kPath:
       return "a path";
+    case KeyKind::kTable:
+      return "a table";
+    case KeyKind::kTables:
+      return "an array of tables";
   }
   return "?";
 }
@@ -79,7 +83,15 @@ std::string KeyDeclaration::allowed() const {
       s = "(0, 1] or \"not needed\"";
       break;
     case KeyKind::kPath:
-      s = "a file, relative to the scene";
+      s = "a file, relative to the file that names it";
+      break;
+    case KeyKind::kTable:
+      s = "a table" + (unit.empty() && range.lower == -kInf && range.upper == kInf
+                           ? std::string()
+                           : ", values in " + range.text() + (unit.empty() ? "" : " " + unit));
+      break;
+    case KeyKind::kTables:
+      s = "array of tables";
       break;
   }
   return limit.empty() ? s : s + "; " + limit;
@@ -200,9 +212,16 @@ int DeclaredTable::whole_number(const std::string& key) {
 std::string DeclaredTable::text(const std::string& key) {
   const auto& r = row(key, KeyKind::kText);
   const auto* d = std::get_if<std::string>(&r.value);
-  const std::string v = d != nullptr ? reader_.optional_text(key).value_or(*d) : reader_.text(key);
-  if (!r.choices.empty() && std::find(r.choices.begin(), r.choices.end(), v) == r.choices.end())
-    throw InputError(fmt::format("{} = \"{}\"; allowed {}{}", reader_.where(key), v,
+  if (d == nullptr) reader_.text(key);  // required: "is missing"
+  return optional_text(key).value_or(d != nullptr ? *d : std::string());
+}
+
+std::optional<std::string> DeclaredTable::optional_text(const std::string& key) {
+  const auto& r = row(key, KeyKind::kText);
+  const auto v = reader_.optional_text(key);
+  if (v && !r.choices.empty() &&
+      std::find(r.choices.begin(), r.choices.end(), *v) == r.choices.end())
+    throw InputError(fmt::format("{} = \"{}\"; allowed {}{}", reader_.where(key), *v,
                                  quoted_list(r.choices),
                                  r.limit.empty() ? "" : " (" + r.limit + ")"));
   return v;
@@ -240,6 +259,16 @@ std::vector<double> DeclaredTable::numbers(const std::string& key) {
     out.push_back(*v);
   }
   return out;
+}
+
+std::optional<TableReader> DeclaredTable::table(const std::string& key) {
+  row(key, KeyKind::kTable);
+  return reader_.table(key);
+}
+
+std::vector<TableReader> DeclaredTable::tables(const std::string& key) {
+  row(key, KeyKind::kTables);
+  return reader_.array_of_tables(key);
 }
 
 }  // namespace iwb::io

@@ -25,6 +25,8 @@ enum class KeyKind {
   kNumberList,   // an array of finite numbers
   kTolerance,    // a relative tolerance in (0, 1], or "not needed" (io::read_tolerance)
   kPath,         // a file, relative to the file that names it
+  kTable,        // an inline table, whose keys the reader declares in `limit`
+  kTables,       // an array of tables, whose keys are rows of the table "<table>.<key>"
 };
 
 // When a key must be given.
@@ -87,9 +89,12 @@ class DeclaredTable {
   int whole_number(const std::string& key);
   std::optional<int> optional_whole_number(const std::string& key);
   std::string text(const std::string& key);  // checked against the declared choices
+  std::optional<std::string> optional_text(const std::string& key);  // the same, or absent
   std::string path(const std::string& key);  // as written: the caller resolves it
   bool flag(const std::string& key);
   std::vector<double> numbers(const std::string& key);  // empty when absent
+  std::optional<TableReader> table(const std::string& key);
+  std::vector<TableReader> tables(const std::string& key);  // empty when absent
 
   TableReader& reader() { return reader_; }
   std::string where(const std::string& key) const { return reader_.where(key); }
