@@ -35,6 +35,10 @@ struct ModelSpec {
   std::function<std::unique_ptr<Model>(const ModelInputs&)> make;
   // What the rest of the workbench may know of the model (declaration.hpp).
   ModelDeclaration declaration = {};
+  // The folder under src/models/ whose register.cpp registers it, set by the registry (a folder
+  // need not name itself): where its README and gold files are. Empty for a model added at run
+  // time.
+  std::string folder = {};
 };
 
 // Why a declaration is inconsistent (state over kMaxStateSize, component 0 not the normal stress,
@@ -47,11 +51,22 @@ std::string declaration_problem(const ModelSpec& spec);
 // all are in (model_registry()).
 class ModelRegistry {
  public:
-  void add(ModelSpec spec) { specs_.push_back(std::move(spec)); }
+  // The generated code calls each folder's registration through this, so that every spec knows
+  // its folder without the folder repeating its own name.
+  void register_folder(std::string folder, void (*register_models)(ModelRegistry&)) {
+    folder_ = std::move(folder);
+    register_models(*this);
+    folder_.clear();
+  }
+  void add(ModelSpec spec) {
+    spec.folder = folder_;
+    specs_.push_back(std::move(spec));
+  }
   std::vector<ModelSpec> take() { return std::move(specs_); }
 
  private:
   std::vector<ModelSpec> specs_;
+  std::string folder_;
 };
 
 // Generated: calls register_<folder>() of every model folder.

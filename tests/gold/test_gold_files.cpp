@@ -1,13 +1,18 @@
-// Gold-file regression tests (STYLE.md, after MOOSE's CSVDiff): every model on each of its paths in
-// data/gold/gold.toml, run as `iwb element` runs it, against its committed history, column by
-// column within the tolerances stated there. Any change of a model's response fails here and shows
-// in review as a diff of data/gold/. When a change is intended, data/gold/regenerate.sh rewrites
-// the files (IWB_GOLD_REGENERATE=1) and the diff is reviewed instead.
+// Gold-file regression tests (STYLE.md, after MOOSE's CSVDiff): every gold file
+// src/models/<folder>/gold/<model>/<path>.csv is the history of one element test, run here as
+// `iwb element` runs it and compared column by column within the tolerances of
+// data/gold/gold.toml. The files are the list of cases: a model's folder holds its gold files, so
+// adding a model touches no list here (data/gold/README.md). Any change of a model's response fails
+// here and shows in review as a diff of the gold files. When a change is intended,
+// data/gold/regenerate.sh rewrites them (IWB_GOLD_REGENERATE=1) and the diff is reviewed instead.
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <optional>
 #include <set>
+#include <tuple>
 
 #include "element/element_run.hpp"
 #include "element/element_test_file.hpp"
@@ -21,30 +26,47 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kGoldDir = "data/gold";  // the tests run from the source tree (tests/CMakeLists.txt)
+// The tests run from the source tree (tests/CMakeLists.txt).
+const fs::path kModelsDir = "src/models";
+const fs::path kGoldDir = "data/gold";                // README, tolerances, regenerate.sh
+const fs::path kSharedTemplates = "data/gold/tests";  // templates models of several folders run
+const fs::path kTolerancesFile = "data/gold/gold.toml";
 
-struct GoldCase {
-  std::string model;
-  std::string path;
-  fs::path gold_file() const { return kGoldDir / model / (path + ".csv"); }
-  fs::path template_file() const { return kGoldDir / "tests" / (path + ".toml"); }
-};
-
-const toml::table& config() {
-  static const toml::table root = io::parse_toml_file((kGoldDir / "gold.toml").string());
-  return root;
+fs::path gold_dir_of(const std::string& folder) {
+  return kModelsDir / folder / "gold";
 }
 
-// [models] NAME = [paths], models sorted by name (toml++ keeps a table's keys sorted).
+// One gold file: the model, the folder that registers it, and the path (the template's name).
+struct GoldCase {
+  std::string folder;
+  std::string model;
+  std::string path;
+  fs::path gold_file() const { return gold_dir_of(folder) / model / (path + ".csv"); }
+  fs::path own_template() const { return gold_dir_of(folder) / (path + ".toml"); }
+  fs::path shared_template() const { return kSharedTemplates / (path + ".toml"); }
+  // The folder's own template, else the shared one; the layout test checks that exactly one exists.
+  fs::path template_file() const {
+    return fs::exists(own_template()) ? own_template() : shared_template();
+  }
+};
+
+// Every src/models/*/gold/*/*.csv, sorted by model and path.
 std::vector<GoldCase> all_cases() {
   std::vector<GoldCase> out;
-  const auto* models = config()["models"].as_table();
-  REQUIRE(models != nullptr);
-  for (const auto& [name, paths] : *models) {
-    REQUIRE(paths.is_array());
-    for (const auto& p : *paths.as_array())
-      out.push_back({std::string(name.str()), *p.value<std::string>()});
+  for (const auto& folder : fs::directory_iterator(kModelsDir)) {
+    const auto gold = folder.path() / "gold";
+    if (!fs::is_directory(gold)) continue;
+    for (const auto& model : fs::directory_iterator(gold)) {
+      if (!model.is_directory()) continue;
+      for (const auto& f : fs::directory_iterator(model.path()))
+        if (f.path().extension() == ".csv")
+          out.push_back({folder.path().filename().string(), model.path().filename().string(),
+                         f.path().stem().string()});
+    }
   }
+  std::sort(out.begin(), out.end(), [](const GoldCase& a, const GoldCase& b) {
+    return std::tie(a.model, a.path) < std::tie(b.model, b.path);
+  });
   return out;
 }
 
@@ -83,31 +105,124 @@ bool regenerating() {
 }
 
 void regenerate(const GoldCase& c, const fs::path& history) {
-  fs::create_directories(c.gold_file().parent_path());
   fs::copy_file(history, c.gold_file(), fs::copy_options::overwrite_existing);
   WARN("regenerated " << c.gold_file().string());
 }
 
-// Every model on `path`, each failure reported and the next model run.
-void check_path(const std::string& path) {
-  const auto tolerances = test::read_tolerances(config(), (kGoldDir / "gold.toml").string());
+// Every case `selected`, each failure reported and the next case run.
+void check_cases(const std::function<bool(const GoldCase&)>& selected) {
+  static const auto tolerances = test::read_tolerances(
+      io::parse_toml_file(kTolerancesFile.string()), kTolerancesFile.string());
   int cases = 0;
   for (const auto& c : all_cases()) {
-    if (c.path != path) continue;
+    if (!selected(c)) continue;
     ++cases;
     std::string why;
     const auto history = run(c, why);
     if (!history) {
-      FAIL_CHECK(c.model << " on " << path << ": the run did not complete: " << why);
+      FAIL_CHECK(c.model << " on " << c.path << ": the run did not complete: " << why);
     } else if (regenerating()) {
       regenerate(c, *history);
     } else if (const auto d = test::diff_csv_files(c.gold_file(), *history, tolerances); d.failed) {
-      FAIL_CHECK(c.model << " on " << path << ": " << d.message
+      FAIL_CHECK(c.model << " on " << c.path << ": " << d.message
                          << "\n(if the change is intended: data/gold/regenerate.sh, then review "
                             "the diff)");
     }
   }
   CHECK(cases > 0);
+}
+
+void check_path(const std::string& path) {
+  check_cases([&](const GoldCase& c) { return c.path == path; });
+}
+
+bool is_sand_path(const std::string& path) {
+  return path == "CNL" || path == "CNS" || path == "CV" || path == "cyclic_CNL" ||
+         path == "oedometric";
+}
+
+// The names of the templates in `dir` (data/gold/tests or a folder's gold/).
+std::vector<std::string> templates_in(const fs::path& dir) {
+  std::vector<std::string> out;
+  if (fs::is_directory(dir))
+    for (const auto& f : fs::directory_iterator(dir))
+      if (f.path().extension() == ".toml") out.push_back(f.path().stem().string());
+  return out;
+}
+
+// What is wrong with the layout of the gold files (data/gold/README.md), one line each; empty
+// when every registered model has gold files in its own folder, every gold file belongs to a
+// model that folder registers and names exactly one template, and every template is where the
+// rule puts it.
+std::vector<std::string> layout_problems() {
+  std::vector<std::string> problems;
+  std::map<std::string, std::set<std::string>> models_of_folder;
+  for (const auto& spec : models::model_registry())
+    if (!spec.folder.empty()) models_of_folder[spec.folder].insert(spec.name);
+  std::map<std::string, std::set<std::string>> cases_of_model;
+  std::map<std::string, std::set<std::string>> folders_running;  // template -> folders
+  for (const auto& c : all_cases()) {
+    cases_of_model[c.model].insert(c.path);
+    folders_running[c.path].insert(c.folder);
+    if (fs::exists(c.own_template()) == fs::exists(c.shared_template()))
+      problems.push_back(c.gold_file().string() + ": the path '" + c.path + "' names " +
+                         (fs::exists(c.own_template()) ? "two templates, " : "no template: ") +
+                         c.own_template().string() + " and " + c.shared_template().string());
+  }
+  for (const auto& [folder, models] : models_of_folder)
+    for (const auto& model : models)
+      if (cases_of_model[model].empty())
+        problems.push_back("model '" + model + "' has no gold file in " +
+                           (gold_dir_of(folder) / model).string() + "/<path>.csv");
+  // Whatever sits in a gold/ folder is a template or the gold files of a model registered there.
+  std::map<std::string, std::vector<fs::path>> templates_named;
+  for (const auto& t : templates_in(kSharedTemplates))
+    templates_named[t].push_back(kSharedTemplates / (t + ".toml"));
+  for (const auto& folder : fs::directory_iterator(kModelsDir)) {
+    const auto name = folder.path().filename().string();
+    const auto gold = folder.path() / "gold";
+    if (!fs::is_directory(gold)) continue;
+    for (const auto& entry : fs::directory_iterator(gold)) {
+      const auto entry_name = entry.path().filename().string();
+      if (!entry.is_directory()) {
+        if (entry.path().extension() != ".toml")
+          problems.push_back(entry.path().string() + ": neither a template nor a model's folder");
+      } else if (models_of_folder[name].count(entry_name) == 0) {
+        problems.push_back(entry.path().string() + ": no model '" + entry_name +
+                           "' is registered by " + folder.path().string() + "/register.cpp");
+      } else {
+        for (const auto& f : fs::directory_iterator(entry.path()))
+          if (f.path().extension() != ".csv")
+            problems.push_back(f.path().string() + ": not a gold file (<path>.csv)");
+      }
+    }
+    // A folder's template serves its own models, which must run it.
+    for (const auto& t : templates_in(gold)) {
+      templates_named[t].push_back(gold / (t + ".toml"));
+      if (folders_running[t].count(name) == 0)
+        problems.push_back((gold / (t + ".toml")).string() + ": no gold file of " + gold.string() +
+                           "/<model>/ runs it");
+    }
+  }
+  // A path means one element test wherever it is named (a failure says "hvwe on CNL").
+  for (const auto& [t, files] : templates_named)
+    if (files.size() > 1)
+      problems.push_back("the path '" + t + "' has " + std::to_string(files.size()) +
+                         " templates: " + files[0].string() + ", " + files[1].string());
+  // A shared template serves models of several folders, else it belongs in the one folder's gold/.
+  for (const auto& t : templates_in(kSharedTemplates))
+    if (folders_running[t].size() < 2)
+      problems.push_back((kSharedTemplates / (t + ".toml")).string() + ": run by " +
+                         (folders_running[t].empty()
+                              ? std::string("no gold file")
+                              : "the models of " + *folders_running[t].begin() +
+                                    " only: it belongs in " +
+                                    gold_dir_of(*folders_running[t].begin()).string()));
+  // The gold files live with their models only: nothing left where the hand list kept them.
+  for (const auto& f : fs::recursive_directory_iterator(kGoldDir))
+    if (f.path().extension() == ".csv")
+      problems.push_back(f.path().string() + ": a gold file outside its model's folder");
+  return problems;
 }
 
 }  // namespace
@@ -133,62 +248,24 @@ TEST_CASE("gold: oedometric loading of every model that has one matches its gold
   check_path("oedometric");
 }
 
-TEST_CASE(
-    "gold: the reference interface models (mc, hyperbolic, lashkari, mortara) on CNL, CNS and CV "
-    "match their gold files",
-    "[gold][gold-files]") {
-  for (const std::string path : {"mc_CNL", "mc_CNS", "mc_CV", "hyperbolic_CNL", "hyperbolic_CNS",
-                                 "hyperbolic_CV", "lashkari_CNL", "lashkari_CNS", "lashkari_CV",
-                                 "mortara_CNL", "mortara_CNS", "mortara_CV"}) {
-    INFO(path);
-    check_path(path);
-  }
-}
-
-TEST_CASE(
-    "gold: the models of seed chapter 8 (modified Cam clay, Barodesy) on CNL, CNS and CV match "
-    "their gold files",
-    "[gold][gold-files]") {
-  for (const std::string path : {"table_8_1_CNL", "table_8_1_CNS", "table_8_1_CV"}) {
-    INFO(path);
-    check_path(path);
-  }
-}
-
-TEST_CASE(
-    "gold: Masin's clay and the thermo-hydro model (Table 6.5) on CNL, CV and a heat-dry-wet path "
-    "match their gold files",
-    "[gold][gold-files]") {
-  for (const std::string path : {"table_6_5_CNL", "table_6_5_CV", "table_6_5_thermo_hydro"}) {
-    INFO(path);
-    check_path(path);
-  }
-}
-
-// A model added to the registry without gold files, or a gold file no case produces, fails here.
-TEST_CASE("gold: the clay models on their paths (Table 6.4) match their gold files",
+// The clay paths (Table 6.4), Table 6.5's and Table 8.1's.
+TEST_CASE("gold: every model on the other shared paths of data/gold/tests matches its gold file",
           "[gold][gold-files]") {
-  for (const std::string path :
-       {"clay_CNL", "clay_CNS", "clay_CV", "clay_oedometric", "clay_cyclic_CNL"}) {
-    INFO(path);
-    check_path(path);
-  }
+  check_cases([](const GoldCase& c) {
+    return !is_sand_path(c.path) && c.template_file() == c.shared_template();
+  });
 }
 
-TEST_CASE("gold: every registered model has gold cases and every gold file a case", "[gold]") {
-  std::set<std::string> expected;
-  for (const auto& c : all_cases()) {
-    CHECK(fs::exists(c.template_file()));
-    CHECK(models::find_model(c.model).name == c.model);
-    expected.insert(c.gold_file().string());
-  }
-  for (const auto& spec : models::model_registry()) {
-    INFO(spec.name << " has no entry in data/gold/gold.toml [models]");
-    CHECK(config()["models"][spec.name].is_array());
-  }
-  for (const auto& f : fs::recursive_directory_iterator(kGoldDir)) {
-    if (f.path().extension() != ".csv") continue;
-    INFO(f.path().string() << " is produced by no case of data/gold/gold.toml");
-    CHECK(expected.count(f.path().string()) == 1);
-  }
+// mc, hyperbolic, lashkari, mortara, hcthm's thermo-hydro path: any folder's own paths.
+TEST_CASE("gold: every model on its own folder's paths matches its gold file",
+          "[gold][gold-files]") {
+  check_cases([](const GoldCase& c) { return c.template_file() == c.own_template(); });
+}
+
+TEST_CASE(
+    "gold: every registered model has gold files in its folder and each names exactly one template",
+    "[gold][gold-layout]") {
+  const auto problems = layout_problems();
+  for (const auto& p : problems) FAIL_CHECK(p << " (data/gold/README.md says where files go)");
+  CHECK(problems.empty());
 }
