@@ -6,7 +6,6 @@
 #include <map>
 
 #include "app/commands/assess_options.hpp"
-#include "app/parameter_choice.hpp"
 #include "app/progress.hpp"
 #include "assessment/distribution_file.hpp"
 #include "assessment/league_output.hpp"
@@ -17,6 +16,7 @@
 #include "io/json_file.hpp"
 #include "io/parameter_sets.hpp"
 #include "io/run_directory.hpp"
+#include "validation/parameter_choice.hpp"
 
 namespace iwb::app {
 
@@ -49,8 +49,8 @@ models::ModelInputs league_parameters(const AssessOptions& o, const std::string&
   std::string why;
   const auto scene =
       dem::parse_scene(dem.scene_text, (dem.dir / "manifest.json").string() + " /scene/text");
-  return as_inputs(parameters_for(io::parameter_sets({}), scene,
-                                  dem.summary.at("residual_friction").get<double>(), why));
+  return as_inputs(validation::parameters_for(
+      io::parameter_sets({}), scene, dem.summary.at("residual_friction").get<double>(), why));
 }
 
 // The tables a set lacks for `spec` (the sand set has no [intergranular_strain] for the -igs

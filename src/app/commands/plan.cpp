@@ -9,9 +9,9 @@
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
-#include "app/parameter_choice.hpp"
 #include "io/json_file.hpp"
 #include "io/run_directory.hpp"
+#include "validation/parameter_choice.hpp"
 
 namespace iwb::app {
 
@@ -79,7 +79,7 @@ CLI::App* add_plan_options(CLI::App& app, PlanCommand& c) {
 }
 
 // --params, else the set `iwb validate` would choose for the tradeoff's reference run from the
-// sets built into iwb (app/parameter_choice.hpp).
+// sets built into iwb (validation/parameter_choice.hpp).
 io::ParameterSet plan_parameters(const tradeoff::PlanOptions& opt, const std::string& params,
                                  std::string& why) {
   if (!params.empty()) {
@@ -89,7 +89,7 @@ io::ParameterSet plan_parameters(const tradeoff::PlanOptions& opt, const std::st
   const auto summary = io::read_json_file(tradeoff::reference_run(opt) / "summary.json");
   const auto scene = dem::parse_scene(io::read_file(opt.scene_file), opt.scene_file.string());
   const auto sets = io::parameter_sets({});
-  return parameters_for(sets, scene, summary["residual_friction"].get<double>(), why);
+  return validation::parameters_for(sets, scene, summary["residual_friction"].get<double>(), why);
 }
 
 int run_plan_command(const PlanCommand& c, const std::string& cl) {

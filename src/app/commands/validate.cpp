@@ -1,6 +1,6 @@
 // `iwb validate`: the main job, a DEM scene replayed through hvwe into one report
-// (app/validate.hpp).
-#include "app/validate.hpp"
+// (validation/validate.hpp).
+#include "validation/validate.hpp"
 
 #include <memory>
 
@@ -12,7 +12,7 @@ namespace iwb::app {
 
 namespace {
 struct ValidateCommand {
-  ValidateOptions options;
+  validation::ValidateOptions options;
   std::string out = "runs/validate", engines = "liggghts";
 };
 }  // namespace
@@ -59,7 +59,7 @@ void add_validate_command(CLI::App& app, CommandList& commands) {
     opt.out = o->out;
     opt.engines = split_list(o->engines);
     opt.command_line = c.command_line;
-    return run_validate(opt);
+    return validation::run_validate(opt);
   });
 }
 

@@ -1,10 +1,9 @@
-#include "app/validate.hpp"
+#include "validation/validate.hpp"
 
 #include <fmt/core.h>
 
 #include <chrono>
 
-#include "app/parameter_choice.hpp"
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
 #include "comparison/report.hpp"
@@ -12,8 +11,9 @@
 #include "dem/run.hpp"
 #include "dem/scene_content.hpp"
 #include "io/run_directory.hpp"
+#include "validation/parameter_choice.hpp"
 
-namespace iwb::app {
+namespace iwb::validation {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -186,4 +186,4 @@ int run_validate(const ValidateOptions& opt) {
   return 0;
 }
 
-}  // namespace iwb::app
+}  // namespace iwb::validation

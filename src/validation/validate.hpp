@@ -1,7 +1,7 @@
 #pragma once
 // `iwb validate`, the README's main job (issue 6): run a scene in each DEM engine asked for (the
 // embedded default scene in LIGGGHTS unless told otherwise), replay it through hvwe with the
-// parameter set app/parameter_choice.hpp picks, and write the HTML report.
+// parameter set validation/parameter_choice.hpp picks, and write the HTML report.
 //
 // It runs from any directory: the scenes and parameter sets are built into the binary. Everything
 // is resolved and checked before an engine starts (engines, scene, parameter sets, what each run
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace iwb::app {
+namespace iwb::validation {
 
 struct ValidateOptions {
   std::string scene = "default";                    // an embedded scene name or a scene file
@@ -26,4 +26,4 @@ struct ValidateOptions {
 
 int run_validate(const ValidateOptions& options);
 
-}  // namespace iwb::app
+}  // namespace iwb::validation
