@@ -1,6 +1,8 @@
 // `iwb assess MODEL PARAMS`: the total Sobol indices of an interface model's element test, or its
 // parameter uncertainty (issue 17, seed 4.3.1-4.3.2); `iwb assess --reference RUN...`: the league
 // of the interface models on a DEM scene (model, parameter and global uncertainty, seed 4.3).
+#include "assessment/assess.hpp"
+
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
@@ -9,7 +11,6 @@
 #include <memory>
 
 #include "app/command_list.hpp"
-#include "app/commands/assess_options.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "app/progress.hpp"
@@ -64,7 +65,7 @@ std::map<std::string, std::pair<double, std::string>> tied(const std::vector<std
   return out;
 }
 
-std::string markdown(const assessment::SobolResult& r, const AssessOptions& o) {
+std::string markdown(const assessment::SobolResult& r, const assessment::AssessOptions& o) {
   std::string md = fmt::format(
       "# Total Sobol indices: {} ({})\n\nEvery material parameter normal about the file's value "
       "with COV {}{}; "
@@ -99,7 +100,8 @@ std::string csv(const assessment::SobolResult& r) {
   return out;
 }
 
-std::string uncertainty_markdown(const assessment::UncertaintyResult& r, const AssessOptions& o) {
+std::string uncertainty_markdown(const assessment::UncertaintyResult& r,
+                                 const assessment::AssessOptions& o) {
   std::string md = fmt::format(
       "# Parameter uncertainty: {} ({}, distributions {})\n\nLatin hypercube, {} samples ({} "
       "failed and left out); "
@@ -116,7 +118,7 @@ std::string uncertainty_markdown(const assessment::UncertaintyResult& r, const A
 // and a figure of the first quantity's indices with their intervals against N. Returns N's.
 assessment::SobolResult sobol_convergence(const models::ModelSpec& spec,
                                           assessment::ElementSensitivityOptions opt,
-                                          const AssessOptions& o,
+                                          const assessment::AssessOptions& o,
                                           const std::filesystem::path& dir) {
   std::string csv_text = "N,quantity,parameter,S_T,S_T_low,S_T_high\n";
   std::string md = fmt::format(
@@ -159,8 +161,18 @@ assessment::SobolResult sobol_convergence(const models::ModelSpec& spec,
   return r;
 }
 
-int run_assess(const AssessOptions& o) {
-  if (!o.reference.empty()) return run_league(o);
+// The league's table on stdout, its models and runs as they go and its file on stderr.
+int run_league_command(assessment::AssessOptions o) {
+  o.note = [](const std::string& line) { fmt::print(stderr, "{}\n", line); };
+  o.run_counter = [] { return increment_progress("run"); };
+  const auto outcome = assessment::run_league(o);
+  fmt::print("{}", outcome.table);
+  fmt::print(stderr, "-> {}\n", outcome.file.string());
+  return 0;
+}
+
+int run_assess(const assessment::AssessOptions& o) {
+  if (!o.reference.empty()) return run_league_command(o);
   if (o.model.empty() || o.params.empty())
     throw InputError(
         "iwb assess: give MODEL and PARAMS (the Sobol indices or --uncertainty of one model), or "
@@ -203,7 +215,7 @@ int run_assess(const AssessOptions& o) {
 }  // namespace
 
 void add_assess_command(CLI::App& app, CommandList& commands) {
-  auto o = std::make_shared<AssessOptions>();
+  auto o = std::make_shared<assessment::AssessOptions>();
   auto* cmd = app.add_subcommand(
       "assess",
       "Global sensitivity of an interface model (seed 4.3.1, Tables 4.3-4.7): every material "

@@ -5,8 +5,7 @@
 #include <filesystem>
 #include <map>
 
-#include "app/commands/assess_options.hpp"
-#include "app/progress.hpp"
+#include "assessment/assess.hpp"
 #include "assessment/distribution_file.hpp"
 #include "assessment/league_output.hpp"
 #include "common/errors.hpp"
@@ -18,7 +17,7 @@
 #include "io/run_directory.hpp"
 #include "validation/parameter_choice.hpp"
 
-namespace iwb::app {
+namespace iwb::assessment {
 
 namespace {
 
@@ -89,13 +88,13 @@ nlohmann::json record_inputs(const AssessOptions& o, const models::ModelInputs& 
 
 }  // namespace
 
-int run_league(const AssessOptions& o) {
+AssessOutcome run_league(const AssessOptions& o) {
   std::vector<comparison::DemRun> runs;
   for (const auto& r : o.reference) runs.push_back(comparison::load_dem_run(r));
-  const auto ref = assessment::scene_reference(runs);  // refuses runs of different scenes
+  const auto ref = scene_reference(runs);  // refuses runs of different scenes
   const auto names = league_models(o);
-  const auto texts = assessment::distribution_texts(
-      o.distributions);  // each file's text: a changed COV is a changed input
+  const auto texts =
+      distribution_texts(o.distributions);  // each file's text: a changed COV is a changed input
   std::vector<models::ModelInputs> inputs;
   for (const auto& m : names) {
     inputs.push_back(
@@ -130,22 +129,22 @@ int run_league(const AssessOptions& o) {
     if (std::filesystem::exists(record)) {
       auto old = io::read_json_file(record);
       if (old.value("inputs", nlohmann::json()) == in) {
-        fmt::print(stderr, "model {}/{}: {} (reused {})\n", i + 1, names.size(), names[i],
-                   record.string());
+        o.note(fmt::format("model {}/{}: {} (reused {})", i + 1, names.size(), names[i],
+                           record.string()));
         entries.push_back(old);
         continue;
       }
     }
-    fmt::print(stderr, "model {}/{}: {} (calibration, {} parameter samples{})\n", i + 1,
-               names.size(), names[i], o.samples,
-               o.sobol_samples > 0 ? fmt::format(", Sobol N = {}", o.sobol_samples) : "");
-    assessment::LeagueOptions lo;
-    lo.spread = o.parameter_uncertainty == "fit" ? assessment::ParameterSpread::kFitSigmas
-                                                 : assessment::ParameterSpread::kSeedCovs;
+    o.note(fmt::format("model {}/{}: {} (calibration, {} parameter samples{})", i + 1, names.size(),
+                       names[i], o.samples,
+                       o.sobol_samples > 0 ? fmt::format(", Sobol N = {}", o.sobol_samples) : ""));
+    LeagueOptions lo;
+    lo.spread =
+        o.parameter_uncertainty == "fit" ? ParameterSpread::kFitSigmas : ParameterSpread::kSeedCovs;
     lo.distributions = texts, lo.uncertainty_samples = o.samples,
     lo.sobol_samples = o.sobol_samples;
-    lo.seed = o.seed, lo.threads = o.threads, lo.progress = increment_progress("run");
-    auto e = assessment::entry_json(assessment::assess_model(ref, names[i], inputs[i], lo));
+    lo.seed = o.seed, lo.threads = o.threads, lo.progress = o.run_counter();
+    auto e = entry_json(assess_model(ref, names[i], inputs[i], lo));
     e["inputs"] = in;
     std::filesystem::create_directories(record.parent_path());
     io::write_atomically(record, e.dump(1));
@@ -156,15 +155,13 @@ int run_league(const AssessOptions& o) {
       e["form_limit"] = comparison::form_limit_cell(o.form_limits, e["model"].get<std::string>(),
                                                     header["wall"].get<std::string>(),
                                                     header["boundary"].get<std::string>());
-  const auto table = assessment::ranked(entries);
-  assessment::draw_league_figures(table, dir / "figures");
-  io::write_atomically(dir / "league.csv", assessment::league_csv(table));
-  io::write_atomically(dir / "league.md", assessment::league_markdown(header, table));
+  const auto table = ranked(entries);
+  draw_league_figures(table, dir / "figures");
+  io::write_atomically(dir / "league.csv", league_csv(table));
+  const auto md = league_markdown(header, table);
+  io::write_atomically(dir / "league.md", md);
   io::write_manifest(dir, {{"command", "assess"}, {"league", header}, {"status", "complete"}});
-  const auto md = assessment::league_markdown(header, table);
-  fmt::print("{}", md.substr(0, md.find("\n![")));
-  fmt::print(stderr, "-> {}\n", (dir / "league.md").string());
-  return 0;
+  return {md.substr(0, md.find("\n![")), dir / "league.md"};  // the table without its figures
 }
 
-}  // namespace iwb::app
+}  // namespace iwb::assessment
