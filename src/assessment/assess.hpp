@@ -1,7 +1,7 @@
 #pragma once
-// `iwb assess --reference RUN...` (issue 17, seed 4.3): the league of the interface models on a DEM
-// scene (league_run.cpp), and the options of `iwb assess` it shares with the Sobol indices of one
-// model (app/commands/assess.cpp).
+// `iwb assess` (issue 17, seed 4.3): the total Sobol indices of an interface model's element test,
+// or its parameter uncertainty (assess.cpp), or the league of the interface models on a DEM scene
+// (league_run.cpp): the runs, the files written, the table to show.
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -31,11 +31,16 @@ struct AssessOptions {
   };
 };
 
-// What `iwb assess` shows: its table (markdown) and the file it is in.
+// What `iwb assess` shows: its table (markdown) and the file to name, none for the parameter
+// uncertainty (uncertainty.md holds the table alone).
 struct AssessOutcome {
   std::string table;
   std::filesystem::path file;
 };
+
+// The league with --reference, else the Sobol indices (or --uncertainty) of one model, written
+// into `out` (default runs/assess-<model>); InputError for bad input before anything runs.
+AssessOutcome run_assess(const AssessOptions& options);
 
 // The league of the interface models on the DEM runs of `reference`, written into `out` (default
 // runs/assess-league) and resumed there; InputError for bad input before anything runs.
