@@ -1,15 +1,15 @@
 // `iwb run [--study sand|clay|chapter8|thermo]`: the continuum studies. sand: hvwe against vw3d on
-// seed Table 5.1 (app/default_job.hpp); clay: the seed's 6.4 comparisons of the clay models
+// seed Table 5.1 (studies/sand_study.hpp); clay: the seed's 6.4 comparisons of the clay models
 // (studies/).
 #include <memory>
 #include <string>
 
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
-#include "app/default_job.hpp"
 #include "app/option_checks.hpp"
 #include "studies/chapter8_study.hpp"
 #include "studies/clay_study.hpp"
+#include "studies/sand_study.hpp"
 #include "studies/thermo_study.hpp"
 
 namespace iwb::app {
@@ -30,7 +30,7 @@ int run_study(const RunOptions& o, const CommandContext& c) {
   if (o.study == "thermo")
     return studies::run_study(studies::thermo_study(), {o.out.empty() ? "runs/thermo" : o.out,
                                                         o.force, c.command_line, c.interrupt});
-  return run_default_job(o.out.empty() ? "runs/default" : o.out, o.force, c.command_line);
+  return studies::run_default_job(o.out.empty() ? "runs/default" : o.out, o.force, c.command_line);
 }
 }  // namespace
 

@@ -1,8 +1,7 @@
-// `iwb stability MODEL PARAMS`: where a model runs and where it stops (app/stability.hpp).
-#include "app/stability.hpp"
-
+// `iwb stability MODEL PARAMS`: where a model runs and where it stops (analysis/stability_map.hpp).
 #include <memory>
 
+#include "analysis/stability_map.hpp"
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
@@ -10,7 +9,7 @@
 namespace iwb::app {
 
 void add_stability_command(CLI::App& app, CommandList& commands) {
-  auto o = std::make_shared<StabilityOptions>();
+  auto o = std::make_shared<analysis::StabilityOptions>();
   auto* stability = app.add_subcommand(
       "stability",
       "Stability map of a model: sweeps sigma_n0 (1 kPa to 10 MPa), e0 (just above e_d to just "
@@ -43,7 +42,7 @@ void add_stability_command(CLI::App& app, CommandList& commands) {
                    "wall-clock seconds per point before it is stopped as "
                    "'budget exceeded' (default 5 reduced, 10 full)")
       ->check(number_in(positive(kMaxBudgetSeconds), "s"));
-  commands.add(stability, [o](const CommandContext&) { return run_stability(*o); });
+  commands.add(stability, [o](const CommandContext&) { return analysis::run_stability(*o); });
 }
 
 }  // namespace iwb::app

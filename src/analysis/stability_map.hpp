@@ -2,7 +2,7 @@
 // `iwb stability MODEL PARAMS [--full] [-o DIR]`: the stability map of one model (analysis/).
 #include <string>
 
-namespace iwb::app {
+namespace iwb::analysis {
 
 struct StabilityOptions {
   std::string model;
@@ -15,4 +15,4 @@ struct StabilityOptions {
 // Exit code: 0 when the map was written (whatever the outcomes), 2 for bad input.
 int run_stability(const StabilityOptions& options);
 
-}  // namespace iwb::app
+}  // namespace iwb::analysis

@@ -1,4 +1,4 @@
-#include "app/default_job.hpp"
+#include "studies/sand_study.hpp"
 
 #include <fmt/core.h>
 
@@ -12,7 +12,7 @@
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
 
-namespace iwb::app {
+namespace iwb::studies {
 
 const char* const kDefaultElementTest = R"(# Embedded default element test (iwb run).
 description = "Table 5.1 sand, e0 = 0.80, sigma_n0 = 100 kPa, simple shear to gamma = 0.3"
@@ -41,7 +41,7 @@ namespace {
 // any directory; written into the output directory for the run directories to name.
 constexpr const char* kStudyParameters = "table_5_1_evaluation.toml";
 
-std::filesystem::path study_parameters(const std::filesystem::path& out) {
+std::filesystem::path sand_parameters(const std::filesystem::path& out) {
   for (const auto& set : io::parameter_sets({}))
     if (set.name == kStudyParameters) return io::parameter_set_file(set, out / "parameters");
   throw std::logic_error(
@@ -75,7 +75,7 @@ std::array<double, 4> max_differences(const Curve& a, const Curve& b) {
   return d;
 }
 
-Curve curve_of(const io::ElementRunOutcome& o, const models::Model& m) {
+Curve sand_curve(const io::ElementRunOutcome& o, const models::Model& m) {
   Curve c;
   for (const auto& r : o.result.rows) {
     const auto s = m.stress(r.state);
@@ -100,7 +100,7 @@ int run_default_job(const std::filesystem::path& out, bool force, const std::str
   fmt::print("{:<4} {:>9} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>9} {:>9} | {}\n", "BC", "peak t/s",
              "end t/s", "end s_n", "end e", "tau kPa", "s_n kPa", "s_p kPa", "e", "status");
   bool ok = true;
-  const auto parameters = study_parameters(out);
+  const auto parameters = sand_parameters(out);
   for (const std::string bc : {"CNL", "CNS", "CV"}) {
     Curve curves[2];
     int i = 0;
@@ -113,7 +113,7 @@ int run_default_job(const std::filesystem::path& out, bool force, const std::str
                                 nullptr};
       const auto outcome = io::run_element_to_directory(spec, opt);
       const auto m = models::find_model(model).make(spec.inputs);
-      curves[i++] = curve_of(outcome, *m);
+      curves[i++] = sand_curve(outcome, *m);
       status = outcome.result.status;
       ok = ok && outcome.result.complete();
     }
@@ -136,4 +136,4 @@ int run_default_job(const std::filesystem::path& out, bool force, const std::str
   return ok ? 0 : 1;
 }
 
-}  // namespace iwb::app
+}  // namespace iwb::studies

@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <string>
 
-namespace iwb::app {
+namespace iwb::studies {
 
 // The embedded test, with {model} and {boundary} placeholders.
 extern const char* const kDefaultElementTest;
 
 int run_default_job(const std::filesystem::path& out, bool force, const std::string& command_line);
 
-}  // namespace iwb::app
+}  // namespace iwb::studies

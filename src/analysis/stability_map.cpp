@@ -1,4 +1,4 @@
-#include "app/stability.hpp"
+#include "analysis/stability_map.hpp"
 
 #include <fmt/core.h>
 
@@ -9,7 +9,7 @@
 #include "common/errors.hpp"
 #include "io/parameter_file.hpp"
 
-namespace iwb::app {
+namespace iwb::analysis {
 
 namespace {
 models::ModelInputs inputs_from(const std::string& params) {
@@ -26,24 +26,23 @@ int run_stability(const StabilityOptions& opt) {
   const auto& spec = models::find_model(opt.model);  // InputError listing the models
   const auto inputs = inputs_from(opt.params);
   spec.make(inputs);  // refuses a parameter file the model cannot use, before the sweep
-  auto sweep = opt.full ? analysis::StabilitySweep::full() : analysis::StabilitySweep::reduced();
+  auto sweep = opt.full ? StabilitySweep::full() : StabilitySweep::reduced();
   if (opt.budget_seconds > 0.0) sweep.budget_seconds = opt.budget_seconds;
   const auto dir = opt.out.empty() ? std::filesystem::path("runs") / ("stability-" + opt.model)
                                    : std::filesystem::path(opt.out);
   fmt::print(stderr, "iwb stability: {} with {} ({} form, {} points) -> {}\n", opt.model,
              opt.params, opt.full ? "full" : "reduced", sweep.points(spec).size(), dir.string());
   const auto t0 = std::chrono::steady_clock::now();
-  const auto results = analysis::run_stability_sweep(spec, inputs, sweep);
+  const auto results = run_stability_sweep(spec, inputs, sweep);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  analysis::write_stability_map(
-      results, sweep,
-      {opt.model, opt.params, opt.full ? "full" : "reduced", analysis::density_axis_of(spec)}, dir);
-  for (const auto& [o, n] : analysis::count_outcomes(results))
-    fmt::print("{:<20} {}\n", analysis::to_string(o), n);
+  write_stability_map(results, sweep,
+                      {opt.model, opt.params, opt.full ? "full" : "reduced", density_axis_of(spec)},
+                      dir);
+  for (const auto& [o, n] : count_outcomes(results)) fmt::print("{:<20} {}\n", to_string(o), n);
   fmt::print("{} points in {:.1f} s -> {}\n", results.size(), seconds,
              (dir / "stability.md").string());
   return 0;
 }
 
-}  // namespace iwb::app
+}  // namespace iwb::analysis
