@@ -3,7 +3,6 @@
 #include <fmt/core.h>
 
 #include <chrono>
-#include <filesystem>
 
 #include "analysis/stability_output.hpp"
 #include "common/errors.hpp"
@@ -22,27 +21,25 @@ models::ModelInputs inputs_from(const std::string& params) {
 }
 }  // namespace
 
-int run_stability(const StabilityOptions& opt) {
+StabilityMap run_stability_map(const StabilityMapOptions& opt) {
   const auto& spec = models::find_model(opt.model);  // InputError listing the models
   const auto inputs = inputs_from(opt.params);
   spec.make(inputs);  // refuses a parameter file the model cannot use, before the sweep
   auto sweep = opt.full ? StabilitySweep::full() : StabilitySweep::reduced();
   if (opt.budget_seconds > 0.0) sweep.budget_seconds = opt.budget_seconds;
-  const auto dir = opt.out.empty() ? std::filesystem::path("runs") / ("stability-" + opt.model)
-                                   : std::filesystem::path(opt.out);
-  fmt::print(stderr, "iwb stability: {} with {} ({} form, {} points) -> {}\n", opt.model,
-             opt.params, opt.full ? "full" : "reduced", sweep.points(spec).size(), dir.string());
+  StabilityMap map;
+  map.dir = opt.out.empty() ? std::filesystem::path("runs") / ("stability-" + opt.model)
+                            : std::filesystem::path(opt.out);
+  opt.starting(fmt::format("{} with {} ({} form, {} points) -> {}", opt.model, opt.params,
+                           opt.full ? "full" : "reduced", sweep.points(spec).size(),
+                           map.dir.string()));
   const auto t0 = std::chrono::steady_clock::now();
-  const auto results = run_stability_sweep(spec, inputs, sweep);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  write_stability_map(results, sweep,
+  map.results = run_stability_sweep(spec, inputs, sweep);
+  map.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  write_stability_map(map.results, sweep,
                       {opt.model, opt.params, opt.full ? "full" : "reduced", density_axis_of(spec)},
-                      dir);
-  for (const auto& [o, n] : count_outcomes(results)) fmt::print("{:<20} {}\n", to_string(o), n);
-  fmt::print("{} points in {:.1f} s -> {}\n", results.size(), seconds,
-             (dir / "stability.md").string());
-  return 0;
+                      map.dir);
+  return map;
 }
 
 }  // namespace iwb::analysis
