@@ -36,6 +36,16 @@ std::function<void(const std::string&)> engine_progress() {
   };
 }
 
+std::function<void(const std::string&)> sparse_engine_progress() {
+  auto last =
+      std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
+  return [last](const std::string& line) {
+    if (std::chrono::steady_clock::now() - *last < std::chrono::seconds(3)) return;
+    *last = std::chrono::steady_clock::now();
+    print_progress_line(line);
+  };
+}
+
 void print_progress_line(const std::string& line) {
   fmt::print(stderr, "  {}\n", line);
 }

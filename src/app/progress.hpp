@@ -13,6 +13,9 @@ std::function<void(long, long)> increment_progress(const std::string& what = "in
 // Engine lines: at most one every two seconds, and every change of stage (the word before ':').
 std::function<void(const std::string&)> engine_progress();
 
+// Engine lines between the steps of a longer job (validate): at most one every three seconds.
+std::function<void(const std::string&)> sparse_engine_progress();
+
 // Campaign lines (sweep, tradeoff): every line, indented.
 void print_progress_line(const std::string& line);
 

@@ -11,7 +11,7 @@
 #include "common/errors.hpp"
 #include "element/element_test_file.hpp"
 #include "element/element_test_keys.hpp"
-#include "io/json_file.hpp"
+#include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
 
 namespace iwb {

@@ -11,9 +11,9 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "common/errors.hpp"
+#include "comparison/compare_models.hpp"
 #include "comparison/run_set.hpp"
 #include "comparison/verdict_table.hpp"
-#include "io/run_directory.hpp"
 
 namespace iwb::app {
 
@@ -60,33 +60,6 @@ int compare_set(const CompareCommand& o, const CommandContext& context) {
   return 0;
 }
 
-// One model into OUT, several each into OUT/<model>: every model's inputs and directory checked
-// before any comparison is written.
-std::vector<comparison::ComparisonInputs> inputs_per_model(const CompareCommand& o,
-                                                           const CommandContext& context) {
-  if (o.dem_dir.empty()) throw InputError("compare: give a DEM run directory or --runs DIR...");
-  const fs::path out =
-      o.out.empty() ? fs::path("runs") / ("compare-" + fs::path(o.dem_dir).filename().string())
-                    : fs::path(o.out);
-  if (o.models.size() > 1 && !o.options.form_limit.empty())
-    throw InputError("--form-limit: a form-limit record is one model's; give one --model with it");
-  std::vector<comparison::ComparisonInputs> each;
-  for (const auto& model : o.models) {
-    for (const auto& earlier : each)
-      if (earlier.options.model == model)
-        throw InputError(fmt::format("--model {}: given twice", model));
-    auto opt = o.options;
-    opt.model = model;
-    opt.dem_dir = o.dem_dir;
-    opt.out = o.models.size() > 1 ? out / model : out;
-    opt.command_line = context.command_line;
-    opt.seed_dirs.assign(o.seed_runs.begin(), o.seed_runs.end());
-    io::require_new_run_directory(opt.out, opt.force);
-    each.push_back(comparison::read_comparison_inputs(opt));
-  }
-  return each;
-}
-
 void print_verdicts(const nlohmann::json& result, bool with_cycles) {
   const auto cyclic = comparison::cyclic_verdict_table(result);
   if (with_cycles && !cyclic.rows.empty())
@@ -96,25 +69,30 @@ void print_verdicts(const nlohmann::json& result, bool with_cycles) {
   for (const auto& f : comparison::verdict_findings(result)) fmt::print("{}\n", f);
 }
 
+// One model into OUT, several each into OUT/<model> (comparison/compare_models.hpp).
 int compare_run(const CompareCommand& o, const CommandContext& context) {
-  const auto each = inputs_per_model(o, context);
-  std::vector<nlohmann::json> results;
-  std::string dirs;
-  for (const auto& in : each) {
-    results.push_back(comparison::run_comparison(in));
-    dirs += " " + in.options.out.string();
-  }
-  if (results.size() == 1) {
-    print_verdicts(results.front(), true);
+  if (o.dem_dir.empty()) throw InputError("compare: give a DEM run directory or --runs DIR...");
+  auto opt = o.options;
+  opt.dem_dir = o.dem_dir;
+  opt.out = o.out.empty()
+                ? fs::path("runs") / ("compare-" + fs::path(o.dem_dir).filename().string())
+                : fs::path(o.out);
+  opt.command_line = context.command_line;
+  opt.seed_dirs.assign(o.seed_runs.begin(), o.seed_runs.end());
+  const auto c = comparison::compare_models(opt, o.models);
+  if (c.results.size() == 1) {
+    print_verdicts(c.results.front(), true);
   } else {
-    const auto beside = comparison::cyclic_models_table(results);
+    const auto beside = comparison::cyclic_models_table(c.results);
     if (!beside.rows.empty())
       fmt::print("Cycles, model beside model (issue 34):\n{}", comparison::to_text(beside));
-    for (std::size_t k = 0; k < results.size(); ++k) {
-      fmt::print("\n{} ({}):\n", o.models[k], each[k].options.out.string());
-      print_verdicts(results[k], false);
+    for (std::size_t k = 0; k < c.results.size(); ++k) {
+      fmt::print("\n{} ({}):\n", o.models[k], c.dirs[k].string());
+      print_verdicts(c.results[k], false);
     }
   }
+  std::string dirs;
+  for (const auto& d : c.dirs) dirs += " " + d.string();
   fmt::print("->{} (iwb report{})\n", dirs, dirs);
   return 0;
 }

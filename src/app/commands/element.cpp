@@ -1,4 +1,4 @@
-// `iwb element TEST.toml`: one element test into a run directory (io/element_run.hpp).
+// `iwb element TEST.toml`: one element test into a run directory (element/element_run.hpp).
 #include <fmt/core.h>
 
 #include <filesystem>

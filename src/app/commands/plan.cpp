@@ -1,7 +1,5 @@
 // `iwb plan SCENE`: the cheapest DEM setting and the simplest continuum model that meet a scene's
-// requirements (tradeoff/plan.hpp).
-#include "tradeoff/plan.hpp"
-
+// requirements (tradeoff/plan.hpp, tradeoff/plan_parameters.hpp).
 #include <fmt/core.h>
 
 #include <memory>
@@ -9,9 +7,7 @@
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
-#include "app/parameter_choice.hpp"
-#include "io/json_file.hpp"
-#include "io/run_directory.hpp"
+#include "tradeoff/plan_parameters.hpp"
 
 namespace iwb::app {
 
@@ -78,35 +74,17 @@ CLI::App* add_plan_options(CLI::App& app, PlanCommand& c) {
   return plan;
 }
 
-// --params, else the set `iwb validate` would choose for the tradeoff's reference run from the
-// sets built into iwb (app/parameter_choice.hpp).
-io::ParameterSet plan_parameters(const tradeoff::PlanOptions& opt, const std::string& params,
-                                 std::string& why) {
-  if (!params.empty()) {
-    why = "given with --params";
-    return io::read_parameter_set(params);
-  }
-  const auto summary = io::read_json_file(tradeoff::reference_run(opt) / "summary.json");
-  const auto scene = dem::parse_scene(io::read_file(opt.scene_file), opt.scene_file.string());
-  const auto sets = io::parameter_sets({});
-  return parameters_for(sets, scene, summary["residual_friction"].get<double>(), why);
-}
-
 int run_plan_command(const PlanCommand& c, const std::string& cl) {
-  tradeoff::load_scene_to_plan(
-      c.scene);  // every value and [requirements] checked before the tradeoff is read
   tradeoff::PlanOptions opt{c.scene, c.tradeoff, {}, "", c.out, cl};
   opt.spread = c.parameter_uncertainty == "seed" ? assessment::ParameterSpread::kSeedCovs
                                                  : assessment::ParameterSpread::kFitSigmas;
   opt.samples = c.samples;
-  opt.params = plan_parameters(opt, c.params.empty() ? "" : c.params.front(), opt.params_why);
-  for (std::size_t k = 1; k < c.params.size(); ++k)
-    opt.other_calibrations.push_back(io::read_parameter_set(c.params[k]));
-  const auto plan = tradeoff::run_plan(opt);
+  const auto plan = tradeoff::run_plan_from_files(opt, c.params);
   const fs::path written =
       opt.out.empty() ? fs::path(plan["tradeoff"].get<std::string>()).parent_path() : opt.out;
-  fmt::print("{}parameters: {} ({})\n-> {}\n", tradeoff::plan_text(plan), opt.params.origin,
-             opt.params_why, (written / "plan.json").string());
+  fmt::print("{}parameters: {} ({})\n-> {}\n", tradeoff::plan_text(plan),
+             plan["params"].get<std::string>(), plan["params_why"].get<std::string>(),
+             (written / "plan.json").string());
   return 0;
 }
 

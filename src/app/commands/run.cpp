@@ -1,15 +1,17 @@
 // `iwb run [--study sand|clay|chapter8|thermo]`: the continuum studies. sand: hvwe against vw3d on
-// seed Table 5.1 (app/default_job.hpp); clay: the seed's 6.4 comparisons of the clay models
+// seed Table 5.1 (studies/sand_study.hpp); clay: the seed's 6.4 comparisons of the clay models
 // (studies/).
+#include <fmt/core.h>
+
 #include <memory>
 #include <string>
 
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
-#include "app/default_job.hpp"
 #include "app/option_checks.hpp"
 #include "studies/chapter8_study.hpp"
 #include "studies/clay_study.hpp"
+#include "studies/sand_study.hpp"
 #include "studies/thermo_study.hpp"
 
 namespace iwb::app {
@@ -19,6 +21,32 @@ struct RunOptions {
   std::string study = "sand", out;
   bool force = false;
 };
+
+// The sand study's table, a row per boundary as it is done.
+void print_sand_header() {
+  fmt::print(
+      "iwb run: embedded default, hvwe against vw3d in simple shear (seed Table 5.1, "
+      "e0 = 0.80, 100 kPa)\n");
+  fmt::print("{:<4} {:>9} {:>9} {:>9} {:>8} | {:^39} |\n", "", "", "hvwe", "", "",
+             "max |hvwe - vw3d| along the path");
+  fmt::print("{:<4} {:>9} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>9} {:>9} | {}\n", "BC", "peak t/s",
+             "end t/s", "end s_n", "end e", "tau kPa", "s_n kPa", "s_p kPa", "e", "status");
+}
+
+void print_sand_row(const studies::SandRow& r) {
+  const auto& d = r.differences;
+  fmt::print(
+      "{:<4} {:>9.4f} {:>9.4f} {:>9.2f} {:>8.4f} | {:>9.2e} {:>9.2e} {:>9.2e} {:>9.2e} | {}\n",
+      r.boundary, r.peak, r.last, r.sigma_last, r.e_last, d[0], d[1], d[2], d[3],
+      r.status == "complete" ? "ok" : "FAILED");
+}
+
+int run_sand(const std::filesystem::path& out, bool force, const std::string& command_line) {
+  print_sand_header();
+  const bool ok = studies::run_sand_study(out, force, command_line, print_sand_row);
+  fmt::print("run directories and summary.json in {}\n", out.string());
+  return ok ? 0 : 1;
+}
 
 int run_study(const RunOptions& o, const CommandContext& c) {
   if (o.study == "clay")
@@ -30,7 +58,7 @@ int run_study(const RunOptions& o, const CommandContext& c) {
   if (o.study == "thermo")
     return studies::run_study(studies::thermo_study(), {o.out.empty() ? "runs/thermo" : o.out,
                                                         o.force, c.command_line, c.interrupt});
-  return run_default_job(o.out.empty() ? "runs/default" : o.out, o.force, c.command_line);
+  return run_sand(o.out.empty() ? "runs/default" : o.out, o.force, c.command_line);
 }
 }  // namespace
 

@@ -1,16 +1,31 @@
-// `iwb stability MODEL PARAMS`: where a model runs and where it stops (app/stability.hpp).
-#include "app/stability.hpp"
+// `iwb stability MODEL PARAMS`: where a model runs and where it stops (analysis/stability_map.hpp).
+#include <fmt/core.h>
 
 #include <memory>
 
+#include "analysis/stability_map.hpp"
+#include "analysis/stability_output.hpp"
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 
 namespace iwb::app {
 
+namespace {
+// What is swept on stderr as it starts; the points per outcome and where the map is on stdout.
+int run_stability_command(analysis::StabilityMapOptions opt) {
+  opt.starting = [](const std::string& line) { fmt::print(stderr, "iwb stability: {}\n", line); };
+  const auto map = analysis::run_stability_map(opt);
+  for (const auto& [o, n] : analysis::count_outcomes(map.results))
+    fmt::print("{:<20} {}\n", analysis::to_string(o), n);
+  fmt::print("{} points in {:.1f} s -> {}\n", map.results.size(), map.seconds,
+             (map.dir / "stability.md").string());
+  return 0;
+}
+}  // namespace
+
 void add_stability_command(CLI::App& app, CommandList& commands) {
-  auto o = std::make_shared<StabilityOptions>();
+  auto o = std::make_shared<analysis::StabilityMapOptions>();
   auto* stability = app.add_subcommand(
       "stability",
       "Stability map of a model: sweeps sigma_n0 (1 kPa to 10 MPa), e0 (just above e_d to just "
@@ -43,7 +58,7 @@ void add_stability_command(CLI::App& app, CommandList& commands) {
                    "wall-clock seconds per point before it is stopped as "
                    "'budget exceeded' (default 5 reduced, 10 full)")
       ->check(number_in(positive(kMaxBudgetSeconds), "s"));
-  commands.add(stability, [o](const CommandContext&) { return run_stability(*o); });
+  commands.add(stability, [o](const CommandContext&) { return run_stability_command(*o); });
 }
 
 }  // namespace iwb::app

@@ -1,20 +1,35 @@
 // `iwb validate`: the main job, a DEM scene replayed through hvwe into one report
-// (app/validate.hpp).
-#include "app/validate.hpp"
+// (validation/validate.hpp).
+#include "validation/validate.hpp"
+
+#include <fmt/core.h>
 
 #include <memory>
 
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
+#include "app/progress.hpp"
 
 namespace iwb::app {
 
 namespace {
 struct ValidateCommand {
-  ValidateOptions options;
+  validation::ValidateOptions options;
   std::string out = "runs/validate", engines = "liggghts";
 };
+
+// The job's steps and the engines' lines on stderr as it goes, the report's path on stdout.
+int run_validate_command(validation::ValidateOptions opt) {
+  opt.warning = [](const std::string& w) { fmt::print(stderr, "warning: {}\n", w); };
+  opt.step = [](const std::string& s) { fmt::print(stderr, "iwb validate: {}\n", s); };
+  opt.engine_line = sparse_engine_progress();
+  const auto outcome = validation::run_validate(opt);
+  if (!outcome.complete) return 1;
+  fmt::print("report: {}\n", std::filesystem::absolute(outcome.report).string());
+  return 0;
+}
+
 }  // namespace
 
 void add_validate_command(CLI::App& app, CommandList& commands) {
@@ -59,7 +74,7 @@ void add_validate_command(CLI::App& app, CommandList& commands) {
     opt.out = o->out;
     opt.engines = split_list(o->engines);
     opt.command_line = c.command_line;
-    return run_validate(opt);
+    return run_validate_command(opt);
   });
 }
 

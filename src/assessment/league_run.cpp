@@ -5,9 +5,7 @@
 #include <filesystem>
 #include <map>
 
-#include "app/commands/assess_options.hpp"
-#include "app/parameter_choice.hpp"
-#include "app/progress.hpp"
+#include "assessment/assess.hpp"
 #include "assessment/distribution_file.hpp"
 #include "assessment/league_output.hpp"
 #include "common/errors.hpp"
@@ -17,8 +15,9 @@
 #include "io/json_file.hpp"
 #include "io/parameter_sets.hpp"
 #include "io/run_directory.hpp"
+#include "validation/parameter_choice.hpp"
 
-namespace iwb::app {
+namespace iwb::assessment {
 
 namespace {
 
@@ -49,8 +48,8 @@ models::ModelInputs league_parameters(const AssessOptions& o, const std::string&
   std::string why;
   const auto scene =
       dem::parse_scene(dem.scene_text, (dem.dir / "manifest.json").string() + " /scene/text");
-  return as_inputs(parameters_for(io::parameter_sets({}), scene,
-                                  dem.summary.at("residual_friction").get<double>(), why));
+  return as_inputs(validation::parameters_for(
+      io::parameter_sets({}), scene, dem.summary.at("residual_friction").get<double>(), why));
 }
 
 // The tables a set lacks for `spec` (the sand set has no [intergranular_strain] for the -igs
@@ -87,36 +86,83 @@ nlohmann::json record_inputs(const AssessOptions& o, const models::ModelInputs& 
           {"parameter_uncertainty", o.parameter_uncertainty}};
 }
 
-}  // namespace
-
-int run_league(const AssessOptions& o) {
-  std::vector<comparison::DemRun> runs;
-  for (const auto& r : o.reference) runs.push_back(comparison::load_dem_run(r));
-  const auto ref = assessment::scene_reference(runs);  // refuses runs of different scenes
-  const auto names = league_models(o);
-  const auto texts = assessment::distribution_texts(
-      o.distributions);  // each file's text: a changed COV is a changed input
+// Each model's parameter set, checked by the model before anything runs.
+std::vector<models::ModelInputs> league_inputs(const AssessOptions& o,
+                                               const std::vector<std::string>& names,
+                                               const comparison::DemRun& first) {
   std::vector<models::ModelInputs> inputs;
   for (const auto& m : names) {
-    inputs.push_back(
-        with_missing_tables(models::find_model(m), league_parameters(o, m, runs.front())));
+    inputs.push_back(with_missing_tables(models::find_model(m), league_parameters(o, m, first)));
     inputs.back().source = inputs.back().source.empty() ? "?" : inputs.back().source;
     models::find_model(m).make(
         inputs.back());  // a set the model refuses is bad input, before anything runs
   }
+  return inputs;
+}
+
+nlohmann::json league_header(const AssessOptions& o, const SceneReference& ref,
+                             const comparison::DemRun& first,
+                             const std::vector<std::string>& names) {
+  return {{"scene", first.dir.parent_path().string()},
+          {"runs", o.reference},
+          {"boundary", driver::to_string(ref.mean.boundary)},
+          {"wall", fmt::format("R_n {:g}, d50 {:g} mm", ref.mean.R_n, ref.mean.d50_mm)},
+          {"normal", ref.mean.boundary == driver::BoundaryKind::kCV ? "sigma_n" : "dilation"},
+          {"uncertainty_samples", o.samples},
+          {"sobol_samples", o.sobol_samples},
+          {"models", names},
+          {"parameter_uncertainty", o.parameter_uncertainty},
+          {"form_limits", o.form_limits}};
+}
+
+LeagueOptions league_options(const AssessOptions& o,
+                             const std::map<std::string, std::string>& distributions) {
+  LeagueOptions lo;
+  lo.spread =
+      o.parameter_uncertainty == "fit" ? ParameterSpread::kFitSigmas : ParameterSpread::kSeedCovs;
+  lo.distributions = distributions, lo.uncertainty_samples = o.samples,
+  lo.sobol_samples = o.sobol_samples;
+  lo.seed = o.seed, lo.threads = o.threads, lo.progress = o.run_counter();
+  return lo;
+}
+
+// One model's entry: its record in DIR/models/ when made from these inputs, else assessed and
+// recorded. `counted` is "k/n", for the note.
+nlohmann::json model_entry(const AssessOptions& o, const SceneReference& ref,
+                           const std::string& name, const models::ModelInputs& inputs,
+                           const std::map<std::string, std::string>& distributions,
+                           const std::filesystem::path& dir, const std::string& counted) {
+  const auto record = dir / "models" / (name + ".json");
+  const auto in = record_inputs(o, inputs, distributions);
+  if (std::filesystem::exists(record)) {
+    auto old = io::read_json_file(record);
+    if (old.value("inputs", nlohmann::json()) == in) {
+      o.note(fmt::format("model {}: {} (reused {})", counted, name, record.string()));
+      return old;
+    }
+  }
+  o.note(fmt::format("model {}: {} (calibration, {} parameter samples{})", counted, name, o.samples,
+                     o.sobol_samples > 0 ? fmt::format(", Sobol N = {}", o.sobol_samples) : ""));
+  auto e = entry_json(assess_model(ref, name, inputs, league_options(o, distributions)));
+  e["inputs"] = in;
+  std::filesystem::create_directories(record.parent_path());
+  io::write_atomically(record, e.dump(1));
+  return e;
+}
+
+}  // namespace
+
+AssessOutcome run_league(const AssessOptions& o) {
+  std::vector<comparison::DemRun> runs;
+  for (const auto& r : o.reference) runs.push_back(comparison::load_dem_run(r));
+  const auto ref = scene_reference(runs);  // refuses runs of different scenes
+  const auto names = league_models(o);
+  const auto texts =
+      distribution_texts(o.distributions);  // each file's text: a changed COV is a changed input
+  const auto inputs = league_inputs(o, names, runs.front());
   const auto dir = o.out.empty() ? std::filesystem::path("runs") / "assess-league"
                                  : std::filesystem::path(o.out);
-  const nlohmann::json header = {
-      {"scene", runs.front().dir.parent_path().string()},
-      {"runs", o.reference},
-      {"boundary", driver::to_string(ref.mean.boundary)},
-      {"wall", fmt::format("R_n {:g}, d50 {:g} mm", ref.mean.R_n, ref.mean.d50_mm)},
-      {"normal", ref.mean.boundary == driver::BoundaryKind::kCV ? "sigma_n" : "dilation"},
-      {"uncertainty_samples", o.samples},
-      {"sobol_samples", o.sobol_samples},
-      {"models", names},
-      {"parameter_uncertainty", o.parameter_uncertainty},
-      {"form_limits", o.form_limits}};
+  const auto header = league_header(o, ref, runs.front(), names);
   // an earlier league continues here: its model records say what they were made from, and only
   // those made from these inputs are reused
   const bool resume = std::filesystem::exists(dir / "manifest.json") &&
@@ -124,47 +170,21 @@ int run_league(const AssessOptions& o) {
   if (!resume) io::prepare_run_directory(dir, o.force);
   io::write_manifest(dir, {{"command", "assess"}, {"league", header}, {"status", "running"}});
   std::vector<nlohmann::json> entries;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    const auto record = dir / "models" / (names[i] + ".json");
-    const auto in = record_inputs(o, inputs[i], texts);
-    if (std::filesystem::exists(record)) {
-      auto old = io::read_json_file(record);
-      if (old.value("inputs", nlohmann::json()) == in) {
-        fmt::print(stderr, "model {}/{}: {} (reused {})\n", i + 1, names.size(), names[i],
-                   record.string());
-        entries.push_back(old);
-        continue;
-      }
-    }
-    fmt::print(stderr, "model {}/{}: {} (calibration, {} parameter samples{})\n", i + 1,
-               names.size(), names[i], o.samples,
-               o.sobol_samples > 0 ? fmt::format(", Sobol N = {}", o.sobol_samples) : "");
-    assessment::LeagueOptions lo;
-    lo.spread = o.parameter_uncertainty == "fit" ? assessment::ParameterSpread::kFitSigmas
-                                                 : assessment::ParameterSpread::kSeedCovs;
-    lo.distributions = texts, lo.uncertainty_samples = o.samples,
-    lo.sobol_samples = o.sobol_samples;
-    lo.seed = o.seed, lo.threads = o.threads, lo.progress = increment_progress("run");
-    auto e = assessment::entry_json(assessment::assess_model(ref, names[i], inputs[i], lo));
-    e["inputs"] = in;
-    std::filesystem::create_directories(record.parent_path());
-    io::write_atomically(record, e.dump(1));
-    entries.push_back(e);
-  }
+  for (std::size_t i = 0; i < names.size(); ++i)
+    entries.push_back(model_entry(o, ref, names[i], inputs[i], texts, dir,
+                                  fmt::format("{}/{}", i + 1, names.size())));
   if (!o.form_limits.empty())  // read, not stored in the model records: they stay reusable
     for (auto& e : entries)
       e["form_limit"] = comparison::form_limit_cell(o.form_limits, e["model"].get<std::string>(),
                                                     header["wall"].get<std::string>(),
                                                     header["boundary"].get<std::string>());
-  const auto table = assessment::ranked(entries);
-  assessment::draw_league_figures(table, dir / "figures");
-  io::write_atomically(dir / "league.csv", assessment::league_csv(table));
-  io::write_atomically(dir / "league.md", assessment::league_markdown(header, table));
+  const auto table = ranked(entries);
+  draw_league_figures(table, dir / "figures");
+  io::write_atomically(dir / "league.csv", league_csv(table));
+  const auto md = league_markdown(header, table);
+  io::write_atomically(dir / "league.md", md);
   io::write_manifest(dir, {{"command", "assess"}, {"league", header}, {"status", "complete"}});
-  const auto md = assessment::league_markdown(header, table);
-  fmt::print("{}", md.substr(0, md.find("\n![")));
-  fmt::print(stderr, "-> {}\n", (dir / "league.md").string());
-  return 0;
+  return {md.substr(0, md.find("\n![")), dir / "league.md"};  // the table without its figures
 }
 
-}  // namespace iwb::app
+}  // namespace iwb::assessment

@@ -1,4 +1,4 @@
-#include "app/default_job.hpp"
+#include "studies/sand_study.hpp"
 
 #include <fmt/core.h>
 
@@ -12,7 +12,7 @@
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
 
-namespace iwb::app {
+namespace iwb::studies {
 
 const char* const kDefaultElementTest = R"(# Embedded default element test (iwb run).
 description = "Table 5.1 sand, e0 = 0.80, sigma_n0 = 100 kPa, simple shear to gamma = 0.3"
@@ -41,7 +41,7 @@ namespace {
 // any directory; written into the output directory for the run directories to name.
 constexpr const char* kStudyParameters = "table_5_1_evaluation.toml";
 
-std::filesystem::path study_parameters(const std::filesystem::path& out) {
+std::filesystem::path sand_parameters(const std::filesystem::path& out) {
   for (const auto& set : io::parameter_sets({}))
     if (set.name == kStudyParameters) return io::parameter_set_file(set, out / "parameters");
   throw std::logic_error(
@@ -62,21 +62,21 @@ std::string test_text(const std::string& model, const std::string& bc,
   return t;
 }
 
-struct Curve {
+struct SandCurve {
   double peak = 0.0, last = 0.0, e_last = 0.0, sigma_last = 0.0;
   std::vector<std::array<double, 4>> path;  // tau, sigma_n, sigma_p, e per row
 };
 
 // Largest difference of each of tau, sigma_n, sigma_p (kPa) and e between two curves.
-std::array<double, 4> max_differences(const Curve& a, const Curve& b) {
+std::array<double, 4> max_differences(const SandCurve& a, const SandCurve& b) {
   std::array<double, 4> d{0, 0, 0, 0};
   for (std::size_t k = 0; k < std::min(a.path.size(), b.path.size()); ++k)
     for (int i = 0; i < 4; ++i) d[i] = std::max(d[i], std::abs(a.path[k][i] - b.path[k][i]));
   return d;
 }
 
-Curve curve_of(const element::ElementRunOutcome& o, const models::Model& m) {
-  Curve c;
+SandCurve sand_curve(const element::ElementRunOutcome& o, const models::Model& m) {
+  SandCurve c;
   for (const auto& r : o.result.rows) {
     const auto s = m.stress(r.state);
     c.path.push_back({s.tau_x, s.sigma_n, s.sigma_p.value_or(0.0), m.void_ratio(r.state)});
@@ -88,21 +88,25 @@ Curve curve_of(const element::ElementRunOutcome& o, const models::Model& m) {
   return c;
 }
 
+nlohmann::json row_json(const SandRow& r) {
+  const auto& d = r.differences;
+  return {{"hvwe_peak_tau_over_sigma_n", r.peak},
+          {"hvwe_end_tau_over_sigma_n", r.last},
+          {"hvwe_end_sigma_n_kPa", r.sigma_last},
+          {"hvwe_end_e", r.e_last},
+          {"max_abs_difference_hvwe_vw3d",
+           {{"tau_kPa", d[0]}, {"sigma_n_kPa", d[1]}, {"sigma_p_kPa", d[2]}, {"e", d[3]}}}};
+}
+
 }  // namespace
 
-int run_default_job(const std::filesystem::path& out, bool force, const std::string& command_line) {
+bool run_sand_study(const std::filesystem::path& out, bool force, const std::string& command_line,
+                    const std::function<void(const SandRow&)>& on_row) {
   nlohmann::json summary;
-  fmt::print(
-      "iwb run: embedded default, hvwe against vw3d in simple shear (seed Table 5.1, "
-      "e0 = 0.80, 100 kPa)\n");
-  fmt::print("{:<4} {:>9} {:>9} {:>9} {:>8} | {:^39} |\n", "", "", "hvwe", "", "",
-             "max |hvwe - vw3d| along the path");
-  fmt::print("{:<4} {:>9} {:>9} {:>9} {:>8} | {:>9} {:>9} {:>9} {:>9} | {}\n", "BC", "peak t/s",
-             "end t/s", "end s_n", "end e", "tau kPa", "s_n kPa", "s_p kPa", "e", "status");
   bool ok = true;
-  const auto parameters = study_parameters(out);
+  const auto parameters = sand_parameters(out);
   for (const std::string bc : {"CNL", "CNS", "CV"}) {
-    Curve curves[2];
+    SandCurve curves[2];
     int i = 0;
     std::string status;
     for (const std::string model : {"hvwe", "vw3d"}) {
@@ -113,27 +117,18 @@ int run_default_job(const std::filesystem::path& out, bool force, const std::str
                                      text, nullptr};
       const auto outcome = element::run_element_to_directory(spec, opt);
       const auto m = models::find_model(model).make(spec.inputs);
-      curves[i++] = curve_of(outcome, *m);
+      curves[i++] = sand_curve(outcome, *m);
       status = outcome.result.status;
       ok = ok && outcome.result.complete();
     }
-    const auto d = max_differences(curves[0], curves[1]);
-    const Curve& h = curves[0];
-    fmt::print(
-        "{:<4} {:>9.4f} {:>9.4f} {:>9.2f} {:>8.4f} | {:>9.2e} {:>9.2e} {:>9.2e} {:>9.2e} | {}\n",
-        bc, h.peak, h.last, h.sigma_last, h.e_last, d[0], d[1], d[2], d[3],
-        status == "complete" ? "ok" : "FAILED");
-    summary[bc] = {
-        {"hvwe_peak_tau_over_sigma_n", h.peak},
-        {"hvwe_end_tau_over_sigma_n", h.last},
-        {"hvwe_end_sigma_n_kPa", h.sigma_last},
-        {"hvwe_end_e", h.e_last},
-        {"max_abs_difference_hvwe_vw3d",
-         {{"tau_kPa", d[0]}, {"sigma_n_kPa", d[1]}, {"sigma_p_kPa", d[2]}, {"e", d[3]}}}};
+    const SandCurve& h = curves[0];
+    const SandRow row{
+        bc, h.peak, h.last, h.sigma_last, h.e_last, max_differences(curves[0], curves[1]), status};
+    on_row(row);
+    summary[bc] = row_json(row);
   }
   io::write_atomically(out / "summary.json", summary.dump(2) + "\n");
-  fmt::print("run directories and summary.json in {}\n", out.string());
-  return ok ? 0 : 1;
+  return ok;
 }
 
-}  // namespace iwb::app
+}  // namespace iwb::studies

@@ -2,8 +2,8 @@
 // and none for grains no set was calibrated on (then the closest phi_c, not tested here).
 #include <catch2/catch.hpp>
 
-#include "app/parameter_choice.hpp"
 #include "io/run_directory.hpp"
+#include "validation/parameter_choice.hpp"
 
 using namespace iwb;
 
@@ -11,13 +11,14 @@ namespace {
 std::string chosen_for(const std::string& scene_text, const std::string& name) {
   const auto sets = io::parameter_sets({});
   std::string why;
-  const auto* set = app::calibrated_parameters(sets, dem::parse_scene(scene_text, name), why);
+  const auto* set =
+      validation::calibrated_parameters(sets, dem::parse_scene(scene_text, name), why);
   return set ? set->name : "";
 }
 }  // namespace
 
 TEST_CASE("parameter choice: each scene's grains get the set calibrated on them, other grains none",
-          "[app]") {
+          "[validation]") {
   for (const char* f :
        {"data/scenes/default.toml", "data/scenes/smoke.toml", "data/scenes/convergence.toml"})
     CHECK(chosen_for(io::read_file(f), f) == "dem_default_grains.toml");  // E 1e8 Pa

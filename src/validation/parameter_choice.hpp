@@ -10,7 +10,7 @@
 #include "dem/scene.hpp"
 #include "io/parameter_sets.hpp"
 
-namespace iwb::app {
+namespace iwb::validation {
 
 // The set calibrated on the scene's grains, or nullptr if none of `sets` is; `why` says so.
 const io::ParameterSet* calibrated_parameters(const std::vector<io::ParameterSet>& sets,
@@ -30,4 +30,4 @@ const io::ParameterSet& parameters_for(const std::vector<io::ParameterSet>& sets
 // before a DEM run whose result the choice waits for.
 void require_matchable(const std::vector<io::ParameterSet>& sets, const std::string& where);
 
-}  // namespace iwb::app
+}  // namespace iwb::validation

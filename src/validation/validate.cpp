@@ -1,10 +1,7 @@
-#include "app/validate.hpp"
+#include "validation/validate.hpp"
 
 #include <fmt/core.h>
 
-#include <chrono>
-
-#include "app/parameter_choice.hpp"
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
 #include "comparison/report.hpp"
@@ -12,8 +9,9 @@
 #include "dem/run.hpp"
 #include "dem/scene_content.hpp"
 #include "io/run_directory.hpp"
+#include "validation/parameter_choice.hpp"
 
-namespace iwb::app {
+namespace iwb::validation {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -112,32 +110,23 @@ Inputs resolve_inputs(const ValidateOptions& opt) {
 bool run_dem(const Inputs& in, const DemRun& run, const ValidateOptions& opt,
              const std::string& step) {
   if (run.start == DemStart::kReuse) {
-    fmt::print(
-        stderr,
-        "iwb validate: {} DEM run of {} in {}: reused the complete run in {} (finished {}, {} "
-        "processes); the engine is not started (--force runs it again)\n",
+    opt.step(fmt::format(
+        "{} DEM run of {} in {}: reused the complete run in {} (finished {}, {} processes); the "
+        "engine is not started (--force runs it again)",
         step, in.source, run.engine, run.dir.string(), run.manifest.value("finished", "?"),
-        run.manifest.value("/engine/processes"_json_pointer, 0));
+        run.manifest.value("/engine/processes"_json_pointer, 0)));
     return true;
   }
   const bool resume = run.start == DemStart::kResume;
-  fmt::print(stderr, "iwb validate: {} DEM run of {} in {} ({} processes{}) -> {}\n", step,
-             in.source, run.engine, opt.processes, resume ? ", resuming the stopped run there" : "",
-             run.dir.string());
+  opt.step(fmt::format("{} DEM run of {} in {} ({} processes{}) -> {}", step, in.source, run.engine,
+                       opt.processes, resume ? ", resuming the stopped run there" : "",
+                       run.dir.string()));
   const auto engine = dem::make_engine(run.engine);
-  auto last = std::chrono::steady_clock::now();
-  const auto outcome =
-      dem::run_scene(in.scene, in.text, *engine,
-                     {run.dir, opt.processes, resume, opt.force, opt.command_line, nullptr,
-                      [&last](const std::string& l) {
-                        if (std::chrono::steady_clock::now() - last < std::chrono::seconds(3))
-                          return;
-                        last = std::chrono::steady_clock::now();
-                        fmt::print(stderr, "  {}\n", l);
-                      }});
+  const auto outcome = dem::run_scene(
+      in.scene, in.text, *engine,
+      {run.dir, opt.processes, resume, opt.force, opt.command_line, nullptr, opt.engine_line, {}});
   if (!outcome.complete())
-    fmt::print(stderr, "iwb validate: the {} run did not complete: {}\n", run.engine,
-               outcome.status);
+    opt.step(fmt::format("the {} run did not complete: {}", run.engine, outcome.status));
   return outcome.complete();
 }
 
@@ -154,9 +143,9 @@ fs::path replay_parameters(const Inputs& in, const fs::path& dem_dir, const fs::
 
 }  // namespace
 
-int run_validate(const ValidateOptions& opt) {
+ValidateOutcome run_validate(const ValidateOptions& opt) {
   const Inputs in = resolve_inputs(opt);  // refused before anything runs or is written
-  for (const auto& w : in.scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+  for (const auto& w : in.scene.warnings) opt.warning(w);
   fs::create_directories(opt.out);
   const std::size_t steps = 2 * in.runs.size() + 1;
   std::size_t step = 0;
@@ -164,10 +153,10 @@ int run_validate(const ValidateOptions& opt) {
   fs::path params;
   std::string why;
   for (const auto& run : in.runs) {
-    if (!run_dem(in, run, opt, fmt::format("{}/{}", ++step, steps))) return 1;
+    if (!run_dem(in, run, opt, fmt::format("{}/{}", ++step, steps))) return {};
     if (params.empty()) params = replay_parameters(in, run.dir, opt.out, why);
-    fmt::print(stderr, "iwb validate: {}/{} replay of the {} run through hvwe with {} ({})\n",
-               ++step, steps, run.engine, params.string(), why);
+    opt.step(fmt::format("{}/{} replay of the {} run through hvwe with {} ({})", ++step, steps,
+                         run.engine, params.string(), why));
     const fs::path out =
         opt.out /
         (in.runs.size() == 1 ? "compare-hvwe" : fmt::format("compare-hvwe-{}", run.engine));
@@ -180,10 +169,9 @@ int run_validate(const ValidateOptions& opt) {
     compares.push_back(out);
   }
   const fs::path html = opt.out / "report.html";
-  fmt::print(stderr, "iwb validate: {}/{} report\n", ++step, steps);
+  opt.step(fmt::format("{}/{} report", ++step, steps));
   comparison::write_report(compares, html);
-  fmt::print("report: {}\n", fs::absolute(html).string());
-  return 0;
+  return {true, html};
 }
 
-}  // namespace iwb::app
+}  // namespace iwb::validation

@@ -1,4 +1,4 @@
-#include "app/parameter_choice.hpp"
+#include "validation/parameter_choice.hpp"
 
 #include <fmt/core.h>
 
@@ -6,7 +6,7 @@
 
 #include "common/errors.hpp"
 
-namespace iwb::app {
+namespace iwb::validation {
 
 namespace {
 
@@ -103,4 +103,4 @@ const io::ParameterSet& parameters_for(const std::vector<io::ParameterSet>& sets
   return calibrated != nullptr ? *calibrated : matching_parameters(sets, residual_friction, why);
 }
 
-}  // namespace iwb::app
+}  // namespace iwb::validation
