@@ -80,7 +80,7 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   io::write_atomically(opt.out / "history.csv",
-                       history_csv(*model, spec.zone, outcome.result.rows));
+                       history_csv(*model, spec.zone, outcome.result.rows, spec.direction));
   m["files"].push_back("history.csv");
   if (!outcome.result.cycles.empty()) {
     io::write_atomically(opt.out / "cycles.csv", cycles_csv(spec.zone, outcome.result.cycles));

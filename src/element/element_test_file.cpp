@@ -435,6 +435,7 @@ void read_stages(io::DeclaredTable& t, driver::ShearDirection dir, ElementTestSp
 void read_path(io::DeclaredTable t, ElementTestSpec& spec) {
   const std::string kind = t.text("kind");
   const std::string dir = t.text("direction");
+  spec.direction = dir == "y" ? driver::ShearDirection::kY : driver::ShearDirection::kX;
   const auto d = dir == "x" ? driver::ShearDirection::kX : driver::ShearDirection::kY;
   json out = {{"kind", kind}, {"direction", dir}};
   if (kind == "monotonic") {

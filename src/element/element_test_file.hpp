@@ -22,6 +22,7 @@ struct ElementTestSpec {
   driver::ShearZone zone;
   driver::BoundaryCondition boundary;
   driver::Path path;
+  driver::ShearDirection direction = driver::ShearDirection::kX;  // of the path's shear
   driver::RunSettings settings;
   std::vector<std::string> warnings;
   nlohmann::json resolved;  // every input after defaults and conversions, for the manifest

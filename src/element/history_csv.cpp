@@ -23,7 +23,8 @@ std::vector<std::pair<std::string, int>> external_columns(const models::Model& m
 }  // namespace
 
 std::string history_csv(const models::Model& model, const driver::ShearZone& zone,
-                        const std::vector<driver::HistoryRow>& rows) {
+                        const std::vector<driver::HistoryRow>& rows,
+                        driver::ShearDirection direction) {
   std::string out =
       "increment,segment,u_x_mm,u_y_mm,u_n_mm,gamma_x,gamma_y,eps_n,sigma_n_kPa,sigma_p_kPa,"
       "tau_x_kPa,tau_y_kPa,tau_over_sigma_n,e";
@@ -45,8 +46,8 @@ std::string history_csv(const models::Model& model, const driver::ShearZone& zon
         "{},{},{},{},{},{},{},{},{},{},{},"
         "{},{},{}",
         r.increment, r.segment, zone.u_of(r.gamma_x), zone.u_of(r.gamma_y), zone.u_n_of(r.eps_n),
-        r.gamma_x, r.gamma_y, r.eps_n, s.sigma_n, sigma_p, s.tau_x, s.tau_y, s.tau_x / s.sigma_n,
-        e_field);
+        r.gamma_x, r.gamma_y, r.eps_n, s.sigma_n, sigma_p, s.tau_x, s.tau_y,
+        (direction == driver::ShearDirection::kY ? s.tau_y : s.tau_x) / s.sigma_n, e_field);
     for (const auto& [name, index] : externals) out += fmt::format(",{}", r.state(index));
     for (const auto& d : model.diagnostics(r.state)) out += fmt::format(",{}", d.value);
     out += fmt::format(",{},{},{}\n", r.newton_iterations, r.rate_evaluations, r.rejected_substeps);

@@ -7,6 +7,7 @@
 #include "common/errors.hpp"
 #include "element/element_run.hpp"
 #include "element/element_test_file.hpp"
+#include "io/csv_table.hpp"
 #include "io/toml_reader.hpp"
 
 using namespace iwb;
@@ -55,4 +56,33 @@ TEST_CASE("element: the manifest lists exactly the files the run directory holds
   std::sort(present.begin(), present.end());
   CHECK(listed == present);
   CHECK(listed == std::vector<std::string>{"history.csv"});
+}
+
+// The plane of an interface has no preferred direction for hvwe (its rate is isotropic in the
+// plane, seed 5.3), so the same test sheared in y gives in tau_y what it gives in tau_x in x, and
+// tau_over_sigma_n, the friction along the path's direction, is the same column in both.
+TEST_CASE("element: tau_over_sigma_n is the friction along the path's direction, x or y", "[io]") {
+  const auto text = [](const std::string& direction) {
+    return "model = { name = \"hvwe\", parameters = \"data/params/table_5_1_evaluation.toml\" }\n"
+           "initial = { sigma_n_kPa = 100, e0 = 0.7 }\nboundary = { type = \"CNL\" }\n"
+           "path = { kind = \"monotonic\", gamma = 0.1, increments = 50, direction = \"" +
+           direction + "\" }\n";
+  };
+  const auto root = fs::path(IWB_TEST_RUNS_DIR) / "element" / "direction";
+  run(text("x"), root / "x");
+  run(text("y"), root / "y");
+  const auto x = io::read_csv_table(root / "x" / "history.csv");
+  const auto y = io::read_csv_table(root / "y" / "history.csv");
+  const auto x_tau = x.values("tau_x_kPa"), x_ratio = x.values("tau_over_sigma_n");
+  const auto y_tau = y.values("tau_y_kPa"), y_ratio = y.values("tau_over_sigma_n");
+  const auto y_sigma = y.values("sigma_n_kPa");
+  REQUIRE(x_tau.size() == 51);
+  REQUIRE(y_tau.size() == 51);
+  for (std::size_t i = 0; i < x_tau.size(); ++i) {
+    INFO("row " << i);
+    CHECK(y_tau[i] == Approx(x_tau[i]).margin(1e-9));
+    CHECK(y_ratio[i] == Approx(y_tau[i] / y_sigma[i]).margin(1e-12));
+    CHECK(y_ratio[i] == Approx(x_ratio[i]).margin(1e-12));
+  }
+  CHECK(y_ratio.back() > 0.5);  // sheared: a friction, not the cross component's 0
 }
