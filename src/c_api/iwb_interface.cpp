@@ -238,7 +238,13 @@ iwb_status iwb_update(const iwb_material* material, const double* state_in, cons
             "material, state_in, du, state_out or traction is NULL");
     require(thickness > 0.0, fmt::format("thickness d_s^v = {:g} must be positive", thickness));
     const StateVector s = state_of(*material, state_in);
-    const iwb::models::InterfaceStrain d{du[0] / thickness, du[1] / thickness, du[2] / thickness};
+    // A model whose law is in displacement (hyperbolic, mortara, api-tz) turns strains back into
+    // displacements by the d_s it was made with (ModelInputs::shear_zone_mm), so it is given the
+    // strain over that d_s: its response in displacement is then exact whatever the caller's
+    // thickness, which it does not depend on (over `thickness` it scaled by d_s / thickness).
+    const double h =
+        material->spec->declaration.displacement_based ? material->inputs.shear_zone_mm : thickness;
+    const iwb::models::InterfaceStrain d{du[0] / h, du[1] / h, du[2] / h};
     StateVector end;
     if (tangent == nullptr) {
       iwb::integration::IntegrationCounters counters;
@@ -252,7 +258,7 @@ iwb_status iwb_update(const iwb_material* material, const double* state_in, cons
         const StateVector ds = derivative_of_increment(*material, s, d, j, end);
         double column[3];
         write_traction(*material, ds, column);
-        for (int i = 0; i < 3; ++i) tangent[3 * i + j] = column[i] / thickness;
+        for (int i = 0; i < 3; ++i) tangent[3 * i + j] = column[i] / h;
       }
     }
     if (const auto why = material->model->domain_violation(end); !why.empty())

@@ -206,6 +206,24 @@ TEST_CASE(
                    message, sizeof message) == IWB_ERROR_INPUT);
 }
 
+TEST_CASE(
+    "c_api: a model whose law is in displacement (hyperbolic) answers the same slip alike at any "
+    "thickness",
+    "[c_api]") {
+  // Clough & Duncan's tau(u) does not depend on d_s (src/models/hyperbolic); the caller's d_s^v
+  // only turns du into a strain. Seen failing before the fix: 27 kPa instead of 43 at d_s^v 2.5 mm.
+  const Case c{"hyperbolic", "table_4_4_hyperbolic.toml", {{"sigma_n_kPa", 100}}};
+  const Material m(c);
+  const auto s = m.initial(c);
+  const std::array<double, 3> du{0.0, 0.3, 0.0};  // mm
+  const Step thin = update(m, s, du, 1.0), thick = update(m, s, du, 2.5);
+  REQUIRE(thin.status == IWB_OK);
+  REQUIRE(thick.status == IWB_OK);
+  for (int i = 0; i < 3; ++i) CHECK(thick.traction[i] == Approx(thin.traction[i]).epsilon(1e-12));
+  for (int i = 0; i < 9; ++i) CHECK(thick.tangent[i] == Approx(thin.tangent[i]).epsilon(1e-12));
+  CHECK(thin.traction[1] > 10.0);  // sheared well into the hyperbola (about 43 kPa)
+}
+
 TEST_CASE("c_api: one material from four threads gives the serial results bit for bit", "[c_api]") {
   const Case c{"hce", "table_6_1_evaluation.toml", {{"sigma_n_kPa", 100}, {"e0", 0.7}}};
   const Material m(c);
