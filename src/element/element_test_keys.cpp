@@ -384,8 +384,8 @@ void append(KeyDeclarations& to, KeyDeclarations rows) {
   for (auto& r : rows) to.push_back(std::move(r));
 }
 
-// One model-declared input as a row: the first model's declaration, the models that take it.
-KeyDeclaration initial_row(const models::InitialInputSpec& in, const std::string& models,
+// One model-declared input as a row: the first model's declaration.
+KeyDeclaration initial_row(const models::InitialInputSpec& in,
                            const std::vector<models::ModelSpec>& registry) {
   using models::InitialInputSpec;
   KeyDeclaration r{.table = "initial", .key = in.key, .unit = in.unit == "-" ? "" : in.unit};
@@ -415,7 +415,7 @@ KeyDeclaration initial_row(const models::InitialInputSpec& in, const std::string
                          in.need == InitialInputSpec::Need::kRequired ? "required; " : "",
                          fmt::join(group, ", "));
   }
-  r.meaning = fmt::format("{} ({})", in.doc, models);
+  r.meaning = in.doc + " (as the model declares it)";
   return r;
 }
 
@@ -434,27 +434,17 @@ const io::KeyDeclarations& element_test_keys() {
   return rows;
 }
 
+// The models that take a key are not listed: a model added would change the README of every
+// element-test file. A model refuses a key it does not declare and names the models that take it.
 io::KeyDeclarations initial_input_keys() {
   const auto& registry = models::model_registry();
   std::vector<std::string> order;
   std::map<std::string, const models::InitialInputSpec*> first;
-  std::map<std::string, std::set<std::string>> takers;
   for (const auto& m : registry)
-    for (const auto& in : m.declaration.initial) {
+    for (const auto& in : m.declaration.initial)
       if (first.try_emplace(in.key, &in).second) order.push_back(in.key);
-      takers[in.key].insert(m.name);
-    }
   KeyDeclarations rows;
-  for (const auto& key : order) {
-    // "every model but mc, hyperbolic" where most take it, else the list
-    std::vector<std::string> in, out;
-    for (const auto& m : registry) (takers[key].count(m.name) ? in : out).push_back(m.name);
-    const std::string models = out.empty() ? "every model"
-                               : in.size() > out.size()
-                                   ? fmt::format("every model but {}", fmt::join(out, ", "))
-                                   : fmt::format("{}", fmt::join(in, ", "));
-    rows.push_back(initial_row(*first[key], models, registry));
-  }
+  for (const auto& key : order) rows.push_back(initial_row(*first[key], registry));
   return rows;
 }
 
