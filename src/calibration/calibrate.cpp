@@ -5,13 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "calibration/simulate.hpp"
 #include "common/errors.hpp"
 #include "fitting/least_squares.hpp"
-#include "models/hypoplastic/parameters.hpp"
-#include "models/hypoplastic/von_wolffersdorff.hpp"
 #include "models/registry.hpp"
 
 namespace iwb::calibration {
@@ -62,10 +61,16 @@ void check_held(const std::string& model, const std::string& fitted,
           model, t->name, fitted));
 }
 
-// The hypoplastic table has a recipe (Herle & Gudehus's stages A-D); any other table starts at
-// the middle of its boxes (geometric for a logarithmic box) and goes straight to the joint fit.
-bool has_staged_start(const models::ParameterTable& table) {
-  return &table == &models::HypoplasticParameters::table();
+// The recipe that starts `table`: the one given, else the one the model declares, if it is for
+// this table (the -igs models declare Herle & Gudehus's, which starts [hypoplastic] only).
+const CalibrationRecipe* recipe_for(const CalibrationOptions& o,
+                                    const models::ParameterTable& table) {
+  if (o.recipe && o.recipe->table != table.name)
+    throw InputError(fmt::format("calibrate: recipe '{}' is for [{}], not [{}]", o.recipe->name,
+                                 o.recipe->table, table.name));
+  const auto* r =
+      o.recipe ? o.recipe : find_recipe(models::find_model(o.model).declaration.calibration_recipe);
+  return r && r->table == table.name ? r : nullptr;
 }
 
 Boxes declared_boxes(const models::ParameterTable& table) {
@@ -93,12 +98,6 @@ constexpr double kJointInitialStepShare = 0.02;
 // does the rest.
 constexpr int kFactorRefitEvaluations = 20;
 
-void set_limits_from_ec0(models::ParameterValues& v, double ei0_over_ec0 = kEi0OverEc0,
-                         double ed0_over_ec0 = kEd0OverEc0) {
-  v["ei0"] = ei0_over_ec0 * v["ec0"];
-  v["ed0"] = ed0_over_ec0 * v["ec0"];
-}
-
 using Keys = std::vector<std::string>;
 using Indices = std::vector<std::size_t>;
 
@@ -111,10 +110,11 @@ struct Calibrator {
   ObjectiveWeights weights;  // of the fit under way: unit for the stages, the options' jointly
   int evaluations = 0;
   std::vector<std::string> notes;
-  // Set once e_d0 and e_i0 are found unidentifiable: every trial then takes them from its e_c0
-  // by these factors (varied by factor_uncertainty to give the systematic sigma).
-  bool limits_follow_ec0 = false;
-  double ei0_over_ec0 = kEi0OverEc0, ed0_over_ec0 = kEd0OverEc0;
+  // The recipe's ties, set to hold once a tied key is found unidentifiable: every trial then
+  // takes the tied keys from their partners by the factors (varied by factor_uncertainty to give
+  // the systematic sigma).
+  std::vector<FactorTie> ties = {};
+  bool ties_hold = false;
   const models::ParameterTable* declared = nullptr;  // the fitted table's declaration
 
   const BoxEntry& box(const std::string& key) const {
@@ -167,7 +167,7 @@ struct Calibrator {
         const auto [lo, hi] = span(keys[k], v);
         v[keys[k]] = from_fit(box(keys[k]), lo + x(Eigen::Index(k)) * (hi - lo));
       }
-    if (limits_follow_ec0) set_limits_from_ec0(v, ei0_over_ec0, ed0_over_ec0);
+    if (ties_hold) apply_ties(ties, v);
     pin(v);
     return v;
   }
@@ -235,148 +235,61 @@ struct Calibrator {
     for (std::size_t i = 0; i < tests.size(); ++i) out[i] = i;
     return out;
   }
+  Indices selected(StageTests which) const {
+    if (which == StageTests::kOedometer) return of_kind(SoilTestKind::kOedometer);
+    if (which == StageTests::kAll) return all();
+    Indices out;  // the shear tests whose end is a critical state
+    for (const auto i : of_kind(SoilTestKind::kSimpleShear))
+      if (ends_at_critical_state(tests[i])) out.push_back(i);
+    return out;
+  }
+  const FactorTie& tie_of(const std::string& key) const {
+    for (const auto& t : ties)
+      if (t.key == key) return t;
+    throw std::logic_error("no factor tie for " + key);
+  }
 };
 
-// Row index where gamma first reaches 80 % of the test's last gamma.
-std::size_t last_fifth_start(const SoilTest& t) {
-  std::size_t i = 0;
-  while (i + 1 < t.rows() && t.control[i] < 0.8 * t.control.back()) ++i;
-  return i;
-}
-
-bool at_critical_state(const SoilTest& t) {
-  const std::size_t i = last_fifth_start(t), j = t.rows() - 1;
-  const double ratio_change =
-      std::abs(t.tau_kPa[j] / t.sigma_n_kPa[j] - t.tau_kPa[i] / t.sigma_n_kPa[i]);
-  return ratio_change < kCriticalRatioChange && std::abs(t.e[j] - t.e[i]) < kCriticalVoidChange;
-}
-
-// The shear tests whose end is a critical state; all shear tests (with a note) if none is.
-Indices critical_tests(const Calibrator& c) {
-  Indices shear = c.of_kind(SoilTestKind::kSimpleShear), out;
-  for (const auto i : shear)
-    if (at_critical_state(c.tests[i])) out.push_back(i);
-  return out;
-}
-
-void stage_phi_c(Calibrator& c, const Indices& critical) {
-  if (c.is_fixed("phi_c_deg")) return;
-  if (critical.empty()) {
-    c.notes.push_back(
-        "A: no simple-shear test ends at a critical state (tau/sigma_n and e stationary "
-        "over the last fifth); phi_c starts from 30 deg and is left to the joint fit");
+// One stage of a recipe: a closed form for its keys (the keys tied to them follow, fixed ones are
+// put back) or a fit of them on its tests, noted.
+void run_stage(Calibrator& c, const RecipeStage& s, const CalibrationOptions& o) {
+  if (s.only_with && c.of_kind(*s.only_with).empty()) return;
+  if (s.estimate && c.free(s.keys).empty()) return;  // nothing for the closed form to set
+  const Indices which = c.selected(s.tests);
+  if (which.empty()) {
+    c.notes.push_back(s.without_tests);
     return;
   }
-  double eta = 0.0;
-  for (const auto i : critical) eta += c.tests[i].tau_kPa.back() / c.tests[i].sigma_n_kPa.back();
-  eta /= double(critical.size());
-  c.current["phi_c_deg"] = models::friction_angle_of_simple_shear_ratio(eta) * 180.0 / M_PI;
-  c.notes.push_back(
-      fmt::format("A: residual tau/sigma_n = {:.5f} over {} test(s) at critical state -> "
-                  "phi_c = {:.3f} deg through the simple-shear critical state "
-                  "(tan phi_c would be {:.3f})",
-                  eta, critical.size(), c.current["phi_c_deg"],
-                  std::tan(c.current["phi_c_deg"] * M_PI / 180.0)));
-}
-
-void stage_compression(Calibrator& c, const CalibrationOptions& o) {
-  const Indices oedo = c.of_kind(SoilTestKind::kOedometer);
-  if (oedo.empty()) {
-    c.notes.push_back("B: no oedometer test; h_s and n are left to the joint fit");
+  if (s.estimate) {
+    c.notes.push_back(s.estimate({c.tests, which}, c.current));
+    std::vector<FactorTie> following;
+    std::copy_if(c.ties.begin(), c.ties.end(), std::back_inserter(following), [&](const auto& t) {
+      return std::find(s.keys.begin(), s.keys.end(), t.of) != s.keys.end();
+    });
+    apply_ties(following, c.current);
+    c.pin(c.current);
     return;
   }
-  const auto r =
-      c.fit({"hs_kPa", "n"}, oedo, o.max_evaluations_per_stage, 0.0, o.polish_iterations);
-  c.notes.push_back(
-      fmt::format("B: h_s = {:.4g} kPa, n = {:.4f} from {} oedometer test(s), RMS "
-                  "residual {:.3g} scatter units ({})",
-                  c.current["hs_kPa"], c.current["n"], oedo.size(), r.rmse, r.stop_reason));
+  const auto r = c.fit(s.keys, which, o.max_evaluations_per_stage, 0.0, o.polish_iterations);
+  c.notes.push_back(s.fitted(c.current, which.size(), r));
 }
 
-// The smallest e_c0 whose e_i (e_i0 = kEi0OverEc0 e_c0, Bauer's factor at p = 3 sigma0, an upper
-// bound of the start's mean stress) lies 1 % above every test's initial void ratio.
-double smallest_admissible_ec0(const Calibrator& c) {
-  double out = 0.0;
-  for (const auto& t : c.tests) {
-    const double factor =
-        std::exp(-std::pow(3.0 * t.sigma0_kPa / c.current.at("hs_kPa"), c.current.at("n")));
-    out = std::max(out, 1.01 * t.e0 / (kEi0OverEc0 * factor));
-  }
-  return out;
-}
-
-void stage_void_ratios(Calibrator& c, const Indices& critical) {
-  if (c.is_fixed("ec0")) return;
-  if (critical.empty()) {
-    c.notes.push_back(
-        "C: no critical state reached; e_c0 starts from the loosest test and is left to the joint "
-        "fit");
-    return;
-  }
-  // Bauer (eq. 5.13): e_c = e_c0 exp(-(p/h_s)^n) with p = -tr T = 3 sigma_n at the critical state
-  // of simple shear (sigma_p -> sigma_n there; vw3d README).
-  double ec0 = 0.0;
-  for (const auto i : critical) {
-    const auto& t = c.tests[i];
-    ec0 += t.e.back() /
-           std::exp(-std::pow(3.0 * t.sigma_n_kPa.back() / c.current["hs_kPa"], c.current["n"]));
-  }
-  c.current["ec0"] = ec0 / double(critical.size());
-  // A DEM cell that localises ends with a stationary bulk e below the critical state line (only
-  // its band dilated to it): e_c0 from such a test can leave the loosest tests' starts above
-  // e_i, where no fit can reach them. The start is raised until every test starts admissibly.
-  const double admissible = smallest_admissible_ec0(c);
-  const bool raised = admissible > c.current["ec0"];
-  c.current["ec0"] = std::max(c.current["ec0"], admissible);
-  set_limits_from_ec0(c.current);
-  c.pin(c.current);
-  c.notes.push_back(fmt::format(
-      "C: e_c0 = {:.4f} from the critical void ratios of {} test(s){}; e_i0 = "
-      "{} e_c0, e_d0 = {} e_c0 as starting values",
-      c.current["ec0"], critical.size(),
-      raised ? fmt::format(", raised from {:.4f} so that every test starts below e_i (a localised "
-                           "cell's bulk e lies below the critical state line)",
-                           ec0 / double(critical.size()))
-             : "",
-      kEi0OverEc0, kEd0OverEc0));
-}
-
-void stage_density(Calibrator& c, const CalibrationOptions& o) {
-  const auto r =
-      c.fit({"alpha", "beta"}, c.all(), o.max_evaluations_per_stage, 0.0, o.polish_iterations);
-  c.notes.push_back(
-      fmt::format("D: alpha = {:.4f}, beta = {:.4f} from all tests, RMS residual {:.3g} ({})",
-                  c.current["alpha"], c.current["beta"], r.rmse, r.stop_reason));
-}
-
-// Start of the hypoplastic recipe: middle-of-the-box exponents, void ratios around the loosest
-// initial state.
-models::ParameterValues staged_starting_values(const std::vector<SoilTest>& tests) {
-  double loosest = 0.0;
-  for (const auto& t : tests) loosest = std::max(loosest, t.e0);
-  models::ParameterValues v{{"phi_c_deg", 30.0},     {"hs_kPa", 1e6}, {"n", 0.3},
-                            {"ec0", 1.05 * loosest}, {"alpha", 0.15}, {"beta", 1.0}};
-  set_limits_from_ec0(v);
-  return v;
-}
-
-// The systematic sigma of each fitted parameter when e_d0 and e_i0 follow e_c0 by the factors:
-// refit with each factor moved by its one-sigma spread (from the estimate, so only a few
-// Levenberg-Marquardt iterations) and take the shifts, added in quadrature over both factors.
-// Linear in the spread: the factors' sigmas are a few percent of their values.
+// The systematic sigma of each fitted parameter when the recipe's ties hold (e_d0 and e_i0 follow
+// e_c0 by the factors): refit with each factor moved by its one-sigma spread (from the estimate, so
+// only a few Levenberg-Marquardt iterations) and take the shifts, added in quadrature over both
+// factors. Linear in the spread: the factors' sigmas are a few percent of their values.
 Eigen::VectorXd factor_uncertainty(Calibrator& c, const Keys& keys, const CalibrationOptions& o) {
   const models::ParameterValues estimate = c.current;
   Eigen::VectorXd variance = Eigen::VectorXd::Zero(Eigen::Index(keys.size()));
-  for (double Calibrator::*factor : {&Calibrator::ei0_over_ec0, &Calibrator::ed0_over_ec0}) {
-    const double spread = factor == &Calibrator::ei0_over_ec0 ? kEi0OverEc0Sigma : kEd0OverEc0Sigma;
-    c.*factor += spread;
+  for (auto& tie : c.ties) {
+    tie.factor += tie.sigma;
     c.fit(keys, c.all(), kFactorRefitEvaluations, kJointInitialStepShare, o.polish_iterations);
     for (std::size_t k = 0; k < keys.size(); ++k) {
       const auto& b = c.box(keys[k]);
       const double shift = to_fit(b, c.current.at(keys[k])) - to_fit(b, estimate.at(keys[k]));
       variance(Eigen::Index(k)) += shift * shift;
     }
-    c.*factor -= spread;
+    tie.factor -= tie.sigma;
     c.current = estimate;
   }
   return variance.cwiseSqrt();
@@ -399,8 +312,9 @@ bool unidentified(const fitting::LeastSquaresResult& r, const BoxEntry& b, Eigen
          s > kUnidentifiedShareOfBox * (to_fit(b, b.upper) - to_fit(b, b.lower));
 }
 
-// The joint fit of every free parameter with the options' weights; e_d0 and e_i0 tied to e_c0 by
-// the factors when the tests cannot identify them, and the rest refitted.
+// The joint fit of every free parameter with the options' weights; the recipe's tied keys (e_d0,
+// e_i0) set from their partners by the factors when the tests cannot identify one of them, and
+// the rest refitted.
 struct JointFit {
   fitting::LeastSquaresResult result;
   Keys keys, by_factor;
@@ -419,21 +333,30 @@ JointFit joint_fit(Calibrator& c, const CalibrationOptions& o) {
         "fit");
   j.result =
       c.fit(j.keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare, o.polish_iterations);
-  for (const char* limit : {"ed0", "ei0"}) {
-    const auto it = std::find(j.keys.begin(), j.keys.end(), limit);
+  for (const auto& tie : c.ties) {
+    const auto it = std::find(j.keys.begin(), j.keys.end(), tie.key);
     if (it != j.keys.end() &&
-        unidentified(j.result, c.box(limit), Eigen::Index(it - j.keys.begin())))
-      j.by_factor.push_back(limit);
+        unidentified(j.result, c.box(tie.key), Eigen::Index(it - j.keys.begin())))
+      j.by_factor.push_back(tie.key);
   }
   if (!j.by_factor.empty()) {  // fix them by the factors and refit the rest
-    c.limits_follow_ec0 = true;
-    std::erase_if(j.keys, [&](const std::string& k) { return k == "ed0" || k == "ei0"; });
+    c.ties_hold = true;
+    std::erase_if(j.keys, [&](const std::string& k) {
+      return std::any_of(c.ties.begin(), c.ties.end(), [&](const auto& t) { return t.key == k; });
+    });
     j.result = c.fit(j.keys, c.all(), o.max_evaluations_joint, kJointInitialStepShare,
                      o.polish_iterations);
   }
   j.systematic = j.by_factor.empty() ? Eigen::VectorXd::Zero(Eigen::Index(j.keys.size()))
                                      : factor_uncertainty(c, j.keys, o);
   return j;
+}
+
+// "e_d0, e_i0": the tied keys as the notes write them.
+std::string tie_names(const std::vector<FactorTie>& ties) {
+  std::string out;
+  for (const auto& t : ties) out += (out.empty() ? "" : ", ") + t.name;
+  return out;
 }
 
 // Within a thousandth of the box (in the fitted variable) of an edge: the fit wanted beyond it.
@@ -455,9 +378,9 @@ ParameterEstimate estimate_of(const Calibrator& c, const BoxEntry& b, const Join
     e.sigma = e.sigma_statistical = e.sigma_at_scatter = 0.0;
     e.how = "fixed at the value given (--fix), not fitted";
   } else if (it == j.keys.end()) {
-    e.how = fmt::format(
-        "not identifiable from these tests: set to {} e_c0 (Herle & Gudehus 1999 factor)",
-        b.key == "ei0" ? kEi0OverEc0 : kEd0OverEc0);
+    const auto& tie = c.tie_of(b.key);
+    e.how = fmt::format("not identifiable from these tests: set to {} {} ({})", tie.factor,
+                        tie.of_name, tie.source);
   } else {
     const auto k = Eigen::Index(it - j.keys.begin());
     const auto* order = c.order_of(b.key);
@@ -474,7 +397,8 @@ ParameterEstimate estimate_of(const Calibrator& c, const BoxEntry& b, const Join
     e.sigma_at_scatter = scale * identifiability_sigma(j.result, k);
     e.how = e.identified
                 ? (e.sigma_systematic > 0.0
-                       ? "joint fit (Gauss-Newton sigma with the e_d0, e_i0 factors' share)"
+                       ? fmt::format("joint fit (Gauss-Newton sigma with the {} factors' share)",
+                                     tie_names(c.ties))
                        : "joint fit (Gauss-Newton sigma)")
                 : fmt::format(
                       "NOT IDENTIFIED: at the declared scatter its sigma would be {:.3g}, "
@@ -511,6 +435,50 @@ models::ParameterValues box_middles(const Boxes& boxes) {
   for (const auto& b : boxes)
     v[b.key] = from_fit(b, 0.5 * (to_fit(b, b.lower) + to_fit(b, b.upper)));
   return v;
+}
+
+// The start of the joint fit: the set given, else the recipe's estimate (its starting values and
+// its stages in order), else the middle of the boxes.
+void start_estimate(Calibrator& c, const CalibrationRecipe* recipe, const CalibrationOptions& o) {
+  const bool staged = recipe && !o.start;
+  c.current = o.start.value_or(staged ? recipe->start(c.tests) : box_middles(c.boxes));
+  c.pin(c.current);
+  if (o.start) {
+    c.notes.push_back("start: the given set (the staged estimate A-D skipped)");
+  } else if (!staged) {
+    c.notes.push_back(
+        fmt::format("start: the middle of each calibration box of [{}] (no staged recipe for it){}",
+                    c.table, o.held.empty() ? "" : "; the model's other tables held as given"));
+  } else {
+    for (const auto& stage : recipe->stages) run_stage(c, stage, o);
+  }
+}
+
+// The estimates, the tests and the objective groups at the fitted set, and the notes.
+CalibrationResult result_of(Calibrator& c, const JointFit& joint) {
+  CalibrationResult out;
+  out.model = c.options.model;
+  out.table = c.table;
+  out.held = c.options.held;
+  out.converged = joint.result.converged;
+  if (!joint.result.converged)
+    c.notes.push_back(
+        "E: the joint fit did NOT converge (it stopped at its limit): the estimates "
+        "and their sigmas are not to be trusted");
+  const double m = double(joint.result.residuals.size()), p = double(joint.keys.size());
+  out.s2 = joint.result.residuals.squaredNorm() / std::max(m - p, 1.0);
+  for (const auto& b : c.boxes) out.parameters.push_back(estimate_of(c, b, joint));
+  for (const auto& k : joint.by_factor)
+    c.notes.push_back(
+        fmt::format("{} is not identifiable from these tests (sigma beyond {} of its box): "
+                    "set from {} by the usual factor",
+                    k, kUnidentifiedShareOfBox, c.tie_of(k).of_name));
+  const models::ModelInputs fitted = c.inputs(c.current);
+  for (const auto& t : c.tests) out.tests.push_back(test_fit(t, c.options.model, fitted));
+  out.objectives = group_fits(c.tests, c.options.model, fitted, c.options.weights);
+  out.notes = c.notes;
+  out.evaluations = c.evaluations;
+  return out;
 }
 
 }  // namespace
@@ -596,63 +564,17 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
   const Boxes boxes = declared_boxes(table);
   check_fixed(table, boxes, o.fixed);
   check_held(o.model, table.name, o.held);
-  const bool staged = has_staged_start(table) && !o.start;
-  Calibrator c{tests,
-               o,
-               table.name,
-               boxes,
-               o.start.value_or(staged ? staged_starting_values(tests) : box_middles(boxes)),
-               {},
-               0,
-               {}};
+  const CalibrationRecipe* recipe = recipe_for(o, table);
+  Calibrator c{tests, o, table.name, boxes, {}, {}, 0, {}};
   c.declared = &table;
-  c.pin(c.current);
-  if (o.start) {
-    c.notes.push_back("start: the given set (the staged estimate A-D skipped)");
-  } else if (!staged) {
-    c.notes.push_back(
-        fmt::format("start: the middle of each calibration box of [{}] (no staged recipe for it){}",
-                    table.name, o.held.empty() ? "" : "; the model's other tables held as given"));
-  } else {
-    const Indices critical = critical_tests(c);
-    stage_phi_c(c, critical);
-    // h_s, n and e_c0 depend on each other only weakly (e_c0 through exp(-(3 sigma_n/h_s)^n) ~
-    // 0.9, the oedometric curve through the limits): two passes settle them.
-    const int passes = c.of_kind(SoilTestKind::kOedometer).empty() ? 1 : 2;
-    for (int pass = 0; pass < passes; ++pass) {
-      stage_compression(c, o);
-      stage_void_ratios(c, critical);
-    }
-    stage_density(c, o);
-  }
+  if (recipe) c.ties = recipe->ties;
+  start_estimate(c, recipe, o);
   const JointFit joint = joint_fit(c, o);
   c.notes.push_back(fmt::format(
       "E: joint fit of {} parameters on {} tests: RMS residual {:.3g} (weighted) "
       "scatter units, {} ({} evaluations in all)",
       joint.keys.size(), tests.size(), joint.result.rmse, joint.result.stop_reason, c.evaluations));
-
-  CalibrationResult out;
-  out.model = o.model;
-  out.table = table.name;
-  out.held = o.held;
-  out.converged = joint.result.converged;
-  if (!joint.result.converged)
-    c.notes.push_back(
-        "E: the joint fit did NOT converge (it stopped at its limit): the estimates "
-        "and their sigmas are not to be trusted");
-  const double m = double(joint.result.residuals.size()), p = double(joint.keys.size());
-  out.s2 = joint.result.residuals.squaredNorm() / std::max(m - p, 1.0);
-  for (const auto& b : boxes) out.parameters.push_back(estimate_of(c, b, joint));
-  for (const auto& k : joint.by_factor)
-    c.notes.push_back(
-        fmt::format("{} is not identifiable from these tests (sigma beyond {} of its box): "
-                    "set from e_c0 by the usual factor",
-                    k, kUnidentifiedShareOfBox));
-  const models::ModelInputs fitted = c.inputs(c.current);
-  for (const auto& t : tests) out.tests.push_back(test_fit(t, o.model, fitted));
-  out.objectives = group_fits(tests, o.model, fitted, o.weights);
-  out.notes = c.notes;
-  out.evaluations = c.evaluations;
+  CalibrationResult out = result_of(c, joint);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

@@ -1,19 +1,15 @@
 #pragma once
-// Calibration of the hypoplastic parameters (phi_c, h_s, n, e_c0, e_d0, e_i0, alpha, beta) from
-// soil tests, in the order of Herle & Gudehus (1999), each stage a bounded least-squares fit
-// (src/fitting) of the model driven along the tests' own control (simulate.hpp):
-//   A  phi_c  from the critical state of the simple-shear tests: the residual tau/sigma_n
-//             inverted through the model's own critical-state relation (not tan phi_c);
-//   B  h_s, n from the oedometric compression curves e(sigma_v);
-//   C  e_c0   from the critical void ratios of the simple-shear tests through Bauer's law;
-//             e_i0, e_d0 from e_c0 with the usual factors (kEi0OverEc0, kEd0OverEc0);
-//   D  alpha, beta from all tests (peak and dilatancy of the dense shear tests, the oedometric
-//             stiffness);
-//   E  all eight jointly on all tests, from the staged estimate; Gauss-Newton covariance. A
-//             parameter the data do not determine (singular direction, or one sigma at the
-//             declared scatter above kUnidentifiedShareOfBox of its calibration box) is flagged;
-//             e_d0 and e_i0 so flagged are set from e_c0 by the factors and the rest refitted, and
-//             the output says so.
+// Calibration of a model's parameter table from soil tests: a staged estimate, then the joint
+// fit, each a bounded least-squares fit (src/fitting) of the model driven along the tests' own
+// control (simulate.hpp).
+//   start  the model family's recipe (recipe.hpp) where it declares one for the table: its
+//          starting values and its stages in order (for sand Herle & Gudehus's A-D,
+//          herle_gudehus_recipe.hpp); else the middle of the table's calibration boxes;
+//   E      every free parameter jointly on all tests, from that start; Gauss-Newton covariance.
+//          A parameter the data do not determine (singular direction, or one sigma at the
+//          declared scatter above kUnidentifiedShareOfBox of its calibration box) is flagged;
+//          the recipe's tied parameters (e_d0, e_i0) so flagged are set from their partner by
+//          the recipe's factors and the rest refitted, and the output says so.
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -23,26 +19,12 @@
 #include <vector>
 
 #include "calibration/objectives.hpp"
+#include "calibration/recipe.hpp"
 #include "calibration/soil_test.hpp"
 #include "models/parameters.hpp"
 #include "models/registry.hpp"
 
 namespace iwb::calibration {
-
-// The limits e_i0 and e_d0 as factors of e_c0, where the tests cannot identify them. Evidence:
-// Herle & Gudehus (1999) give e_i0/e_c0 of 1.15-1.2 for sands; the seed's parameter sets have
-// 1.11-1.14 (Tables 5.1-5.3: Hostun 1.09/0.96, Toyoura 1.1/0.98, homo-gravel 0.5/0.45) and
-// e_d0/e_c0 0.58-0.64. Taken: the middle of that evidence, 1.15 and 0.6 (until issue 20 the
-// factor was 1.2, above every set the seed tabulates). Used as the start of the fit and for what
-// the data cannot identify.
-inline constexpr double kEi0OverEc0 = 1.15;
-inline constexpr double kEd0OverEc0 = 0.6;
-// One-sigma spread of the factors over that evidence. When the factors stand in for
-// unidentified limits, every other estimate's sigma carries the shift a one-sigma change of each
-// factor causes (a systematic part), so a factor's bias cannot hide behind a tiny statistical
-// sigma.
-inline constexpr double kEi0OverEc0Sigma = 0.05;
-inline constexpr double kEd0OverEc0Sigma = 0.05;
 
 // Residual scales: a residual is (model - measured) / scale, so one unit is a typical measurement
 // scatter and s^2 of the fit near 1 means a fit to the scatter. tau and sigma_n are scaled by
@@ -54,17 +36,17 @@ inline constexpr double kVoidRatioScale = 0.002;
 inline constexpr double kUnreachedResidual = 1e3;
 // Flag a parameter as not identified when one sigma exceeds this share of its box.
 inline constexpr double kUnidentifiedShareOfBox = 0.25;
-// A shear test is at critical state when over its last fifth tau/sigma_n changes by less than
-// kCriticalRatioChange and e by less than kCriticalVoidChange.
-inline constexpr double kCriticalRatioChange = 0.01;
-inline constexpr double kCriticalVoidChange = 0.002;
 
 struct CalibrationOptions {
   std::string model = "vw3d";
   // The table fitted: empty for the model's first table that declares calibration boxes
-  // ([hypoplastic] of vw3d). Its staged start (A-D) is the hypoplastic table's recipe; another
-  // table (the -igs models' [intergranular_strain]) starts at the middle of its boxes.
+  // ([hypoplastic] of vw3d). Its staged start is the recipe the model declares for it (Herle &
+  // Gudehus for [hypoplastic]); a table without one (the -igs models' [intergranular_strain])
+  // starts at the middle of its boxes.
   std::string table = {};
+  // A recipe in place of the one the model declares (a family's recipe tried before it is
+  // declared); InputError if it is for another table than the one fitted.
+  const CalibrationRecipe* recipe = nullptr;
   // The model's other tables, held at these values (a monotonic set while the intergranular
   // strain is fitted); every table the model needs but the fitted one must be here.
   std::map<std::string, models::ParameterValues> held = {};
@@ -85,7 +67,7 @@ struct ParameterEstimate {
   double sigma =
       0.0;  // one standard deviation: sqrt(statistical^2 + systematic^2); inf when singular
   double sigma_statistical = 0.0;  // s^2 (J^T J)^-1
-  double sigma_systematic = 0.0;   // from the e_d0, e_i0 factors when they stand in (else 0)
+  double sigma_systematic = 0.0;   // from the recipe's factors when they stand in (else 0)
   // The same at the declared scatter (s^2 = 1 if the fit is better than that): what decides
   // `identified`, and what a noisy test of the same design would give.
   double sigma_at_scatter = 0.0;

@@ -226,4 +226,22 @@ void write_soil_test_files(const SoilTest& t, const fs::path& dir, const nlohman
   io::write_manifest(dir, m);
 }
 
+namespace {
+
+// Row index where gamma first reaches 80 % of the test's last gamma.
+std::size_t last_fifth_start(const SoilTest& t) {
+  std::size_t i = 0;
+  while (i + 1 < t.rows() && t.control[i] < 0.8 * t.control.back()) ++i;
+  return i;
+}
+
+}  // namespace
+
+bool ends_at_critical_state(const SoilTest& t) {
+  const std::size_t i = last_fifth_start(t), j = t.rows() - 1;
+  const double ratio_change =
+      std::abs(t.tau_kPa[j] / t.sigma_n_kPa[j] - t.tau_kPa[i] / t.sigma_n_kPa[i]);
+  return ratio_change < kCriticalRatioChange && std::abs(t.e[j] - t.e[i]) < kCriticalVoidChange;
+}
+
 }  // namespace iwb::calibration

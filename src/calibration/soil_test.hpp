@@ -70,6 +70,12 @@ SoilTest read_soil_test(const std::filesystem::path& dir);
 
 inline constexpr std::size_t kMinimumRows = 3;
 
+// A shear test is at critical state when over its last fifth tau/sigma_n changes by less than
+// kCriticalRatioChange and e by less than kCriticalVoidChange.
+inline constexpr double kCriticalRatioChange = 0.01;
+inline constexpr double kCriticalVoidChange = 0.002;
+bool ends_at_critical_state(const SoilTest& test);
+
 // Writes manifest.json and timeseries.csv atomically (io/run_directory). `extra` is merged into
 // the manifest (command line, workbench version, timing).
 void write_soil_test(const SoilTest& test, const std::filesystem::path& dir, bool force,

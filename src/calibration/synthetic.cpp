@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "io/parameter_file.hpp"
+#include "io/run_directory.hpp"
 #include "models/hypoplastic/von_wolffersdorff.hpp"
 
 namespace iwb::calibration {
@@ -81,6 +83,23 @@ SoilTest synthesise(const SyntheticSpec& spec, const models::ModelInputs& inputs
   t.eps_v = s.eps_v;
   t.tau_kPa = s.tau_kPa;
   t.sigma_n_kPa = s.sigma_n_kPa;
+  return t;
+}
+
+SoilTest write_synthetic_test(const SyntheticSpec& spec, const std::string& params,
+                              const std::string& out, bool force, const std::string& command_line) {
+  models::ModelInputs in;
+  in.tables = io::load_parameter_file(params);
+  in.source = params;
+  auto t = synthesise(spec, in);
+  t.name = out;
+  write_soil_test(
+      t, out, force,
+      {{"command_line", command_line},
+       {"workbench", {{"name", "iwb"}}},
+       {"inputs",
+        {{"parameters", {{"source", params}, {"sha256", io::sha256_hex(io::read_file(params))}}}}},
+       {"finished", io::utc_timestamp()}});
   return t;
 }
 

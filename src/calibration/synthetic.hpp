@@ -30,4 +30,10 @@ struct SyntheticSpec {
 // the run does not complete (a synthetic target must be whole).
 SoilTest synthesise(const SyntheticSpec& spec, const models::ModelInputs& inputs);
 
+// `iwb soiltest synthetic`: the test of `spec` with the parameter file `params`, written to the
+// run directory `out` (write_soil_test) with the command line and the file's sha256 in its
+// manifest; returns the test written.
+SoilTest write_synthetic_test(const SyntheticSpec& spec, const std::string& params,
+                              const std::string& out, bool force, const std::string& command_line);
+
 }  // namespace iwb::calibration

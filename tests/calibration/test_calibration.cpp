@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "calibration/calibrate.hpp"
+#include "calibration/herle_gudehus_recipe.hpp"
 #include "calibration/seed_scatter.hpp"
 #include "calibration/synthetic.hpp"
 #include "support/fixtures.hpp"

@@ -1,22 +1,13 @@
 // `iwb calibrate SOILTEST_DIR...`: hypoplastic parameters fitted to soil tests (calibration/).
-#include "calibration/calibrate.hpp"
-
 #include <fmt/core.h>
-#include <fmt/ranges.h>
 
-#include <algorithm>
 #include <cmath>
 #include <memory>
-#include <optional>
 
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
-#include "calibration/pareto.hpp"
-#include "calibration/seed_scatter.hpp"
-#include "common/errors.hpp"
-#include "io/output_path.hpp"
-#include "io/parameter_file.hpp"
+#include "calibration/calibration_run.hpp"
 
 namespace iwb::app {
 
@@ -107,34 +98,6 @@ CLI::App* add_calibrate_options(CLI::App& app, CalibrateCommand& c) {
   return calibrate;
 }
 
-// --fix KEY=VALUE items; InputError naming the item (the keys are checked against the model's
-// table by calibrate()).
-models::ParameterValues parse_fixed(const std::vector<std::string>& items) {
-  models::ParameterValues out;
-  for (const auto& item : items) {
-    const auto eq = item.find('=');
-    std::size_t used = 0;
-    double v = NAN;
-    try {
-      if (eq != std::string::npos) v = std::stod(item.substr(eq + 1), &used);
-    } catch (const std::exception&) {
-    }
-    if (eq == std::string::npos || used == 0 || used != item.size() - eq - 1 || !std::isfinite(v))
-      throw InputError(fmt::format("--fix {}: expected KEY=VALUE with a finite number", item));
-    if (!out.emplace(item.substr(0, eq), v).second)
-      throw InputError(fmt::format("--fix {}: '{}' fixed twice", item, item.substr(0, eq)));
-  }
-  return out;
-}
-
-// The tables of a parameter file but the fitted one: what is held while `fitted` is fitted.
-std::map<std::string, models::ParameterValues> held_tables(const std::string& file,
-                                                           const std::string& fitted) {
-  auto tables = io::load_parameter_file(file);
-  tables.erase(fitted);
-  return tables;
-}
-
 void print_test_rows(const std::vector<calibration::TestFit>& fits, bool with_ends,
                      std::FILE* out = stdout) {
   for (const auto& t : fits) {
@@ -176,27 +139,6 @@ void print_result(const calibration::CalibrationResult& r, std::FILE* out = stdo
         p.at_bound.empty() || p.at_bound == "order" ? "" : "; ON ITS " + p.at_bound + " BOUND");
 }
 
-// Tests that identify none of the parameters (a single oedometer, say) give no parameter set:
-// nothing is written and the input is refused (exit 2), rather than a file of starting values
-// flagged NOT IDENTIFIED (issue 37).
-void refuse_if_nothing_identified(const calibration::CalibrationResult& r,
-                                  const std::vector<std::string>& runs) {
-  if (std::any_of(r.parameters.begin(), r.parameters.end(),
-                  [](const auto& p) { return p.identified && !p.fixed; }))
-    return;
-  print_result(r, stderr);  // what the fit found says why
-  const std::string give =
-      r.held.empty() ? "give oedometer and simple-shear tests, dense and loose, that reach the "
-                       "critical state"
-                     : "give tests that move them (the intergranular strain: cyclic shear at two "
-                       "amplitudes, CV and CNL)";
-  throw InputError(fmt::format(
-      "{}: the {} soil test(s) given identify none of the {} parameters of [{}] of {} (each "
-      "one's sigma exceeds a quarter of its box; the fit is printed above); {}; no parameter "
-      "file written",
-      fmt::join(runs, ", "), runs.size(), r.parameters.size(), r.table, r.model, give));
-}
-
 void print_front(const calibration::ParetoFront& f) {
   fmt::print("\nPareto front, {} against {} ({} points, {:.0f} s):\n{:>9} {:>10} {:>10}  {}\n",
              calibration::to_string(f.b), calibration::to_string(f.a), f.points.size(), f.seconds,
@@ -212,38 +154,29 @@ void print_front(const calibration::ParetoFront& f) {
   for (const auto& n : f.notes) fmt::print("note: {}\n", n);
 }
 
+// The fit is printed before its files are written, so that a refused write follows it.
 int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
-  io::require_file_destination(c.params_out, "-o");  // before minutes of fitting, not after
-  calibration::CalibrationOptions opt;
-  opt.model = c.model;
-  opt.table = c.table;
-  if (!c.held_params.empty()) opt.held = held_tables(c.held_params, c.table);
-  opt.weights = calibration::parse_weights(c.weights);
-  opt.fixed = parse_fixed(c.fixed);
-  std::optional<std::pair<calibration::ObjectiveGroup, calibration::ObjectiveGroup>> pair;
-  if (!c.pareto.empty()) pair = calibration::parse_pareto_groups(c.pareto);
-  std::vector<calibration::SoilTest> tests;
-  for (const auto& dir : c.runs) tests.push_back(calibration::read_soil_test(dir));
-  std::vector<calibration::SoilTest> held_out;  // read now: a bad one is refused before the fit
-  for (const auto& dir : c.held_out) held_out.push_back(calibration::read_soil_test(dir));
-  calibration::measure_seed_scatter(tests);
-  std::optional<calibration::ParetoFront> front;
-  if (pair)
-    front = calibration::trace_front(tests, opt, pair->first, pair->second, c.points,
-                                     [](const std::string& line) {
-                                       fmt::print("{}\n", line);
-                                       std::fflush(stdout);  // a front takes minutes
-                                     });
-  auto result = front ? front->given().result : calibration::calibrate(tests, opt);
-  refuse_if_nothing_identified(result, c.runs);
+  const calibration::CalibrationRequest request{c.runs,   c.held_out,    c.params_out, c.model,
+                                                c.table,  c.held_params, c.weights,    c.fixed,
+                                                c.pareto, c.points};
+  const auto run = [&] {
+    try {
+      return calibration::run_calibration(request, [](const std::string& line) {
+        fmt::print("{}\n", line);
+        std::fflush(stdout);  // a front takes minutes
+      });
+    } catch (const calibration::NothingIdentified& e) {
+      print_result(e.fit, stderr);  // what the fit found says why (stdout stays empty)
+      throw;
+    }
+  }();
+  const auto& result = run.result;
+  const auto& front = run.front;
   print_result(result);
-  for (const auto& t : held_out)
-    result.held_out.push_back(calibration::test_fit(t, c.model, result.inputs()));
   if (!result.held_out.empty()) fmt::print("\nheld out, predicted: RMSE (end: model / measured)\n");
   print_test_rows(result.held_out, true);
   if (front) print_front(*front);
-  calibration::write_calibration(result, c.params_out, tests, command_line,
-                                 front ? &*front : nullptr);
+  calibration::write_calibration(run, c.params_out, command_line);
   fmt::print("\n{} evaluations, {:.1f} s -> {} and {}{}\n",
              front ? front->evaluations : result.evaluations,
              front ? front->seconds : result.seconds, c.params_out,

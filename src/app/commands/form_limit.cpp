@@ -9,8 +9,7 @@
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
-#include "calibration/calibrate.hpp"
-#include "calibration/seed_scatter.hpp"
+#include "calibration/soil_test_costs.hpp"
 
 namespace iwb::app {
 
@@ -38,41 +37,6 @@ struct FormLimitCommand {
   std::vector<std::string> runs, held_out, soil_tests;
   std::string out, calibration;
 };
-
-// The soil tests' RMS per objective group (calibration/objectives.hpp) with each set: what the
-// form limit's material set costs where the soil-test set was calibrated. The soil model is the
-// one calibrate fits (vw3d) on the same [hypoplastic] table.
-comparison::FormLimitOptions::Elsewhere soil_test_costs(const std::vector<std::string>& dirs) {
-  if (dirs.empty()) return {};
-  auto tests = std::make_shared<std::vector<calibration::SoilTest>>();
-  for (const auto& d : dirs) tests->push_back(calibration::read_soil_test(d));
-  calibration::measure_seed_scatter(*tests);
-  return [tests](const auto& form, const auto& soil) {
-    const auto costs = [&](const auto& tables) {
-      models::ModelInputs in;
-      in.tables["hypoplastic"] = tables.at("hypoplastic");
-      in.source = "form limit";
-      return calibration::group_fits(*tests, "vw3d", in, {});
-    };
-    const auto at_form = costs(form), at_soil = costs(soil);
-    const auto not_reached = [](const calibration::GroupFit& g) {
-      return g.unreached
-                 ? fmt::format(" ({} of {} residuals not reached)", g.unreached, g.residuals)
-                 : std::string();
-    };
-    nlohmann::json rows = nlohmann::json::array();
-    for (std::size_t g = 0; g < at_form.size(); ++g)
-      if (at_form[g].residuals > 0)
-        rows.push_back(
-            {{"what", fmt::format("soil tests ({}), RMS in scatter units: {}", tests->size(),
-                                  calibration::to_string(at_form[g].group))},
-             {"soil_test", at_soil[g].rms},
-             {"form_limit", at_form[g].rms},
-             {"soil_test_note", not_reached(at_soil[g])},
-             {"form_limit_note", not_reached(at_form[g])}});
-    return rows;
-  };
-}
 
 }  // namespace
 
@@ -109,7 +73,8 @@ void add_form_limit_command(CLI::App& app, CommandList& commands) {
     for (const auto& r : c->held_out) o.held_out.push_back(r);
     o.out = c->out;
     o.calibration = c->calibration;
-    o.elsewhere = soil_test_costs(c->soil_tests);  // read now: a bad test is refused before the fit
+    o.elsewhere = calibration::soil_test_costs(
+        c->soil_tests);  // read now: a bad test is refused before the fit
     o.command_line = context.command_line;
     o.progress = [](const std::string& line) {
       fmt::print("{}\n", line);

@@ -8,8 +8,6 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "calibration/synthetic.hpp"
-#include "io/parameter_file.hpp"
-#include "io/run_directory.hpp"
 
 namespace iwb::app {
 
@@ -87,19 +85,7 @@ int run_synthetic(SyntheticCommand c, const std::string& command_line) {
   c.spec.kind = calibration::soil_test_kind(c.test, "--test");
   c.spec.boundary = driver::parse_boundary_kind(c.bc, "--bc");
   if (c.e0 > 0.0) c.spec.e0 = c.e0;
-  models::ModelInputs in;
-  in.tables = io::load_parameter_file(c.params);
-  in.source = c.params;
-  auto t = calibration::synthesise(c.spec, in);
-  t.name = c.out;
-  calibration::write_soil_test(
-      t, c.out, c.force,
-      {{"command_line", command_line},
-       {"workbench", {{"name", "iwb"}}},
-       {"inputs",
-        {{"parameters",
-          {{"source", c.params}, {"sha256", io::sha256_hex(io::read_file(c.params))}}}}},
-       {"finished", io::utc_timestamp()}});
+  const auto t = calibration::write_synthetic_test(c.spec, c.params, c.out, c.force, command_line);
   fmt::print("{} {}{} from {} (e0 = {:.4f}, sigma0 = {:g} kPa): {} rows -> {}\n", c.test,
              c.test == "oedometer" ? "" : c.bc + " ", c.spec.model, c.params, t.e0, t.sigma0_kPa,
              t.rows(), c.out);

@@ -1,0 +1,105 @@
+#include "calibration/calibration_run.hpp"
+
+#include <fmt/core.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "calibration/seed_scatter.hpp"
+#include "io/output_path.hpp"
+#include "io/parameter_file.hpp"
+
+namespace iwb::calibration {
+
+namespace {
+
+// The tables of a parameter file but the fitted one: what is held while `fitted` is fitted.
+std::map<std::string, models::ParameterValues> held_tables(const std::string& file,
+                                                           const std::string& fitted) {
+  auto tables = io::load_parameter_file(file);
+  tables.erase(fitted);
+  return tables;
+}
+
+CalibrationOptions options_of(const CalibrationRequest& q) {
+  CalibrationOptions opt;
+  opt.model = q.model;
+  opt.table = q.table;
+  if (!q.held_params.empty()) opt.held = held_tables(q.held_params, q.table);
+  opt.weights = parse_weights(q.weights);
+  opt.fixed = parse_fixed(q.fixed);
+  return opt;
+}
+
+std::vector<SoilTest> read_soil_tests(const std::vector<std::string>& dirs) {
+  std::vector<SoilTest> out;
+  for (const auto& dir : dirs) out.push_back(read_soil_test(dir));
+  return out;
+}
+
+// Nothing is written and the input is refused (exit 2), rather than a file of starting values
+// flagged NOT IDENTIFIED (issue 37).
+void refuse_if_nothing_identified(const CalibrationResult& r,
+                                  const std::vector<std::string>& runs) {
+  if (std::any_of(r.parameters.begin(), r.parameters.end(),
+                  [](const auto& p) { return p.identified && !p.fixed; }))
+    return;
+  const std::string give =
+      r.held.empty() ? "give oedometer and simple-shear tests, dense and loose, that reach the "
+                       "critical state"
+                     : "give tests that move them (the intergranular strain: cyclic shear at two "
+                       "amplitudes, CV and CNL)";
+  throw NothingIdentified(
+      r, fmt::format(
+             "{}: the {} soil test(s) given identify none of the {} parameters of [{}] of {} "
+             "(each one's sigma exceeds a quarter of its box; the fit is printed above); {}; no "
+             "parameter file written",
+             fmt::join(runs, ", "), runs.size(), r.parameters.size(), r.table, r.model, give));
+}
+
+}  // namespace
+
+models::ParameterValues parse_fixed(const std::vector<std::string>& items) {
+  models::ParameterValues out;
+  for (const auto& item : items) {
+    const auto eq = item.find('=');
+    std::size_t used = 0;
+    double v = NAN;
+    try {
+      if (eq != std::string::npos) v = std::stod(item.substr(eq + 1), &used);
+    } catch (const std::exception&) {
+    }
+    if (eq == std::string::npos || used == 0 || used != item.size() - eq - 1 || !std::isfinite(v))
+      throw InputError(fmt::format("--fix {}: expected KEY=VALUE with a finite number", item));
+    if (!out.emplace(item.substr(0, eq), v).second)
+      throw InputError(fmt::format("--fix {}: '{}' fixed twice", item, item.substr(0, eq)));
+  }
+  return out;
+}
+
+CalibrationRun run_calibration(const CalibrationRequest& q,
+                               const std::function<void(const std::string&)>& progress) {
+  io::require_file_destination(q.out, "-o");  // before minutes of fitting, not after
+  const CalibrationOptions opt = options_of(q);
+  std::optional<std::pair<ObjectiveGroup, ObjectiveGroup>> pair;
+  if (!q.pareto.empty()) pair = parse_pareto_groups(q.pareto);
+  CalibrationRun run;
+  run.tests = read_soil_tests(q.runs);
+  const auto held_out = read_soil_tests(q.held_out);  // now: a bad one is refused before the fit
+  measure_seed_scatter(run.tests);
+  if (pair) run.front = trace_front(run.tests, opt, pair->first, pair->second, q.points, progress);
+  run.result = run.front ? run.front->given().result : calibrate(run.tests, opt);
+  refuse_if_nothing_identified(run.result, q.runs);
+  for (const auto& t : held_out)
+    run.result.held_out.push_back(test_fit(t, q.model, run.result.inputs()));
+  return run;
+}
+
+void write_calibration(const CalibrationRun& run, const std::filesystem::path& toml_file,
+                       const std::string& command_line) {
+  write_calibration(run.result, toml_file, run.tests, command_line,
+                    run.front ? &*run.front : nullptr);
+}
+
+}  // namespace iwb::calibration
