@@ -161,15 +161,6 @@ class ApiTz final : public TractionModel<ApiTz> {
     return unsheared(in.sigma_n, kSize);
   }
 
-  bool updates_by_increment() const override { return true; }
-  void update(const StateVector& s, const InterfaceStrain& d, StateVector& out) const override {
-    update_of(s, d, out);
-  }
-  void update(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d,
-              StateVectorT<Dual>& out) const override {
-    update_of(s, d, out);
-  }
-
   std::string domain_violation(const StateVector& s) const override {
     if (!s.allFinite()) return "non-finite state";
     if (!(-s(kTn) > 0.0))

@@ -118,15 +118,6 @@ class MohrCoulomb final : public TractionModel<MohrCoulomb> {
     return unsheared(in.sigma_n, kSize);
   }
 
-  bool updates_by_increment() const override { return true; }
-  void update(const StateVector& s, const InterfaceStrain& d, StateVector& out) const override {
-    update_of(s, d, out);
-  }
-  void update(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d,
-              StateVectorT<Dual>& out) const override {
-    update_of(s, d, out);
-  }
-
   std::string domain_violation(const StateVector& s) const override {
     if (!s.allFinite()) return "non-finite state";
     if (-s(kTn) < -p_.sigma_t * (1.0 + 1e-12) - 1e-12)

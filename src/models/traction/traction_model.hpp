@@ -2,7 +2,8 @@
 // What the reference interface models of seed 3.3 (mc, hyperbolic) share: their state begins with
 // the interface traction [T_n, tau_x, tau_y] (T_n = -sigma_n, every model's component 0), they have
 // no void ratio and no in-plane stress, and they evaluate one template on double and Dual
-// (CRTP: Derived::rate_of). The physics stays in each model's folder.
+// (CRTP: Derived::rate_of, and Derived::update_of for a closed-form return). The physics stays in
+// each model's folder.
 #include <cmath>
 #include <optional>
 #include <string>
@@ -32,6 +33,20 @@ class TractionModel : public Model {
             StateVectorT<Dual>& ds) const override {
     self().rate_of(s, d, ds);
   }
+  bool updates_by_increment() const override { return closed_form(); }
+  void update(const StateVector& s, const InterfaceStrain& d, StateVector& out) const override {
+    if constexpr (closed_form())
+      self().update_of(s, d, out);
+    else
+      Model::update(s, d, out);
+  }
+  void update(const StateVectorT<Dual>& s, const InterfaceStrainT<Dual>& d,
+              StateVectorT<Dual>& out) const override {
+    if constexpr (closed_form())
+      self().update_of(s, d, out);
+    else
+      Model::update(s, d, out);
+  }
   InterfaceStress stress(const StateVector& s) const override {
     return {-s(kTractionN), std::nullopt, s(kTractionX), s(kTractionY)};
   }
@@ -54,6 +69,15 @@ class TractionModel : public Model {
 
  private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
+  // A model whose increment is a closed-form return (mc, api-tz) defines update_of on double and
+  // Dual; the integrator then calls update instead of integrating the rate. Asked here, where
+  // Derived is complete and this class its friend.
+  static constexpr bool closed_form() {
+    return requires(const Derived& m, const StateVector& s, const InterfaceStrain& d,
+                    StateVector& out) {
+      m.update_of(s, d, out);
+    };
+  }
 };
 
 }  // namespace iwb::models
