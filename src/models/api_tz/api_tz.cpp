@@ -143,6 +143,8 @@ ApiTzParameters read(const ModelInputs& in) {
 // plastic slip kappa z_peak, which sets the strength g(kappa).
 enum : int { kTn = kTractionN, kTauX = kTractionX, kTauY = kTractionY, kSlip = 3, kSize = 4 };
 
+constexpr std::string_view kNeedsCompression = "t_max = sigma_n tan(delta) needs compression";
+
 class ApiTz final : public TractionModel<ApiTz> {
  public:
   explicit ApiTz(ApiTzParameters p) : p_(std::move(p)) {}
@@ -153,20 +155,10 @@ class ApiTz final : public TractionModel<ApiTz> {
   }
 
   StateVector initial_state(const InitialState& in) const override {
-    if (!(in.sigma_n > 0.0))
-      throw InputError(fmt::format(
-          "sigma_n_kPa = {} is not admissible for api-tz: t_max = sigma_n tan(delta) needs "
-          "compression",
-          in.sigma_n));
-    return unsheared(in.sigma_n, kSize);
+    return unsheared_in_compression(in.sigma_n, kSize, kNeedsCompression);
   }
-
   std::string domain_violation(const StateVector& s) const override {
-    if (!s.allFinite()) return "non-finite state";
-    if (!(-s(kTn) > 0.0))
-      return fmt::format("sigma_n = {:.6g} kPa: t_max = sigma_n tan(delta) needs compression",
-                         -s(kTn));
-    return {};
+    return compression_violation(s, kNeedsCompression);
   }
   StateVector error_scale(const StateVector& s) const override {
     return traction_error_scale(s, p_.z_peak_mm);

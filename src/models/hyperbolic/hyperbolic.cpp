@@ -94,20 +94,11 @@ class Hyperbolic final : public TractionModel<Hyperbolic> {
   }
 
   StateVector initial_state(const InitialState& in) const override {
-    if (!(in.sigma_n > 0.0))
-      throw InputError(fmt::format(
-          "sigma_n_kPa = {} is not admissible for hyperbolic: its stiffness (eq. 3.49) needs "
-          "compression",
-          in.sigma_n));
-    return unsheared(in.sigma_n, kSize);
+    return unsheared_in_compression(in.sigma_n, kSize,
+                                    "its stiffness (eq. 3.49) needs compression");
   }
-
   std::string domain_violation(const StateVector& s) const override {
-    if (!s.allFinite()) return "non-finite state";
-    if (!(-s(kTn) > 0.0))
-      return fmt::format("sigma_n = {:.6g} kPa: the hyperbolic stiffness needs compression",
-                         -s(kTn));
-    return {};
+    return compression_violation(s, "the hyperbolic stiffness needs compression");
   }
   StateVector error_scale(const StateVector& s) const override {
     return traction_error_scale(s, 1.0);

@@ -4,11 +4,14 @@
 // no void ratio and no in-plane stress, and they evaluate one template on double and Dual
 // (CRTP: Derived::rate_of, and Derived::update_of for a closed-form return). The physics stays in
 // each model's folder.
+#include <fmt/core.h>
+
 #include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "common/errors.hpp"
 #include "models/declaration.hpp"
 #include "models/model.hpp"
 
@@ -59,6 +62,20 @@ class TractionModel : public Model {
     StateVector s = StateVector::Zero(size);
     s(kTractionN) = -sigma_n;
     return s;
+  }
+  // For a law whose strength or stiffness needs sigma_n > 0 (hyperbolic, api-tz): the start and
+  // the states it admits; `why` says what needs compression.
+  StateVector unsheared_in_compression(double sigma_n, int size, std::string_view why) const {
+    if (!(sigma_n > 0.0))
+      throw InputError(
+          fmt::format("sigma_n_kPa = {} is not admissible for {}: {}", sigma_n, name(), why));
+    return unsheared(sigma_n, size);
+  }
+  static std::string compression_violation(const StateVector& s, std::string_view why) {
+    if (!s.allFinite()) return "non-finite state";
+    if (!(-s(kTractionN) > 0.0))
+      return fmt::format("sigma_n = {:.6g} kPa: {}", -s(kTractionN), why);
+    return {};
   }
   // The stresses' error scale (their magnitude, at least 1 kPa) and `other` for the rest.
   static StateVector traction_error_scale(const StateVector& s, double other) {
