@@ -260,9 +260,10 @@ void read_initial(TableReader t, ElementTestSpec& spec) {
 
 void read_zone(std::optional<io::DeclaredTable> t, ElementTestSpec& spec) {
   if (t) {
-    spec.zone.d_s_mm = t->has("d_s_mm") || !t->has("d50_mm")
-                           ? t->number("d_s_mm")
-                           : t->number("d50_mm") * t->number("d_s_over_d50");
+    // d_s_mm (its default when the table gives neither form), or d50_mm times d_s_over_d50
+    const bool grain_form = !t->has("d_s_mm") && (t->has("d50_mm") || t->has("d_s_over_d50"));
+    spec.zone.d_s_mm =
+        !grain_form ? t->number("d_s_mm") : t->number("d50_mm") * t->number("d_s_over_d50");
     spec.zone.measure = t->text("strain_measure") == "tangent"
                             ? driver::ShearStrainMeasure::kTangent
                             : driver::ShearStrainMeasure::kLinear;
