@@ -80,7 +80,9 @@ IWB_API iwb_status iwb_initial_state(const iwb_material* material, const char* c
 IWB_API iwb_status iwb_traction(const iwb_material* material, const double* state,
                                 double traction[3], char* message, size_t message_size);
 
-/* One increment: state_in and du (with the virtual thickness d_s^v > 0) -> state_out, traction and
+/* One increment: state_in and du (with the virtual thickness d_s^v > 0; a model whose law is in
+ * displacement, as hyperbolic, mortara and api-tz, takes du over its own d_s and ignores d_s^v) ->
+ * state_out, traction and
  * (if tangent is not NULL) the consistent tangent. dt and external (temperature, suction, time
  * increments; NULL when the model reads none) are passed to models that declare them. On
  * IWB_ERROR_DOMAIN or IWB_ERROR_CONVERGENCE state_out is state_in and *step_factor < 1 suggests the

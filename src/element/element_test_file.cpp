@@ -437,7 +437,7 @@ void read_path(io::DeclaredTable t, ElementTestSpec& spec) {
   const std::string kind = t.text("kind");
   const std::string dir = t.text("direction");
   spec.direction = dir == "y" ? driver::ShearDirection::kY : driver::ShearDirection::kX;
-  const auto d = dir == "x" ? driver::ShearDirection::kX : driver::ShearDirection::kY;
+  const auto d = spec.direction;
   json out = {{"kind", kind}, {"direction", dir}};
   if (kind == "monotonic") {
     const double g = strain(t, "gamma", "u_mm", spec.zone);

@@ -451,7 +451,8 @@ io::KeyDeclarations initial_input_keys() {
 std::string element_test_key_table() {
   KeyDeclarations rows;
   for (const auto& r : element_test_keys()) {
-    if (r.table == "shear_zone" && r.key == "d_s_mm") append(rows, initial_input_keys());
+    if (&r == &io::declared(element_test_keys(), "shear_zone", "d_s_mm"))  // throws if renamed
+      append(rows, initial_input_keys());
     rows.push_back(r);
   }
   return io::markdown_table(rows);

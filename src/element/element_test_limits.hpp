@@ -16,7 +16,8 @@ inline const Range kRelativeTolerance{0.0, 0.1, true, false};  // rtol, Newton t
 // The external variables' paths.
 inline constexpr double kKelvinOffset = 273.15;
 inline const Range kTemperatureK = closed(200.0, 500.0);  // -73 to 227 deg C
-inline const Range kTemperatureC = closed(200.0 - kKelvinOffset, 500.0 - kKelvinOffset);
+inline const Range kTemperatureC =
+    closed(kTemperatureK.lower - kKelvinOffset, kTemperatureK.upper - kKelvinOffset);
 inline const Range kSuctionKPa = closed(0.0, 1e6);
 inline const Range kTimeS = closed(0.0, 1e10);
 inline constexpr int kMaxStageCycles = 10000;

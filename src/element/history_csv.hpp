@@ -12,7 +12,7 @@ namespace iwb::element {
 // tau_over_sigma_n is the shear stress along the path's direction over sigma_n.
 std::string history_csv(const models::Model& model, const driver::ShearZone& zone,
                         const std::vector<driver::HistoryRow>& rows,
-                        driver::ShearDirection direction = driver::ShearDirection::kX);
+                        driver::ShearDirection direction);
 
 // cycles.csv: one row per cycle of a cyclic path (peak tau each way, sigma_n at the reversals,
 // accumulated and per-cycle u_n, e at the cycle's end). Incomplete cycles are marked.

@@ -45,6 +45,9 @@ TEST_CASE(
     CHECK(d.layout.size() == model->state_size());
     CHECK(d.layout.size() <= models::kMaxStateSize);
     CHECK(d.second_shear_direction == model->has_second_shear_direction());
+    // a closed-form return the model forgets to expose (a private update_of without the friend)
+    // would be integrated through the rate instead: the declaration says which it is
+    CHECK((d.update == models::StressPointUpdate::kIncrement) == model->updates_by_increment());
     const auto s = model->initial_state(example_start(spec, in));
     CHECK(s(0) == Approx(-d.example_start.at("sigma_n_kPa")));  // component 0: the normal stress
     if (d.layout.void_ratio >= 0)

@@ -157,16 +157,10 @@ class Mortara final : public TractionModel<Mortara> {
   int state_size() const override { return kSize; }
   std::vector<std::string> state_names() const override { return {"T_n", "tau_x", "tau_y", "h"}; }
   StateVector initial_state(const InitialState& in) const override {
-    if (!(in.sigma_n > 0.0))
-      throw InputError(
-          fmt::format("sigma_n_kPa = {} is not admissible for mortara: compression", in.sigma_n));
-    return unsheared(in.sigma_n, kSize);
+    return unsheared_in_compression(in.sigma_n, kSize, "compression");
   }
   std::string domain_violation(const StateVector& s) const override {
-    if (!s.allFinite()) return "non-finite state";
-    if (!(-s(kTractionN) > 0.0))
-      return fmt::format("sigma_n = {:.6g} kPa: contact lost", -s(kTractionN));
-    return {};
+    return compression_violation(s, "contact lost");
   }
   StateVector error_scale(const StateVector& s) const override {
     return traction_error_scale(s, 1e-3);
