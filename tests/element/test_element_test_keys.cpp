@@ -4,7 +4,6 @@
 // bases, so a row no shipped file takes is itself a failure (an undocumented example is missing).
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <set>
 
@@ -13,6 +12,7 @@
 #include "element/element_test_keys.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
+#include "support/generated_section.hpp"
 
 namespace iwb {
 
@@ -81,17 +81,8 @@ std::vector<double> outside(const Range& r) {
 }  // namespace
 
 TEST_CASE("data/tests/README.md's key table is the declared one", "[element][element_keys]") {
-  std::string readme = io::read_file(kReadme);
-  const auto b = readme.find(kBegin), e = readme.find(kEnd);
-  REQUIRE(b != std::string::npos);
-  REQUIRE(e != std::string::npos);
-  const std::string table = element::element_test_key_table();
-  if (std::getenv("IWB_README_REGENERATE") != nullptr) {
-    readme.replace(b + kBegin.size(), e - b - kBegin.size(), table);
-    io::write_atomically(kReadme, readme);
-  }
-  // regenerate with: IWB_README_REGENERATE=1 build/tests/iwb_tests "[element_keys]"
-  CHECK(readme.substr(b + kBegin.size(), e - b - kBegin.size()) == table);
+  test::check_generated_section(kReadme, kBegin, kEnd, element::element_test_key_table(),
+                                "[element_keys]");
 }
 
 TEST_CASE("every declared element-test number is refused just outside its range, naming the key",

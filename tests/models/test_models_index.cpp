@@ -3,7 +3,6 @@
 // the title of its README (`# <models>: <title>`). A model added in a folder of its own thus needs
 // no line in README.md; this test fails until the index is regenerated.
 #include <catch2/catch.hpp>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -12,6 +11,7 @@
 
 #include "io/run_directory.hpp"
 #include "models/registry.hpp"
+#include "support/generated_section.hpp"
 
 using namespace iwb;
 
@@ -48,11 +48,6 @@ std::string models_index() {
   return out;
 }
 
-bool regenerating_index() {
-  const char* v = std::getenv("IWB_README_REGENERATE");
-  return v != nullptr && std::string(v) == "1";
-}
-
 }  // namespace
 
 TEST_CASE("README.md's index of the models is the one the model folders give", "[readme-models]") {
@@ -60,16 +55,6 @@ TEST_CASE("README.md's index of the models is the one the model folders give", "
     INFO("src/models/" << spec.folder << "/README.md: its first line is '# <models>: <title>'");
     CHECK((spec.folder.empty() || !readme_title(spec.folder).empty()));
   }
-  std::string readme = io::read_file(kIndexReadme);
-  const auto b = readme.find(kIndexBegin);
-  REQUIRE(b != std::string::npos);
-  REQUIRE(readme.find(kIndexEnd, b) != std::string::npos);
-  const auto from = b + kIndexBegin.size();
-  if (regenerating_index()) {
-    readme.replace(from, readme.find(kIndexEnd, b) - from, models_index());
-    std::ofstream(kIndexReadme) << readme;
-    WARN("regenerated the index of the models in " << kIndexReadme);
-  }
-  INFO("regenerate: IWB_README_REGENERATE=1 build/tests/iwb_tests \"[readme-models]\"");
-  CHECK(readme.substr(from, readme.find(kIndexEnd, b) - from) == models_index());
+  test::check_generated_section(kIndexReadme, kIndexBegin, kIndexEnd, models_index(),
+                                "[readme-models]");
 }
