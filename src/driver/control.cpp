@@ -42,6 +42,11 @@ const char* to_string(BoundaryKind k) {
   return "?";
 }
 
+std::vector<std::string> boundary_kind_names() {
+  return {to_string(BoundaryKind::kCNL), to_string(BoundaryKind::kCNS),
+          to_string(BoundaryKind::kCV)};
+}
+
 BoundaryKind parse_boundary_kind(const std::string& text, const std::string& where) {
   std::string up = text;
   std::transform(up.begin(), up.end(), up.begin(),

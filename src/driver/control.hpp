@@ -4,6 +4,7 @@
 // with sigma_n compression positive (kPa) and eps_n opening positive. CNL, CNS, CV and a
 // prescribed normal strain are four instances; shear is always strain-controlled.
 #include <string>
+#include <vector>
 
 namespace iwb::driver {
 
@@ -31,5 +32,7 @@ BoundaryCondition with_stiffness_per_mm(BoundaryKind kind, double K_kPa_per_mm, 
 const char* to_string(BoundaryKind k);
 // "CNL", "CNS", "CV" (any case); InputError naming `where` otherwise.
 BoundaryKind parse_boundary_kind(const std::string& text, const std::string& where);
+// The names parse_boundary_kind takes (in any case): CNL, CNS, CV.
+std::vector<std::string> boundary_kind_names();
 
 }  // namespace iwb::driver

@@ -6,9 +6,11 @@
 #include <set>
 
 #include "common/physical_limits.hpp"
+#include "driver/control.hpp"
 #include "driver/element_test.hpp"
 #include "driver/mixed_control.hpp"
 #include "element/element_test_limits.hpp"
+#include "integration/butcher_tableau.hpp"
 #include "integration/stress_point_integrator.hpp"
 #include "models/registry.hpp"
 #include "models/roughness/roughness.hpp"
@@ -30,7 +32,7 @@ const driver::MixedControlSettings kMixed{};
 const driver::RunSettings kRun{};
 const driver::ShearZone kZone{};
 
-const std::vector<std::string> kNormalControls = {"CNL", "CNS", "CV"};
+const std::vector<std::string> kNormalControls = driver::boundary_kind_names();
 
 KeyDeclarations model_and_roughness_keys() {
   return {
@@ -347,7 +349,7 @@ KeyDeclarations integration_and_output_keys() {
       {.table = "integration",
        .key = "pair",
        .kind = KeyKind::kText,
-       .choices = {"rk32", "rk54"},
+       .choices = integration::embedded_pair_names(),
        .value = kIntegrator.pair,
        .meaning = "adaptive: Bogacki-Shampine (rk32) or Dormand-Prince (rk54)"},
       {.table = "integration",

@@ -38,6 +38,11 @@ const ButcherTableau& dormand_prince_54() {
   return t;
 }
 
+const std::vector<std::string>& embedded_pair_names() {
+  static const std::vector<std::string> names{"rk32", "rk54"};
+  return names;
+}
+
 const ButcherTableau& embedded_pair(const std::string& name) {
   if (name == "rk32") return bogacki_shampine_32();
   if (name == "rk54") return dormand_prince_54();

@@ -21,5 +21,7 @@ const ButcherTableau& dormand_prince_54();    // 5th order, embedded 4th, FSAL
 
 // "rk32" or "rk54"; InputError otherwise.
 const ButcherTableau& embedded_pair(const std::string& name);
+// The names embedded_pair takes, for the readers' declared choices.
+const std::vector<std::string>& embedded_pair_names();
 
 }  // namespace iwb::integration
