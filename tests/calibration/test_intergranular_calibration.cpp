@@ -8,34 +8,21 @@
 #include "calibration/calibrate.hpp"
 #include "calibration/synthetic.hpp"
 #include "common/errors.hpp"
+#include "support/cyclic_soil_tests.hpp"
 #include "support/fixtures.hpp"
 
 using namespace iwb;
-using calibration::SoilTestKind;
 using driver::BoundaryKind;
 
 namespace {
 
-calibration::SoilTest cyclic_target(BoundaryKind bc, double amplitude,
-                                    const models::ModelInputs& truth = test::table_5_3_toyoura()) {
-  calibration::SyntheticSpec s;
-  s.model = "vw3d-igs";
-  s.kind = SoilTestKind::kCyclicShear;
-  s.boundary = bc;
-  s.e0 = 0.75;
-  s.gamma_amplitude = amplitude;
-  s.cycles = 2;
-  s.rows = 12;
-  auto t = calibration::synthesise(s, truth);
-  t.name = fmt::format("{} A {:g}", driver::to_string(bc), amplitude);
-  return t;
-}
-
 // Two amplitudes, one inside the elastic range R = 1e-4 and one well beyond it, under CV and CNL:
 // the small one measures the stiffness factors, the large one how fast delta swings (beta_r, chi).
 std::vector<calibration::SoilTest> cyclic_targets() {
-  return {cyclic_target(BoundaryKind::kCV, 5e-4), cyclic_target(BoundaryKind::kCV, 2e-3),
-          cyclic_target(BoundaryKind::kCNL, 5e-4), cyclic_target(BoundaryKind::kCNL, 2e-3)};
+  return {test::cyclic_soil_test(BoundaryKind::kCV, 5e-4),
+          test::cyclic_soil_test(BoundaryKind::kCV, 2e-3),
+          test::cyclic_soil_test(BoundaryKind::kCNL, 5e-4),
+          test::cyclic_soil_test(BoundaryKind::kCNL, 2e-3)};
 }
 
 calibration::CalibrationOptions igs_options() {
@@ -83,7 +70,7 @@ TEST_CASE("fitting the intergranular strain without the hypoplastic set held is 
 }
 
 TEST_CASE("a synthetic cyclic test is a triangle wave of the amplitude", "[calibration][cyclic]") {
-  const auto t = cyclic_target(BoundaryKind::kCV, 2e-3);
+  const auto t = test::cyclic_soil_test(BoundaryKind::kCV, 2e-3);
   // two cycles of four quarters of 12 rows, and the start
   REQUIRE(t.rows() == 2 * 4 * 12 + 1);
   CHECK(t.control.front() == 0.0);
@@ -100,7 +87,7 @@ TEST_CASE("cyclic tests with the cyclic group weighed 0 leave nothing to fit",
           "[calibration][cyclic]") {
   auto o = igs_options();
   o.weights[calibration::ObjectiveGroup::kCyclic] = 0.0;
-  REQUIRE_THROWS_WITH(calibration::calibrate({cyclic_target(BoundaryKind::kCV, 5e-4)}, o),
+  REQUIRE_THROWS_WITH(calibration::calibrate({test::cyclic_soil_test(BoundaryKind::kCV, 5e-4)}, o),
                       Catch::Contains("no test gives a residual to a group of weight > 0"));
 }
 
@@ -114,7 +101,7 @@ TEST_CASE("a target on the order m_T = m_R is recovered, held by the declared or
   std::vector<calibration::SoilTest> tests;
   for (const auto bc : {BoundaryKind::kCV, BoundaryKind::kCNL})
     for (const double amplitude : {5e-4, 2e-3})
-      tests.push_back(cyclic_target(bc, amplitude, truth));
+      tests.push_back(test::cyclic_soil_test(bc, amplitude, truth));
   const auto r = calibration::calibrate(tests, igs_options());
   for (const auto& p : r.parameters) {
     INFO(p.key << " = " << p.value << " (" << p.how << ")");

@@ -11,6 +11,7 @@
 #include "calibration/calibrate.hpp"
 #include "calibration/synthetic.hpp"
 #include "common/errors.hpp"
+#include "support/cyclic_soil_tests.hpp"
 #include "support/fixtures.hpp"
 
 using namespace iwb;
@@ -21,20 +22,6 @@ namespace {
 
 // Table 5.3's m_R and m_T (5 and 2): the values the test's recipe takes for m_R and ties m_T to.
 constexpr double kRecipeMR = 5.0, kRecipeMTOverMR = 0.4;
-
-calibration::SoilTest cyclic_test(BoundaryKind bc, double amplitude) {
-  calibration::SyntheticSpec s;
-  s.model = "vw3d-igs";
-  s.kind = SoilTestKind::kCyclicShear;
-  s.boundary = bc;
-  s.e0 = 0.75;
-  s.gamma_amplitude = amplitude;
-  s.cycles = 2;
-  s.rows = 12;
-  auto t = calibration::synthesise(s, test::table_5_3_toyoura());
-  t.name = fmt::format("{} A {:g}", driver::to_string(bc), amplitude);
-  return t;
-}
 
 // What the recipe's stages saw, in the order they ran.
 struct Trace {
@@ -90,9 +77,10 @@ TEST_CASE("a recipe declared for another table runs its stages in order and reco
           "[calibration][recipe][cyclic]") {
   Trace trace;
   const auto recipe = two_stage_recipe(trace);
-  const std::vector<calibration::SoilTest> tests{
-      cyclic_test(BoundaryKind::kCV, 5e-4), cyclic_test(BoundaryKind::kCV, 2e-3),
-      cyclic_test(BoundaryKind::kCNL, 5e-4), cyclic_test(BoundaryKind::kCNL, 2e-3)};
+  const std::vector<calibration::SoilTest> tests{test::cyclic_soil_test(BoundaryKind::kCV, 5e-4),
+                                                 test::cyclic_soil_test(BoundaryKind::kCV, 2e-3),
+                                                 test::cyclic_soil_test(BoundaryKind::kCNL, 5e-4),
+                                                 test::cyclic_soil_test(BoundaryKind::kCNL, 2e-3)};
   const auto r = calibration::calibrate(tests, options_with(recipe));
   for (const auto& n : r.notes) UNSCOPED_INFO(n);
   // the declared order, and no pass for the oedometer tests the set lacks
@@ -119,7 +107,8 @@ TEST_CASE("a recipe for another table than the one fitted is refused", "[calibra
   auto o = options_with(recipe);
   o.table = "hypoplastic";
   o.held = {{"intergranular_strain", test::table_5_3_toyoura_igs()}};
-  REQUIRE_THROWS_AS(calibration::calibrate({cyclic_test(BoundaryKind::kCV, 5e-4)}, o), InputError);
+  REQUIRE_THROWS_AS(calibration::calibrate({test::cyclic_soil_test(BoundaryKind::kCV, 5e-4)}, o),
+                    InputError);
   CHECK(trace.ran.empty());
 }
 
