@@ -9,6 +9,7 @@ PACKAGES=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev catch2 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev libssl-dev
   liggghts libliggghts-dev yade gnuplot-nox libnlopt-cxx-dev
+  mpi-default-dev  # mpi.h for liggghts_tri, LIGGGHTS with the triclinic fix (the periodic soil cell)
   libboost-dev  # Boost.Math's quantile functions (Latin hypercube samples, src/assessment)
   libtbb-dev    # the assessment's thousands of model runs on every core (src/assessment/evaluate.*)
   chromium  # the report test opens the HTML in headless Chromium

@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "common/errors.hpp"
 #include "dem/engines.hpp"
 #include "dem/liggghts/liggghts_engine.hpp"
+#include "dem/liggghts/periodic_cell_engine.hpp"
 #include "dem/summary.hpp"
 #include "dem/yade/yade_engine.hpp"
 #include "io/run_directory.hpp"
@@ -36,6 +38,23 @@ bool oedometer(const SoilCellSpec& c) {
 }
 bool cyclic(const SoilCellSpec& c) {
   return c.test == SoilTestKind::kCyclicShear;
+}
+bool periodic(const SoilCellSpec& c) {
+  return c.cell == CellKind::kPeriodic;
+}
+
+// What the periodic cell does not do (yet): refused before anything is written.
+void check_cell(const SoilCellSpec& c) {
+  if (!periodic(c)) return;
+  if (oedometer(c))
+    throw InputError(
+        "--cell periodic: the oedometer keeps its plates (the periodic cell shears; an oedometer "
+        "has no band to avoid)");
+  if (c.engine != "liggghts")
+    throw InputError(fmt::format(
+        "--cell periodic --engine {}: the periodic cell runs in LIGGGHTS only (YADE's periodic "
+        "cell, O.cell.velGrad, is not built yet)",
+        c.engine));
 }
 
 double preparation_friction(SoilDensity d, const Scene& scene) {
@@ -134,6 +153,7 @@ nlohmann::json yade_oedometer(const Scene& cell, const SoilCellSpec& c) {
 }
 
 std::unique_ptr<Engine> cell_engine(const Scene& cell, const SoilCellSpec& c) {
+  if (periodic(c)) return std::make_unique<LiggghtsPeriodicCell>();
   if (!oedometer(c)) return make_engine(c.engine);
   const std::vector<std::string> stages{"consolidate", "oedometer"};
   if (c.engine == "yade") return std::make_unique<YadeEngine>(stages, yade_oedometer(cell, c));
@@ -179,19 +199,41 @@ SoilTest oedometer_result(const Scene& cell, const nlohmann::json& facts) {
   return t;
 }
 
-// R^2 of a straight line through vx/v_wall against height in the last profile window: 1 for the
-// homogeneous shear a simple-shear cell should have, lower where shear localises.
-double profile_linearity(const io::CsvTable& profiles) {
-  if (profiles.rows.empty()) return 0.0;
-  const double last = profiles.rows.back()[0];
-  std::vector<std::pair<double, double>> p;
-  for (const auto& r : profiles.rows)
-    if (r[0] == last) p.emplace_back(r[1], r[2]);
-  double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
-  const double n = double(p.size());
-  for (const auto& [x, y] : p) sx += x, sy += y, sxx += x * x, sxy += x * y, syy += y * y;
-  const double cov = sxy - sx * sy / n, vx = sxx - sx * sx / n, vy = syy - sy * sy / n;
-  return vx > 0.0 && vy > 0.0 ? cov * cov / (vx * vy) : 0.0;
+// R^2 of a straight line through vx/v_wall against height in each profile window (by the window's
+// wall travel, mm): 1 for the homogeneous shear a simple-shear cell should have, lower where shear
+// localises.
+std::vector<std::pair<double, double>> profile_linearity(const io::CsvTable& profiles) {
+  std::map<double, std::vector<std::pair<double, double>>> windows;
+  for (const auto& r : profiles.rows) windows[r[0]].emplace_back(r[1], r[2]);
+  std::vector<std::pair<double, double>> out;
+  for (const auto& [u, p] : windows) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+    const double n = double(p.size());
+    for (const auto& [x, y] : p) sx += x, sy += y, sxx += x * x, sxy += x * y, syy += y * y;
+    const double cov = sxy - sx * sy / n, vx = sxx - sx * sx / n, vy = syy - sy * sy / n;
+    out.emplace_back(u, vx > 0.0 && vy > 0.0 ? cov * cov / (vx * vy) : 0.0);
+  }
+  return out;
+}
+
+// A cell sheared homogeneously: a straight velocity profile (R^2 at least this) in every window.
+constexpr double kHomogeneousR2 = 0.9;
+
+nlohmann::json linearity_json(const io::CsvTable& profiles) {
+  const auto by_window = profile_linearity(profiles);
+  nlohmann::json windows = nlohmann::json::array();
+  double lowest = by_window.empty() ? 0.0 : 1.0;
+  for (const auto& [u, r2] : by_window) {
+    windows.push_back({{"u_x_mm_window", u}, {"r2", r2}});
+    lowest = std::min(lowest, r2);
+  }
+  return {{"profile_linearity_r2", by_window.empty() ? 0.0 : by_window.back().second},
+          {"profile_linearity_r2_by_window", windows},
+          {"profile_linearity_r2_lowest", lowest},
+          {"homogeneous", !by_window.empty() && lowest >= kHomogeneousR2},
+          {"homogeneous_rule", fmt::format("R^2 of vx/v_wall against height at least {:g} in every "
+                                           "profile window",
+                                           kHomogeneousR2)}};
 }
 
 SoilTest simple_shear_result(const Scene& cell, const ContractTables& tables,
@@ -244,6 +286,7 @@ nlohmann::json fresh_manifest(const std::string& text, const std::string& source
       {"cell_scene",
        {{"sha256", io::sha256_hex(cell_text)}, {"text", cell_text}, {"resolved", cell.resolved}}},
       {"density", to_string(c.density)},
+      {"cell", to_string(c.cell)},
       {"consolidation_friction", cell.consolidation.friction},
       {"seed", cell.seed},
       {"numerics", engine.numerics(cell)},
@@ -255,6 +298,16 @@ nlohmann::json fresh_manifest(const std::string& text, const std::string& source
 }
 
 }  // namespace
+
+CellKind parse_cell_kind(const std::string& text, const std::string& where) {
+  if (text == "plates") return CellKind::kPlates;
+  if (text == "periodic") return CellKind::kPeriodic;
+  throw InputError(fmt::format("{} = '{}': allowed plates or periodic", where, text));
+}
+
+const char* to_string(CellKind k) {
+  return k == CellKind::kPeriodic ? "periodic" : "plates";
+}
 
 SoilDensity parse_soil_density(const std::string& text, const std::string& where) {
   if (text == "dense") return SoilDensity::kDense;
@@ -295,6 +348,7 @@ std::vector<double> oedometer_levels_kPa(const SoilCellSpec& c) {
 
 std::string cell_scene_text(const std::string& text, const std::string& source,
                             const SoilCellSpec& c) {
+  check_cell(c);
   const Scene base = parse_scene(text, source);  // the scene must be valid as given
   toml::table root = io::parse_toml_text(text, source);
   for (const char* table : {"specimen", "wall", "plate", "boundary", "shear", "output"})
@@ -314,14 +368,19 @@ std::string cell_scene_text(const std::string& text, const std::string& source,
     io::set_dotted(root, key, v, source);
   };
   set("description",
-      fmt::format("soil cell ({}, {}) of {}: {:g} x {:g} x {:g} d50 between rough plates", what,
-                  to_string(c.density), source, c.length_d50, c.width_d50, c.height_d50));
+      fmt::format("soil cell ({}, {}) of {}: {:g} x {:g} x {:g} d50 {}", what, to_string(c.density),
+                  source, c.length_d50, c.width_d50, c.height_d50,
+                  periodic(c)
+                      ? "fully periodic, sheared by the box's tilt ([wall] and [plate] unused)"
+                      : "between rough plates"));
   set("specimen.length_d50", c.length_d50);
   set("specimen.width_d50", c.width_d50);
   set("specimen.height_d50", c.height_d50);
   set("specimen.consolidation_friction", preparation_friction(c.density, base));
   for (const std::string side : {"wall", "plate"}) {
-    set(side + ".profile", std::string("sawtooth"));
+    // the periodic cell has neither: flat, of no height, they keep the height the box's own
+    set(side + ".profile", std::string(periodic(c) ? "flat" : "sawtooth"));
+    if (periodic(c)) continue;
     set(side + ".pitch_d50", kCellPitchD50);
     set(side + ".height_d50", kCellRidgeD50);
   }
@@ -365,12 +424,19 @@ RunOutcome run_soil_test(const std::string& text, const std::string& source, con
       t = simple_shear_result(cell, tables, run->facts, c.test);
       io::write_atomically(opt.out / "profiles.csv", tables.profiles.to_csv());
       auto summary = to_json(summarize(cell, tables.timeseries, tables.profiles));
-      summary["profile_linearity_r2"] = profile_linearity(tables.profiles);
+      summary.update(linearity_json(tables.profiles));
+      if (periodic(c))  // no wall, no plate: what the interface summary reads at them is not there
+        for (const char* key :
+             {"wall_slip", "wall_share_of_velocity_drop", "far_field_speed", "wall_band_d50",
+              "plate_band_d50", "band_thickness_d50", "band_thickness_erfc_fit_d50"})
+          summary.erase(key);
       m["cell_summary"] = summary;
       m["engine_facts"] = tables.facts;
       m["gamma_reached"] = t.control.back();
-      m["files"] = {"timeseries.csv", "profiles.csv", "vtk/particles.pvd", "vtk/contacts.pvd",
-                    "vtk/walls.pvd"};
+      m["files"] = periodic(c)
+                       ? nlohmann::json{"timeseries.csv", "profiles.csv"}
+                       : nlohmann::json{"timeseries.csv", "profiles.csv", "vtk/particles.pvd",
+                                        "vtk/contacts.pvd", "vtk/walls.pvd"};
     }
     t.name = opt.out.string();
     t.source = "dem:" + engine.name();

@@ -29,6 +29,14 @@ const char* to_string(SoilDensity d);
 inline constexpr double kDenseConsolidationFriction = 0.0;
 inline constexpr double kLooseConsolidationFriction = 1.0;
 
+// The cell: a box periodic in x and y between two rough plates, or periodic in every direction and
+// sheared by its own tilt (dem/liggghts/periodic_cell_engine.hpp): no plate, so no band next to one
+// (issue 38: the plate cells of 12 d50 localised in ~5.5 d50 at the top plate).
+enum class CellKind { kPlates, kPeriodic };
+
+CellKind parse_cell_kind(const std::string& text, const std::string& where);
+const char* to_string(CellKind k);
+
 // The cell's boundaries: sawtooth with ridges of 1 d50 at a 2 d50 pitch (R_n = 1), so that the
 // first grain layer moves with the boundary (DEM.md: R_n >= 0.5 drags it at 0.9-1.0).
 inline constexpr double kCellPitchD50 = 2.0;
@@ -36,6 +44,7 @@ inline constexpr double kCellRidgeD50 = 1.0;
 
 struct SoilCellSpec {
   std::string engine = "liggghts";  // or "yade" (dem/engines.hpp)
+  CellKind cell = CellKind::kPlates;
   calibration::SoilTestKind test = calibration::SoilTestKind::kOedometer;
   driver::BoundaryKind boundary = driver::BoundaryKind::kCNL;  // simple shear: CNL or CV
   SoilDensity density = SoilDensity::kDense;

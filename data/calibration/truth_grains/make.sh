@@ -15,6 +15,9 @@
 # DESIGNS=cyclic (with NAME=truth_grains_epsd2_igs) runs cyclic simple-shear tests instead and
 # calibrates vw3d-igs's intergranular strain on them with truth_grains_epsd2's hypoplastic set
 # held (issue 34 item 3; ../truth_grains_epsd2_igs/README.md).
+# DESIGNS=periodic (with NAME=truth_grains_epsd2_periodic) runs the eight simple-shear designs in
+# the fully periodic cell (`--cell periodic`: no plates, so no band next to one; issue 38 item 1)
+# and calibrates vw3d on them with truth_grains_epsd2's oedometers, which keep their plates.
 set -euo pipefail
 IWB=${IWB:-build/iwb}
 NAME=${NAME:-truth_grains}
@@ -51,10 +54,18 @@ CYCLIC_TESTS=(
   "cyclic-CNL-0.02|--test cyclicshear --bc CNL --density dense --sigma 50 --amplitude 0.02 --cycles 3 --inertial-number 3e-4"
   "cyclic-CNL-0.01|--test cyclicshear --bc CNL --density dense --sigma 50 --amplitude 0.01 --cycles 3 --inertial-number 3e-4"
 )
+SHARED=()  # committed tests of another data set that the fit reads too
 case $DESIGNS in
   monotonic) TESTS=("${MONOTONIC_TESTS[@]}"); HELD_OUT=simpleshear-CNL-dense-200 ;;
+  periodic)
+    TESTS=()
+    for t in "${MONOTONIC_TESTS[@]}"; do
+      [[ $t == simpleshear-* ]] && TESTS+=("$t --cell periodic")
+    done
+    HELD_OUT=simpleshear-CNL-dense-200
+    SHARED=(data/calibration/truth_grains_epsd2/seed*/oedometer-*) ;;
   cyclic) TESTS=("${CYCLIC_TESTS[@]}"); HELD_OUT=cyclic-CNL-0.01 ;;
-  *) echo "make.sh: DESIGNS=$DESIGNS: allowed monotonic or cyclic" >&2; exit 2 ;;
+  *) echo "make.sh: DESIGNS=$DESIGNS: allowed monotonic, cyclic or periodic" >&2; exit 2 ;;
 esac
 # The fit's model and what it holds: vw3d's eight parameters, or (cyclic) the intergranular strain
 # of vw3d-igs with the monotonic calibration of the same grains held.
@@ -65,7 +76,7 @@ FIT=(--model vw3d)
 # The fit of every committed test but HELD_OUT, which is predicted; its output (calibrate.txt,
 # calibration.json and the parameter file) here, the parameter file also in data/params/.
 calibrate_all() {
-  local fit=() held=()
+  local fit=("${SHARED[@]}") held=()
   for d in "$DEST"/seed*/*/; do
     d=${d%/}
     if [ "$(basename "$d")" = "$HELD_OUT" ]; then held+=("$d"); else fit+=("$d"); fi

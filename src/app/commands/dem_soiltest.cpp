@@ -15,7 +15,7 @@ namespace iwb::app {
 namespace {
 
 struct DemSoiltestCommand {
-  std::string scene, test = "oedometer", bc = "CNL", density = "dense", out;
+  std::string scene, test = "oedometer", bc = "CNL", density = "dense", cell = "plates", out;
   dem::SoilCellSpec spec;
   int np = 1;
   bool resume = false, force = false;
@@ -26,23 +26,25 @@ int run_dem_soiltest(const DemSoiltestCommand& c, const CommandContext& context)
   spec.test = calibration::soil_test_kind(c.test, "--test");
   spec.boundary = driver::parse_boundary_kind(c.bc, "--bc");
   spec.density = dem::parse_soil_density(c.density, "--density");
+  spec.cell = dem::parse_cell_kind(c.cell, "--cell");
   const bool oed = spec.test == calibration::SoilTestKind::kOedometer;
   const std::filesystem::path dir =
       !c.out.empty()
           ? std::filesystem::path(c.out)
           : std::filesystem::path("runs") /
-                fmt::format("soil-{}-{}{}-{}{}", std::filesystem::path(c.scene).stem().string(),
+                fmt::format("soil-{}-{}{}-{}{}{}", std::filesystem::path(c.scene).stem().string(),
                             c.test, oed ? "" : "-" + c.bc, c.density,
-                            spec.engine == "liggghts" ? "" : "-" + spec.engine);
+                            spec.engine == "liggghts" ? "" : "-" + spec.engine,
+                            spec.cell == dem::CellKind::kPeriodic ? "-periodic" : "");
   dem::RunOptions opt{
       dir, c.np, c.resume, c.force, context.command_line, context.interrupt, engine_progress(), {}};
-  fmt::print(
-      stderr,
-      "iwb dem soiltest: {} of {} in {} ({}, {:g} kPa, cell {:g} x {:g} x {:g} d50, {} rank(s)) -> "
-      "{}\n",
-      oed ? std::string("oedometer") : c.test + " " + c.bc, c.scene, spec.engine, c.density,
-      spec.initial_stress_kPa(), spec.length_d50, spec.width_d50, spec.height_d50, c.np,
-      dir.string());
+  fmt::print(stderr,
+             "iwb dem soiltest: {} of {} in {} ({}, {} cell, {:g} kPa, {:g} x {:g} x {:g} d50, {} "
+             "rank(s)) "
+             "-> {}\n",
+             oed ? std::string("oedometer") : c.test + " " + c.bc, c.scene, spec.engine, c.density,
+             c.cell, spec.initial_stress_kPa(), spec.length_d50, spec.width_d50, spec.height_d50,
+             c.np, dir.string());
   const auto outcome = dem::run_soil_test(io::read_file(c.scene), c.scene, spec, opt);
   fmt::print(outcome.complete() ? stdout : stderr, "{}: {} ({} particles) -> {}\n", c.scene,
              outcome.status, outcome.manifest.value("particle_count", 0), dir.string());
@@ -59,11 +61,13 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
       "seed; no "
       "wall under test), in LIGGGHTS or YADE (--engine), into the soil-test contract that `iwb "
       "calibrate` reads "
-      "(src/calibration/README.md). The cell is periodic in x and y between two rough sawtooth "
-      "plates "
-      "(ridges 1 d50, pitch 2 d50; plate friction = grain friction); the specimen is prepared at "
-      "the "
-      "first stress with friction 0 (dense) or 1 (loose).\n"
+      "(src/calibration/README.md). The cell (--cell plates) is periodic in x and y between two "
+      "rough sawtooth plates (ridges 1 d50, pitch 2 d50; plate friction = grain friction); "
+      "--cell periodic (LIGGGHTS, simple and cyclic shear) has no plates: periodic in every "
+      "direction, consolidated by a servo on the box height and sheared by the box's own tilt, so "
+      "that no band forms next to a plate (manifest cell_summary.homogeneous says whether the "
+      "shear was). The specimen is prepared at the first stress with friction 0 (dense) or 1 "
+      "(loose).\n"
       "  oedometer:   the box never widens (zero lateral strain); the top plate's servo ramps "
       "sigma_v "
       "from --sigma (10 kPa) to --sigma-max in --load-levels geometric steps and back in "
@@ -91,6 +95,12 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
                 "DEM engine: liggghts or yade (the same cell, stress program and rows; YADE is "
                 "~7x slower per particle-step)")
       ->check(CLI::IsMember({"liggghts", "yade"}))
+      ->capture_default_str();
+  s->add_option(
+       "--cell", c->cell,
+       "plates (rough sawtooth plates, periodic in x and y) or periodic (no plates: the box "
+       "sheared by its tilt; LIGGGHTS; simple and cyclic shear)")
+      ->check(CLI::IsMember({"plates", "periodic"}))
       ->capture_default_str();
   s->add_option("--bc", c->bc, "simple shear: CNL or CV")
       ->check(CLI::IsMember({"CNL", "CV"}))

@@ -67,23 +67,26 @@ std::string wall_travel(const Shear& sh) {
   return sh.cyclic() ? fmt::format("{}*v_t", g(sh.velocity_m_s)) : "v_ux";
 }
 
-// While ramping, the mesh moves by vw dt per step with t read at the step's end: vw is the speed at
-// mid-step, the step's mean, so that the mesh stays at ux (at the end of the ramp a speed read at
-// the step's end would put it half a step's travel ahead).
-std::string wall_motion(const Shear& sh, double dt) {
+// The wall's speed vw (m/s) where it is not constant: during the ramp and in cycles. While ramping,
+// the mesh moves by vw dt per step with t read at the step's end: vw is the speed at mid-step,
+// the step's mean, so that the mesh stays at ux (at the end of the ramp a speed read at the
+// step's end would put it half a step's travel ahead).
+std::string wall_speed(const Shear& sh, double dt) {
   const std::string v = g(sh.velocity_m_s);
   if (ramped(sh))
-    return fmt::format(
-        "variable vw equal {}*((v_t<{})*(v_t-{})/{}+(v_t>={}))\nvariable zero equal 0\n"
-        "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero",
-        v, g(sh.ramp_s), g(0.5 * dt), g(sh.ramp_s), g(sh.ramp_s));
-  if (!sh.cyclic()) return fmt::format("fix mv all move/mesh mesh W linear {} 0 0", v);
+    return fmt::format("variable vw equal {}*((v_t<{})*(v_t-{})/{}+(v_t>={}))", v, g(sh.ramp_s),
+                       g(0.5 * dt), g(sh.ramp_s), g(sh.ramp_s));
+  if (!sh.cyclic()) return "# the wall moves at a constant speed";
   const std::string tc = g(sh.cycles_travel_m() / sh.velocity_m_s);
-  return fmt::format(
-      "variable vw equal {}*((v_t<{})*(1-2*(floor((v_phase+1)/2)%2))+(v_t>={}))\n"
-      "variable zero equal 0\n"
-      "fix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero",
-      v, tc, tc);
+  return fmt::format("variable vw equal {}*((v_t<{})*(1-2*(floor((v_phase+1)/2)%2))+(v_t>={}))", v,
+                     tc, tc);
+}
+
+std::string wall_motion(const Shear& sh, double dt) {
+  if (!sh.cyclic() && !ramped(sh))
+    return fmt::format("fix mv all move/mesh mesh W linear {} 0 0", g(sh.velocity_m_s));
+  return wall_speed(sh, dt) +
+         "\nvariable zero equal 0\nfix mv all move/mesh mesh W linear/variable v_vw v_zero v_zero";
 }
 
 // The largest Young's modulus LIGGGHTS takes in SI units without `hard_particles yes`.
@@ -184,7 +187,9 @@ constexpr const char* kTimeseriesTitle =
     "t_s ux_m zplate_m sigma_wall_Pa tau_wall_Pa sigma_plate_Pa vsolid_m3 vband_m3 coordination "
     "atoms ke_J";
 
-TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidated) {
+}  // namespace
+
+TemplateValues liggghts_values(const Scene& s, const Numerics& n, double z0_consolidated) {
   const auto& p = s.particles;
   std::string templates;
   std::string distribution = fmt::format("fix pdd all particledistribution/discrete {} {}",
@@ -247,6 +252,7 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
       {"v_wall", g(s.shear.velocity_m_s)},
       {"wall_displacement", wall_displacement(s.shear)},
       {"wall_motion", wall_motion(s.shear, n.dt)},
+      {"wall_speed", wall_speed(s.shear, n.dt)},
       {"wall_travel", wall_travel(s.shear)},
       {"ts_row", kTimeseriesRow},
       {"ts_title", kTimeseriesTitle},
@@ -269,10 +275,11 @@ TemplateValues values_of(const Scene& s, const Numerics& n, double z0_consolidat
 
 // --- running a stage --------------------------------------------------------------------
 
-std::vector<std::string> liggghts_command(const std::string& input, int processes) {
+std::vector<std::string> liggghts_command(const std::string& input, int processes,
+                                          const std::string& executable) {
   // Line-buffered output: LIGGGHTS prints its ERROR line and then calls MPI_Abort, which loses a
   // block-buffered stdout (seen on Debian's 3.8.0: the message never appears).
-  std::vector<std::string> cmd = {"stdbuf", "-oL", "liggghts", "-in", input, "-nocite"};
+  std::vector<std::string> cmd = {"stdbuf", "-oL", executable, "-in", input, "-nocite"};
   if (processes <= 1) return cmd;
   std::vector<std::string> mpi = {"mpirun", "--allow-run-as-root", "--oversubscribe", "-np",
                                   std::to_string(processes)};
@@ -281,14 +288,12 @@ std::vector<std::string> liggghts_command(const std::string& input, int processe
 }
 
 // "Loop time of T on P procs for S steps with A atoms, ...": the engine's own cost.
-void read_loop_time(const std::vector<std::string>& w, EngineCost& cost) {
+void read_liggghts_loop_time(const std::vector<std::string>& w, EngineCost& cost) {
   if (w.size() >= 12 && w[0] == "Loop" && w[1] == "time" && w[10] == "with") {
     cost.loop_seconds += std::stod(w[3]);
     cost.particle_steps += std::stod(w[8]) * std::stod(w[11]);
   }
 }
-
-}  // namespace
 
 std::string LiggghtsEngine::version() const {
   std::string v = "unknown";
@@ -328,14 +333,14 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
   write_scene_meshes(s, n.plate_z, ctx.work_dir);
   const std::string input = stage + ".in";
   TemplateValues values =
-      values_of(s, n, facts.value("/consolidate/zplate_m"_json_pointer, n.plate_z));
+      liggghts_values(s, n, facts.value("/consolidate/zplate_m"_json_pointer, n.plate_z));
   values.insert(extra_.begin(), extra_.end());
   io::write_atomically(ctx.work_dir / input,
                        render_template(liggghts_templates().at(input), values, input));
   const double generation =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  StageResult r =
-      run_followed_stage(liggghts_command(input, ctx.processes), stage, ctx, read_loop_time);
+  StageResult r = run_followed_stage(liggghts_command(input, ctx.processes), stage, ctx,
+                                     read_liggghts_loop_time);
   r.facts["generation_seconds"] = generation;
   return r;
 }
@@ -351,7 +356,7 @@ std::string LiggghtsEngine::unsupported(const Scene& s) const {
 // consolidate.in as rendered and the meshes: the stage reads nothing else.
 std::string LiggghtsEngine::consolidation_inputs(const Scene& s) const {
   const Numerics n = derive(s);
-  TemplateValues values = values_of(s, n, n.plate_z);
+  TemplateValues values = liggghts_values(s, n, n.plate_z);
   values.insert(extra_.begin(), extra_.end());
   const std::string input = std::string(kConsolidationStage) + ".in";
   const SceneMeshes meshes = scene_meshes(s, n.plate_z);

@@ -8,6 +8,8 @@
 
 #include "common/template.hpp"
 #include "dem/engine.hpp"
+#include "dem/numerics.hpp"
+#include "dem/stage_follower.hpp"
 
 namespace iwb::dem {
 
@@ -36,5 +38,17 @@ class LiggghtsEngine final : public Engine {
 
 // The stage templates as shipped in dem-scripts/liggghts/ (generated at build time).
 const std::map<std::string, std::string>& liggghts_templates();
+
+// What every LIGGGHTS template of a scene reads: grains and materials, insertion, servo and
+// acceptance, the wall's motion, output periods; z0 is the plate height the consolidation left.
+TemplateValues liggghts_values(const Scene& scene, const Numerics& numerics,
+                               double z0_consolidated);
+
+// The command that runs `input` (through mpirun for more than one rank).
+std::vector<std::string> liggghts_command(const std::string& input, int processes,
+                                          const std::string& executable = "liggghts");
+
+// LIGGGHTS's "Loop time of T on P procs for S steps with A atoms": the engine's own cost.
+void read_liggghts_loop_time(const std::vector<std::string>& words, EngineCost& cost);
 
 }  // namespace iwb::dem
