@@ -31,6 +31,9 @@ constexpr double kTimeseriesRows = 200.0;  // simple shear: rows over the whole 
 constexpr double kRowsPerQuarterCycle = 40.0;
 constexpr int kVtkSnapshots = 4;
 constexpr int kProfileWindows = 4;
+// The periodic cell says when its shear stops being homogeneous, if it does: a profile every
+// tenth of the travel.
+constexpr int kPeriodicProfileWindows = 10;
 constexpr double kGravity = 9.81;  // m/s2, as in the templates
 
 bool oedometer(const SoilCellSpec& c) {
@@ -394,7 +397,8 @@ std::string cell_scene_text(const std::string& text, const std::string& source,
     set("shear.displacement_mm", travel_mm);  // the oedometer does not shear: a placeholder
   }
   set("output.timeseries_every_mm", row_mm);
-  set("output.profile_windows", std::int64_t(kProfileWindows));
+  set("output.profile_windows",
+      std::int64_t(periodic(c) ? kPeriodicProfileWindows : kProfileWindows));
   set("output.profile_bin_d50", 0.5);
   set("output.vtk_every_mm", travel_mm / kVtkSnapshots);
   return fmt::format(

@@ -25,7 +25,7 @@ WORK=${WORK:-runs/calibration/$NAME}  # the full runs: not committed
 DEST=data/calibration/$NAME
 SCENE=data/scenes/truth.toml
 JOBS=${JOBS:-2}
-SEEDS=(1 2 3)
+read -ra SEEDS <<< "${SEEDS:-1 2 3}"  # SEEDS="3 2": a second instance from the other end
 # The cell: 12 x 6 x 12 d50 (about 1100 grains), twice the 602-grain cell of the earlier
 # calibration, whose seed scatter was large (data/calibration/dem_default_grains/seeds).
 CELL=(--length 12 --width 6 --height 12)

@@ -55,6 +55,9 @@ TemplateValues periodic_values(const Scene& s, const Numerics& n, double z0) {
   const double lz =
       s.particle_count * s.particles.mean_particle_volume_m3() / (lx * ly * kInsertSolidFraction);
   const PeriodicServoGains k = periodic_servo_gains(s, n.dt);
+  // a sample every 10 steps through the second half of the window (n.profile_every is a
+  // multiple of 10: dem/numerics.cpp; ave/spatial wants the window a multiple of the period)
+  const long sample_every = 10, samples = std::max(1L, n.profile_every / (2 * sample_every));
   const TemplateValues periodic = {
       {"Lz_insert", gp(lz + 2.0 * margin)},
       {"ins_margin", gp(margin)},
@@ -66,6 +69,8 @@ TemplateValues periodic_values(const Scene& s, const Numerics& n, double z0) {
       {"kz_shear", gp(k.shear)},
       {"bin_reduced", fmt::format("{:.15g}", bin_share(s))},
       {"box_motion", box_motion(s)},
+      {"profile_samples", std::to_string(samples)},
+      {"profile_sample_every", std::to_string(sample_every)},
   };
   for (const auto& [key, value] : periodic) v[key] = value;
   return v;
@@ -107,7 +112,8 @@ ProfileBlocks periodic_profile_blocks(const fs::path& raw, const Scene& s, const
 
 PeriodicServoGains periodic_servo_gains(const Scene& s, double dt) {
   const double unit = s.height_m / (s.particles.youngs_modulus_Pa * dt);
-  return {s.servo.vel_max_m_s / s.boundary.sigma_n_Pa, 0.008 * unit, 0.6 * unit};
+  const double consolidation = s.servo.vel_max_m_s / s.boundary.sigma_n_Pa;
+  return {consolidation, consolidation, 0.6 * unit};
 }
 
 std::string liggghts_tri_path() {

@@ -30,15 +30,16 @@ class LiggghtsPeriodicCell final : public Engine {
 std::string liggghts_tri_path();
 
 // The servo's gains (m/s per Pa): d(lz)/dt = k (sigma_zz - sigma_n0), capped at the scene's servo
-// speed. The cloud is brought together as the plate cell's plate approaches its grains: at the
-// servo's top speed while the grains carry nothing, slowing in proportion as sigma_zz nears the
-// target (k = vel_max / sigma_n0). Settling, relaxing and shearing, the gain moves the height per
-// step by a share c of the correction a grain skeleton of modulus E would need, k = c H / (E dt):
-// 0.008 to settle and relax (the trial's, stable on the truth grains: E 6.9e8 Pa, dt 1.27e-6 s, H
-// 22.5 mm; dem-scripts/liggghts/periodic_cell_trial/REPORT.md), 0.6 while shearing, where the
-// sheared skeleton is far softer than E and the height must follow the dilation: at 0.15 sigma_n
-// lagged 3 % above the target on average (smoke grains, dense, I 1e-3) and 3.6 % (truth grains);
-// at 0.6 by 0.8 %, every row within 1 %, no oscillation.
+// speed. Consolidating and relaxing, the plate cell's law with kp = 1: the top speed while the
+// grains carry nothing, slowing in proportion as sigma_zz nears the target (k = vel_max /
+// sigma_n0). (A gentler gain after the first approach, the trial's, left a loose cloud that had
+// jammed for a moment at 27 kPa and let go at 4 Pa 48 windows later, never accepted; with one gain
+// the truth grains' loose and dense cells are accepted after 5 and 13 windows.) Shearing, the gain
+// moves the height per step by a share c of the correction a grain skeleton of modulus E would
+// need, k = c H / (E dt), c = 0.6: the sheared skeleton is far softer than E and the height must
+// follow the dilation. At c = 0.15 (the trial's 4e-6 m/s/Pa on the truth grains) sigma_n lagged
+// 3 % above the target on average (smoke grains, dense, I 1e-3) and 3.6 % (truth grains); at 0.6
+// by 0.8 %, every row within 1 %, no oscillation.
 struct PeriodicServoGains {
   double approach, settle, shear;
 };

@@ -112,10 +112,12 @@ PeriodicRun run_periodic(driver::BoundaryKind bc) {
           io::read_csv_table(dir / "timeseries.csv"), io::read_csv_table(dir / "profiles.csv")};
 }
 
-// Each profile window's bins, averaged over the height, against the time series' row nearest to
-// the window's travel: the bins are stress/atom and particle volumes per height bin (converted from
-// the box's reduced units), the time series the pair virial and solid volume of the whole box.
-void check_profiles_against_the_box(const PeriodicRun& r) {
+// Each profile window's bins, averaged over the height, against the time series' rows over the
+// same span (a window's profile is the mean over the second half of its tenth of the travel, the
+// window named by its end): the bins are stress/atom and particle volumes per height bin
+// (converted from the box's reduced units), the time series the pair virial and solid volume of
+// the whole box.
+void check_profiles_against_the_box(const PeriodicRun& r, double travel_mm) {
   const auto ux = r.timeseries.values("u_x_mm"), sn = r.timeseries.values("sigma_n_kPa"),
              tau = r.timeseries.values("tau_kPa"), e = r.timeseries.values("e");
   std::map<double, std::array<double, 4>> windows;  // bins, sigma_zz, tau_zx, porosity
@@ -123,15 +125,17 @@ void check_profiles_against_the_box(const PeriodicRun& r) {
     auto& w = windows[b[0]];
     w[0] += 1.0, w[1] += b[4], w[2] += b[5], w[3] += b[3];
   }
-  REQUIRE(windows.size() == 4);
+  REQUIRE(windows.size() >= 9);  // ave/spatial fires on multiples of the absolute step
   for (const auto& [u, w] : windows) {
-    std::size_t i = 0;
+    std::array<double, 4> rows{};  // count, sigma_n, tau, porosity
     for (std::size_t k = 0; k < ux.size(); ++k)
-      if (std::abs(ux[k] - u) < std::abs(ux[i] - u)) i = k;
-    INFO("window at u_x " << u << " mm, row " << i);
-    CHECK(w[1] / w[0] == Approx(sn[i]).epsilon(0.02));
-    CHECK(w[2] / w[0] == Approx(tau[i]).epsilon(0.03));
-    CHECK(w[3] / w[0] == Approx(e[i] / (1.0 + e[i])).margin(0.004));
+      if (ux[k] <= u + 1e-9 && ux[k] >= u - travel_mm / 20.0)
+        rows[0] += 1.0, rows[1] += sn[k], rows[2] += tau[k], rows[3] += e[k] / (1.0 + e[k]);
+    INFO("window ending at u_x " << u << " mm, " << rows[0] << " rows");
+    REQUIRE(rows[0] >= 3.0);
+    CHECK(w[1] / w[0] == Approx(rows[1] / rows[0]).epsilon(0.02));
+    CHECK(w[2] / w[0] == Approx(rows[2] / rows[0]).epsilon(0.03));
+    CHECK(w[3] / w[0] == Approx(rows[3] / rows[0]).margin(0.004));
   }
 }
 
@@ -149,7 +153,8 @@ TEST_CASE("periodic cell: CV holds the volume, CNL the normal stress; both shear
     for (const auto& w : summary["profile_linearity_r2_by_window"]) CHECK(w["r2"] >= 0.9);
     CHECK(summary["homogeneous"] == true);
     CHECK_FALSE(summary.contains("wall_slip"));  // nothing of a wall in a cell without one
-    check_profiles_against_the_box(*r);
+    check_profiles_against_the_box(
+        *r, r->manifest["cell_scene"]["resolved"]["shear"]["travel_mm"].get<double>());
   }
   // CV: the box's height is held and its sides never move, so the volume is exact.
   for (const double e : cv.test.e) CHECK(e == Approx(cv.test.e0).epsilon(1e-9));
