@@ -52,35 +52,42 @@ def diameters(n, sizes, rng):
     return out
 
 
-def random_cloud(n, rng):
-    """Non-overlapping spheres at random in the insertion region, periodic in x and y: random
-    sequential addition, largest first, on a hash grid. Fails with the counts if it cannot."""
+def random_cloud(n, rng, z0, z1, periodic_z=False):
+    """Non-overlapping spheres at random between heights z0 and z1, periodic in x and y (and in z
+    over z1 - z0 with periodic_z: the periodic cell): random sequential addition, largest first,
+    on a hash grid. Fails with the counts if it cannot."""
     ds = sorted(diameters(n, P["sizes"], rng), reverse=True)
-    lx, ly, z0, z1 = P["Lx"], P["Ly"], P["ins_zlo"], P["ins_zhi"]
+    lx, ly = P["Lx"], P["Ly"]
     cell = P["d_max"]
+    nz = max(1, int((z1 - z0) / cell))
     grid = {}
     placed = []
     for d in ds:
         r = 0.5 * d
         for _ in range(2000):
-            p = (rng.uniform(0, lx), rng.uniform(0, ly), rng.uniform(z0 + r, z1 - r))
-            key = (int(p[0] / cell), int(p[1] / cell), int(p[2] / cell))
+            zr = (z0, z1) if periodic_z else (z0 + r, z1 - r)
+            p = (rng.uniform(0, lx), rng.uniform(0, ly), rng.uniform(*zr))
+            key = (int(p[0] / cell), int(p[1] / cell), int((p[2] - z0) / cell))
             ok = True
             for i in (-1, 0, 1):
                 for j in (-1, 0, 1):
                     for k in (-1, 0, 1):
-                        kk = ((key[0] + i) % max(1, int(lx / cell)), (key[1] + j) % max(1, int(ly / cell)), key[2] + k)
+                        kz = (key[2] + k) % nz if periodic_z else key[2] + k
+                        kk = ((key[0] + i) % max(1, int(lx / cell)), (key[1] + j) % max(1, int(ly / cell)), kz)
                         for q, rq in grid.get(kk, ()):
                             dx = abs(p[0] - q[0]); dx = min(dx, lx - dx)
                             dy = abs(p[1] - q[1]); dy = min(dy, ly - dy)
-                            if dx * dx + dy * dy + (p[2] - q[2]) ** 2 < (r + rq) ** 2:
+                            dz = abs(p[2] - q[2])
+                            if periodic_z:
+                                dz = min(dz, (z1 - z0) - dz)
+                            if dx * dx + dy * dy + dz * dz < (r + rq) ** 2:
                                 ok = False
                                 break
                         if not ok: break
                     if not ok: break
                 if not ok: break
             if ok:
-                key = (key[0] % max(1, int(lx / cell)), key[1] % max(1, int(ly / cell)), key[2])
+                key = (key[0] % max(1, int(lx / cell)), key[1] % max(1, int(ly / cell)), key[2] % nz if periodic_z else key[2])
                 grid.setdefault(key, []).append((p, r))
                 placed.append((p, r))
                 break
@@ -101,7 +108,7 @@ def build_scene():
                              for x, y, z, d in P["glued"]])
     plate = O.bodies.append(ymport.stl(P["plate_stl"], material=wall_mat, shift=shift, fixed=True))
     rng = random.Random(P["seed"])
-    cloud = random_cloud(P["n_particles"], rng)
+    cloud = random_cloud(P["n_particles"], rng, P["ins_zlo"], P["ins_zhi"])
     grains = O.bodies.append([sphere((p[0], p[1], p[2] + ZS), r, material=grains_mat) for p, r in cloud])
     O.tags["iwb_ids"] = json.dumps({"wall": wall + glued, "plate": plate, "grains": grains})
     say("IWB_PARTICLES %d requested %d" % (len(grains), P["n_particles"]))
@@ -113,7 +120,7 @@ def build_scene():
 WET = P.get("capillary") is not None
 
 
-def engines():
+def engines(facets=True, gravity=-9.81, control="control()"):
     # Hertz-Mindlin with restitution damping and a rolling-resistance moment capped at
     # eta * R_mean * F_n, its stiffness krot that of the LIGGGHTS model it stands in for (cdt or
     # epsd2; dem-scripts/README.md, "Contact-law mapping"). Wet
@@ -123,10 +130,10 @@ def engines():
     ip2 = Ip2_FrictMat_FrictMat_MindlinCapillaryPhys if WET else Ip2_FrictMat_FrictMat_MindlinPhys
     out = [
         ForceResetter(),
-        InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb()], allowBiggerThanPeriod=True,
-                              verletDist=P["skin"], label="collider"),
+        InsertionSortCollider([Bo1_Sphere_Aabb()] + ([Bo1_Facet_Aabb()] if facets else []),
+                              allowBiggerThanPeriod=True, verletDist=P["skin"], label="collider"),
         InteractionLoop(
-            [Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()],
+            [Ig2_Sphere_Sphere_ScGeom()] + ([Ig2_Facet_Sphere_ScGeom()] if facets else []),
             [ip2(en=P["restitution"], es=P["restitution"], krot=P["rolling"]["krot"], eta=P["rolling"]["eta"])],
             [Law2_ScGeom_MindlinPhys_Mindlin(includeMoment=P["rolling"]["eta"] > 0, neverErase=WET)]),
     ]
@@ -134,8 +141,8 @@ def engines():
         out.append(Law2_ScGeom_CapillaryPhys_Capillarity(capillaryPressure=P["capillary"]["suction_Pa"],
                                                          surfaceTension=P["capillary"]["surface_tension_N_m"]))
     return out + [
-        PyRunner(iterPeriod=P["servo"]["every"], command="control()", label="controller"),
-        NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.0),
+        PyRunner(iterPeriod=P["servo"]["every"], command=control, label="controller"),
+        NewtonIntegrator(gravity=(0, 0, gravity), damping=0.0),
     ]
 
 
@@ -574,7 +581,182 @@ def oedometer():
     say("IWB_STAGE_DONE oedometer")
 
 
-STAGES = {"consolidate": consolidate, "shear": shear, "oedometer": oedometer}
+# --- soil cell: the periodic cell (`iwb dem soiltest --cell periodic --engine yade`) -----------
+# No walls and no gravity: YADE's cell periodic in x, y and z, consolidated by a servo on its
+# height (x and y held), then sheared by its own velocity gradient, the top image moving in +x
+# over the bottom one at the wall's speed (velGrad[0][2] = v / H), the height servo-controlled
+# (CNL) or held (CV). Every `every` steps the servo sets d H / dt = k (sigma_zz - sigma_n0),
+# capped at vel_max, with the gains of dem/periodic_cell.hpp. The raw files have the plate
+# cell's columns: u_x is the top image's travel, the "plate" the cell's height, both stresses
+# the grains' (getStress: the Love-Weber stress of the whole cell).
+
+PERIODIC = {"gain": 0.0, "hold": False, "shear": False, "t0": 0.0}
+
+
+def cell_height():
+    return O.cell.hSize[2, 2]
+
+
+def cell_stresses():
+    """sigma_zz (compression positive) and tau_zx (positive against a growing tilt), Pa."""
+    s = getStress()
+    return -s[2, 2], s[0, 2]
+
+
+def periodic_control():
+    g = O.cell.velGrad
+    vz = 0.0
+    if not PERIODIC["hold"]:
+        vmax = P["servo"]["vel_max"]
+        vz = max(-vmax, min(vmax, PERIODIC["gain"] * (cell_stresses()[0] - P["sigma_n0"])))
+    g[2, 2] = vz / cell_height()
+    if PERIODIC["shear"]:
+        g[0, 2] = wall_velocity(O.time - PERIODIC["t0"]) / cell_height()
+        # a tilt past half the length: the same lattice, flipped to the least skewed cell
+        if abs(O.cell.hSize[0, 2]) > 0.5 * O.cell.hSize[0, 0]:
+            O.cell.flipCell()
+    O.cell.velGrad = g
+
+
+def periodic_ids():
+    IDS.update(json.loads(O.tags["iwb_ids"]))
+    SPHERES[0] = len(IDS["grains"])
+
+
+def periodic_consolidate():
+    pc = P["periodic"]
+    O.periodic = True
+    O.cell.setBox(P["Lx"], P["Ly"], pc["Lz_insert"])
+    O.dt = P["dt"]
+    grains_mat = material(P["mu_consolidation"], "grains")
+    cloud = random_cloud(P["n_particles"], random.Random(P["seed"]), 0.0, pc["Lz_insert"], periodic_z=True)
+    grains = O.bodies.append([sphere(p, r, material=grains_mat) for p, r in cloud])
+    O.tags["iwb_ids"] = json.dumps({"grains": grains, "wall": [], "plate": []})
+    periodic_ids()
+    say("IWB_PARTICLES %d requested %d" % (len(grains), P["n_particles"]))
+    if len(grains) < P["n_particles"]:
+        fail("particle count short: %d of %d placed in the periodic cell" % (len(grains), P["n_particles"]))
+    O.engines = engines(facets=False, gravity=0.0, control="periodic_control()")
+    PERIODIC["gain"] = pc["gain_consolidation"]
+    for a in range(1, P["approach_windows"] + 1):
+        run(P["window_steps"])
+        s = cell_stresses()[0]
+        say("IWB_APPROACH %d sigma_Pa %.8g" % (a, s))
+        if s > P["approach_sigma"]:
+            break
+    else:
+        report_cost()
+        fail("servo did not converge: the cloud did not reach %g Pa in %d windows" % (P["approach_sigma"], P["approach_windows"]))
+    good, zprev = 0, cell_height()
+    for w in range(1, P["max_windows"] + 1):
+        run(P["window_steps"])
+        s, zp, ke = cell_stresses()[0], cell_height(), kinetic_energy()
+        dz = abs(zp - zprev)
+        ok = abs(s - P["sigma_n0"]) < P["sigma_tol"] * P["sigma_n0"] and dz < P["plate_tol"] and ke < P["ke_tol"]
+        good = good + 1 if ok else 0
+        say("IWB_WINDOW %d sigma_Pa %.8g dz_m %.6g ke_J %.6g good %d" % (w, s, dz, ke, good))
+        if good >= P["windows_required"]:
+            O.cell.velGrad = Matrix3.Zero
+            O.save("consolidated.yade.gz")
+            report_cost()
+            say("IWB_STAGE_DONE consolidate zplate_m %.10g sigma_Pa %.8g" % (zp, s))
+            return
+        zprev = zp
+    report_cost()
+    fail("servo did not converge: consolidation not accepted after %d windows" % P["max_windows"])
+
+
+class PeriodicOutputs:
+    """timeseries.raw as Outputs writes it; profiles.raw rows "step z_m count vx solid szz tau"
+    per bin of the cell's height (z wrapped into the cell, vx less one wall speed per period
+    wrapped, stresses per bin volume, compression and shear along the tilt positive)."""
+
+    def __init__(self, z0):
+        self.vol = grain_volumes()
+        self.vsolid = sum(self.vol)
+        self.area = P["Lx"] * P["Ly"]
+        self.bins = max(1, int(round(z0 / P["periodic"]["bin_dz"])))
+        self.ts = open("timeseries.raw", "w")
+        self.ts.write("# t_s ux_m zplate_m sigma_wall_Pa tau_wall_Pa sigma_plate_Pa vsolid_m3 vband_m3 coordination atoms ke_J\n")
+        self.prof = open("profiles.raw", "w")
+        self.prof.write("# step z_m count vx_m_s solid_fraction s_zz_Pa tau_zx_Pa (compression and shear along the tilt positive)\n")
+        self.samples = []
+        self.grain_set = set(IDS["grains"])
+
+    def timeseries(self, t):
+        s, tau = cell_stresses()
+        self.ts.write("%.9g %.9g %.10g %.8g %.8g %.8g %.8g %.8g %.6g %d %.6g\n" % (
+            t, wall_displacement(t), cell_height(), s, tau, s, self.vsolid, self.vsolid,
+            coordination(self.grain_set), len(IDS["grains"]), kinetic_energy()))
+        self.ts.flush()
+
+    def sample_profile(self):
+        h, v = cell_height(), P["shear"]["velocity"]
+        nb = self.bins
+        bins = [[0, 0.0, 0.0, 0.0, 0.0] for _ in range(nb)]
+        stress = bodyStressTensors()
+        for i, vol in zip(IDS["grains"], self.vol):
+            b = O.bodies[i]
+            periods = math.floor(b.state.pos[2] / h)
+            k = min(nb - 1, int((b.state.pos[2] - periods * h) / h * nb))
+            row, st = bins[k], stress[i]
+            row[0] += 1; row[1] += b.state.vel[0] - periods * v; row[2] += vol
+            row[3] -= st[2, 2] * vol; row[4] += st[0, 2] * vol
+        self.samples.append((h, bins))
+
+    def profile(self, step):
+        ns, nb = len(self.samples), self.bins
+        h = sum(hs for hs, _ in self.samples) / ns
+        vbin = self.area * h / nb
+        for k in range(nb):
+            count = sum(b[k][0] for _, b in self.samples)
+            vx = sum(b[k][1] for _, b in self.samples) / count if count else 0.0
+            sums = [sum(b[k][j] for _, b in self.samples) / (ns * vbin) for j in (2, 3, 4)]
+            self.prof.write("%d %.9g %.6g %.9g %.9g %.9g %.9g\n" % (step, (k + 0.5) * h / nb, count / ns, vx, *sums))
+        self.prof.flush()
+        self.samples = []
+
+
+def periodic_shear():
+    O.load("consolidated.yade.gz")
+    periodic_ids()
+    O.engines = engines(facets=False, gravity=0.0, control="periodic_control()")
+    set_friction(P["mu_test"])
+    PERIODIC["gain"] = P["periodic"]["gain_consolidation"]
+    run(P["relax_steps"])
+    for axis, value in zip("xyz", stress_volume_sums(grain_volumes())):  # K0 when shear starts
+        say("IWB_FACT stress_volume_%s%s_Pa_m3 %.10g" % (axis, axis, value))
+    z0 = cell_height()
+    say("IWB_STAGE_DONE relax zplate_m %.10g" % z0)
+    sh = P["shear"]
+    step0 = O.iter
+    say("IWB_SHEAR_START step %d zplate_m %.10g" % (step0, z0))
+    PERIODIC.update(gain=P["periodic"]["gain_shear"], hold=P["bc"] == "CV", shear=True, t0=O.time)
+    out = PeriodicOutputs(z0)
+    chunk = P["servo"]["every"]
+    # a sample every chunk through the second half of each profile window, as the LIGGGHTS cell
+    half = sh["profile_every"] // 2
+    out.timeseries(0.0)
+    done = 0
+    while done < sh["steps"]:
+        n = min(chunk, sh["steps"] - done)
+        run(n)
+        done += n
+        step, t = O.iter - step0, O.time - PERIODIC["t0"]
+        if step % sh["ts_every"] < chunk:
+            out.timeseries(t)
+        if step % sh["profile_every"] >= half:
+            out.sample_profile()
+        if step % sh["profile_every"] < chunk and out.samples:
+            out.profile(O.iter)
+        if step % sh["progress_every"] < chunk:
+            say("IWB_PROGRESS %.9g %.9g" % (sh["velocity"] * t if sh["cyclic"] else wall_displacement(t), sh["u_total"]))
+    report_cost()
+    say("IWB_STAGE_DONE shear ux_m %.9g" % wall_displacement(O.time - PERIODIC["t0"]))
+
+
+STAGES = {"consolidate": consolidate, "shear": shear, "oedometer": oedometer,
+          "periodic_consolidate": periodic_consolidate, "periodic_shear": periodic_shear}
 if STAGE not in STAGES:
     fail("unknown stage " + STAGE)
 try:

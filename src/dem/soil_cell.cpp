@@ -12,6 +12,7 @@
 #include "dem/liggghts/periodic_cell_engine.hpp"
 #include "dem/summary.hpp"
 #include "dem/yade/yade_engine.hpp"
+#include "dem/yade/yade_periodic_cell.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_override.hpp"
 #include "io/toml_reader.hpp"
@@ -53,11 +54,6 @@ void check_cell(const SoilCellSpec& c) {
     throw InputError(
         "--cell periodic: the oedometer keeps its plates (the periodic cell shears; an oedometer "
         "has no band to avoid)");
-  if (c.engine != "liggghts")
-    throw InputError(fmt::format(
-        "--cell periodic --engine {}: the periodic cell runs in LIGGGHTS only (YADE's periodic "
-        "cell, O.cell.velGrad, is not built yet)",
-        c.engine));
 }
 
 double preparation_friction(SoilDensity d, const Scene& scene) {
@@ -156,6 +152,7 @@ nlohmann::json yade_oedometer(const Scene& cell, const SoilCellSpec& c) {
 }
 
 std::unique_ptr<Engine> cell_engine(const Scene& cell, const SoilCellSpec& c) {
+  if (periodic(c) && c.engine == "yade") return std::make_unique<YadePeriodicCell>();
   if (periodic(c)) return std::make_unique<LiggghtsPeriodicCell>();
   if (!oedometer(c)) return make_engine(c.engine);
   const std::vector<std::string> stages{"consolidate", "oedometer"};

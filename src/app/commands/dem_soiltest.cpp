@@ -63,7 +63,7 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
       "calibrate` reads "
       "(src/calibration/README.md). The cell (--cell plates) is periodic in x and y between two "
       "rough sawtooth plates (ridges 1 d50, pitch 2 d50; plate friction = grain friction); "
-      "--cell periodic (LIGGGHTS, simple and cyclic shear) has no plates: periodic in every "
+      "--cell periodic (simple and cyclic shear) has no plates: periodic in every "
       "direction, consolidated by a servo on the box height and sheared by the box's own tilt, so "
       "that no band forms next to a plate (manifest cell_summary.homogeneous says whether the "
       "shear was). The specimen is prepared at the first stress with friction 0 (dense) or 1 "
@@ -99,7 +99,7 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
   s->add_option(
        "--cell", c->cell,
        "plates (rough sawtooth plates, periodic in x and y) or periodic (no plates: the box "
-       "sheared by its tilt; LIGGGHTS; simple and cyclic shear)")
+       "sheared by its tilt; simple and cyclic shear)")
       ->check(CLI::IsMember({"plates", "periodic"}))
       ->capture_default_str();
   s->add_option("--bc", c->bc, "simple shear: CNL or CV")

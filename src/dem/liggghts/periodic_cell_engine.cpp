@@ -13,6 +13,7 @@
 #include "dem/contract_outputs.hpp"
 #include "dem/liggghts/liggghts_engine.hpp"
 #include "dem/numerics.hpp"
+#include "dem/periodic_cell.hpp"
 #include "dem/stage_follower.hpp"
 #include "io/run_directory.hpp"
 
@@ -21,9 +22,6 @@ namespace iwb::dem {
 namespace fs = std::filesystem;
 
 namespace {
-
-// insert/pack fills a region reliably this loosely (as dem/numerics.cpp's insertion region)
-constexpr double kInsertSolidFraction = 0.30;
 
 std::string gp(double x) {
   return fmt::format("{:.10g}", x);
@@ -51,21 +49,18 @@ std::string box_motion(const Scene& s) {
 TemplateValues periodic_values(const Scene& s, const Numerics& n, double z0) {
   TemplateValues v = liggghts_values(s, n, z0);
   const double margin = 0.5 * s.particles.d_max();
-  const double lx = s.length_m - 2.0 * margin, ly = s.width_m - 2.0 * margin;
-  const double lz =
-      s.particle_count * s.particles.mean_particle_volume_m3() / (lx * ly * kInsertSolidFraction);
+  const double lz = periodic_insertion_height(s, margin);
   const PeriodicServoGains k = periodic_servo_gains(s, n.dt);
   // a sample every 10 steps through the second half of the window (n.profile_every is a
   // multiple of 10: dem/numerics.cpp; ave/spatial wants the window a multiple of the period)
   const long sample_every = 10, samples = std::max(1L, n.profile_every / (2 * sample_every));
   const TemplateValues periodic = {
-      {"Lz_insert", gp(lz + 2.0 * margin)},
+      {"Lz_insert", gp(lz)},
       {"ins_margin", gp(margin)},
-      {"ins_x_hi", gp(margin + lx)},
-      {"ins_y_hi", gp(margin + ly)},
-      {"ins_z_hi", gp(margin + lz)},
-      {"kz_approach", gp(k.approach)},
-      {"kz_settle", gp(k.settle)},
+      {"ins_x_hi", gp(s.length_m - margin)},
+      {"ins_y_hi", gp(s.width_m - margin)},
+      {"ins_z_hi", gp(lz - margin)},
+      {"kz_consolidation", gp(k.consolidation)},
       {"kz_shear", gp(k.shear)},
       {"bin_reduced", fmt::format("{:.15g}", bin_share(s))},
       {"box_motion", box_motion(s)},
@@ -110,12 +105,6 @@ ProfileBlocks periodic_profile_blocks(const fs::path& raw, const Scene& s, const
 
 }  // namespace
 
-PeriodicServoGains periodic_servo_gains(const Scene& s, double dt) {
-  const double unit = s.height_m / (s.particles.youngs_modulus_Pa * dt);
-  const double consolidation = s.servo.vel_max_m_s / s.boundary.sigma_n_Pa;
-  return {consolidation, consolidation, 0.6 * unit};
-}
-
 std::string liggghts_tri_path() {
   std::error_code ec;
   const fs::path here = fs::read_symlink("/proc/self/exe", ec).parent_path() / "liggghts_tri";
@@ -140,8 +129,7 @@ nlohmann::json LiggghtsPeriodicCell::numerics(const Scene& s) const {
       fmt::format("pair gran hertz, tangential history, rolling_friction {}; no walls",
                   s.particles.rolling_model);
   j["servo"] = {{"vel_max_m_s", s.servo.vel_max_m_s},
-                {"height_gain_approach_m_s_per_Pa", k.approach},
-                {"height_gain_settle_m_s_per_Pa", k.settle},
+                {"height_gain_consolidation_m_s_per_Pa", k.consolidation},
                 {"height_gain_shear_m_s_per_Pa", k.shear}};
   return j;
 }
@@ -178,8 +166,7 @@ ContractTables LiggghtsPeriodicCell::assemble(const StageContext& ctx,
   ContractTables out;
   out.timeseries = timeseries_table(s, n, ctx.work_dir / "timeseries.raw", z0);
   // the whole cell is the band
-  const int e = out.timeseries.column("e_specimen"), band = out.timeseries.column("e_band");
-  for (auto& r : out.timeseries.rows) r[band] = r[e];
+  band_is_the_cell(out.timeseries);
   out.profiles = profile_table(
       s, n, periodic_profile_blocks(ctx.work_dir / "profiles.raw", s, n, out.timeseries, step0, z0),
       step0);

@@ -27,7 +27,6 @@ constexpr double kServoGain = 0.2;
 constexpr int kServoEvery = 10;
 // While shearing, an integral term adds this share of the closing velocity per update.
 constexpr double kServoIntegralGain = 0.02;
-constexpr const char* kScript = "interface_shear.py";
 
 // Rolling resistance. Both LIGGGHTS models cap the torque at mu_r R* F_n (R* = R1 R2 / (R1 + R2));
 // YADE's Mindlin law caps an elastic bending moment at eta R_mean F_n (R_mean = (R1 + R2) / 2),
@@ -81,20 +80,6 @@ nlohmann::json shear_parameters(const Scene& s, const Numerics& n) {
           {"u_total", s.shear.travel_m()}};
 }
 
-std::vector<std::string> yade_command(const std::string& stage, int threads) {
-  // -n: no GUI; -x: exit when the script ends. stdbuf keeps the IWB_ lines live.
-  return {"stdbuf",
-          "-oL",
-          "yade",
-          "-n",
-          "-x",
-          "-j",
-          std::to_string(std::max(1, threads)),
-          kScript,
-          "yade_params.json",
-          stage};
-}
-
 // The script's profiles.raw: "step z count vx solid s_zz s_xz" per bin, stresses per bin volume
 // and compression negative, as LIGGGHTS's stress/atom.
 ProfileBlocks yade_profile_blocks(const fs::path& raw, const Scene& s, const Numerics& n) {
@@ -116,6 +101,20 @@ void write_capillary_tables(const fs::path& dir) {
 }
 
 }  // namespace
+
+std::vector<std::string> yade_command(const std::string& stage, int threads) {
+  // -n: no GUI; -x: exit when the script ends. stdbuf keeps the IWB_ lines live.
+  return {"stdbuf",
+          "-oL",
+          "yade",
+          "-n",
+          "-x",
+          "-j",
+          std::to_string(std::max(1, threads)),
+          kYadeScript,
+          "yade_params.json",
+          stage};
+}
 
 nlohmann::json yade_parameters(const Scene& s, const Numerics& n) {
   const auto& p = s.particles;
@@ -219,7 +218,7 @@ StageResult YadeEngine::run_stage(const std::string& stage, const StageContext& 
   nlohmann::json params = yade_parameters(s, n);
   params.update(extra_);
   io::write_atomically(ctx.work_dir / "yade_params.json", params.dump(2) + "\n");
-  io::write_atomically(ctx.work_dir / kScript, yade_scripts().at(kScript));
+  io::write_atomically(ctx.work_dir / kYadeScript, yade_scripts().at(kYadeScript));
   if (s.particles.wet()) write_capillary_tables(ctx.work_dir);
   const double generation =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -239,7 +238,7 @@ std::string YadeEngine::consolidation_inputs(const Scene& s) const {
                             "band_zlo", "band_zhi", "bin_dz", "mu_test", "oedometer"})
     params.erase(later);
   const SceneMeshes meshes = scene_meshes(s, n.plate_z);
-  return params.dump(2) + yade_scripts().at(kScript) + meshes.wall_stl + meshes.top_stl;
+  return params.dump(2) + yade_scripts().at(kYadeScript) + meshes.wall_stl + meshes.top_stl;
 }
 
 // interface_shear.py's O.save at the end of consolidation; the later stages O.load it.

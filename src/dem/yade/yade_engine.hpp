@@ -39,6 +39,12 @@ class YadeEngine final : public Engine {
 // resistance mapped from LIGGGHTS's cdt coefficient, servo and output periods (SI).
 nlohmann::json yade_parameters(const Scene& scene, const Numerics& numerics);
 
+// The runner script, run from the stage's work directory.
+inline constexpr const char* kYadeScript = "interface_shear.py";
+
+// `yade -n -x -jN interface_shear.py yade_params.json STAGE`, output line-buffered.
+std::vector<std::string> yade_command(const std::string& script_stage, int threads);
+
 // The runner script as shipped in dem-scripts/yade/ (embedded at build time).
 const std::map<std::string, std::string>& yade_scripts();
 // The capillary tables of Law2_ScGeom_CapillaryPhys_Capillarity, M_r<ratio>.txt of
