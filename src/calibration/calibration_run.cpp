@@ -93,6 +93,16 @@ CalibrationRun run_calibration(const CalibrationRequest& q,
   refuse_if_nothing_identified(run.result, q.runs);
   for (const auto& t : held_out)
     run.result.held_out.push_back(test_fit(t, q.model, run.result.inputs()));
+  const auto note_localised = [&run](const std::vector<SoilTest>& tests) {
+    for (const auto& t : tests)
+      if (t.element_until > 0.0)
+        run.result.notes.push_back(fmt::format(
+            "{}: the periodic cell's shear localised after gamma {:.3g}; its first {} of {} rows "
+            "(an element's) are read",
+            t.name, t.element_until, t.rows(), t.rows_in_file));
+  };
+  note_localised(run.tests);
+  note_localised(held_out);
   return run;
 }
 

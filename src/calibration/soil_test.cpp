@@ -189,11 +189,41 @@ std::string timeseries_csv(const SoilTest& t) {
 
 }  // namespace
 
+double element_until_gamma(const nlohmann::json& m) {
+  if (m.value("cell", "") != "periodic" || m.value("test", "") != "simpleshear") return 0.0;
+  const auto& summary = m.value("cell_summary", nlohmann::json::object());
+  const auto windows = summary.value("profile_linearity_r2_by_window", nlohmann::json::array());
+  if (windows.empty() || summary.value("homogeneous", false)) return 0.0;
+  const double travel = m.at("cell_scene").at("resolved").at("shear").at("travel_mm").get<double>();
+  const double per_mm = m.at("gamma_reached").get<double>() / travel;
+  const double threshold = summary.value("homogeneous_r2_threshold", kHomogeneousCellR2);
+  double until = 0.0;
+  for (const auto& w : windows) {
+    if (w.at("r2").get<double>() < threshold) break;
+    until = w.at("u_x_mm_window").get<double>() * per_mm;
+  }
+  return until > 0.0 ? until : -1.0;  // -1: not homogeneous even in its first window
+}
+
 SoilTest read_soil_test(const fs::path& dir) {
   SoilTest t;
   t.name = dir.string();
   read_header(t, dir / "manifest.json");
   read_columns(t, dir / "timeseries.csv");
+  t.rows_in_file = t.rows();
+  const double until = element_until_gamma(read_manifest(dir / "manifest.json"));
+  if (until == 0.0) return t;
+  std::size_t keep = 0;
+  while (keep < t.rows() && t.control[keep] <= until) ++keep;
+  if (until < 0.0 || keep < kMinimumRows)
+    throw InputError(fmt::format(
+        "{}: the periodic cell's shear localised {}: fewer than {} rows of an element to read",
+        dir.string(),
+        until < 0.0 ? "from its first profile window" : fmt::format("by gamma {:.3g}", until),
+        kMinimumRows));
+  t.element_until = until;
+  for (auto* v : {&t.control, &t.e, &t.eps_v, &t.tau_kPa, &t.sigma_n_kPa})
+    if (v->size() > keep) v->resize(keep);
   return t;
 }
 

@@ -47,6 +47,11 @@ struct SoilTest {
   int seed = 0;          // the DEM seed, if the manifest says (0: not given)
   ResidualScales scales;
   nlohmann::json source_parameters = nlohmann::json::object();  // what a synthetic source used
+  // A periodic DEM cell that localised (its manifest's profile windows, dem/soil_cell.hpp): the
+  // gamma of the end of its last homogeneous window, beyond which its rows are a band's and are
+  // not read; 0 when the whole test is an element's. rows_in_file counts every row.
+  double element_until = 0.0;
+  std::size_t rows_in_file = 0;
 
   // One entry per row of timeseries.csv. Oedometer: sigma_kPa = sigma_v (the control), e and
   // eps_v measured. Simple shear: gamma (the control), tau_kPa, sigma_kPa = sigma_n, e measured.
@@ -66,7 +71,19 @@ struct SoilTest {
 // fewer than kMinimumRows rows, and a control that is not monotonic (gamma must increase;
 // sigma_v must increase to its maximum and then, if unloaded, decrease; cyclic gamma must change
 // from row to row and reverse at least once).
+// A periodic DEM cell whose shear localised is read up to the end of its last homogeneous profile
+// window only (element_until; InputError if that leaves fewer than kMinimumRows).
 SoilTest read_soil_test(const std::filesystem::path& dir);
+
+// A DEM cell sheared homogeneously where the R^2 of a straight line through its velocity profile
+// (vx/v_wall against height) is at least this in a profile window (dem/soil_cell.cpp).
+inline constexpr double kHomogeneousCellR2 = 0.9;
+
+// The gamma up to which a periodic cell sheared homogeneously (every profile window up to it with
+// R^2 >= the manifest's homogeneous_r2_threshold), 0 when every window was (or the manifest is not
+// a periodic cell's simple shear), -1 when not even the first was. Windows are named by their
+// travel (mm), turned into gamma by the cell's gamma_reached over its travel.
+double element_until_gamma(const nlohmann::json& manifest);
 
 inline constexpr std::size_t kMinimumRows = 3;
 

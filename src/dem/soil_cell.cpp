@@ -216,9 +216,6 @@ std::vector<std::pair<double, double>> profile_linearity(const io::CsvTable& pro
   return out;
 }
 
-// A cell sheared homogeneously: a straight velocity profile (R^2 at least this) in every window.
-constexpr double kHomogeneousR2 = 0.9;
-
 nlohmann::json linearity_json(const io::CsvTable& profiles) {
   const auto by_window = profile_linearity(profiles);
   nlohmann::json windows = nlohmann::json::array();
@@ -230,10 +227,11 @@ nlohmann::json linearity_json(const io::CsvTable& profiles) {
   return {{"profile_linearity_r2", by_window.empty() ? 0.0 : by_window.back().second},
           {"profile_linearity_r2_by_window", windows},
           {"profile_linearity_r2_lowest", lowest},
-          {"homogeneous", !by_window.empty() && lowest >= kHomogeneousR2},
+          {"homogeneous", !by_window.empty() && lowest >= calibration::kHomogeneousCellR2},
+          {"homogeneous_r2_threshold", calibration::kHomogeneousCellR2},
           {"homogeneous_rule", fmt::format("R^2 of vx/v_wall against height at least {:g} in every "
                                            "profile window",
-                                           kHomogeneousR2)}};
+                                           calibration::kHomogeneousCellR2)}};
 }
 
 SoilTest simple_shear_result(const Scene& cell, const ContractTables& tables,

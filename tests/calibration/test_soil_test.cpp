@@ -148,3 +148,58 @@ TEST_CASE(
   refused(header + "0,0,100,0.75\n0.001,5,100,0.75\n0.002,6,100,0.75\n",
           "column 'gamma' never reverses: a cyclic shear test reverses at least once");
 }
+
+namespace {
+
+// A simple-shear test as a periodic DEM cell writes it: 41 rows, gamma 0 to 0.4, and profile
+// windows every 2 mm of an 8 mm travel (gamma 0.1, 0.2, 0.3, 0.4) with the given R^2.
+fs::path periodic_cell_test(const std::string& name, const std::vector<double>& r2) {
+  calibration::SoilTest t;
+  t.kind = calibration::SoilTestKind::kSimpleShear;
+  t.boundary = driver::BoundaryKind::kCNL;
+  t.sigma0_kPa = 50.0;
+  t.e0 = 0.6;
+  t.source = "dem:liggghts";
+  for (int i = 0; i <= 40; ++i) {
+    t.control.push_back(0.01 * i);
+    t.tau_kPa.push_back(30.0), t.sigma_n_kPa.push_back(50.0), t.e.push_back(0.6 + 0.001 * i);
+  }
+  nlohmann::json windows = nlohmann::json::array();
+  for (std::size_t k = 0; k < r2.size(); ++k)
+    windows.push_back({{"u_x_mm_window", 2.0 * double(k + 1)}, {"r2", r2[k]}});
+  bool all = true;
+  for (const double v : r2) all = all && v >= 0.9;
+  const nlohmann::json manifest = {
+      {"cell", "periodic"},
+      {"gamma_reached", 0.4},
+      {"cell_scene", {{"resolved", {{"shear", {{"travel_mm", 8.0}}}}}}},
+      {"cell_summary",
+       {{"profile_linearity_r2_by_window", windows},
+        {"homogeneous", all},
+        {"homogeneous_r2_threshold", 0.9}}}};
+  const auto dir = fresh_dir(name);
+  calibration::write_soil_test(t, dir, false, manifest);
+  return dir;
+}
+
+}  // namespace
+
+// A cell that localised is an element only up to its last straight velocity profile: by hand,
+// windows at gamma 0.1 and 0.2 straight, 0.3 not: rows up to gamma 0.2 (21 of 41) are read.
+TEST_CASE("a periodic cell that localised is read up to its last homogeneous window",
+          "[calibration]") {
+  const auto part = calibration::read_soil_test(
+      periodic_cell_test("periodic-localised", {0.98, 0.93, 0.6, 0.95}));
+  CHECK(part.element_until == Approx(0.2));
+  CHECK(part.rows() == 21);
+  CHECK(part.rows_in_file == 41);
+  CHECK(part.control.back() == Approx(0.2));
+  CHECK(part.e.size() == 21);
+  const auto whole =
+      calibration::read_soil_test(periodic_cell_test("periodic-whole", {0.98, 0.93, 0.91, 0.95}));
+  CHECK(whole.element_until == 0.0);
+  CHECK(whole.rows() == 41);
+  CHECK_THROWS_WITH(
+      calibration::read_soil_test(periodic_cell_test("periodic-never", {0.5, 0.93, 0.91, 0.95})),
+      Catch::Contains("localised from its first profile window"));
+}
