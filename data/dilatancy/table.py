@@ -1,6 +1,7 @@
 """Peak friction and peak dilatancy rate d u_n / d u_x of the truth grains sheared three ways, from
 the committed runs (README.md here): the soil cell (no wall) at the density of the truth's specimen
-and at the calibration's dense and loose densities; the interface runs of the truth scene on the
+and at the calibration's dense and loose densities, between rough plates and fully periodic (issue
+38: no plate, so no band beside one); the interface runs of the truth scene on the
 flat, R_n 0.25 and R_n 0.5 walls; and vw3d with the calibrated set, started at each soil cell's own
 void ratio. In simple shear d u_n / d u_x = d eps_n / d gamma, and at an interface whose dilation
 happens in a band of thickness d_s it is d eps_n / d gamma of the band: the rate compares the three
@@ -13,7 +14,10 @@ import os
 import subprocess
 import tempfile
 
+import json
+
 import numpy as np
+from scipy import stats
 
 WINDOW_MM = 1.0  # travel over which the rate is a least-squares slope (both kinds of run)
 PARAMS = "data/params/truth_grains_epsd2.toml"
@@ -51,6 +55,24 @@ def model_run(e0, sigma_kPa=50.0, gamma=0.5):
     return h["tau_over_sigma_n"].max(), rate.max()
 
 
+def homogeneous_until(manifest_path):
+    """A periodic cell's gamma at the end of its last homogeneous profile window (R^2 of its velocity
+    profile >= the threshold), "all" when every window was; "" for a plate cell (no claim)."""
+    m = json.load(open(manifest_path))
+    if m.get("cell") != "periodic":
+        return ""
+    cs = m["cell_summary"]
+    if cs.get("homogeneous"):
+        return "all"
+    per_mm = m["gamma_reached"] / m["cell_scene"]["resolved"]["shear"]["travel_mm"]
+    until = 0.0
+    for w in cs["profile_linearity_r2_by_window"]:
+        if w["r2"] < cs.get("homogeneous_r2_threshold", 0.9):
+            break
+        until = w["u_x_mm_window"] * per_mm
+    return f"{until:.2f}"
+
+
 def soil_rows(pattern):
     out = []
     for f in sorted(glob.glob(pattern)):
@@ -58,7 +80,8 @@ def soil_rows(pattern):
         mu = d["tau_kPa"] / d["sigma_n_kPa"]
         height = d["u_x_mm"][-1] / d["gamma"][-1]
         rate, at = peak_rate(d["u_x_mm"], d["u_n_mm"])
-        out.append((f.split("/")[-3], d["e"][0], mu.max(), rate, at / height, *model_run(d["e"][0])))
+        out.append((f.split("/")[-3], d["e"][0], mu.max(), rate, at / height, *model_run(d["e"][0]),
+                    homogeneous_until(f.replace("timeseries.csv", "manifest.json"))))
     return out
 
 
@@ -72,22 +95,33 @@ def interface_rows(pattern):
 
 
 def mean_sd(xs):
+    """Mean +- the half-width of its 95 % Student-t interval (n - 1 degrees of freedom)."""
     xs = np.array(xs, dtype=float)
-    return f"{xs.mean():.3f} +- {xs.std(ddof=1):.3f}" if len(xs) > 1 else f"{xs[0]:.3f}"
+    if len(xs) < 2:
+        return f"{xs[0]:.3f}"
+    half = stats.t.ppf(0.975, len(xs) - 1) * xs.std(ddof=1) / math.sqrt(len(xs))
+    return f"{xs.mean():.3f} +- {half:.3f}"
 
 
 def main():
     print("## Soil cell, CNL 50 kPa (12 x 6 x 12 d50, I 3e-4), against vw3d from the cell's own e0\n")
-    print("| density | seed | e0 | DEM peak friction | DEM peak rate | at gamma | vw3d peak friction | vw3d peak rate |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("Periodic cells: homogeneous until gamma (the end of the last profile window whose velocity profile is")
+    print("straight, R^2 >= 0.9; \"all\": every window). The peak rate's gamma lies before it where the peak is an element's.\n")
+    print("| cell | density | seed | e0 | DEM peak friction | DEM peak rate | at gamma | homogeneous until | vw3d peak friction | vw3d peak rate |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     groups = {}
-    for name, pattern in [("as-scene", "data/dilatancy/seed*/simpleshear-CNL-as-scene-50/timeseries.csv"),
-                          ("dense", "data/calibration/truth_grains_epsd2/seed*/simpleshear-CNL-dense-50/timeseries.csv"),
-                          ("loose", "data/calibration/truth_grains_epsd2/seed*/simpleshear-CNL-loose-50/timeseries.csv")]:
+    calib = "data/calibration/truth_grains_epsd2{}/seed*/simpleshear-CNL-{}-50/timeseries.csv"
+    for cell, name, pattern in [
+            ("plates", "as-scene", "data/dilatancy/seed*/simpleshear-CNL-as-scene-50/timeseries.csv"),
+            ("plates", "dense", calib.format("", "dense")),
+            ("plates", "loose", calib.format("", "loose")),
+            ("periodic", "as-scene", "data/dilatancy/periodic/seed*/simpleshear-CNL-as-scene-50/timeseries.csv"),
+            ("periodic", "dense", calib.format("_periodic", "dense")),
+            ("periodic", "loose", calib.format("_periodic", "loose"))]:
         rows = soil_rows(pattern)
-        groups[name] = rows
-        for seed, e0, mu, rate, g, mmu, mrate in rows:
-            print(f"| {name} | {seed} | {e0:.3f} | {mu:.3f} | {rate:.3f} | {g:.3f} | {mmu:.3f} | {mrate:.3f} |")
+        groups[(cell, name)] = rows
+        for seed, e0, mu, rate, g, mmu, mrate, until in rows:
+            print(f"| {cell} | {name} | {seed} | {e0:.3f} | {mu:.3f} | {rate:.3f} | {g:.3f} | {until} | {mmu:.3f} | {mrate:.3f} |")
     print("\n## Interface runs of the truth scene, CNL 50 kPa\n")
     print("| wall | run | e_band at start | e_specimen at start | peak friction | peak rate | at u_x (mm) |")
     print("|---|---|---|---|---|---|---|")
@@ -99,12 +133,12 @@ def main():
         iface[wall] = rows
         for run, eb, es, mu, rate, at in rows:
             print(f"| {wall} | {run} | {eb:.3f} | {es:.3f} | {mu:.3f} | {rate:.3f} | {at:.2f} |")
-    print("\n## Means over the seeds\n")
+    print("\n## Means over the seeds (95 % t-intervals)\n")
     print("| what | e at start | peak friction | peak dilatancy rate | vw3d from the same e0: peak friction, rate |")
     print("|---|---|---|---|---|")
-    for name, rows in groups.items():
+    for (cell, name), rows in groups.items():
         if rows:
-            print(f"| soil cell, {name} | {mean_sd([r[1] for r in rows])} | {mean_sd([r[2] for r in rows])} | "
+            print(f"| soil cell ({cell}), {name} | {mean_sd([r[1] for r in rows])} | {mean_sd([r[2] for r in rows])} | "
                   f"{mean_sd([r[3] for r in rows])} | {mean_sd([r[5] for r in rows])}, {mean_sd([r[6] for r in rows])} |")
     for wall, rows in iface.items():
         if rows:

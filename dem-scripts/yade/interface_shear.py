@@ -308,17 +308,44 @@ def report_cost():
 
 # --- stage 1 ----------------------------------------------------------------------------------
 
-def approach():
-    """Windows until the plate bears on the grains (sigma above approach_sigma), at most
+def approach(sigma, what="the plate did not reach the grains"):
+    """Windows until the grains bear the load (sigma() above approach_sigma), at most
     approach_windows, apart from the acceptance windows: as the LIGGGHTS template does."""
     for a in range(1, P["approach_windows"] + 1):
         run(P["window_steps"])
-        s = plate_force() / P["area"]
+        s = sigma()
         say("IWB_APPROACH %d sigma_Pa %.8g" % (a, s))
         if s > P["approach_sigma"]:
             return
     report_cost()
-    fail("servo did not converge: the plate did not reach the grains in %d windows" % P["approach_windows"])
+    fail("servo did not converge: %s in %d windows" % (what, P["approach_windows"]))
+
+
+def accept(sigma, height, before_save=lambda: None):
+    """Windows until windows_required consecutive ones have sigma() within tolerance, a height()
+    that has stopped and a small kinetic energy (DEM.md); then the specimen is saved."""
+    good, zprev = 0, height()
+    for w in range(1, P["max_windows"] + 1):
+        run(P["window_steps"])
+        s, zp = sigma(), height()
+        dz, ke = abs(zp - zprev), kinetic_energy()
+        ok = abs(s - P["sigma_n0"]) < P["sigma_tol"] * P["sigma_n0"] and dz < P["plate_tol"] and ke < P["ke_tol"]
+        good = good + 1 if ok else 0
+        say("IWB_WINDOW %d sigma_Pa %.8g dz_m %.6g ke_J %.6g good %d" % (w, s, dz, ke, good))
+        if good >= P["windows_required"]:
+            before_save()
+            O.save("consolidated.yade.gz")
+            report_cost()
+            report_liquid_bridges()
+            say("IWB_STAGE_DONE consolidate zplate_m %.10g sigma_Pa %.8g" % (zp, s))
+            return
+        zprev = zp
+    report_cost()
+    fail("servo did not converge: consolidation not accepted after %d windows" % P["max_windows"])
+
+
+def plate_sigma():
+    return plate_force() / P["area"]
 
 
 def consolidate():
@@ -329,25 +356,8 @@ def consolidate():
     O.tags["iwb_plate_ref_z"] = repr(REF["plate_z"])
     run(P["settle_steps"])  # settle under gravity with the plate held
     SERVO["on"] = True
-    approach()
-    good, zprev = 0, zplate()
-    for w in range(1, P["max_windows"] + 1):
-        run(P["window_steps"])
-        s = plate_force() / P["area"]
-        zp = zplate()
-        dz, ke = abs(zp - zprev), kinetic_energy()
-        ok = abs(s - P["sigma_n0"]) < P["sigma_tol"] * P["sigma_n0"] and dz < P["plate_tol"] and ke < P["ke_tol"]
-        good = good + 1 if ok else 0
-        say("IWB_WINDOW %d sigma_Pa %.8g dz_m %.6g ke_J %.6g good %d" % (w, s, dz, ke, good))
-        if good >= P["windows_required"]:
-            O.save("consolidated.yade.gz")
-            report_cost()
-            report_liquid_bridges()
-            say("IWB_STAGE_DONE consolidate zplate_m %.10g sigma_Pa %.8g" % (zp, s))
-            return
-        zprev = zp
-    report_cost()
-    fail("servo did not converge: consolidation not accepted after %d windows" % P["max_windows"])
+    approach(plate_sigma)
+    accept(plate_sigma, zplate)
 
 
 # --- stage 2 ----------------------------------------------------------------------------------
@@ -638,32 +648,13 @@ def periodic_consolidate():
         fail("particle count short: %d of %d placed in the periodic cell" % (len(grains), P["n_particles"]))
     O.engines = engines(facets=False, gravity=0.0, control="periodic_control()")
     PERIODIC["gain"] = pc["gain_consolidation"]
-    for a in range(1, P["approach_windows"] + 1):
-        run(P["window_steps"])
-        s = cell_stresses()[0]
-        say("IWB_APPROACH %d sigma_Pa %.8g" % (a, s))
-        if s > P["approach_sigma"]:
-            break
-    else:
-        report_cost()
-        fail("servo did not converge: the cloud did not reach %g Pa in %d windows" % (P["approach_sigma"], P["approach_windows"]))
-    good, zprev = 0, cell_height()
-    for w in range(1, P["max_windows"] + 1):
-        run(P["window_steps"])
-        s, zp, ke = cell_stresses()[0], cell_height(), kinetic_energy()
-        dz = abs(zp - zprev)
-        ok = abs(s - P["sigma_n0"]) < P["sigma_tol"] * P["sigma_n0"] and dz < P["plate_tol"] and ke < P["ke_tol"]
-        good = good + 1 if ok else 0
-        say("IWB_WINDOW %d sigma_Pa %.8g dz_m %.6g ke_J %.6g good %d" % (w, s, dz, ke, good))
-        if good >= P["windows_required"]:
-            O.cell.velGrad = Matrix3.Zero
-            O.save("consolidated.yade.gz")
-            report_cost()
-            say("IWB_STAGE_DONE consolidate zplate_m %.10g sigma_Pa %.8g" % (zp, s))
-            return
-        zprev = zp
-    report_cost()
-    fail("servo did not converge: consolidation not accepted after %d windows" % P["max_windows"])
+    sigma_zz = lambda: cell_stresses()[0]
+    approach(sigma_zz, "the cloud did not reach %g Pa" % P["approach_sigma"])
+
+    def stop_the_cell():
+        O.cell.velGrad = Matrix3.Zero
+
+    accept(sigma_zz, cell_height, stop_the_cell)
 
 
 class PeriodicOutputs:
