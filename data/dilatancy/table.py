@@ -56,21 +56,21 @@ def model_run(e0, sigma_kPa=50.0, gamma=0.5):
 
 
 def homogeneous_until(manifest_path):
-    """A periodic cell's gamma at the end of its last homogeneous profile window (R^2 of its velocity
-    profile >= the threshold), "all" when every window was; "" for a plate cell (no claim)."""
+    """A periodic cell's gamma at the end of the last profile window before its velocity profile
+    bends (R^2 below the threshold) in two windows running or in the last one, as
+    src/calibration/soil_test.cpp reads it; "all" when it never does; "" for a plate cell (no
+    claim)."""
     m = json.load(open(manifest_path))
     if m.get("cell") != "periodic":
         return ""
     cs = m["cell_summary"]
-    if cs.get("homogeneous"):
-        return "all"
+    r2 = [w["r2"] for w in cs["profile_linearity_r2_by_window"]] + [0.0]
+    bent = [v < cs.get("homogeneous_r2_threshold", 0.9) for v in r2]
     per_mm = m["gamma_reached"] / m["cell_scene"]["resolved"]["shear"]["travel_mm"]
-    until = 0.0
-    for w in cs["profile_linearity_r2_by_window"]:
-        if w["r2"] < cs.get("homogeneous_r2_threshold", 0.9):
-            break
-        until = w["u_x_mm_window"] * per_mm
-    return f"{until:.2f}"
+    for k in range(len(r2) - 1):
+        if bent[k] and bent[k + 1]:
+            return f"{cs['profile_linearity_r2_by_window'][k - 1]['u_x_mm_window'] * per_mm:.2f}" if k else "none"
+    return "all"
 
 
 def soil_rows(pattern):

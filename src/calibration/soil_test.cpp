@@ -197,12 +197,13 @@ double element_until_gamma(const nlohmann::json& m) {
   const double travel = m.at("cell_scene").at("resolved").at("shear").at("travel_mm").get<double>();
   const double per_mm = m.at("gamma_reached").get<double>() / travel;
   const double threshold = summary.value("homogeneous_r2_threshold", kHomogeneousCellR2);
-  double until = 0.0;
-  for (const auto& w : windows) {
-    if (w.at("r2").get<double>() < threshold) break;
-    until = w.at("u_x_mm_window").get<double>() * per_mm;
-  }
-  return until > 0.0 ? until : -1.0;  // -1: not homogeneous even in its first window
+  const auto bent = [&](std::size_t k) {
+    return k >= windows.size() || windows[k].at("r2").get<double>() < threshold;
+  };
+  for (std::size_t k = 0; k < windows.size(); ++k)
+    if (bent(k) && bent(k + 1))  // localised: not straight again (a lone bent profile is noise)
+      return k == 0 ? -1.0 : windows[k - 1].at("u_x_mm_window").get<double>() * per_mm;
+  return 0.0;
 }
 
 SoilTest read_soil_test(const fs::path& dir) {

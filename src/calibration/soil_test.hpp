@@ -79,10 +79,11 @@ SoilTest read_soil_test(const std::filesystem::path& dir);
 // (vx/v_wall against height) is at least this in a profile window (dem/soil_cell.cpp).
 inline constexpr double kHomogeneousCellR2 = 0.9;
 
-// The gamma up to which a periodic cell sheared homogeneously (every profile window up to it with
-// R^2 >= the manifest's homogeneous_r2_threshold), 0 when every window was (or the manifest is not
-// a periodic cell's simple shear), -1 when not even the first was. Windows are named by their
-// travel (mm), turned into gamma by the cell's gamma_reached over its travel.
+// The gamma up to which a periodic cell sheared homogeneously: the end of the last profile window
+// before its velocity profile bends (R^2 below the manifest's homogeneous_r2_threshold) in two
+// windows running, or in the last one; a lone bent window between straight ones is taken for
+// noise. 0 when it never bends so (or the manifest is not a periodic cell's simple shear), -1 when
+// it does from the first window.
 double element_until_gamma(const nlohmann::json& manifest);
 
 inline constexpr std::size_t kMinimumRows = 3;

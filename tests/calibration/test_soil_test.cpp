@@ -185,21 +185,27 @@ fs::path periodic_cell_test(const std::string& name, const std::vector<double>& 
 }  // namespace
 
 // A cell that localised is an element only up to its last straight velocity profile: by hand,
-// windows at gamma 0.1 and 0.2 straight, 0.3 not: rows up to gamma 0.2 (21 of 41) are read.
+// windows at gamma 0.1 and 0.2 straight, 0.3 and 0.4 not: rows up to gamma 0.2 (21 of 41) are read.
+// A lone bent profile between straight ones is noise; a bent last one is not.
 TEST_CASE("a periodic cell that localised is read up to its last homogeneous window",
           "[calibration]") {
-  const auto part = calibration::read_soil_test(
-      periodic_cell_test("periodic-localised", {0.98, 0.93, 0.6, 0.95}));
+  const auto read = [](const std::string& name, const std::vector<double>& r2) {
+    return calibration::read_soil_test(periodic_cell_test(name, r2));
+  };
+  const auto part = read("periodic-localised", {0.98, 0.93, 0.6, 0.5});
   CHECK(part.element_until == Approx(0.2));
   CHECK(part.rows() == 21);
   CHECK(part.rows_in_file == 41);
   CHECK(part.control.back() == Approx(0.2));
   CHECK(part.e.size() == 21);
-  const auto whole =
-      calibration::read_soil_test(periodic_cell_test("periodic-whole", {0.98, 0.93, 0.91, 0.95}));
-  CHECK(whole.element_until == 0.0);
-  CHECK(whole.rows() == 41);
-  CHECK_THROWS_WITH(
-      calibration::read_soil_test(periodic_cell_test("periodic-never", {0.5, 0.93, 0.91, 0.95})),
-      Catch::Contains("localised from its first profile window"));
+  CHECK(read("periodic-bent-last", {0.98, 0.93, 0.91, 0.5}).element_until == Approx(0.3));
+  for (const auto& r2 :
+       {std::vector<double>{0.98, 0.93, 0.91, 0.95}, std::vector<double>{0.98, 0.6, 0.91, 0.95},
+        std::vector<double>{0.89, 0.93, 0.91, 0.95}}) {
+    const auto whole = read("periodic-whole", r2);
+    CHECK(whole.element_until == 0.0);
+    CHECK(whole.rows() == 41);
+  }
+  CHECK_THROWS_WITH(read("periodic-never", {0.5, 0.6, 0.91, 0.95}),
+                    Catch::Contains("localised from its first profile window"));
 }
