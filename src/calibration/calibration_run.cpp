@@ -32,9 +32,16 @@ CalibrationOptions options_of(const CalibrationRequest& q) {
   return opt;
 }
 
-std::vector<SoilTest> read_soil_tests(const std::vector<std::string>& dirs) {
+// A test whose cell localised before it was an element is left out with a note (`left_out`);
+// every other defect refuses the calibration.
+std::vector<SoilTest> read_soil_tests(const std::vector<std::string>& dirs,
+                                      std::vector<std::string>& left_out) {
   std::vector<SoilTest> out;
-  for (const auto& dir : dirs) out.push_back(read_soil_test(dir));
+  for (const auto& dir : dirs) try {
+      out.push_back(read_soil_test(dir));
+    } catch (const NotAnElement& e) {
+      left_out.push_back(fmt::format("{}; left out", e.what()));
+    }
   return out;
 }
 
@@ -85,8 +92,12 @@ CalibrationRun run_calibration(const CalibrationRequest& q,
   std::optional<std::pair<ObjectiveGroup, ObjectiveGroup>> pair;
   if (!q.pareto.empty()) pair = parse_pareto_groups(q.pareto);
   CalibrationRun run;
-  run.tests = read_soil_tests(q.runs);
-  const auto held_out = read_soil_tests(q.held_out);  // now: a bad one is refused before the fit
+  std::vector<std::string> left_out;
+  run.tests = read_soil_tests(q.runs, left_out);
+  // now: a bad one is refused before the fit
+  const auto held_out = read_soil_tests(q.held_out, left_out);
+  if (run.tests.empty())
+    throw InputError(fmt::format("no soil test left to fit: {}", fmt::join(left_out, "; ")));
   measure_seed_scatter(run.tests);
   if (pair) run.front = trace_front(run.tests, opt, pair->first, pair->second, q.points, progress);
   run.result = run.front ? run.front->given().result : calibrate(run.tests, opt);
@@ -103,6 +114,7 @@ CalibrationRun run_calibration(const CalibrationRequest& q,
   };
   note_localised(run.tests);
   note_localised(held_out);
+  run.result.notes.insert(run.result.notes.end(), left_out.begin(), left_out.end());
   return run;
 }
 

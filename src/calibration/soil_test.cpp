@@ -217,7 +217,7 @@ SoilTest read_soil_test(const fs::path& dir) {
   std::size_t keep = 0;
   while (keep < t.rows() && t.control[keep] <= until) ++keep;
   if (until < 0.0 || keep < kMinimumRows)
-    throw InputError(fmt::format(
+    throw NotAnElement(fmt::format(
         "{}: the periodic cell's shear localised {}: fewer than {} rows of an element to read",
         dir.string(),
         until < 0.0 ? "from its first profile window" : fmt::format("by gamma {:.3g}", until),

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/errors.hpp"
 #include "driver/control.hpp"
 
 namespace iwb::calibration {
@@ -72,8 +73,16 @@ struct SoilTest {
 // sigma_v must increase to its maximum and then, if unloaded, decrease; cyclic gamma must change
 // from row to row and reverse at least once).
 // A periodic DEM cell whose shear localised is read up to the end of its last homogeneous profile
-// window only (element_until; InputError if that leaves fewer than kMinimumRows).
+// window only (element_until); one that localised from its first window, or too early to leave
+// kMinimumRows, has no element to read: NotAnElement.
 SoilTest read_soil_test(const std::filesystem::path& dir);
+
+// A well-formed test that is no element test: its cell localised before it had rows to give. A
+// calibration of many tests leaves it out and says so (calibration_run.hpp).
+class NotAnElement : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 // A DEM cell sheared homogeneously where the R^2 of a straight line through its velocity profile
 // (vx/v_wall against height) is at least this in a profile window (dem/soil_cell.cpp).
