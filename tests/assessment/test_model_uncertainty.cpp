@@ -60,7 +60,7 @@ TEST_CASE("a reference that hardens to its end has hardening and residual points
 }
 
 TEST_CASE(
-    "a model that stops early counts as 0 beyond its end; a model that does not dilate misses by "
+    "a model that stops early counts as 0 beyond its end, a model that does not dilate misses by "
     "1/1.645",
     "[assessment]") {
   auto stopped = peaked();

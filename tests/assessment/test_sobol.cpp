@@ -39,7 +39,7 @@ TEST_CASE("Jansen's total indices of the Ishigami function converge to their clo
 }
 
 TEST_CASE(
-    "an additive function's total indices are its variance shares; a parameter it ignores gets 0",
+    "an additive function's total indices are its variance shares, a parameter it ignores gets 0",
     "[assessment]") {
   std::vector<Distribution> p{{"a", Distribution::Kind::kNormal, 10.0, 0.1},
                               {"b", Distribution::Kind::kLognormal, 5.0, 0.2},

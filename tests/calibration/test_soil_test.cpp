@@ -120,7 +120,7 @@ TEST_CASE("malformed soil-test directories are refused naming file, line and col
 }
 
 TEST_CASE(
-    "cyclic shear reads back with its reversals; a repeated or never-reversing gamma is "
+    "cyclic shear reads back with its reversals, a repeated or never-reversing gamma is "
     "refused",
     "[calibration][cyclic]") {
   calibration::SyntheticSpec s;

@@ -104,8 +104,9 @@ TEST_CASE("a model whose sigma_n falls faster breaks the degradation where the m
   CHECK(find(v, "u_n_end_mm", "cycle 3").verdict == "holds");  // untouched
 }
 
-TEST_CASE("a replay that stopped in cycle 2 is not reached beyond; the BC decides what is judged",
-          "[comparison][cyclic]") {
+TEST_CASE(
+    "a replay that stopped in cycle 2 is not reached beyond, and the BC decides what is judged",
+    "[comparison][cyclic]") {
   const auto d = cyclic_run(driver::BoundaryKind::kCNL);
   auto r = replay_of(d);
   const std::size_t keep = std::size_t(6.0 * kA / kRow);  // a cycle and a half

@@ -28,7 +28,7 @@ comparison::SeedScatter cell_of(const std::vector<double>& values) {
 
 }  // namespace
 
-TEST_CASE("cells that scatter alike pool their SD; the verdict's interval uses its dof",
+TEST_CASE("cells that scatter alike pool their SD, and the verdict's interval uses its dof",
           "[comparison]") {
   std::vector<comparison::SeedScatter> cells = {
       cell_of({1.00, 1.05, 0.93}), cell_of({0.50, 0.56, 0.47, 0.52}), cell_of({2.1, 1.8, 2.4}),

@@ -113,7 +113,7 @@ TEST_CASE("a run's last row short of its end by less than a row spacing still en
   CHECK_FALSE(q.post_cyclic.has_value());
 }
 
-TEST_CASE("cycles the rows do not reach are left out; a path that is not cyclic is refused",
+TEST_CASE("cycles the rows do not reach are left out, and a path that is not cyclic is refused",
           "[cycles]") {
   auto p = loop();
   keep_rows(p, std::size_t(6.0 * kA / kRowTravel));  // one and a half cycles

@@ -165,7 +165,7 @@ void check_homogeneous(const PeriodicRun& r) {
 
 }  // namespace
 
-TEST_CASE("periodic cell: CV holds the volume, CNL the normal stress; both shear homogeneously",
+TEST_CASE("periodic cell: CV holds the volume, CNL the normal stress, and both shear homogeneously",
           "[dem][liggghts][periodic]") {
   const auto cv = run_periodic(driver::BoundaryKind::kCV);
   const auto cnl = run_periodic(driver::BoundaryKind::kCNL);
@@ -187,8 +187,10 @@ TEST_CASE("periodic cell in YADE: CNL holds the normal stress and the shear is h
   CHECK(cnl.test.e.back() > cnl.test.e0 + 0.01);
 }
 
-TEST_CASE("periodic cell: an oedometer is refused before anything is written; no wall, no plate",
-          "[dem][periodic]") {
+TEST_CASE(
+    "periodic cell: an oedometer is refused before anything is written, and the cell has no wall "
+    "or plate",
+    "[dem][periodic]") {
   const std::string scene = "data/scenes/truth.toml";
   const auto text = io::read_file(scene);
   dem::SoilCellSpec c;

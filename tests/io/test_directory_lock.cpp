@@ -71,7 +71,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "a lock left by a process that died is taken over and reported as stale; a released one is "
+    "a lock left by a process that died is taken over and reported as stale, a released one is "
     "gone",
     "[io][lock]") {
   const fs::path dir = fresh_dir("stale_lock");

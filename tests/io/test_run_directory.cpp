@@ -9,7 +9,7 @@
 using namespace iwb;
 namespace fs = std::filesystem;
 
-TEST_CASE("a forced run directory is emptied; an unforced one is refused; a foreign one is kept",
+TEST_CASE("a forced run directory is emptied, an unforced one is refused, a foreign one is kept",
           "[io]") {
   const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / "io" / "replaced_run";
   fs::remove_all(dir);

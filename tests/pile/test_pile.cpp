@@ -76,7 +76,7 @@ TEST_CASE("pile: a linear t-z pile has the closed-form head stiffness, convergin
 }
 
 TEST_CASE(
-    "pile: a rigid-plastic shaft carries pi D tan(phi) K0 gamma' L^2 / 2; head = shaft + base at "
+    "pile: a rigid-plastic shaft carries pi D tan(phi) K0 gamma' L^2 / 2, head = shaft + base at "
     "every step",
     "[pile]") {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "pile" / "plastic";

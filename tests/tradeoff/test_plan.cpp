@@ -143,7 +143,7 @@ TEST_CASE("plan: the simplest model that meets the tolerances, and why the simpl
 }
 
 TEST_CASE(
-    "plan: a model calibrated from soil tests is tried with each calibration given; with none "
+    "plan: a model calibrated from soil tests is tried with each calibration given, with none "
     "meeting the tolerances, the closest and by how much",
     "[tradeoff]") {
   // mc has no soil-test calibration (the plan fits its material to the runs): one candidate;
@@ -173,7 +173,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "plan: a candidate's global uncertainty; the model that cannot dilate fails the dilation rate",
+    "plan: a candidate's global uncertainty, the model that cannot dilate fails the dilation rate",
     "[tradeoff]") {
   // a reference made by Mohr-Coulomb (phi_i 30, psi 8): Mohr-Coulomb calibrated to it misses
   // nothing and its parameters, pinned down by the fit, spread it little; Clough & Duncan has no

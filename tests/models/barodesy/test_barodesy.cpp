@@ -46,7 +46,7 @@ double isotropic_slope(const models::BarodesyParameters& par, double p, double s
 }  // namespace
 
 TEST_CASE(
-    "barodesy: c2 = -3 (1 + sqrt2) / 2 for K0 = 1 - sin phi_c (eq. 8.11 with K_c - K_0); c1 puts "
+    "barodesy: c2 = -3 (1 + sqrt2) / 2 for K0 = 1 - sin phi_c (eq. 8.11 with K_c - K_0), c1 puts "
     "K_c at m = 0",
     "[models][barodesy]") {
   // with Jaky's K0, K0 (1 - K_c) / (K_c (1 - K0)) = 2 for every phi: c2 does not depend on phi_c
@@ -103,7 +103,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "barodesy: at the critical state (delta = 0, e = e_c, T^0 = R^0) the stress rate vanishes; "
+    "barodesy: at the critical state (delta = 0, e = e_c, T^0 = R^0) the stress rate vanishes, "
     "sigma_3/sigma_1 = K_c",
     "[models][barodesy]") {
   for (const auto& p : {london(), kaolin()}) {

@@ -78,8 +78,9 @@ TEST_CASE("hcc: oedometric loading ends on the normal compression line, slope la
   CHECK(model->diagnostics(b)[2].value == Approx(1.0).epsilon(1e-4));
 }
 
-TEST_CASE("hcc: the isotropic NCL passes through N at 1 kPa; on it OCR = 1 (eq. 6.7, ERRATA 15)",
-          "[models][hcc]") {
+TEST_CASE(
+    "hcc: the isotropic NCL passes through N at 1 kPa, and on it OCR = 1 (eq. 6.7, ERRATA 15)",
+    "[models][hcc]") {
   const auto c = constants();
   for (double p : {1.0, 50.0, 800.0}) {
     const auto d = models::HypoplasticCamClayLaw::diagnostics({3.0 * p, p, 0.0}, e_on_ncl(p), c);

@@ -61,7 +61,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "lashkari: loose under CV loses normal stress; dense under CNS gains it (independent numbers "
+    "lashkari: loose under CV loses normal stress, dense under CNS gains it (independent numbers "
     "at gamma 1)",
     "[models][lashkari]") {
   const auto cv = shear({BoundaryKind::kCV, 0.0}, 0.90, 1.0, 2000);

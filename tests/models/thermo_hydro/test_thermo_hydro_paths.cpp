@@ -67,7 +67,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "hcthm: under CV a higher temperature lowers shear and normal stress; positive n_t or negative "
+    "hcthm: under CV a higher temperature lowers shear and normal stress, positive n_t or negative "
     "l_t invert it "
     "(seed 6.5.1, 6.5.2)",
     "[models][thermo_hydro]") {
@@ -131,8 +131,9 @@ TEST_CASE(
   for (const auto& c : r.cycles) CHECK(c.eps_n_end - c.eps_n_start < -1e-4);
 }
 
-TEST_CASE("hcthm: at T0 and s = 0 it runs as hc; hcthm and hcthm3d agree when heated and sheared",
-          "[models][thermo_hydro]") {
+TEST_CASE(
+    "hcthm: at T0 and s = 0 it runs as hc, and hcthm and hcthm3d agree when heated and sheared",
+    "[models][thermo_hydro]") {
   const auto base = run("hc", "CNL", "sigma_n_kPa = 300\nOCR = 1.0", kShear);
   const auto thm = run("hcthm", "CNL", "sigma_n_kPa = 300\nOCR = 1.0", kShear);
   CHECK(thm.stress.tau_x == Approx(base.stress.tau_x).epsilon(1e-12));
