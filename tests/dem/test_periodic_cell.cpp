@@ -87,6 +87,9 @@ TEST_CASE(
 
 namespace {
 
+// Shear to this gamma: past the dense specimen's peak (gamma ~0.05), 12 s a run in LIGGGHTS.
+constexpr double kGamma = 0.1;
+
 struct PeriodicRun {
   calibration::SoilTest test;
   nlohmann::json manifest;
@@ -101,7 +104,7 @@ PeriodicRun run_periodic(driver::BoundaryKind bc, const std::string& engine = "l
   c.boundary = bc;
   c.density = dem::SoilDensity::kDense;
   c.height_d50 = 6.0;  // ~360 grains
-  c.gamma = 0.2;
+  c.gamma = kGamma;
   c.inertial_number = 1e-3;
   const auto dir =
       fs::path(IWB_TEST_RUNS_DIR) / "dem" / "periodic" / engine / driver::to_string(bc);
@@ -129,6 +132,9 @@ void check_profiles_against_the_box(const PeriodicRun& r, double travel_mm) {
   }
   REQUIRE(windows.size() >= 9);  // ave/spatial fires on multiples of the absolute step
   for (const auto& [u, w] : windows) {
+    // ave/spatial fires on multiples of the absolute step: a first window that ends less than a
+    // window's travel into the shear sampled only part of its span, where tau climbs steeply
+    if (u < 0.99 * travel_mm / 10.0) continue;
     std::array<double, 4> rows{};  // count, sigma_n, tau, porosity
     for (std::size_t k = 0; k < ux.size(); ++k)
       if (ux[k] <= u + 1e-9 && ux[k] >= u - travel_mm / 20.0)
@@ -154,7 +160,7 @@ void check_cnl(const calibration::SoilTest& t) {
 
 void check_homogeneous(const PeriodicRun& r) {
   CHECK(r.manifest["cell"] == "periodic");
-  CHECK(r.test.control.back() >= 0.2 * 0.99);  // the tilt reached gamma
+  CHECK(r.test.control.back() >= kGamma * 0.99);  // the tilt reached gamma
   const auto& summary = r.manifest["cell_summary"];
   for (const auto& w : summary["profile_linearity_r2_by_window"]) CHECK(w["r2"] >= 0.9);
   CHECK(summary["homogeneous"] == true);
