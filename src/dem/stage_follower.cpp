@@ -49,7 +49,7 @@ struct Follower {
     if (w[0] == "IWB_PARTICLES" && w.size() >= 4) particles(std::stol(w[1]), std::stol(w[3]));
     if (w[0] == "IWB_APPROACH" && w.size() >= 4 && ctx.progress)
       ctx.progress(
-          fmt::format("consolidating: the plate approaches the grains, window {}, sigma {:.2f} kPa",
+          fmt::format("consolidating: bringing the grains together, window {}, sigma {:.2f} kPa",
                       w[1], std::stod(w[3]) / 1e3));
     if (w[0] == "IWB_WINDOW" && w.size() >= 10 && ctx.progress)
       ctx.progress(
