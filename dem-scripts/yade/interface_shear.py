@@ -382,27 +382,32 @@ def grain_volumes():
 
 
 class Outputs:
+    PROFILE_HEADER = "# step z_m count vx_m_s solid_fraction s_zz_Pa s_xz_Pa (stresses: compression negative)\n"
+
     def __init__(self):
         self.vol = grain_volumes()
         self.vsolid = sum(self.vol)
         self.ts = open("timeseries.raw", "w")
         self.ts.write("# t_s ux_m zplate_m sigma_wall_Pa tau_wall_Pa sigma_plate_Pa vsolid_m3 vband_m3 coordination atoms ke_J\n")
         self.prof = open("profiles.raw", "w")
-        self.prof.write("# step z_m count vx_m_s solid_fraction s_zz_Pa s_xz_Pa (stresses: compression negative)\n")
+        self.prof.write(self.PROFILE_HEADER)
         self.samples = []
         self.grain_set = set(IDS["grains"])
 
     def coordination(self):
         return coordination(self.grain_set)
 
+    def row(self, t, ux, z, sigma_wall, tau_wall, sigma_plate, vband):
+        self.ts.write("%.9g %.9g %.10g %.8g %.8g %.8g %.8g %.8g %.6g %d %.6g\n" % (
+            t, ux, z, sigma_wall, tau_wall, sigma_plate, self.vsolid, vband,
+            self.coordination(), len(IDS["grains"]), kinetic_energy()))
+
     def timeseries(self, t):
         zlo, zhi = P["band_zlo"] + ZS, P["band_zhi"] + ZS
         vband = sum(v for i, v in zip(IDS["grains"], self.vol) if zlo <= O.bodies[i].state.pos[2] < zhi)
         sw, tw = wall_forces()
         ux = O.bodies[IDS["wall"][0]].state.pos[0] - REF["wall_x"]
-        self.ts.write("%.9g %.9g %.10g %.8g %.8g %.8g %.8g %.8g %.6g %d %.6g\n" % (
-            t, ux, zplate(), sw / P["area"], tw / P["area"], plate_force() / P["area"], self.vsolid, vband,
-            self.coordination(), len(IDS["grains"]), kinetic_energy()))
+        self.row(t, ux, zplate(), sw / P["area"], tw / P["area"], plate_force() / P["area"], vband)
         self.ts.flush()
 
     def sample_profile(self):
@@ -657,28 +662,21 @@ def periodic_consolidate():
     accept(sigma_zz, cell_height, stop_the_cell)
 
 
-class PeriodicOutputs:
-    """timeseries.raw as Outputs writes it; profiles.raw rows "step z_m count vx solid szz tau"
+class PeriodicOutputs(Outputs):
+    """timeseries.raw as Outputs writes it (the cell's height for the plate, its stresses for both
+    boundaries, the whole cell for the band); profiles.raw rows "step z_m count vx solid szz tau"
     per bin of the cell's height (z wrapped into the cell, vx less one wall speed per period
     wrapped, stresses per bin volume, compression and shear along the tilt positive)."""
+    PROFILE_HEADER = "# step z_m count vx_m_s solid_fraction s_zz_Pa tau_zx_Pa (compression and shear along the tilt positive)\n"
 
     def __init__(self, z0):
-        self.vol = grain_volumes()
-        self.vsolid = sum(self.vol)
+        super().__init__()
         self.area = P["Lx"] * P["Ly"]
         self.bins = max(1, int(round(z0 / P["periodic"]["bin_dz"])))
-        self.ts = open("timeseries.raw", "w")
-        self.ts.write("# t_s ux_m zplate_m sigma_wall_Pa tau_wall_Pa sigma_plate_Pa vsolid_m3 vband_m3 coordination atoms ke_J\n")
-        self.prof = open("profiles.raw", "w")
-        self.prof.write("# step z_m count vx_m_s solid_fraction s_zz_Pa tau_zx_Pa (compression and shear along the tilt positive)\n")
-        self.samples = []
-        self.grain_set = set(IDS["grains"])
 
     def timeseries(self, t):
         s, tau = cell_stresses()
-        self.ts.write("%.9g %.9g %.10g %.8g %.8g %.8g %.8g %.8g %.6g %d %.6g\n" % (
-            t, wall_displacement(t), cell_height(), s, tau, s, self.vsolid, self.vsolid,
-            coordination(self.grain_set), len(IDS["grains"]), kinetic_energy()))
+        self.row(t, wall_displacement(t), cell_height(), s, tau, s, self.vsolid)
         self.ts.flush()
 
     def sample_profile(self):
