@@ -37,6 +37,9 @@ io::CsvTable timeseries_table(const Scene& s, const Numerics& n, const fs::path&
                "e_specimen", "e_band", "coordination", "sigma_plate_kPa", "particles"};
   for (const auto& r : numeric_lines(raw)) {
     if (r.size() < 11) continue;
+    // A time that goes back is a resumed attempt's (liggghts/shear_checkpoint.hpp): it supersedes
+    // the rows the stopped attempt wrote from that time on.
+    while (!t.rows.empty() && t.rows.back()[0] >= r[0]) t.rows.pop_back();
     const double height = (r[2] - s.plate.mean_height_m()) - s.wall.mean_height_m();
     t.rows.push_back({r[0], r[1] * 1e3, (r[2] - z0) * 1e3, r[3] / 1e3, r[4] / 1e3,
                       area * height / r[6] - 1.0, area * (n.band_zhi - n.band_zlo) / r[7] - 1.0,

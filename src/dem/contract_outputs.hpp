@@ -18,7 +18,8 @@ namespace iwb::dem {
 std::vector<std::vector<double>> numeric_lines(const std::filesystem::path& path);
 
 // timeseries.raw columns: t ux zplate sigma_wall tau_wall sigma_plate vsolid vband coordination
-// atoms ke (SI). z0 is the plate height when shear starts.
+// atoms ke (SI). z0 is the plate height when shear starts. A row whose time is not after the row
+// before replaces the rows from its time on (a resumed attempt's rows after a stopped one's).
 io::CsvTable timeseries_table(const Scene& s, const Numerics& n, const std::filesystem::path& raw,
                               double z0);
 

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "common/subprocess.hpp"
@@ -28,6 +29,8 @@ struct Follower {
   bool done = false;
   EngineCost cost;
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  std::optional<std::pair<double, std::chrono::steady_clock::time_point>> first_progress =
+      std::nullopt;
 
   bool line(const std::string& l) {
     log << l << '\n';
@@ -105,12 +108,15 @@ struct Follower {
                              sigma_Pa / 1e3, f > 0.01 ? t * (1 - f) / f : 0.0));
   }
 
+  // The ETA from the rate since the first progress line: a resumed stage starts part-way.
   void progress(double u, double total) {
     const double f = u / total;
-    const double t =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto now = std::chrono::steady_clock::now();
+    if (!first_progress) first_progress = std::make_pair(f, now);
+    const double advanced = f - first_progress->first;
+    const double t = std::chrono::duration<double>(now - first_progress->second).count();
     ctx.progress(fmt::format("shearing: u_x {:.2f} of {:.2f} mm ({:.0f} %), ETA {:.0f} s", u * 1e3,
-                             total * 1e3, 100 * f, f > 0.01 ? t * (1 - f) / f : 0.0));
+                             total * 1e3, 100 * f, advanced > 0.01 ? t * (1 - f) / advanced : 0.0));
   }
 };
 

@@ -6,10 +6,12 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 
 #include "common/subprocess.hpp"
 #include "common/template.hpp"
 #include "dem/liggghts/liggghts_outputs.hpp"
+#include "dem/liggghts/shear_checkpoint.hpp"
 #include "dem/numerics.hpp"
 #include "dem/shear_start.hpp"
 #include "dem/stage_follower.hpp"
@@ -161,22 +163,28 @@ constexpr int kInsertAttempts = 5000;
 // depth below the plate's teeth when shear starts keep x and y velocity 0 (setforce) and their
 // spin (plain nve does not integrate omega; this build's `set` cannot zero it, so the relaxation's
 // spin stays: the test reads it from the snapshots); z is integrated, so they follow the plate.
-std::string plate_clamp(const Scene& s) {
+// A resumed shear finds the groups in its checkpoint (a restart keeps them) and makes the fixes
+// again: the grains under the plate now are not the ones clamped when shear started.
+std::string plate_clamp(const Scene& s, bool resumed) {
   if (!(s.plate_clamp_m > 0.0)) return "# no clamp under the plate";
-  return fmt::format(
-      "variable zclamp equal ${{z0}}-{}\n"
-      "region clampzone block INF INF INF INF ${{zclamp}} INF units box\n"
-      "group inclamp region clampzone\n"
-      "group clamped intersect inclamp grains\n"
-      "group sheared subtract grains clamped\n"
-      "unfix integr\n"
-      "fix integr sheared nve/sphere\n"
-      "fix integrclamp clamped nve\n"
-      "fix clampxy clamped setforce 0.0 0.0 NULL\n"
-      "velocity clamped set 0.0 0.0 NULL units box\n"
-      "variable nclamped equal count(clamped)\n"
-      "print \"IWB_FACT clamped_grains ${{nclamped}}\"",
-      g(s.plate.height_m + s.plate_clamp_m));
+  const std::string groups =
+      resumed ? "# resumed: the groups clamped and sheared are the checkpoint's\n"
+              : fmt::format(
+                    "variable zclamp equal ${{z0}}-{}\n"
+                    "region clampzone block INF INF INF INF ${{zclamp}} INF units box\n"
+                    "group inclamp region clampzone\n"
+                    "group clamped intersect inclamp grains\n"
+                    "group sheared subtract grains clamped\n",
+                    g(s.plate.height_m + s.plate_clamp_m));
+  return groups + fmt::format(
+                      "unfix integr\n"
+                      "fix integr sheared nve/sphere\n"
+                      "fix integrclamp clamped nve\n"
+                      "fix clampxy clamped setforce 0.0 0.0 NULL\n"
+                      "{}velocity clamped set 0.0 0.0 NULL units box\n"
+                      "variable nclamped equal count(clamped)\n"
+                      "print \"IWB_FACT clamped_grains ${{nclamped}}\"",
+                      resumed ? "# (set when shear started) " : "");
 }
 
 // A row of timeseries.raw (fix print, and the row printed when shear starts) and its title.
@@ -203,14 +211,14 @@ TemplateValues liggghts_values(const Scene& s, const Numerics& n, double z0_cons
   }
   const double F0 = s.boundary.sigma_n_Pa * s.area_m2();
   const int types = glued(s) ? 2 : 1;
-  return {
+  TemplateValues values = {
       {"atom_types", std::to_string(types)},
       {"materials_consolidation", materials(p, s.consolidation.friction, types)},
       {"frictionless_drift", frictionless_drift(s.consolidation.friction)},
       {"materials_test", materials(p, p.friction, types)},
       {"glued_layer", glued_layer(s)},
       {"glued_motion", glued(s) ? glued_motion(s.shear) : "# no glued layer"},
-      {"plate_clamp", plate_clamp(s)},
+      {"plate_clamp", plate_clamp(s, false)},
       {"glued_force", glued(s) ? "compute fglued glued reduce sum fx fz" : "# no glued layer"},
       {"glued_fx", glued(s) ? "+c_fglued[1]" : ""},
       {"glued_fz", glued(s) ? "+c_fglued[2]" : ""},
@@ -271,6 +279,8 @@ TemplateValues liggghts_values(const Scene& s, const Numerics& n, double z0_cons
       {"band_zhi", g(n.band_zhi)},
       {"servo_kp_shear", g(s.servo.kp_shear)},
   };
+  for (auto& [k, v] : shear_entry_values(n, std::nullopt, {})) values[k] = v;
+  return values;
 }
 
 // --- running a stage --------------------------------------------------------------------
@@ -335,13 +345,37 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
   TemplateValues values =
       liggghts_values(s, n, facts.value("/consolidate/zplate_m"_json_pointer, n.plate_z));
   values.insert(extra_.begin(), extra_.end());
-  io::write_atomically(ctx.work_dir / input,
-                       render_template(liggghts_templates().at(input), values, input));
+  const std::string& text = liggghts_templates().at(input);
+  std::optional<ShearStart> resumed;
+  if (stage == "shear") {
+    // the stage a checkpoint belongs to: this input as a fresh attempt renders it, from this
+    // consolidated specimen
+    const std::string basis =
+        render_template(text, values, input) +
+        (fs::exists(ctx.work_dir / "consolidated.restart.checksum.json")
+             ? io::read_file(ctx.work_dir / "consolidated.restart.checksum.json")
+             : std::string());
+    resumed = usable_checkpoint(ctx.work_dir, basis);
+    if (resumed) {
+      prepare_resumed_shear(ctx.work_dir);
+      for (auto& [k, v] : shear_entry_values(n, resumed, ctx.work_dir)) values[k] = v;
+      values["plate_clamp"] = plate_clamp(s, true);
+      if (ctx.progress) ctx.progress("shearing: resumed from the stage's last checkpoint");
+    } else {
+      begin_fresh_shear(ctx.work_dir, basis);
+    }
+  }
+  io::write_atomically(ctx.work_dir / input, render_template(text, values, input));
   const double generation =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   StageResult r = run_followed_stage(liggghts_command(input, ctx.processes), stage, ctx,
                                      read_liggghts_loop_time);
   r.facts["generation_seconds"] = generation;
+  if (resumed) {
+    r.facts["step0"] = resumed->step0;  // the follower saw them too; the record is the source
+    r.facts["z0_m"] = resumed->z0_m;
+    for (const auto& [k, v] : resumed->facts.items()) r.facts[k] = v;
+  }
   return r;
 }
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "dem/contract_outputs.hpp"
+#include "dem/liggghts/shear_checkpoint.hpp"
 #include "dem/snapshots.hpp"
 
 namespace iwb::dem {
@@ -15,7 +16,7 @@ namespace {
 
 // fix ave/spatial blocks: a header "step bins", then per bin: bin, z, count, vx, mean particle
 // volume, mean s_zz*V, mean s_xz*V, number density (stress/atom is compression negative).
-ProfileBlocks liggghts_profile_blocks(const fs::path& raw, const Scene& s, const Numerics& n) {
+ProfileBlocks profile_blocks_of(const fs::path& raw, const Scene& s, const Numerics& n) {
   ProfileBlocks blocks;
   std::ifstream in(raw);
   long step = -1;
@@ -36,6 +37,18 @@ ProfileBlocks liggghts_profile_blocks(const fs::path& raw, const Scene& s, const
   return blocks;
 }
 
+// The files of a resumed stage in the order written (shear_checkpoint.hpp): a block of a step an
+// earlier file has too replaces it (the stopped attempt wrote it past its checkpoint, or half).
+ProfileBlocks liggghts_profile_blocks(const std::vector<fs::path>& files, const Scene& s,
+                                      const Numerics& n) {
+  ProfileBlocks blocks;
+  for (const auto& raw : files) {
+    ProfileBlocks file = profile_blocks_of(raw, s, n);
+    for (auto& [step, bins] : file) blocks[step] = std::move(bins);
+  }
+  return blocks;
+}
+
 }  // namespace
 
 ContractTables assemble_liggghts_outputs(const StageContext& ctx, const nlohmann::json& facts,
@@ -46,7 +59,7 @@ ContractTables assemble_liggghts_outputs(const StageContext& ctx, const nlohmann
   ContractTables out;
   out.timeseries = timeseries_table(s, n, ctx.work_dir / "timeseries.raw", z0);
   out.profiles =
-      profile_table(s, n, liggghts_profile_blocks(ctx.work_dir / "profiles.raw", s, n), step0);
+      profile_table(s, n, liggghts_profile_blocks(shear_profile_files(ctx.work_dir), s, n), step0);
   write_snapshot_series(s, ctx.work_dir / "dumps",
                         {"particles_([0-9]+)\\.vtk", "walls_([0-9]+)\\.vtk"},
                         {Eigen::Vector3d::Zero(), step0, n.dt}, ctx.run_dir / "vtk");
