@@ -54,7 +54,8 @@ void add_dem_run_command(CLI::App& dem, CommandList& commands) {
       "run",
       "Run a scene in a DEM engine and write the run directory of the contract (DEM.md): "
       "manifest.json, timeseries.csv, profiles.csv, vtk/ with .pvd indexes, summary.json. Stages "
-      "(consolidate, shear) are recorded as they finish; --resume continues an interrupted run.");
+      "(consolidate, shear) are recorded as they finish; --resume continues an interrupted run, a "
+      "LIGGGHTS shear stage from its last checkpoint (written every ~1/50 of the stage).");
   dem_run->add_option("scene", o->scene_file, "scene TOML file")->required()->check(input_file());
   dem_run->add_option("--engine", o->engine_name, "DEM engine: liggghts or yade")
       ->capture_default_str();
@@ -65,8 +66,10 @@ void add_dem_run_command(CLI::App& dem, CommandList& commands) {
       ->capture_default_str();
   dem_run->add_option("--out,-o", o->out, "run directory (default runs/<scene>-<engine>)")
       ->check(output_directory());
-  dem_run->add_flag("--resume", o->resume,
-                    "continue an interrupted run of the same scene from its last finished stage");
+  dem_run->add_flag(
+      "--resume", o->resume,
+      "continue an interrupted run of the same scene from its last finished stage (LIGGGHTS: "
+      "a shear stage from its last checkpoint, if this iwb wrote it)");
   dem_run->add_flag("--force", o->force, "replace an earlier run in the same directory");
   dem_run->add_option(
       "--consolidated", o->consolidated,
