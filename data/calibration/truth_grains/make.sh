@@ -53,6 +53,14 @@ CYCLIC_TESTS=(
   "cyclic-CV-0.02|--test cyclicshear --bc CV --density dense --sigma 50 --amplitude 0.02 --cycles 3 --inertial-number 3e-4"
   "cyclic-CNL-0.02|--test cyclicshear --bc CNL --density dense --sigma 50 --amplitude 0.02 --cycles 3 --inertial-number 3e-4"
   "cyclic-CNL-0.01|--test cyclicshear --bc CNL --density dense --sigma 50 --amplitude 0.01 --cycles 3 --inertial-number 3e-4"
+  # Amplitudes of a few R (added 28 Nov): at 0.005 and more the intergranular strain acts over the
+  # first row or two after a reversal, and a fit to CNL tests alone identified none of its five
+  # parameters (../truth_grains_epsd2_igs/README.md). Sheared ten times slower: at I 3e-4 a
+  # quarter cycle of 0.0005 lasts a few shear-wave transits of the cell, and tau lagged the plate
+  # by a quarter of a loop (tau at gamma = 0 after -A: +3.9 kPa at 3e-4, +0.5 at 3e-5, of 4-7 at A).
+  "cyclic-CV-0.0005|--test cyclicshear --bc CV --density dense --sigma 50 --amplitude 0.0005 --cycles 3 --inertial-number 3e-5"
+  "cyclic-CNL-0.0005|--test cyclicshear --bc CNL --density dense --sigma 50 --amplitude 0.0005 --cycles 3 --inertial-number 3e-5"
+  "cyclic-CNL-0.001|--test cyclicshear --bc CNL --density dense --sigma 50 --amplitude 0.001 --cycles 3 --inertial-number 3e-5"
 )
 SHARED=()  # committed tests of another data set that the fit reads too
 case $DESIGNS in
