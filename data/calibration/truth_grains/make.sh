@@ -63,6 +63,7 @@ CYCLIC_TESTS=(
   "cyclic-CNL-0.001|--test cyclicshear --bc CNL --density dense --sigma 50 --amplitude 0.001 --cycles 3 --inertial-number 3e-5"
 )
 SHARED=()  # committed tests of another data set that the fit reads too
+NOT_FITTED=()  # committed designs the fit leaves out (neither fitted nor predicted)
 case $DESIGNS in
   monotonic) TESTS=("${MONOTONIC_TESTS[@]}"); HELD_OUT=simpleshear-CNL-dense-200 ;;
   periodic)
@@ -72,7 +73,11 @@ case $DESIGNS in
     done
     HELD_OUT=simpleshear-CNL-dense-200
     SHARED=(data/calibration/truth_grains_epsd2/seed*/oedometer-*) ;;
-  cyclic) TESTS=("${CYCLIC_TESTS[@]}"); HELD_OUT=cyclic-CNL-0.01 ;;
+  # The CV tests at 0.005 and 0.02 stay out of the intergranular strain's fit: their sigma_n misses
+  # by 17-39 kPa of 50 in every seed alike, the monotonic hypoplastic set's misfit under CV, which
+  # the first fit loaded onto R, m_R and chi (../truth_grains_epsd2_igs/README.md).
+  cyclic) TESTS=("${CYCLIC_TESTS[@]}"); HELD_OUT=cyclic-CNL-0.01
+          NOT_FITTED=(cyclic-CV-0.005 cyclic-CV-0.02) ;;
   *) echo "make.sh: DESIGNS=$DESIGNS: allowed monotonic, cyclic or periodic" >&2; exit 2 ;;
 esac
 # The fit's model and what it holds: vw3d's eight parameters, or (cyclic) the intergranular strain
@@ -87,6 +92,7 @@ calibrate_all() {
   local fit=("${SHARED[@]}") held=()
   for d in "$DEST"/seed*/*/; do
     d=${d%/}
+    [[ " ${NOT_FITTED[*]} " == *" $(basename "$d") "* ]] && continue
     if [ "$(basename "$d")" = "$HELD_OUT" ]; then held+=("$d"); else fit+=("$d"); fi
   done
   "$IWB" calibrate "${fit[@]}" --held-out "${held[@]}" "${FIT[@]}" -o "$DEST/truth_grains.toml" |
