@@ -8,7 +8,7 @@ set datafile missing 'nan'
 
 set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'
 set output 'profile_tau.svg'
-plot 'profile_tau.csv' using 1:2 skip 1 with lines lw 2 title '373.983 kN'
+plot 'profile_tau.csv' using 1:2 skip 1 with lines lw 2 title '369.572 kN'
 set terminal pngcairo size 900,560 font 'sans,10' noenhanced
 set output 'profile_tau.png'
 replot
