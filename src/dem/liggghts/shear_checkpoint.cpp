@@ -3,7 +3,6 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -19,14 +18,9 @@ constexpr const char* kBasisFile = "shear_checkpoint.basis";
 constexpr long kMinCheckpointSteps = 1000;  // a restart per 1000 steps costs < 1 % of them
 constexpr long kCheckpointsPerShear = 50;
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // "key value key value ...": the record the fresh attempt printed when shear started.
 std::optional<ShearStart> read_start_record(const fs::path& file) {
-  std::istringstream in(read_text(file));
+  std::istringstream in(io::read_file(file));
   nlohmann::json facts = nlohmann::json::object();
   std::string key;
   double value = 0.0;
@@ -64,7 +58,7 @@ long checkpoint_every(const Numerics& n) {
 
 std::optional<ShearStart> usable_checkpoint(const fs::path& work, const std::string& basis) {
   if (!fs::exists(work / kShearCheckpoint) || !fs::exists(work / kShearStartRecord) ||
-      !fs::exists(work / kBasisFile) || read_text(work / kBasisFile) != basis)
+      !fs::exists(work / kBasisFile) || io::read_file(work / kBasisFile) != basis)
     return std::nullopt;
   return read_start_record(work / kShearStartRecord);
 }
@@ -91,7 +85,8 @@ void begin_fresh_shear(const fs::path& work, const std::string& basis) {
 
 void prepare_resumed_shear(const fs::path& work) {
   const fs::path raw = work / "timeseries.raw";
-  const std::string text = read_text(raw);
+  if (!fs::exists(raw)) return;
+  const std::string text = io::read_file(raw);
   if (text.empty() || text.back() == '\n') return;
   io::write_atomically(raw, text.substr(0, text.rfind('\n') + 1));
 }
