@@ -1,6 +1,7 @@
 #include "calibration/calibrate.hpp"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
@@ -116,6 +117,27 @@ struct Calibrator {
   std::vector<FactorTie> ties = {};
   bool ties_hold = false;
   const models::ParameterTable* declared = nullptr;  // the fitted table's declaration
+  // Progress (CalibrationOptions::progress): what is being fitted, phase k of n, since when.
+  std::string phase = "start";
+  int phase_index = 0, phases = 1;
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now(),
+                                        reported = started;
+
+  void enter(const std::string& what) {
+    phase = what;
+    ++phase_index;
+  }
+  void report(const Eigen::VectorXd& r) {
+    if (!options.progress) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - reported).count() < options.progress_every_s) return;
+    reported = now;
+    const double rms = r.size() > 0 ? std::sqrt(r.squaredNorm() / double(r.size())) : 0.0;
+    options.progress(fmt::format(
+        "calibrating: {}, phase {} of {}, evaluation {}, RMS {:.4g} scatter units, {:.0f} s", phase,
+        phase_index, phases, evaluations, rms,
+        std::chrono::duration<double>(now - started).count()));
+  }
 
   const BoxEntry& box(const std::string& key) const {
     for (const auto& b : boxes)
@@ -155,7 +177,9 @@ struct Calibrator {
         for (const double x : group) r.push_back(std::sqrt(weights[g]) * x);
       }
     }
-    return Eigen::Map<Eigen::VectorXd>(r.data(), Eigen::Index(r.size()));
+    Eigen::VectorXd out = Eigen::Map<Eigen::VectorXd>(r.data(), Eigen::Index(r.size()));
+    report(out);
+    return out;
   }
 
   models::ParameterValues with(const Keys& keys, const Eigen::VectorXd& x) const {
@@ -270,6 +294,7 @@ void run_stage(Calibrator& c, const RecipeStage& s, const CalibrationOptions& o)
     c.pin(c.current);
     return;
   }
+  c.enter(fmt::format("stage {} ({})", s.label, fmt::join(c.free(s.keys), ", ")));
   const auto r = c.fit(s.keys, which, o.max_evaluations_per_stage, 0.0, o.polish_iterations);
   c.notes.push_back(s.fitted(c.current, which.size(), r));
 }
@@ -327,6 +352,7 @@ JointFit joint_fit(Calibrator& c, const CalibrationOptions& o) {
   for (const auto& b : c.boxes)
     if (!c.is_fixed(b.key)) j.keys.push_back(b.key);
   if (j.keys.empty()) throw InputError("calibrate: every parameter is fixed; nothing to fit");
+  c.enter(fmt::format("joint fit of {} parameters", j.keys.size()));
   if (c.residuals(c.current, c.all()).size() == 0)
     throw InputError(
         "calibrate: no test gives a residual to a group of weight > 0 (--weight); nothing to "
@@ -568,6 +594,12 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
   Calibrator c{tests, o, table.name, boxes, {}, {}, 0, {}};
   c.declared = &table;
   if (recipe) c.ties = recipe->ties;
+  // the recipe's stages that will fit (as run_stage decides), then the joint fit
+  if (recipe && !o.start)
+    for (const auto& st : recipe->stages)
+      if (!st.estimate && !(st.only_with && c.of_kind(*st.only_with).empty()) &&
+          !c.selected(st.tests).empty())
+        ++c.phases;
   start_estimate(c, recipe, o);
   const JointFit joint = joint_fit(c, o);
   c.notes.push_back(fmt::format(

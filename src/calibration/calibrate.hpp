@@ -12,6 +12,7 @@
 //          the recipe's factors and the rest refitted, and the output says so.
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -59,6 +60,10 @@ struct CalibrationOptions {
   int max_evaluations_per_stage = 300;
   int max_evaluations_joint = 100;  // BOBYQA's share; Levenberg-Marquardt finishes (fitting/)
   int polish_iterations = 300;
+  // A line while it fits ("calibrating: stage B (h_s, n), phase 2 of 6, evaluation 140, RMS ...,
+  // 95 s"), at most every `progress_every_s` (a fit of the DEM soil cells takes 25 s to 25 min).
+  std::function<void(const std::string&)> progress = {};
+  double progress_every_s = 10.0;
 };
 
 struct ParameterEstimate {

@@ -88,9 +88,10 @@ models::ParameterValues parse_fixed(const std::vector<std::string>& items) {
 CalibrationRun run_calibration(const CalibrationRequest& q,
                                const std::function<void(const std::string&)>& progress) {
   io::require_file_destination(q.out, "-o");  // before minutes of fitting, not after
-  const CalibrationOptions opt = options_of(q);
+  CalibrationOptions opt = options_of(q);
   std::optional<std::pair<ObjectiveGroup, ObjectiveGroup>> pair;
   if (!q.pareto.empty()) pair = parse_pareto_groups(q.pareto);
+  if (!pair) opt.progress = progress;  // a front reports per point
   CalibrationRun run;
   std::vector<std::string> left_out;
   run.tests = read_soil_tests(q.runs, left_out);

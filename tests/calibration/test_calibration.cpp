@@ -5,6 +5,7 @@
 #include <cmath>
 #include <ctime>
 #include <filesystem>
+#include <regex>
 
 #include "calibration/calibrate.hpp"
 #include "calibration/herle_gudehus_recipe.hpp"
@@ -159,6 +160,44 @@ TEST_CASE("calibration flags what loose-only tests cannot identify", "[calibrati
   CHECK(std::abs(ec0.value - 0.96) > 3.0 * ec0.sigma_statistical);
   CHECK(std::abs(ec0.value - 0.96) <= 3.0 * ec0.sigma);
   CHECK(std::abs(estimate(r, "alpha").value - 0.13) <= 3.0 * estimate(r, "alpha").sigma);
+}
+
+// A fit of the DEM soil cells takes 25 s to 25 min and printed nothing until its end. With a
+// period of 0 it reports every evaluation, so the lines are the evaluations one for one, in the
+// order the recipe runs its stages and then the joint fit, each naming its phase of all.
+TEST_CASE("a calibration reports its progress: each phase of the recipe, then the joint fit",
+          "[calibration]") {
+  std::vector<calibration::SoilTest> tests = {
+      target(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.90, "loose CNL"),
+      target(SoilTestKind::kSimpleShear, BoundaryKind::kCV, 0.88, "loose CV")};
+  std::vector<std::string> lines;
+  calibration::CalibrationOptions o;
+  o.progress = [&lines](const std::string& l) { lines.push_back(l); };
+  o.progress_every_s = 0.0;
+  o.max_evaluations_per_stage = 20;  // the lines, not the fit, are under test
+  o.max_evaluations_joint = 10;
+  o.polish_iterations = 2;
+  const auto r = calibration::calibrate(tests, o);
+  REQUIRE(int(lines.size()) == r.evaluations);
+  const std::regex line(
+      R"(calibrating: (.+), phase ([0-9]+) of ([0-9]+), evaluation ([0-9]+), RMS [0-9.e+-]+ scatter units, [0-9]+ s)");
+  int phase = 0, evaluation = 0;
+  for (const auto& l : lines) {
+    std::smatch m;
+    INFO(l);
+    REQUIRE(std::regex_match(l, m, line));
+    const bool in_order = std::stoi(m[2]) >= phase && std::stoi(m[2]) <= std::stoi(m[3]) &&
+                          std::stoi(m[4]) == evaluation + 1;
+    REQUIRE(in_order);  // phases only advance, each within all, evaluations one by one
+    phase = std::stoi(m[2]);
+    evaluation = std::stoi(m[4]);
+  }
+  CHECK_THAT(lines.front(), Catch::StartsWith("calibrating: stage "));
+  CHECK_THAT(lines.back(), Catch::Contains("joint fit of"));
+  const std::string last = lines.back();
+  const auto of = last.find(" of ", last.find("phase "));
+  CHECK(last.substr(last.find("phase ") + 6, of - last.find("phase ") - 6) ==
+        last.substr(of + 4, last.find(',', of) - of - 4));  // the joint fit is the last phase
 }
 
 TEST_CASE("a test held out of a fit is predicted: its own set reproduces it, another set does not",

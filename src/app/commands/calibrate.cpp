@@ -38,7 +38,9 @@ constexpr const char* kCalibrateHelp =
     "each residual one measurement); --pareto A,B traces the front between two groups, each point "
     "a whole calibration (src/calibration/README.md).\n"
     "Writes the parameter file and calibration.json next to it; with --pareto also pareto.csv, "
-    "pareto.json, pareto.svg and pareto/point-K.toml.\n"
+    "pareto.json, pareto.svg and pareto/point-K.toml. While it fits, a line every 10 s on stderr "
+    "says where it is (the recipe's stage or the joint fit, phase k of n, evaluations, RMS, "
+    "seconds); with --pareto, a line per point with an ETA. The result goes to stdout.\n"
     "Examples:\n"
     "  iwb calibrate runs/soil/* -o data/params/calibrated_sand.toml\n"
     "  iwb calibrate runs/soil/* --weight dilatancy=10 -o dilatant.toml\n"
@@ -161,9 +163,10 @@ int run_calibrate(const CalibrateCommand& c, const std::string& command_line) {
                                                 c.pareto, c.points};
   const auto run = [&] {
     try {
+      // progress on stderr: stdout is the result (make.sh files keep it as calibrate.txt)
       return calibration::run_calibration(request, [](const std::string& line) {
-        fmt::print("{}\n", line);
-        std::fflush(stdout);  // a front takes minutes
+        fmt::print(stderr, "{}\n", line);
+        std::fflush(stderr);  // a front takes minutes
       });
     } catch (const calibration::NothingIdentified& e) {
       print_result(e.fit, stderr);  // what the fit found says why (stdout stays empty)
