@@ -16,6 +16,7 @@
 #include "dem/shear_start.hpp"
 #include "dem/stage_follower.hpp"
 #include "dem/wall_geometry.hpp"
+#include "io/checksum_record.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::dem {
@@ -285,6 +286,30 @@ TemplateValues liggghts_values(const Scene& s, const Numerics& n, double z0_cons
 
 // --- running a stage --------------------------------------------------------------------
 
+namespace {
+
+// Which attempt of the shear stage this is (shear_checkpoint.hpp): resumed from the checkpoint
+// that this input, rendered as a fresh attempt, and this consolidated specimen left (`values`
+// then get what differs), or a fresh one.
+std::optional<ShearStart> shear_entry(const Scene& s, const Numerics& n, const std::string& text,
+                                      const StageContext& ctx, TemplateValues& values) {
+  const fs::path record = io::checksum_record_path(ctx.work_dir / "consolidated.restart");
+  const std::string basis = render_template(text, values, "shear.in") +
+                            (fs::exists(record) ? io::read_file(record) : std::string());
+  auto resumed = usable_checkpoint(ctx.work_dir, basis);
+  if (!resumed) {
+    begin_fresh_shear(ctx.work_dir, basis);
+    return resumed;
+  }
+  prepare_resumed_shear(ctx.work_dir);
+  for (auto& [k, v] : shear_entry_values(n, resumed, ctx.work_dir)) values[k] = v;
+  values["plate_clamp"] = plate_clamp(s, true);
+  if (ctx.progress) ctx.progress("shearing: resumed from the stage's last checkpoint");
+  return resumed;
+}
+
+}  // namespace
+
 std::vector<std::string> liggghts_command(const std::string& input, int processes,
                                           const std::string& executable) {
   // Line-buffered output: LIGGGHTS prints its ERROR line and then calls MPI_Abort, which loses a
@@ -346,25 +371,8 @@ StageResult LiggghtsEngine::run_stage(const std::string& stage, const StageConte
       liggghts_values(s, n, facts.value("/consolidate/zplate_m"_json_pointer, n.plate_z));
   values.insert(extra_.begin(), extra_.end());
   const std::string& text = liggghts_templates().at(input);
-  std::optional<ShearStart> resumed;
-  if (stage == "shear") {
-    // the stage a checkpoint belongs to: this input as a fresh attempt renders it, from this
-    // consolidated specimen
-    const std::string basis =
-        render_template(text, values, input) +
-        (fs::exists(ctx.work_dir / "consolidated.restart.checksum.json")
-             ? io::read_file(ctx.work_dir / "consolidated.restart.checksum.json")
-             : std::string());
-    resumed = usable_checkpoint(ctx.work_dir, basis);
-    if (resumed) {
-      prepare_resumed_shear(ctx.work_dir);
-      for (auto& [k, v] : shear_entry_values(n, resumed, ctx.work_dir)) values[k] = v;
-      values["plate_clamp"] = plate_clamp(s, true);
-      if (ctx.progress) ctx.progress("shearing: resumed from the stage's last checkpoint");
-    } else {
-      begin_fresh_shear(ctx.work_dir, basis);
-    }
-  }
+  const std::optional<ShearStart> resumed =
+      stage == "shear" ? shear_entry(s, n, text, ctx, values) : std::nullopt;
   io::write_atomically(ctx.work_dir / input, render_template(text, values, input));
   const double generation =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
