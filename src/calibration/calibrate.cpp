@@ -274,6 +274,13 @@ struct Calibrator {
   }
 };
 
+// Whether a stage of the recipe will be a fit on these tests (run_stage's own conditions): a phase
+// of the progress lines.
+bool stage_fits(const Calibrator& c, const RecipeStage& s) {
+  return !s.estimate && !(s.only_with && c.of_kind(*s.only_with).empty()) &&
+         !c.selected(s.tests).empty();
+}
+
 // One stage of a recipe: a closed form for its keys (the keys tied to them follow, fixed ones are
 // put back) or a fit of them on its tests, noted.
 void run_stage(Calibrator& c, const RecipeStage& s, const CalibrationOptions& o) {
@@ -594,12 +601,8 @@ CalibrationResult calibrate(const std::vector<SoilTest>& tests, const Calibratio
   Calibrator c{tests, o, table.name, boxes, {}, {}, 0, {}};
   c.declared = &table;
   if (recipe) c.ties = recipe->ties;
-  // the recipe's stages that will fit (as run_stage decides), then the joint fit
-  if (recipe && !o.start)
-    for (const auto& st : recipe->stages)
-      if (!st.estimate && !(st.only_with && c.of_kind(*st.only_with).empty()) &&
-          !c.selected(st.tests).empty())
-        ++c.phases;
+  if (recipe && !o.start)  // the recipe's stages that will fit, then the joint fit
+    for (const auto& st : recipe->stages) c.phases += stage_fits(c, st) ? 1 : 0;
   start_estimate(c, recipe, o);
   const JointFit joint = joint_fit(c, o);
   c.notes.push_back(fmt::format(
