@@ -27,6 +27,7 @@ std::string default_label(const std::string& key) {
       {"boundary.type", ""},
       {"boundary.K_kPa_per_mm", "k"},
       {"specimen.consolidation_friction", "cf"},
+      {"specimen.consolidation_rolling_friction", "crf"},
       {"seed", "s"},
       {"wall.profile", ""},
       {"particles.friction", "mu"},

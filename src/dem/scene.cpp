@@ -232,6 +232,8 @@ void read_specimen(DeclaredTable spec, Scene& s) {
   s.height_m = spec.number("height_d50") * d50;
   s.solid_fraction_estimate = spec.number("solid_fraction_estimate");
   s.consolidation.friction = spec.number("consolidation_friction");
+  s.consolidation.rolling_friction =
+      spec.optional_number("consolidation_rolling_friction").value_or(s.particles.rolling_friction);
   const auto given = spec.optional_whole_number("particles");
   s.particle_count = given ? *given : derived_particle_count(spec, s);
   spec.finish();
@@ -376,7 +378,8 @@ nlohmann::json resolved_values(const Scene& s) {
        {{"length_mm", s.length_m / kMm},
         {"width_mm", s.width_m / kMm},
         {"height_mm", s.height_m / kMm},
-        {"consolidation_friction", s.consolidation.friction}}},
+        {"consolidation_friction", s.consolidation.friction},
+        {"consolidation_rolling_friction", s.consolidation.rolling_friction}}},
       {"wall", {{"profile", s.wall.describe()}, {"R_n", s.wall.normalized_roughness(d50)}}},
       {"plate",
        {{"profile", s.plate.describe()},

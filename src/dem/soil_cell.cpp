@@ -68,6 +68,12 @@ double preparation_friction(SoilDensity d, const Scene& scene) {
   return scene.consolidation.friction;
 }
 
+// The standard densities roll as the grains do; as-scene keeps the interface specimen's.
+double preparation_rolling_friction(SoilDensity d, const Scene& scene) {
+  return d == SoilDensity::kAsScene ? scene.consolidation.rolling_friction
+                                    : scene.particles.rolling_friction;
+}
+
 // Height between the mean surfaces of wall and plate, with the plate's reference at z (m): the
 // same as the interface runs' specimen height (contract_outputs.cpp).
 double cell_height(const Scene& s, double zplate) {
@@ -375,6 +381,7 @@ std::string cell_scene_text(const std::string& text, const std::string& source,
   set("specimen.width_d50", c.width_d50);
   set("specimen.height_d50", c.height_d50);
   set("specimen.consolidation_friction", preparation_friction(c.density, base));
+  set("specimen.consolidation_rolling_friction", preparation_rolling_friction(c.density, base));
   for (const std::string side : {"wall", "plate"}) {
     // the periodic cell has neither: flat, of no height, they keep the height the box's own
     set(side + ".profile", std::string(periodic(c) ? "flat" : "sawtooth"));

@@ -310,6 +310,20 @@ TEST_CASE("LIGGGHTS: a wet scene is refused, naming the key and the engine that 
   CHECK_FALSE(fs::exists(dir));
 }
 
+TEST_CASE("YADE: a rolling resistance of consolidation's own is refused, naming the key",
+          "[dem][yade]") {
+  const std::string text =
+      replaced(io::read_file("data/scenes/smoke.toml"), "consolidation_friction = 0.1",
+               "consolidation_friction = 0.1\nconsolidation_rolling_friction = 0.5");
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "yade" / "rolling_consolidation";
+  fs::remove_all(dir);
+  const auto engine = dem::make_engine("yade");
+  CHECK_THROWS_WITH(
+      dem::run_scene(dem::parse_scene(text, "loose.toml"), text, *engine, options(dir, false)),
+      Catch::Contains("consolidation_rolling_friction") && Catch::Contains("--engine liggghts"));
+  CHECK_FALSE(fs::exists(dir));
+}
+
 TEST_CASE("a suction beyond the capillary tables is refused, naming the largest it allows",
           "[dem]") {
   const std::string text = replaced(io::read_file("data/scenes/smoke.toml"), "restitution = 0.5",

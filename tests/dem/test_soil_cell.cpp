@@ -199,6 +199,27 @@ TEST_CASE("DEM soil cell: as-scene density prepares the cell as the scene's spec
   CHECK_THROWS_WITH(dem::parse_soil_density("medium", "--density"), Catch::Contains("as-scene"));
 }
 
+// The same for the rolling resistance while consolidating: the interface specimen's own in an
+// as-scene cell, the grains' (the truth's 0.1) in the standard dense and loose ones.
+TEST_CASE("DEM soil cell: as-scene keeps the specimen's consolidation rolling friction", "[dem]") {
+  const std::string scene = "data/scenes/truth.toml";
+  std::string text = io::read_file(scene);
+  const auto at = text.find("[specimen]\n");
+  REQUIRE(at != std::string::npos);
+  text.insert(at + 11, "consolidation_rolling_friction = 0.5\n");
+  REQUIRE(dem::parse_scene(text, scene).consolidation.rolling_friction == Approx(0.5));
+  dem::SoilCellSpec c;
+  c.test = SoilTestKind::kSimpleShear;
+  const auto rolling = [&](const char* density) {
+    c.density = dem::parse_soil_density(density, "--density");
+    return dem::parse_scene(dem::cell_scene_text(text, scene, c), "cell")
+        .consolidation.rolling_friction;
+  };
+  CHECK(rolling("as-scene") == Approx(0.5));
+  CHECK(rolling("dense") == Approx(0.1));
+  CHECK(rolling("loose") == Approx(0.1));
+}
+
 // The cyclic cell (issue 34): the plate's amplitude is A x target height in d50 x d50 (the
 // contract's gamma = travel / height), three cycles and nothing after them, and a row every
 // fortieth of A so that a reversal's secant at 10 % of A has rows to rest on.

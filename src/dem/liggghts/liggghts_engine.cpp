@@ -108,7 +108,7 @@ std::string frictionless_drift(double consolidation_friction) {
 }
 
 // Material properties for one grain type, or two when the wall has a glued layer (same material).
-std::string materials(const Particles& p, double friction, int types) {
+std::string materials(const Particles& p, double friction, double rolling_friction, int types) {
   auto repeat = [types](const std::string& v, int n) {
     std::string out;
     for (int i = 0; i < n; ++i) out += " " + v;
@@ -126,7 +126,7 @@ std::string materials(const Particles& p, double friction, int types) {
                     "fix m5 all property/global coefficientRollingFriction peratomtypepair {}{}",
                     repeat(g(p.youngs_modulus_Pa), types), repeat(g(p.poisson), types), types,
                     repeat(g(p.restitution), pairs), types, repeat(g(friction), pairs), types,
-                    repeat(g(p.rolling_friction), pairs));
+                    repeat(g(rolling_friction), pairs));
 }
 
 bool glued(const Scene& s) {
@@ -214,9 +214,10 @@ TemplateValues liggghts_values(const Scene& s, const Numerics& n, double z0_cons
   const int types = glued(s) ? 2 : 1;
   TemplateValues values = {
       {"atom_types", std::to_string(types)},
-      {"materials_consolidation", materials(p, s.consolidation.friction, types)},
+      {"materials_consolidation",
+       materials(p, s.consolidation.friction, s.consolidation.rolling_friction, types)},
       {"frictionless_drift", frictionless_drift(s.consolidation.friction)},
-      {"materials_test", materials(p, p.friction, types)},
+      {"materials_test", materials(p, p.friction, p.rolling_friction, types)},
       {"glued_layer", glued_layer(s)},
       {"glued_motion", glued(s) ? glued_motion(s.shear) : "# no glued layer"},
       {"plate_clamp", plate_clamp(s, false)},

@@ -242,6 +242,15 @@ std::string YadeEngine::consolidation_inputs(const Scene& s) const {
 }
 
 // interface_shear.py's O.save at the end of consolidation; the later stages O.load it.
+// The rolling resistance is a property of YADE's contact-physics functor (ip2's eta), built once
+// for every stage, not of a material that consolidation can swap as LIGGGHTS's property/global.
+std::string YadeEngine::unsupported(const Scene& s) const {
+  if (s.consolidation.rolling_friction != s.particles.rolling_friction)
+    return "[specimen] consolidation_rolling_friction: a rolling resistance while consolidating "
+           "other than the grains' is modelled in LIGGGHTS only (run with --engine liggghts)";
+  return {};
+}
+
 std::string YadeEngine::restart_file(const std::string& stage) const {
   return stage == kConsolidationStage ? "consolidated.yade.gz" : "";
 }

@@ -29,6 +29,7 @@ class YadeEngine final : public Engine {
   ContractTables assemble(const StageContext& ctx, const nlohmann::json& facts) override;
   std::string restart_file(const std::string& stage) const override;
   std::string consolidation_inputs(const Scene& scene) const override;
+  std::string unsupported(const Scene& scene) const override;
 
  private:
   std::vector<std::string> stages_ = {"consolidate", "shear"};

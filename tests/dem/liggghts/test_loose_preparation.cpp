@@ -1,0 +1,61 @@
+// A looser specimen than sliding friction alone can make ([specimen]
+// consolidation_rolling_friction). Frictional spheres that come together under a load stop at
+// random loose packing (solid fraction ~0.55, e ~0.8) however high their friction: the truth's
+// specimen sits at e 0.81 after consolidation friction 1, 3 or 10 alike (data/grains/README.md).
+// Resistance to rolling lets grains lock in arches that sliding friction would let roll apart,
+// so packings assembled with it are looser (random packings of spheres with rolling resistance:
+// solid fractions down to ~0.5). The test friction of the shear stage stays the grains' own.
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "dem/engines.hpp"
+#include "dem/run.hpp"
+#include "io/csv_table.hpp"
+#include "io/run_directory.hpp"
+#include "support/smoke_specimens.hpp"
+
+using namespace iwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The smoke scene prepared with consolidation friction 1 and the given rolling resistance, sheared
+// over 0.1 mm (the first row holds the specimen's void ratio when shear starts). Its 400 grains,
+// locked in arches by rolling resistance, jam and let go: the plate's stress swings by +-6 % and
+// never holds the default 2 % for three windows (60 windows tried), so both accept 10 %.
+fs::path prepared(const fs::path& dir, const std::string& rolling) {
+  const std::string text =
+      test::replaced(test::smoke_sheared_over("data/scenes/smoke.toml", 0.1),
+                     "consolidation_friction = 0.1",
+                     "consolidation_friction = 1.0\nconsolidation_rolling_friction = " + rolling) +
+      "\n[consolidation]\nsigma_tolerance = 0.1\n";
+  fs::remove_all(dir);
+  const auto engine = dem::make_engine("liggghts");
+  const dem::RunOptions opt{dir, 1, false, true, "tests", nullptr, nullptr, {}};
+  REQUIRE(dem::run_scene(dem::parse_scene(text, "loose.toml"), text, *engine, opt).complete());
+  return dir;
+}
+
+double first_void_ratio(const fs::path& dir) {
+  return io::read_csv_table(dir / "timeseries.csv").values("e_specimen").front();
+}
+
+}  // namespace
+
+TEST_CASE("LIGGGHTS: rolling resistance while consolidating prepares a looser specimen",
+          "[dem][liggghts]") {
+  const auto base = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "liggghts" / "loose_preparation";
+  const auto sliding = prepared(base / "sliding", "0.1");  // the grains' own: friction alone
+  const auto rolling = prepared(base / "rolling", "0.5");
+  const double e_sliding = first_void_ratio(sliding), e_rolling = first_void_ratio(rolling);
+  INFO("e after consolidation with rolling resistance 0.1: " << e_sliding
+                                                             << ", 1.0: " << e_rolling);
+  // the truth's specimen: 0.81 -> 0.93 (0.5), 0.96 (1.0); this one 0.82 -> 0.89 (0.5)
+  CHECK(e_rolling > e_sliding + 0.05);
+  // the shear stage rolls as the grains do
+  const std::string shear_in = io::read_file(rolling / "liggghts" / "shear.in");
+  CHECK(shear_in.find("coefficientRollingFriction peratomtypepair 1 0.1") != std::string::npos);
+  const std::string consolidate_in = io::read_file(rolling / "liggghts" / "consolidate.in");
+  CHECK(consolidate_in.find("coefficientRollingFriction peratomtypepair 1 0.5") !=
+        std::string::npos);
+}
