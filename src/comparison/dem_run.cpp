@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "common/band_zone.hpp"
 #include "common/errors.hpp"
 #include "io/csv_table.hpp"
 #include "io/json_file.hpp"
@@ -42,6 +43,8 @@ DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
   r.K_kPa_per_mm = m.value("/scene/resolved/boundary/K_kPa_per_mm"_json_pointer, 0.0);
   r.d50_mm = io::json_field<double>(m, "/scene/resolved/particles/d50_mm", manifest_path);
   r.R_n = io::json_field<double>(m, "/R_n", manifest_path);
+  r.wall_zone_mm = wall_zone_thickness(
+      r.d50_mm, io::json_field<double>(m, "/scene/resolved/specimen/height_mm", manifest_path));
   r.scene_but_seed = m.at("/scene/resolved"_json_pointer);
   r.scene_but_seed.erase("seed");
   r.scene_text = m.value("/scene/text"_json_pointer, std::string());

@@ -29,6 +29,21 @@ std::optional<double> slope(const std::vector<double>& x, const std::vector<doub
   return (n * sxy - sx * sy) / d;
 }
 
+// The height a band inside the wall zone gained, from the zone's void ratio: the zone is a fixed
+// height h above the wall, so what a band inside it gains pushes grains at e0 out of its top, and
+// h (1 + e0) / (h - dh) = 1 + e gives dh = h (e - e0) / (1 + e). Averaged over `in` (the last
+// fifth: e_band scatters from row to row by ~0.005 as grains cross the zone's top).
+std::optional<double> zone_dilation(const Curve& c, std::size_t n, const std::vector<bool>& in) {
+  if (c.e_band == nullptr || c.e_band->size() < n || !(c.wall_zone_mm > 0.0)) return std::nullopt;
+  const auto& e = *c.e_band;
+  double sum = 0.0;
+  int count = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (in[i]) sum += c.wall_zone_mm * (e[i] - e[0]) / (1.0 + e[i]), ++count;
+  if (count == 0) return std::nullopt;
+  return sum / count;
+}
+
 }  // namespace
 
 const std::vector<QuantityInfo>& quantity_table() {
@@ -39,6 +54,8 @@ const std::vector<QuantityInfo>& quantity_table() {
       {"total_dilation", "total dilation u_n at the end", "mm", 0.20, 0.02, true},
       {"dilation_rate", "dilation rate du_n/du_x (last fifth)", "", 0.20, 0.01, false},
       {"sigma_n_change", "normal stress change at the end", "kPa", 0.20, 1.0, false},
+      {"wall_zone_dilation", "dilation of the wall zone (its void ratio, last fifth)", "mm", 0.20,
+       0.02, true},
   };
   return t;
 }
@@ -53,6 +70,7 @@ std::vector<std::string> judged_quantities(driver::BoundaryKind boundary) {
   std::vector<std::string> k = {"peak_friction", "u_x_at_peak", "residual_friction"};
   if (boundary != driver::BoundaryKind::kCV) k.insert(k.end(), {"total_dilation", "dilation_rate"});
   if (boundary != driver::BoundaryKind::kCNL) k.push_back("sigma_n_change");
+  if (boundary != driver::BoundaryKind::kCV) k.push_back("wall_zone_dilation");
   return k;
 }
 
@@ -81,6 +99,7 @@ std::map<std::string, std::optional<double>> evaluate_quantities(
       {"total_dilation", c.u_n_mm[n - 1] - c.u_n_mm[0]},
       {"dilation_rate", slope(s, c.u_n_mm, last)},
       {"sigma_n_change", c.sigma_n_kPa[n - 1] - c.sigma_n_kPa[0]},
+      {"wall_zone_dilation", zone_dilation(c, n, last)},
   };
   for (const auto& k : keys) out[k] = all.at(k);
   return out;

@@ -31,12 +31,16 @@ const QuantityInfo& quantity(const std::string& key);
 std::vector<std::string> judged_quantities(driver::BoundaryKind boundary);
 
 // A response along u_x in contract units (compression positive, u_n > 0 dilation); `rows` of
-// each series are used (a replay that stopped early has fewer than the DEM).
+// each series are used (a replay that stopped early has fewer than the DEM). With the void ratio
+// of the wall zone (the contract's e_band, common/band_zone.hpp) and that zone's thickness, the
+// dilation of the wall zone alone: what the wall's band did, whatever else moved the plate.
 struct Curve {
   const std::vector<double>& u_x_mm;
   const std::vector<double>& tau_kPa;
   const std::vector<double>& sigma_n_kPa;
   const std::vector<double>& u_n_mm;
+  const std::vector<double>* e_band = nullptr;
+  double wall_zone_mm = 0.0;
 };
 
 // Each quantity of `keys` from the curve; nullopt where the curve cannot give it (fewer than two

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/errors.hpp"
@@ -23,10 +24,20 @@ driver::Path dem_path(const DemRun& dem, double d_s_mm) {
   return path;
 }
 
+// The void ratio of the DEM's wall zone (height h above the wall) when the model's band of
+// thickness d_s, now at void ratio e, lies at its bottom: the band's grains, d_s / (1 + e0) of
+// solid, fill d_s (1 + e) / (1 + e0); a band still inside the zone pushed as much of the grains
+// above it (at e0) out of the zone's top, a band that reaches beyond the zone fills it at e.
+double zone_void_ratio(double e0, double e, double d_s, double h) {
+  const double band = d_s * (1.0 + e) / (1.0 + e0);
+  if (band >= h) return e;
+  return h * (1.0 + e0) / (h - (band - d_s)) - 1.0;
+}
+
 }  // namespace
 
 Replay replay(const DemRun& dem, const Variant& v, const driver::RunSettings& settings) {
-  Replay out{v, "", {}, {}, {}, {}, dem.e_band.front()};
+  Replay out{v, "", {}, {}, {}, {}, {}, dem.e_band.front()};
   const auto& spec = models::find_model(v.model);
   models::ModelInputs in = v.inputs;
   in.shear_zone_mm = v.d_s_mm;  // a model with stiffness per displacement scales by it (hyperbolic)
@@ -62,6 +73,11 @@ Replay replay(const DemRun& dem, const Variant& v, const driver::RunSettings& se
     out.tau_kPa.push_back(s.tau_x);
     out.sigma_n_kPa.push_back(s.sigma_n);
     out.u_n_mm.push_back(at_row[i]->eps_n * v.d_s_mm);
+    // the band's void ratio: the model's own (a hypoplastic e follows de = (1 + e) d eps_v, so
+    // 1 + e = (1 + e0) exp(eps_n)), else, for a model without one, from its strain
+    double e = model->void_ratio(at_row[i]->state);
+    if (!std::isfinite(e)) e = (1.0 + out.e0) * (1.0 + at_row[i]->eps_n) - 1.0;
+    out.e_band.push_back(zone_void_ratio(out.e0, e, v.d_s_mm, dem.wall_zone_mm));
   }
   return out;
 }

@@ -24,6 +24,9 @@ struct Replay {
   std::string status;  // the driver's status: "complete" or why it stopped
   // at every DEM row reached: the model's response, contract units
   std::vector<double> u_x_mm, tau_kPa, sigma_n_kPa, u_n_mm;
+  // the void ratio the model's band gives the DEM's wall zone (common/band_zone.hpp), from the
+  // band's own void ratio (quantities.hpp, wall_zone_dilation)
+  std::vector<double> e_band;
   double e0 = 0.0;
 };
 

@@ -90,8 +90,8 @@ void quantity_scatter(const std::vector<const DemRun*>& all, SeedScatter& out) {
   const auto keys = judged_quantities(all.front()->boundary);
   std::map<std::string, std::vector<double>> values;
   for (const auto* r : all)
-    for (const auto& [k, v] :
-         evaluate_quantities({r->u_x_mm, r->tau_kPa, r->sigma_n_kPa, r->u_n_mm}, keys))
+    for (const auto& [k, v] : evaluate_quantities(
+             {r->u_x_mm, r->tau_kPa, r->sigma_n_kPa, r->u_n_mm, &r->e_band, r->wall_zone_mm}, keys))
       if (v) values[k].push_back(*v);
   for (const auto& [k, v] : values) {
     const auto ms = mean_sd(v);

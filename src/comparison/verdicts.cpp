@@ -20,7 +20,8 @@ constexpr int kMostSeedsWorthSaying = 1000;
 // The quantities read over the last fifth of the travel or at its end: a residual that still
 // drifts there makes them depend on where the run stopped.
 bool needs_steady_end(const std::string& key) {
-  return key == "residual_friction" || key == "dilation_rate" || key == "total_dilation";
+  return key == "residual_friction" || key == "dilation_rate" || key == "total_dilation" ||
+         key == "wall_zone_dilation";
 }
 
 // The quantities that need the DEM's last rows: a model that stopped early has no value for them.
@@ -81,8 +82,10 @@ std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const 
                            const Tolerances& tolerances) {
   std::vector<std::string> keys;
   for (const auto& [k, tol] : tolerances) keys.push_back(k);
-  const auto d = evaluate_quantities({dem.u_x_mm, dem.tau_kPa, dem.sigma_n_kPa, dem.u_n_mm}, keys);
-  const auto m = evaluate_quantities({r.u_x_mm, r.tau_kPa, r.sigma_n_kPa, r.u_n_mm}, keys);
+  const auto d = evaluate_quantities(
+      {dem.u_x_mm, dem.tau_kPa, dem.sigma_n_kPa, dem.u_n_mm, &dem.e_band, dem.wall_zone_mm}, keys);
+  const auto m = evaluate_quantities(
+      {r.u_x_mm, r.tau_kPa, r.sigma_n_kPa, r.u_n_mm, &r.e_band, dem.wall_zone_mm}, keys);
   const bool reached_end = r.u_x_mm.size() == dem.u_x_mm.size();
   std::vector<Verdict> out;
   for (const auto& q : quantity_table()) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/band_zone.hpp"
+
 namespace iwb::dem {
 
 namespace {
@@ -33,9 +35,8 @@ Numerics derive(const Scene& s) {
   n.zlo = -dmax;
   n.zhi = n.plate_z + 2.0 * dmax;
   n.band_zlo = s.wall.mean_height_m();
-  // The time series' band: the lowest 10 d50, or half the specimen if that is lower.
-  n.band_zhi = n.band_zlo + std::min(10.0 * n.d50, 0.5 * s.height_m);
-  const double step_u = s.shear.velocity_m_s * n.dt;  // wall displacement per step
+  n.band_zhi = n.band_zlo + wall_zone_thickness(n.d50, s.height_m);  // the time series' band
+  const double step_u = s.shear.velocity_m_s * n.dt;                 // wall displacement per step
   // the ramp (if any) adds half its time: the wall covers v T / 2 while ramping for T
   n.shear_steps = long(std::ceil(s.shear.duration_s() / n.dt));
   n.ts_every = std::max(1L, long(std::lround(s.outputs.timeseries_every_m / step_u)));

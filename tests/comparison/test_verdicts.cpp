@@ -73,6 +73,23 @@ TEST_CASE("quantities of a curve known in closed form", "[comparison][verdicts]"
   CHECK(*q.at("sigma_n_change") == Approx(50.0).epsilon(1e-12));
 }
 
+// A wall zone 10 mm high whose void ratio rises from 0.7 by 0.034 per mm of u_x to 0.768 at 2 mm
+// and stays: grains of a fixed zone hold its solid volume h / (1 + e), so the band inside it grew
+// by h (e - e0) / (1 + e) = 10 x 0.068 / 1.768 = 0.3846 mm (the last fifth, 4-5 mm, is flat).
+TEST_CASE("the wall zone's dilation from its void ratio, known in closed form",
+          "[comparison][verdicts]") {
+  const KnownCurve c;
+  std::vector<double> e;
+  for (double u : c.u_x) e.push_back(0.7 + 0.034 * std::min(u, 2.0));
+  const auto q = comparison::evaluate_quantities({c.u_x, c.tau, c.sigma, c.u_n, &e, 10.0},
+                                                 {"wall_zone_dilation"});
+  CHECK(*q.at("wall_zone_dilation") == Approx(10.0 * 0.068 / 1.768).epsilon(1e-12));
+  // without the zone (a run whose contract has no e_band zone) there is no value
+  CHECK_FALSE(
+      comparison::evaluate_quantities({c.u_x, c.tau, c.sigma, c.u_n}, {"wall_zone_dilation"})
+          .at("wall_zone_dilation"));
+}
+
 TEST_CASE("each boundary condition judges what it leaves free", "[comparison][verdicts]") {
   using driver::BoundaryKind;
   const auto cnl = comparison::judged_quantities(BoundaryKind::kCNL);
@@ -380,7 +397,7 @@ TEST_CASE("iwb compare on a committed reference run judges dilation, predicted a
              v["verdict"] == "within DEM scatter"));
     }
     CHECK(judged == std::set<std::string>{"peak_friction", "u_x_at_peak", "residual_friction",
-                                          "total_dilation", "dilation_rate"});
+                                          "total_dilation", "dilation_rate", "wall_zone_dilation"});
   }
   CHECK(fs::exists(opt.out / "seed_band.csv"));
   CHECK(r["verdicts"]["summary"]["scan"]["points"] ==

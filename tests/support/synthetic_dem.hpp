@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <random>
 
+#include "common/band_zone.hpp"
 #include "dem/summary.hpp"
 #include "io/run_directory.hpp"
 #include "support/fixtures.hpp"
@@ -47,6 +48,17 @@ inline std::string synthetic_profile(const SyntheticDem& s, double u_x_end_mm) {
   return p;
 }
 
+// The contract's e_band (common/band_zone.hpp) of a band of thickness d_s and void ratio e at the
+// bottom of a zone of height h, from the band's own void ratio: its grains' volume d_s / (1 + e0)
+// now fills d_s (1 + e) / (1 + e0); above it, up to h, the grains at e0 that the band did not
+// push out of the zone; a band thicker than the zone fills it at its own e.
+inline double zone_void_ratio(double e0, double e, double d_s, double h) {
+  const double band = d_s * (1.0 + e) / (1.0 + e0);
+  if (band >= h) return e;
+  const double solid = d_s / (1.0 + e0) + (h - band) / (1.0 + e0);
+  return h / solid - 1.0;
+}
+
 inline std::filesystem::path write_synthetic_dem(const SyntheticDem& spec) {
   ShearSpec s;
   s.e0 = 0.70;
@@ -67,11 +79,13 @@ inline std::filesystem::path write_synthetic_dem(const SyntheticDem& spec) {
     const auto& r = run.result.rows[i];
     const auto st = run.model->stress(r.state);
     const double e = run.model->void_ratio(r.state);
+    const double e_zone = zone_void_ratio(
+        s.e0, e, spec.d_s_mm, wall_zone_thickness(spec.d50_mm, kSyntheticHeightD50 * spec.d50_mm));
     const double dtau = i == 0 ? 0.0 : spec.tau_noise_kPa * noise(random);
     const double dun = i == 0 ? 0.0 : spec.u_n_noise_mm * noise(random);
     ts += fmt::format("{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},4\n", 0.01 * double(i),
                       r.gamma_x * spec.d_s_mm, r.eps_n * spec.d_s_mm + dun, st.sigma_n,
-                      spec.tau_scale * st.tau_x + dtau, e, e);
+                      spec.tau_scale * st.tau_x + dtau, e, e_zone);
   }
   io::write_atomically(dir / "timeseries.csv", ts);
   io::write_atomically(dir / "profiles.csv",
@@ -86,6 +100,7 @@ inline std::filesystem::path write_synthetic_dem(const SyntheticDem& spec) {
                                   {"sigma_n_kPa", 100.0},
                                   {"K_kPa_per_mm", spec.K_per_mm}}},
                                 {"particles", {{"d50_mm", spec.d50_mm}}},
+                                {"specimen", {{"height_mm", kSyntheticHeightD50 * spec.d50_mm}}},
                                 {"seed", spec.seed},
                                 {"generator",
                                  {{"kappa_r", spec.kappa_r},
