@@ -58,6 +58,10 @@ struct Follower {
       ctx.progress(
           fmt::format("consolidating: window {}, sigma {:.1f} kPa, {} of {} windows accepted", w[1],
                       std::stod(w[3]) / 1e3, w[9], ctx.scene.consolidation.windows_required));
+    if (w[0] == "IWB_SETTLE" && w.size() >= 10 && ctx.progress)
+      ctx.progress(fmt::format(
+          "settling at the test's contacts: window {}, sigma {:.1f} kPa, {} of {} windows accepted",
+          w[1], std::stod(w[3]) / 1e3, w[9], ctx.scene.consolidation.windows_required));
     if (w[0] == "IWB_SHEAR_START" && w.size() >= 5) {
       result.facts["step0"] = std::stol(w[2]);
       result.facts["z0_m"] = std::stod(w[4]);
