@@ -285,15 +285,16 @@ io::KeyDeclarations declare() {
        .value = 0.1,
        .meaning = "friction while consolidating (low: dense, high: loose)"},
       // Friction alone saturates: 1, 3 and 10 leave the truth's specimen at e ~0.81, its core
-      // below the critical void ratio (data/grains/README.md); only rolling resistance while
-      // the grains come together holds a looser, contractive packing.
+      // below the critical void ratio. Rolling resistance holds looser arches while the grains
+      // come together, which collapse when the test's contacts take over unless those resist
+      // rolling as much; the shear waits for the specimen to settle (data/grains/README.md).
       {.table = "specimen",
        .key = "consolidation_rolling_friction",
        .range = non_negative(kMaxFriction),
        .default_note = "the grains' rolling_friction",
        .limit = "LIGGGHTS only, unless equal to the grains' rolling_friction",
-       .meaning = "rolling resistance while consolidating (above the grains': looser than "
-                  "friction alone can make)"},
+       .meaning = "rolling resistance while consolidating (a packing looser than the test's "
+                  "contacts hold settles before the shear starts)"},
   };
   for (auto r : profile_keys("wall",
                              "the wall under test (bottom, sheared in +x); glued: a square layer "
