@@ -20,8 +20,7 @@ struct DemRun {
   double K_kPa_per_mm;  // CNS
   double d50_mm;
   double R_n;
-  double
-      wall_zone_mm;  // the thickness of the zone whose void ratio is e_band (common/band_zone.hpp)
+  double wall_zone_mm = 0.0;  // the zone whose void ratio is e_band (common/band_zone.hpp)
   // the time series, contract units
   std::vector<double> t_s, u_x_mm, u_n_mm, sigma_n_kPa, tau_kPa, e_band;
   nlohmann::json summary;  // may be empty (partial runs)
