@@ -86,7 +86,7 @@ struct Shear {
 
 struct Consolidation {
   double friction;             // particle friction while consolidating (low: dense)
-  double rolling_friction;     // rolling resistance while consolidating (high: looser still)
+  double rolling_friction;     // rolling resistance while consolidating (may collapse at test)
   double sigma_tolerance;      // relative
   double plate_tolerance_d50;  // plate movement per window, in d50
   double kinetic_energy_J;     // largest kinetic energy of an accepted window
