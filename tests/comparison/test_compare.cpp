@@ -13,6 +13,7 @@
 #include "comparison/replay.hpp"
 #include "io/run_directory.hpp"
 #include "support/fixtures.hpp"
+#include "support/mohr_coulomb_reference.hpp"
 #include "support/replaced.hpp"
 #include "support/synthetic_dem.hpp"
 
@@ -70,16 +71,13 @@ TEST_CASE("replaying a continuum run's own path reproduces its curves (CNL, CNS,
     // the wall zone's dilation: the run writes the zone's void ratio from the model's void ratio
     // (support/synthetic_dem.hpp), and so does the replay; the 1 mm band lies inside the 2 mm
     // (10 d50) zone, so both are the band's growth
-    const auto zone = [](const std::vector<double>& u_x, const std::vector<double>& tau,
-                         const std::vector<double>& s_n, const std::vector<double>& u_n,
-                         const std::vector<double>& e, double h) {
-      return *comparison::evaluate_quantities({u_x, tau, s_n, u_n, &e, h}, {"wall_zone_dilation"})
-                  .at("wall_zone_dilation");
+    const auto zone = [](const comparison::Curve& c) {
+      return *comparison::evaluate_quantities(c, {"wall_zone_dilation"}).at("wall_zone_dilation");
     };
     const double dem_zone =
-        zone(dem.u_x_mm, dem.tau_kPa, dem.sigma_n_kPa, dem.u_n_mm, dem.e_band, dem.wall_zone_mm);
+        zone({dem.u_x_mm, dem.tau_kPa, dem.sigma_n_kPa, dem.u_n_mm, &dem.e_band, dem.wall_zone_mm});
     const double model_zone =
-        zone(r.u_x_mm, r.tau_kPa, r.sigma_n_kPa, r.u_n_mm, r.e_band, dem.wall_zone_mm);
+        zone({r.u_x_mm, r.tau_kPa, r.sigma_n_kPa, r.u_n_mm, &r.e_band, dem.wall_zone_mm});
     CHECK(model_zone == Approx(dem_zone).epsilon(1e-4));
     // hvwe's void ratio follows de = (1 + e) d eps_v: its band of d_s grew to d_s exp(u_n / d_s),
     // a few per cent more than u_n at these strains; averaged over the last fifth of the travel
@@ -190,4 +188,29 @@ TEST_CASE(
   CHECK_THAT(missed.status, Catch::StartsWith("failed: inadmissible start"));
   CHECK(missed.u_x_mm.empty());
   CHECK(comparison::compare(dem, missed).rows_compared == 0);
+}
+
+// A model without a void ratio (Mohr-Coulomb's traction law) gives its band's growth from its
+// strain: a 10 mm band inside a 20 mm wall zone grew by u_n itself, so the zone's dilation is u_n
+// over the last fifth of the travel.
+TEST_CASE("the wall zone's dilation of a model without a void ratio is its band's u_n",
+          "[comparison]") {
+  auto dem = test::mohr_coulomb_reference();
+  dem.wall_zone_mm = 20.0;
+  auto in = test::shipped("table_4_3_mohr_coulomb.toml");
+  in.tables["mohr_coulomb"]["phi_i_deg"] = 30.0, in.tables["mohr_coulomb"]["psi_deg"] = 8.0;
+  in.tables["mohr_coulomb"]["E_kPa"] = 2e4;
+  const auto r = comparison::replay(dem, {"mc", "mc", in, 10.0});
+  REQUIRE(r.status == "complete");
+  const double zone =
+      *comparison::evaluate_quantities(
+           {r.u_x_mm, r.tau_kPa, r.sigma_n_kPa, r.u_n_mm, &r.e_band, 20.0}, {"wall_zone_dilation"})
+           .at("wall_zone_dilation");
+  double sum = 0.0;
+  int rows = 0;
+  for (std::size_t i = 0; i < r.u_x_mm.size(); ++i)
+    if (r.u_x_mm[i] >= 0.8 * r.u_x_mm.back()) sum += r.u_n_mm[i], ++rows;
+  INFO("zone " << zone << " mm, u_n over the last fifth " << sum / rows << " mm");
+  CHECK(sum / rows > 0.5);  // psi 8 deg over 8-10 mm of travel: ~1.3 mm
+  CHECK(zone == Approx(sum / rows).epsilon(1e-9));
 }

@@ -51,7 +51,8 @@ inline std::string synthetic_profile(const SyntheticDem& s, double u_x_end_mm) {
 // The contract's e_band (common/band_zone.hpp) of a band of thickness d_s and void ratio e at the
 // bottom of a zone of height h, from the band's own void ratio: its grains' volume d_s / (1 + e0)
 // now fills d_s (1 + e) / (1 + e0); above it, up to h, the grains at e0 that the band did not
-// push out of the zone; a band thicker than the zone fills it at its own e.
+// push out of the zone; a band thicker than the zone fills it at its own e. (Written from the
+// solid volumes, apart from the replay's own zone_void_ratio, which the comparison tests check.)
 inline double zone_void_ratio(double e0, double e, double d_s, double h) {
   const double band = d_s * (1.0 + e) / (1.0 + e0);
   if (band >= h) return e;
