@@ -321,27 +321,51 @@ def approach(sigma, what="the plate did not reach the grains"):
     fail("servo did not converge: %s in %d windows" % (what, P["approach_windows"]))
 
 
-def accept(sigma, height, before_save=lambda: None):
-    """Windows until windows_required consecutive ones have sigma() within tolerance, a height()
-    that has stopped and a small kinetic energy (DEM.md); then the specimen is saved."""
+def still_windows(tag, sigma, height, held=lambda s: True):
+    """Windows until windows_required consecutive ones have held(sigma()), a height() that has
+    stopped and a small kinetic energy (DEM.md), each printed as `tag`; at most max_windows.
+    Returns (windows, height, sigma) of the last one, or None if the specimen never held still."""
     good, zprev = 0, height()
     for w in range(1, P["max_windows"] + 1):
         run(P["window_steps"])
         s, zp = sigma(), height()
         dz, ke = abs(zp - zprev), kinetic_energy()
-        ok = abs(s - P["sigma_n0"]) < P["sigma_tol"] * P["sigma_n0"] and dz < P["plate_tol"] and ke < P["ke_tol"]
-        good = good + 1 if ok else 0
-        say("IWB_WINDOW %d sigma_Pa %.8g dz_m %.6g ke_J %.6g good %d" % (w, s, dz, ke, good))
+        good = good + 1 if held(s) and dz < P["plate_tol"] and ke < P["ke_tol"] else 0
+        say("%s %d sigma_Pa %.8g dz_m %.6g ke_J %.6g good %d" % (tag, w, s, dz, ke, good))
         if good >= P["windows_required"]:
-            before_save()
-            O.save("consolidated.yade.gz")
-            report_cost()
-            report_liquid_bridges()
-            say("IWB_STAGE_DONE consolidate zplate_m %.10g sigma_Pa %.8g" % (zp, s))
-            return
+            return w, zp, s
         zprev = zp
+    return None
+
+
+def accept(sigma, height, before_save=lambda: None):
+    """Consolidation's windows: sigma() within tolerance of sigma_n0 besides a still specimen;
+    then the specimen is saved."""
+    done = still_windows("IWB_WINDOW", sigma, height,
+                        lambda s: abs(s - P["sigma_n0"]) < P["sigma_tol"] * P["sigma_n0"])
     report_cost()
-    fail("servo did not converge: consolidation not accepted after %d windows" % P["max_windows"])
+    if done is None:
+        fail("servo did not converge: consolidation not accepted after %d windows" % P["max_windows"])
+    before_save()
+    O.save("consolidated.yade.gz")
+    report_liquid_bridges()
+    say("IWB_STAGE_DONE consolidate zplate_m %.10g sigma_Pa %.8g" % done[1:])
+
+
+def settle(zrelax):
+    """A specimen prepared looser than the test's contacts hold collapses when they take over
+    (the LIGGGHTS template's lesson: 1-1.7 mm within the first 0.14 mm of a shear that did not
+    wait). Shear starts once the plate has come to rest under the servo's sigma_n0; a specimen
+    whose plate did not move over the relaxation starts at once. The plate's stress is not asked:
+    the servo holds it wherever the plate rests."""
+    windows = 0
+    if abs(zplate() - zrelax) >= P["plate_tol"] or kinetic_energy() >= P["ke_tol"]:
+        done = still_windows("IWB_SETTLE", plate_sigma, zplate)
+        if done is None:
+            report_cost()
+            fail("the specimen did not settle at the test's contacts in %d windows" % P["max_windows"])
+        windows = done[0]
+    say("IWB_FACT settle_windows %d" % windows)
 
 
 def plate_sigma():
@@ -508,7 +532,9 @@ def clamp_under_plate(z):
 
 def shear():
     load_consolidated()
+    zrelax = zplate()
     run(P["relax_steps"])
+    settle(zrelax)
     for axis, value in zip("xyz", stress_volume_sums(grain_volumes())):  # the soil cell's K0 when shear starts
         say("IWB_FACT stress_volume_%s%s_Pa_m3 %.10g" % (axis, axis, value))
     z0 = zplate()
