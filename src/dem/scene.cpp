@@ -458,10 +458,10 @@ double Shear::duration_s() const {
   return std::sqrt(2.0 * ramp_s * d / velocity_m_s);  // the whole travel within the ramp
 }
 
-double servo_loop_number(double youngs_modulus_Pa, double sigma_n_Pa) {
+double servo_loop_number(double youngs_modulus_Pa, double sigma_n_Pa, double plate_factor) {
   constexpr double kTunedModulusPa = 1e8, kTunedStressPa = 50e3;
   return std::pow(youngs_modulus_Pa / kTunedModulusPa, 1.0 / 6.0) *
-         std::pow(kTunedStressPa / sigma_n_Pa, 2.0 / 3.0);
+         std::pow(kTunedStressPa / sigma_n_Pa, 0.75) * plate_factor;
 }
 
 double default_shear_servo_gain(double loop_number) {

@@ -132,8 +132,9 @@ TemplateValues liggghts_oedometer(const Scene& cell, const SoilCellSpec& c) {
   // a gain chosen at the first level (the consolidation's) fell 6 % short of 160 kPa on the smoke
   // cell. The low levels' faster loop may chatter; their rows average over half a window.
   const double top_Pa = *std::max_element(levels.begin(), levels.end()) * 1e3;
-  const double kp = std::max(cell.servo.kp, default_consolidation_servo_gain(servo_loop_number(
-                                                cell.particles.youngs_modulus_Pa, top_Pa)));
+  const double kp =
+      std::max(cell.servo.kp, default_consolidation_servo_gain(servo_loop_number(
+                                  cell.particles.youngs_modulus_Pa, top_Pa, kCellPlateLoopFactor)));
   return {{"oedometer_levels", program},
           {"servo_kp_oedometer", fmt::format("{:g}", kp)},
           {"ramp_steps", std::to_string(steps)},
@@ -350,6 +351,22 @@ std::vector<double> oedometer_levels_kPa(const SoilCellSpec& c) {
   return out;
 }
 
+namespace {
+
+// The cell's plates carry a higher loop gain than the scene's plate (kCellPlateLoopFactor): the
+// gains the scene states are kept, the defaults follow the cell's own loop number.
+void set_cell_servo_gains(toml::table& root, const Scene& base, const SoilCellSpec& c,
+                          const std::string& source) {
+  const double loop = servo_loop_number(base.particles.youngs_modulus_Pa,
+                                        c.initial_stress_kPa() * 1e3, kCellPlateLoopFactor);
+  if (!root.at_path("servo.kp"))
+    io::set_dotted(root, "servo.kp", default_consolidation_servo_gain(loop), source);
+  if (!root.at_path("servo.kp_shear"))
+    io::set_dotted(root, "servo.kp_shear", default_shear_servo_gain(loop), source);
+}
+
+}  // namespace
+
 std::string cell_scene_text(const std::string& text, const std::string& source,
                             const SoilCellSpec& c) {
   check_cell(c);
@@ -391,6 +408,7 @@ std::string cell_scene_text(const std::string& text, const std::string& source,
   }
   set("boundary.type", std::string(oedometer(c) ? "CNL" : driver::to_string(c.boundary)));
   set("boundary.sigma_n_kPa", c.initial_stress_kPa());
+  set_cell_servo_gains(root, base, c, source);
   set("shear.inertial_number", c.inertial_number);
   if (cyclic(c)) {
     set("shear.amplitude_mm", amplitude_mm);

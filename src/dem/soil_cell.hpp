@@ -41,6 +41,10 @@ const char* to_string(CellKind k);
 // first grain layer moves with the boundary (DEM.md: R_n >= 0.5 drags it at 0.9-1.0).
 inline constexpr double kCellPitchD50 = 2.0;
 inline constexpr double kCellRidgeD50 = 1.0;
+// Their ridges meet 1.45 times the grains an interface scene's plate meets per area, and the
+// servo's loop gain with them (dem/scene.hpp, servo_loop_number): a 6 d50 cell of the truth's
+// grains at 10 kPa chattered from step to step at the interface scenes' default gains.
+inline constexpr double kCellPlateLoopFactor = 1.45;
 
 struct SoilCellSpec {
   std::string engine = "liggghts";  // or "yade" (dem/engines.hpp)

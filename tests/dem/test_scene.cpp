@@ -318,15 +318,16 @@ TEST_CASE("every scene shipped in data/ lies within the ranges scenes are checke
   CHECK(scenes >= 69);
 }
 
-// The shear servo's gain keeps its loop gain per step (~ kp E^(1/6) sigma^(-2/3), scene.hpp) at the
+// The shear servo's gain keeps its loop gain per step (~ kp E^(1/6) sigma^(-3/4), scene.hpp) at the
 // value tuned on E 1e8 Pa at 50 kPa: 2 there and wherever the loop is slower, kp x loop number = 2
 // wherever it is faster.
 TEST_CASE(
     "the default shear servo gain is 2 where it was tuned and falls with the servo's loop number",
     "[dem]") {
   CHECK(dem::servo_loop_number(1e8, 50e3) == Approx(1.0));
-  CHECK(dem::servo_loop_number(64e8, 50e3) == Approx(2.0));       // 64^(1/6)
-  CHECK(dem::servo_loop_number(1e8, 50e3 / 8.0) == Approx(4.0));  // 8^(2/3)
+  CHECK(dem::servo_loop_number(64e8, 50e3) == Approx(2.0));        // 64^(1/6)
+  CHECK(dem::servo_loop_number(1e8, 50e3 / 16.0) == Approx(8.0));  // 16^(3/4)
+  CHECK(dem::servo_loop_number(1e8, 50e3, 1.45) == Approx(1.45));  // the soil cell's plates
   CHECK(dem::default_shear_servo_gain(0.5) == 2.0);
   CHECK(dem::default_shear_servo_gain(1.0) == 2.0);
   for (const double loop : {1.5, 2.0, 4.0})
