@@ -9,9 +9,10 @@
 set -euo pipefail
 # In order of value: the headline cell (R_n 0.5, CNS, A 1 mm; its seed 1 is the inertial-number
 # check's run, in cyclic_inertial/, made once before the campaign: README.md), the other BCs at
-# R_n 0.5, the small amplitude, the flat wall, the medium-dense cell, the check at I = 1e-4 (its
+# R_n 0.5, the small amplitude, the flat wall, the virgin peaks under CNS (monotonic, for the
+# post-cyclic ones), the medium-dense cell, the check at I = 1e-4 (its
 # shear stage checkpoints, so it spans sessions); flat x CV is cut first.
 export DEST=data/cyclic
-export SWEEPS=${SWEEPS:-cyclic_headline cyclic_rn05 cyclic_small cyclic_flat cyclic_flat_small cyclic_medium cyclic_inertial_fine cyclic_flat_cv}
+export SWEEPS=${SWEEPS:-cyclic_headline cyclic_rn05 cyclic_small cyclic_flat cyclic_virgin cyclic_flat_small cyclic_medium cyclic_inertial_fine cyclic_flat_cv}
 export WORK=${WORK:-runs/cyclic}
 exec data/run_campaign.sh "$@"
