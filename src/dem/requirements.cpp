@@ -23,6 +23,7 @@ const std::vector<Qoi>& compared_only_quantities() {
   static const std::vector<Qoi> q = {
       {"u_x_at_peak", "displacement to the peak"},
       {"sigma_n_change", "normal stress change at the end (CNS, CV)"},
+      {"sigma_n_lowest", "lowest normal stress on the way less the first (CNS, CV)"},
       {"wall_zone_dilation", "dilation of the wall zone, from its void ratio (CNL, CNS)"},
   };
   return q;

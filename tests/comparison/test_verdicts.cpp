@@ -90,6 +90,28 @@ TEST_CASE("the wall zone's dilation from its void ratio, known in closed form",
           .at("wall_zone_dilation"));
 }
 
+// A contractive interface under CNS: sigma_n = 50 - 8 u + 4 u^2 kPa falls to 46 at u_x = 1 mm and
+// is back at 50 by 2 mm (then rises), so the lowest on the way is -4 kPa where the end shows a
+// gain. Rows alternating +-0.3 kPa about it, as the DEM's servo scatters them: the least row lies
+// at -4.3, the 11-row running mean within 0.03 of the curve (a window of 0.1 mm about the minimum
+// lifts a parabola's mean by 4 x 0.1^2 / 12 = 0.003 kPa).
+TEST_CASE("the lowest normal stress on the way, known in closed form", "[comparison][verdicts]") {
+  KnownCurve c;
+  for (std::size_t i = 0; i < c.u_x.size(); ++i) {
+    const double u = c.u_x[i];
+    c.sigma[i] = 50.0 - 8.0 * u + 4.0 * u * u + (i == 0 ? 0.0 : (i % 2 ? 0.3 : -0.3));
+  }
+  const auto q = comparison::evaluate_quantities({c.u_x, c.tau, c.sigma, c.u_n},
+                                                 {"sigma_n_lowest", "sigma_n_change"});
+  CHECK(*q.at("sigma_n_lowest") == Approx(-4.0).margin(0.04));
+  CHECK(*q.at("sigma_n_change") > 0.0);
+  // a curve that only rises loses nothing
+  const KnownCurve rising;
+  CHECK(*comparison::evaluate_quantities({rising.u_x, rising.tau, rising.sigma, rising.u_n},
+                                         {"sigma_n_lowest"})
+             .at("sigma_n_lowest") == 0.0);
+}
+
 TEST_CASE("each boundary condition judges what it leaves free", "[comparison][verdicts]") {
   using driver::BoundaryKind;
   const auto cnl = comparison::judged_quantities(BoundaryKind::kCNL);
@@ -105,6 +127,9 @@ TEST_CASE("each boundary condition judges what it leaves free", "[comparison][ve
   CHECK(has(cv, "sigma_n_change"));
   CHECK(has(cns, "total_dilation"));
   CHECK(has(cns, "sigma_n_change"));
+  CHECK(has(cns, "sigma_n_lowest"));
+  CHECK(has(cv, "sigma_n_lowest"));
+  CHECK_FALSE(has(cnl, "sigma_n_lowest"));
 }
 
 TEST_CASE("verdict rule: holds within the tolerance, breaks beyond it and the DEM's scatter",
