@@ -1,8 +1,9 @@
 #pragma once
 // The quantities of interest by which a continuum model is judged against the DEM (issue 14):
 // shear stress (peak, its displacement, residual) and dilation (total and its rate) under CNL and
-// CNS, the normal-stress change (at the end, and the lowest on the way) under CNS and CV. Each is computed the same way from a DEM curve
-// and from a model's replay of it, so that their difference is the model's error alone.
+// CNS, the normal-stress change (at the end, and the lowest on the way) under CNS and CV. Each is
+// computed the same way from a DEM curve and from a model's replay of it, so that their difference
+// is the model's error alone.
 #include <map>
 #include <optional>
 #include <string>
