@@ -74,9 +74,11 @@ const std::vector<QuantityInfo>& quantity_table() {
       {"total_dilation", "total dilation u_n at the end", "mm", 0.20, 0.02, true},
       {"dilation_rate", "dilation rate du_n/du_x (last fifth)", "", 0.20, 0.01, false},
       {"sigma_n_change", "normal stress change at the end", "kPa", 0.20, 1.0, false},
-      // floor 2 kPa: what is left of the servo's scatter in a dilating run's lowest mean (a
-      // dense CNS run reads -0.1 to -0.3 kPa where a model reads 0)
-      {"sigma_n_lowest", "lowest normal stress on the way, less the first", "kPa", 0.20, 2.0,
+      // floor 5 kPa, a tenth of the 50 kPa the campaigns start from: a dense run's lowest is 0
+      // (it gains from the start) where hvwe dips by 0.5-2.8 kPa before it dilates (the CNS cells
+      // of data/reference); with a floor of 2 kPa every one of them "broke" on a loss of 1-6 % of
+      // sigma_n0, which is not the loss pile fatigue is about
+      {"sigma_n_lowest", "lowest normal stress on the way, less the first", "kPa", 0.20, 5.0,
        false},
       {"wall_zone_dilation", "dilation of the wall zone (its void ratio, last fifth)", "mm", 0.20,
        0.02, true},
