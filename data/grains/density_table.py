@@ -39,6 +39,14 @@ def slabs(run, slab_d50=4.0, top_d50=20.0):
     return out
 
 
+def lowest(ts):
+    """The row of the lowest sigma_n (a CNS run's dip before it dilates; a raw row, where `iwb
+    compare`'s sigma_n_lowest takes an 11-row running mean)."""
+    low = min(ts, key=lambda r: float(r["sigma_n_kPa"]))
+    return (f"lowest {float(low['sigma_n_kPa']):.1f} kPa at u_x {float(low['u_x_mm']):.2f} mm "
+            f"(u_n {float(low['u_n_mm']):+.3f})")
+
+
 def describe(run):
     s = json.load(open(os.path.join(run, "summary.json")))
     ts = rows(os.path.join(run, "timeseries.csv"))
@@ -46,8 +54,8 @@ def describe(run):
     e_band = " -> ".join(f"{float(r['e_band_cg']):.3f}" for r in band)
     line = (f"{os.path.basename(run):28s} e_specimen {float(ts[0]['e_specimen']):.3f}  "
             f"wall band e (0, 5, 10 mm) {e_band}  u_n {float(ts[-1]['u_n_mm']):+.2f} mm  "
-            f"sigma_n {float(ts[0]['sigma_n_kPa']):.0f} -> {float(ts[-1]['sigma_n_kPa']):.0f} kPa  "
-            f"{s['shear_mode']}")
+            f"sigma_n {float(ts[0]['sigma_n_kPa']):.1f} -> {float(ts[-1]['sigma_n_kPa']):.1f} kPa, "
+            f"{lowest(ts)}  {s['shear_mode']}")
     slab = "  ".join(f"{lo:.0f}-{lo + 4:.0f}: {a:.3f}->{b:.3f}" for lo, (a, b) in slabs(run))
     return line + "\n    slabs (d50 above the wall base), e first -> last window: " + slab
 
