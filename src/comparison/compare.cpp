@@ -223,6 +223,22 @@ models::ModelInputs validated_parameters(const std::string& model, const std::st
   return in;
 }
 
+void require_startable(const DemRun& dem, const Variant& predicted, const std::string& params) {
+  const std::string why = inadmissible_start(dem, predicted);
+  if (why.empty()) return;
+  // a wall may shrink a model's domain (a clay's critical state cone, eq. 6.22), and a fit may
+  // leave such a wall: the set is refused only where the unreduced material cannot start either
+  Variant unreduced = predicted;
+  unreduced.inputs.roughness.kappa_r = 1.0;
+  if (inadmissible_start(dem, unreduced).empty()) return;
+  throw InputError(fmt::format(
+      "{}: {} cannot start from this run's first state (its sigma_n and wall band's void ratio) "
+      "with {}: {}. The set does not describe these grains at this density (a wider grading "
+      "packs below the e_d of a set calibrated on uniform grains): give a set calibrated on "
+      "them (iwb calibrate on their soil tests)",
+      dem.dir.string(), predicted.model, params, why));
+}
+
 ComparisonInputs read_comparison_inputs(const CompareOptions& opt) {
   ComparisonInputs in{opt, load_dem_run(opt.dem_dir, opt.allow_partial), load_seeds(opt)};
   in.scatter = seed_scatter(in.dem, in.seeds);  // InputError for a seed of another scene
@@ -233,6 +249,7 @@ ComparisonInputs read_comparison_inputs(const CompareOptions& opt) {
                                     opt.predicted_ds_d50);
   if (!opt.roughness_scheme.empty() || !opt.f_c.empty())
     for (auto& v : in.candidates) chosen_roughness(opt, v.inputs.roughness);
+  require_startable(in.dem, in.candidates.front(), opt.params);
   return in;
 }
 

@@ -88,4 +88,8 @@ void chosen_roughness(const CompareOptions& options, models::Roughness& roughnes
 // checked before a comparison writes anything.
 models::ModelInputs validated_parameters(const std::string& model, const std::string& params);
 
+// InputError (naming the run, the set and why) where the model cannot start from the DEM's first
+// state with the predicted variant nor with kappa_r = 1: every replay would reach no row.
+void require_startable(const DemRun& dem, const Variant& predicted, const std::string& params);
+
 }  // namespace iwb::comparison

@@ -36,21 +36,35 @@ double zone_void_ratio(double e0, double e, double d_s, double h) {
 
 }  // namespace
 
-Replay replay(const DemRun& dem, const Variant& v, const driver::RunSettings& settings) {
-  Replay out{v, "", {}, {}, {}, {}, {}, dem.e_band.front()};
+Start start_of(const DemRun& dem, const Variant& v) {
   const auto& spec = models::find_model(v.model);
   models::ModelInputs in = v.inputs;
   in.shear_zone_mm = v.d_s_mm;  // a model with stiffness per displacement scales by it (hyperbolic)
-  std::unique_ptr<models::Model> model;
-  models::StateVector s0;
+  Start out;
+  // a fit of material parameters may try a set the model refuses (Mohr-Coulomb's psi above phi):
+  // InputError, as a start outside the domain
+  out.model = spec.make(in);
+  // from the DEM's first state: its sigma_n, the void ratio of its wall band
+  const auto init = models::offer(
+      spec, v.inputs, {{"sigma_n_kPa", dem.sigma_n_kPa.front()}, {"e0", dem.e_band.front()}});
+  out.state = out.model->initial_state(init);
+  return out;
+}
+
+std::string inadmissible_start(const DemRun& dem, const Variant& v) {
   try {
-    // a fit of material parameters may try a set the model refuses (Mohr-Coulomb's psi above phi):
-    // a miss like an inadmissible start
-    model = spec.make(in);
-    // from the DEM's first state: its sigma_n, the void ratio of its wall band
-    const auto init =
-        models::offer(spec, v.inputs, {{"sigma_n_kPa", dem.sigma_n_kPa.front()}, {"e0", out.e0}});
-    s0 = model->initial_state(init);
+    start_of(dem, v);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+Replay replay(const DemRun& dem, const Variant& v, const driver::RunSettings& settings) {
+  Replay out{v, "", {}, {}, {}, {}, {}, dem.e_band.front()};
+  Start start;
+  try {
+    start = start_of(dem, v);
   } catch (const InputError& e) {
     // the DEM's start lies outside this variant's domain (a clay model's critical state cone
     // shrinks with kappa_r, eq. 6.22): a replay that reaches no row, which the fit and the scan
@@ -58,6 +72,8 @@ Replay replay(const DemRun& dem, const Variant& v, const driver::RunSettings& se
     out.status = fmt::format("failed: inadmissible start: {}", e.what());
     return out;
   }
+  auto& model = start.model;
+  const auto& s0 = start.state;
   driver::RunSettings rs = settings;
   rs.output_every = 1;
   const auto result = driver::run_element_test(*model, s0, dem_path(dem, v.d_s_mm), rs);

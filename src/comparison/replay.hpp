@@ -3,6 +3,7 @@
 // through a shear-zone thickness d_s, and in the normal direction the DEM's boundary condition
 // (CNL with the measured sigma_n(t), CNS with the scene's K, CV), from the DEM's first state
 // (sigma_n, band void ratio as e0).
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,5 +35,16 @@ struct Replay {
 inline constexpr double kReplayStrainIncrement = 1e-3;
 
 Replay replay(const DemRun& dem, const Variant& variant, const driver::RunSettings& settings = {});
+
+// The variant's model and its state at the DEM's first row (its sigma_n, the void ratio of its
+// wall band); InputError where that state lies outside the model's domain.
+struct Start {
+  std::unique_ptr<models::Model> model;
+  models::StateVector state;
+};
+Start start_of(const DemRun& dem, const Variant& variant);
+
+// Why the variant cannot start from the DEM's first state; empty where it can.
+std::string inadmissible_start(const DemRun& dem, const Variant& variant);
 
 }  // namespace iwb::comparison

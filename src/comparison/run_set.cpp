@@ -133,7 +133,11 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
   // every input read and checked before OUT is created: a bad one leaves nothing behind
   std::vector<DemRun> dems;
   for (const auto& d : opt.dem_dirs) dems.push_back(load_dem_run(d, opt.allow_partial));
-  validated_parameters(opt.model, opt.params);
+  const auto parameters = validated_parameters(opt.model, opt.params);
+  for (const auto& dem : dems)
+    require_startable(dem,
+                      standard_variants(dem, opt.model, parameters, opt.predicted_ds_d50).front(),
+                      opt.params);
   if (!opt.form_limit.empty()) read_form_limit(opt.form_limit, opt.model);
   if (!opt.roughness_scheme.empty() || !opt.f_c.empty()) {
     CompareOptions c;

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 
 #include "common/errors.hpp"
@@ -11,6 +12,7 @@
 #include "comparison/metrics.hpp"
 #include "comparison/quantities.hpp"
 #include "comparison/replay.hpp"
+#include "comparison/run_set.hpp"
 #include "io/run_directory.hpp"
 #include "support/fixtures.hpp"
 #include "support/mohr_coulomb_reference.hpp"
@@ -144,6 +146,48 @@ TEST_CASE("malformed run directories are refused with file, line and reason", "[
   test::edit_file(d / "manifest.json", "\"type\"", "\"kind\"");
   CHECK_THAT(rejection(d),
              Catch::Contains("missing or malformed field '/scene/resolved/boundary/type'"));
+}
+
+TEST_CASE(
+    "a parameter set the run's first state lies outside of is refused before anything is written",
+    "[comparison]") {
+  // The synthetic run starts at sigma_n 100 kPa and e0 0.70 (support/synthetic_dem.hpp). The
+  // replay starts hvwe there with K0 = 1 - sin(phi_c), so -tr T = sigma_n (1 + 2 K0), where
+  // Bauer's lower bound is e_d = e_d0 exp(-(-tr T / h_s)^n) (seed eq. 5.5, Table 5.1's h_s, n and
+  // phi_c). A set whose e_d0 puts e_d 0.01 above e0 leaves every replay without a row; 0.01 below,
+  // the run starts.
+  const auto dem = synthetic_dem("inadmissible_start", {driver::BoundaryKind::kCNL, 0.0}, 0.0);
+  const double trace = 100.0 * (1.0 + 2.0 * (1.0 - std::sin(28.0 * M_PI / 180.0)));
+  const double e_d_over_e_d0 = std::exp(-std::pow(trace / 2e6, 0.29));
+  const auto set_with_e_d = [&](const std::string& name, double e_d) {
+    const fs::path f = fs::path(IWB_TEST_RUNS_DIR) / "comparison" / (name + ".toml");
+    io::write_atomically(
+        f, fmt::format("[hypoplastic]\nphi_c_deg = 28\nhs_kPa = 2e6\nn = 0.29\ned0 = {:.6f}\n"
+                       "ec0 = 0.96\nei0 = 1.09\nalpha = 0.13\nbeta = 2\n",
+                       e_d / e_d_over_e_d0));
+    return f.string();
+  };
+  comparison::CompareOptions opt;
+  opt.dem_dir = dem;
+  opt.out = fs::path(IWB_TEST_RUNS_DIR) / "comparison" / "inadmissible_start_out";
+  fs::remove_all(opt.out);
+  opt.params = set_with_e_d("e_d_above_e0", 0.71);
+  CHECK_THROWS_MATCHES(comparison::run_comparison(opt), InputError,
+                       Catch::Matchers::Predicate<InputError>([&](const InputError& e) {
+                         const std::string m = e.what();
+                         return m.find(dem.string() + ": hvwe cannot start") != std::string::npos &&
+                                m.find(opt.params) != std::string::npos &&
+                                m.find("e = 0.7 outside (e_d, e_i) = (0.71") != std::string::npos;
+                       }));
+  CHECK_FALSE(fs::exists(opt.out));
+  comparison::RunSetOptions set;
+  set.dem_dirs = {dem};
+  set.params = opt.params;
+  set.out = opt.out;
+  CHECK_THROWS_AS(comparison::run_hypothesis_set(set), InputError);
+  CHECK_FALSE(fs::exists(opt.out));
+  opt.params = set_with_e_d("e_d_below_e0", 0.69);
+  CHECK_NOTHROW(comparison::read_comparison_inputs(opt));
 }
 
 TEST_CASE("identifiability: the fit recovers a known kappa_r and d_s within 2 %", "[comparison]") {
