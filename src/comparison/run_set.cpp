@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <limits>
 #include <set>
 
 #include "common/errors.hpp"
@@ -99,7 +100,11 @@ RunRecord load_run_record(const fs::path& compare_dir) {
   r.R_n = io::json_field<double>(cmp, "/dem/R_n", cf);
   r.d50_mm = io::json_field<double>(cmp, "/dem/d50_mm", cf);
   r.kappa_r_fit = io::json_field<double>(cmp, "/fit/kappa_r", cf);
-  r.sigma_kappa_r_fit = io::json_field<double>(cmp, "/fit/sigma_kappa_r", cf);
+  // null where the fit's Jacobian was singular (a flat objective): no sigma, not a bad file
+  const nlohmann::json::json_pointer sigma("/fit/sigma_kappa_r");
+  r.sigma_kappa_r_fit = cmp.contains(sigma) && cmp.at(sigma).is_null()
+                            ? std::numeric_limits<double>::quiet_NaN()
+                            : io::json_field<double>(cmp, sigma.to_string(), cf);
   r.d_s_fit_d50 = io::json_field<double>(cmp, "/fit/d_s_over_d50", cf);
   r.peak_friction = io::json_field<double>(s, "/peak_friction", sf);
   r.residual_friction = io::json_field<double>(s, "/residual_friction", sf);

@@ -8,6 +8,7 @@
 
 #include "comparison/compare.hpp"
 #include "comparison/hypotheses.hpp"
+#include "comparison/run_set.hpp"
 #include "io/run_directory.hpp"
 #include "support/synthetic_dem.hpp"
 
@@ -285,4 +286,26 @@ TEST_CASE("iwb compare --runs: fits, verdicts and report over synthetic runs",
                   IWB_BINARY, out.string());
   REQUIRE(std::system(rep_dir.c_str()) == 0);
   CHECK_THAT(io::read_file(out.string() + "-report-dir.log"), Catch::Contains("(12 figures)"));
+}
+
+TEST_CASE("a fit without a sigma (singular Jacobian) is read as NaN; a missing one is refused",
+          "[comparison]") {
+  const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / "comparison" / "record_sigma";
+  const fs::path dem = dir / "dem", cmp = dir / "cmp";
+  fs::create_directories(dem), fs::create_directories(cmp);
+  io::write_atomically(dem / "summary.json",
+                       R"({"peak_friction": 0.6, "residual_friction": 0.5, "dilation_mm": 1.0,
+                           "shear_mode": "localised at the wall"})");
+  const auto with_fit = [&](const std::string& fit) {
+    io::write_atomically(cmp / "compare.json",
+                         R"({"dem": {"dir": ")" + dem.string() +
+                             R"(", "R_n": 0.5, "d50_mm": 2.0}, "fit": {"kappa_r": 0.9, )" + fit +
+                             R"("d_s_over_d50": 5.0}})");
+  };
+  with_fit(R"("sigma_kappa_r": null, )");
+  CHECK(std::isnan(comparison::load_run_record(cmp).sigma_kappa_r_fit));
+  with_fit(R"("sigma_kappa_r": 0.02, )");
+  CHECK(comparison::load_run_record(cmp).sigma_kappa_r_fit == 0.02);
+  with_fit("");
+  CHECK_THROWS_WITH(comparison::load_run_record(cmp), Catch::Contains("/fit/sigma_kappa_r"));
 }
