@@ -288,7 +288,7 @@ TEST_CASE("iwb compare --runs: fits, verdicts and report over synthetic runs",
   CHECK_THAT(io::read_file(out.string() + "-report-dir.log"), Catch::Contains("(12 figures)"));
 }
 
-TEST_CASE("a fit without a sigma (singular Jacobian) is read as NaN; a missing one is refused",
+TEST_CASE("a fit without a sigma (singular Jacobian) is read as NaN and a missing one is refused",
           "[comparison]") {
   const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / "comparison" / "record_sigma";
   const fs::path dem = dir / "dem", cmp = dir / "cmp";
