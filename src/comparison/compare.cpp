@@ -233,9 +233,8 @@ void require_startable(const DemRun& dem, const Variant& predicted, const std::s
   if (inadmissible_start(dem, unreduced).empty()) return;
   throw InputError(fmt::format(
       "{}: {} cannot start from this run's first state (its sigma_n and wall band's void ratio) "
-      "with {}: {}. The set does not describe these grains at this density (a wider grading "
-      "packs below the e_d of a set calibrated on uniform grains): give a set calibrated on "
-      "them (iwb calibrate on their soil tests)",
+      "with {}, neither at the predicted kappa_r nor at 1: {}. The set does not describe these "
+      "grains in this state: give a set calibrated on them (iwb calibrate on their soil tests)",
       dem.dir.string(), predicted.model, params, why));
 }
 

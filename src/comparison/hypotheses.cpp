@@ -117,8 +117,12 @@ KappaCheck check_kappa_r(const std::vector<RunRecord>& runs) {
     g.R_n = scatter_of(collect(runs, idx, [](const RunRecord& r) { return r.R_n; })).mean;
     for (auto i : idx) g.runs.push_back(runs[i].name);
     g.fit = scatter_of(collect(runs, idx, [](const RunRecord& r) { return r.kappa_r_fit; }));
-    const double fit_sigma =
-        scatter_of(collect(runs, idx, [](const RunRecord& r) { return r.sigma_kappa_r_fit; })).mean;
+    // a fit without a sigma (NaN: its Jacobian was singular) adds no fit uncertainty; left in, it
+    // would turn the group's scatter into NaN and the group into a single run's test
+    std::vector<double> sigmas;
+    for (double x : collect(runs, idx, [](const RunRecord& r) { return r.sigma_kappa_r_fit; }))
+      if (std::isfinite(x)) sigmas.push_back(x);
+    const double fit_sigma = sigmas.empty() ? 0.0 : scatter_of(sigmas).mean;
     g.scatter = std::hypot(g.fit.sd, fit_sigma);
     for (std::size_t b = 0; b < kGutjahrLogBases.size(); ++b)
       g.bases[b] = against_formula(g, kGutjahrLogBases[b]);

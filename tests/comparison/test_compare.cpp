@@ -190,6 +190,32 @@ TEST_CASE(
   CHECK_NOTHROW(comparison::read_comparison_inputs(opt));
 }
 
+TEST_CASE(
+    "a start that only a small kappa_r makes inadmissible is a miss of that wall, not a refusal",
+    "[comparison]") {
+  // hcc's critical state cone is M(kappa_r phi_c) (seed eq. 6.22) while K0 = 1 - sin(phi_c) uses
+  // the material's phi_c: at kappa_r 0.05 (Kaolin's phi_c 22.5 degrees: a cone of 1.1 degrees)
+  // the synthetic run's K0 state (100 kPa, e0 0.70) lies outside it; at kappa_r 1 it lies inside,
+  // and with N 1.10 instead of Kaolin's 1.03 the isotropic NCL at its mean stress of 74.5 kPa lies
+  // at e 0.87 (ln(1 + e) = N - lambda* ln p), well above e0. A fit can leave such a wall; the
+  // clay models predict no kappa_r from the wall, so the wall is set here as a fit would.
+  const auto dem = synthetic_dem("clay_small_kappa", {driver::BoundaryKind::kCNL, 0.0}, 0.0);
+  const fs::path params = fs::path(IWB_TEST_RUNS_DIR) / "comparison" / "clay_n_1.10.toml";
+  std::string clay = io::read_file("data/params/table_6_2_kaolin_clay.toml");
+  clay.replace(clay.find("N = 1.03"), 8, "N = 1.10");
+  io::write_atomically(params, clay);
+  comparison::CompareOptions opt;
+  opt.dem_dir = dem;
+  opt.model = "hcc";
+  opt.params = params.string();
+  const auto in = comparison::read_comparison_inputs(opt);
+  auto small_wall = in.candidates.front();
+  small_wall.inputs.roughness.kappa_r = 0.05;
+  CHECK_THAT(comparison::inadmissible_start(in.dem, small_wall), Catch::Contains("not admissible"));
+  CHECK_NOTHROW(comparison::require_startable(in.dem, small_wall, opt.params));
+  CHECK(comparison::replay(in.dem, small_wall).status.rfind("failed: inadmissible start", 0) == 0);
+}
+
 TEST_CASE("identifiability: the fit recovers a known kappa_r and d_s within 2 %", "[comparison]") {
   // "DEM" written by hvwe with kappa_r = 0.7 and d_s = 2 mm; the fit starts from 1 and 1 mm
   const auto dem = comparison::load_dem_run(

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 
 #include "comparison/compare.hpp"
 #include "comparison/hypotheses.hpp"
@@ -308,4 +309,16 @@ TEST_CASE("a fit without a sigma (singular Jacobian) is read as NaN and a missin
   CHECK(comparison::load_run_record(cmp).sigma_kappa_r_fit == 0.02);
   with_fit("");
   CHECK_THROWS_WITH(comparison::load_run_record(cmp), Catch::Contains("/fit/sigma_kappa_r"));
+}
+
+TEST_CASE("a seed whose fit has no sigma leaves the group judged on its seeds' scatter",
+          "[comparison][hypotheses]") {
+  // kappa_r 0.80, 0.84, 0.88: SD 0.04 exactly; the fits' sigmas 0.03 and (none): the group's
+  // scatter is hypot(0.04, 0.03) = 0.05, and its test one of scatter, not a single run's
+  auto runs = seeds("nosigma", 0.1, 0.2, {0.80, 0.84, 0.88});
+  runs[0].sigma_kappa_r_fit = 0.03, runs[1].sigma_kappa_r_fit = 0.03;
+  runs[2].sigma_kappa_r_fit = std::numeric_limits<double>::quiet_NaN();
+  const auto g = comparison::check_kappa_r(runs).groups.at(0);
+  CHECK(g.scatter == Approx(0.05).epsilon(1e-9));
+  CHECK(g.bases[0].in_scatter.has_value());
 }
