@@ -90,14 +90,15 @@ class Pool {
     record_["jobs"][i]["started"] = io::utc_timestamp();
     write_record();
     threads_.emplace_back([this, i] {
-      const JobResult r = run_one(jobs_[i]);
+      const JobResult r = run_one(i);
       std::lock_guard guard(mutex_);
       finish(i, r);
       cv_.notify_all();
     });
   }
 
-  JobResult run_one(const Job& job) {  // without the lock: this is where the hours go
+  JobResult run_one(std::size_t i) {  // without the lock: this is where the hours go
+    const Job& job = jobs_[i];
     const auto t0 = Clock::now();
     const fs::path dir = opt_.out / run_path(job);
     JobStart how = JobStart::kFresh;
@@ -111,7 +112,7 @@ class Pool {
                          how == JobStart::kFresh,
                          opt_.command_line,
                          &stop_,
-                         nullptr,
+                         [this, i](const std::string& line) { note_progress(i, line); },
                          dem::consolidation_cache_dir(opt_.out / "consolidated")};
       const auto outcome = dem::run_scene(scene, job.scene_text, *engine, ro);
       return {outcome.status, seconds_since(t0), how};
@@ -120,7 +121,15 @@ class Pool {
     }
   }
 
+  // A run's own progress line (its stage, how far, its ETA), kept for the sweep's next report:
+  // a campaign's jobs run for an hour and more, and until the first ends the sweep has no ETA.
+  void note_progress(std::size_t i, const std::string& line) {  // from the job's thread
+    std::lock_guard guard(mutex_);
+    job_progress_[i] = line;
+  }
+
   void finish(std::size_t i, const JobResult& r) {  // under the lock
+    job_progress_[i].clear();
     --running_;
     ++ended_;
     auto& j = record_["jobs"][i];
@@ -148,10 +157,14 @@ class Pool {
     if (!opt_.progress) return;
     const JobCounts c = count_jobs(record_);
     const std::string prefix = event.empty() ? "" : event + "; ";
+    std::string running;
+    for (std::size_t i = 0; i < jobs_.size(); ++i)
+      if (!job_progress_[i].empty())
+        running += fmt::format("; {}: {}", jobs_[i].name, job_progress_[i]);
     opt_.progress(fmt::format(
-        "{}sweep: {}/{} complete ({} reused), {} running, {} failed, {} to do, {:.0f} s, {}",
+        "{}sweep: {}/{} complete ({} reused), {} running, {} failed, {} to do, {:.0f} s, {}{}",
         prefix, c.complete, jobs_.size(), c.reused, c.running, c.failed, c.pending,
-        seconds_since(started_), eta(c)));
+        seconds_since(started_), eta(c), running));
   }
 
   void write_record() { campaign::write_record(record_, opt_.out); }
@@ -165,6 +178,8 @@ class Pool {
   std::vector<std::thread> threads_;
   int running_ = 0, ended_ = 0;
   std::vector<double> run_seconds_;  // complete jobs of this invocation, for the ETA
+  std::vector<std::string> job_progress_ =
+      std::vector<std::string>(jobs_.size());  // running jobs' last line
   Clock::time_point started_ = Clock::now(), last_progress_ = Clock::now();
 };
 

@@ -1,5 +1,6 @@
 // A real campaign (LIGGGHTS, three tiny jobs, two at once) stopped when its first job ends and
 // run again: only the unfinished jobs run the second time.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 
@@ -32,7 +33,18 @@ TEST_CASE("a campaign stopped after its first job and run again re-runs only the
   auto opt = test::sweep_options("data/sweeps/tiny.toml", out);
   opt.jobs = 2;
   opt.stop_after = 1;
+  std::vector<std::string> lines;
+  opt.progress = [&lines](const std::string& line) { lines.push_back(line); };
   const auto first = campaign::run_sweep(opt);
+  // when u0.05 ends, u10 (started with it) is running: the sweep's line carries u10's own
+  // progress (its stage, how far, its ETA), since until a job ends the sweep has no ETA of its own;
+  // once u10 has stopped, its line is gone
+  const auto ended = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {
+    return l.rfind("u0.05: complete; sweep:", 0) == 0;
+  });
+  REQUIRE(ended != lines.end());
+  CHECK_THAT(*ended, Catch::Contains("; u10: "));
+  CHECK_THAT(lines.back(), !Catch::Contains("u10: "));
   REQUIRE(first.record["status"] == "interrupted");
   REQUIRE(job_record(first.record, "u0.05")["status"] == "complete");
   const json done = manifest(out, "u0.05");
