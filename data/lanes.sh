@@ -2,7 +2,7 @@
 # The campaigns still running (issues 34 and 36) as lanes: one resumable chain of sweeps each
 # (data/run_campaign.sh), committing every completed run's compact files, so that a session on a
 # fresh machine restarts all of them with one command after ./setup.sh. From the repository root:
-#   data/lanes.sh start [LANE...]   copy build/iwb to runs/bin-iwb-<commit> (a rebuild must not
+#   data/lanes.sh start [LANE...]   copy build/iwb to runs/bin-iwb-<its sha256> (a rebuild must not
 #                          change the binary under a running campaign) and start the lanes named
 #                          (default: every lane) that are not running
 #   data/lanes.sh status   each lane's last progress line (its sweep, and each running job's
@@ -44,16 +44,17 @@ lane_command() {  # the environment and command of a lane
 
 lane_nice() { [ "$1" = grading ] && echo 5 || echo 19; }
 
-running() {  # the lane's process group still has a process
+running() {  # the lane's process group still has a live process (not a zombie being reaped)
   local f=$DIR/$1.pgid
-  [ -f "$f" ] && pgrep -g "$(cat "$f")" >/dev/null 2>&1
+  [ -f "$f" ] && pgrep -g "$(cat "$f")" -r R,S,D,T >/dev/null 2>&1
 }
 
 start() {
   [ -x build/iwb ] || { echo "lanes: build/iwb missing: run ./setup.sh first" >&2; exit 2; }
   mkdir -p "$DIR"
+  # named by its content: lanes started from one build share it, whatever was committed since
   local bin
-  bin=$PWD/runs/bin-iwb-$(git rev-parse --short HEAD)
+  bin=$PWD/runs/bin-iwb-$(sha256sum build/iwb | cut -c1-12)
   [ -x "$bin" ] || cp build/iwb "$bin"
   for lane in "${LANES[@]}"; do
     if running "$lane"; then
@@ -97,8 +98,10 @@ stop() {
     pkill -TERM -g "$group" -x bash || true
     pkill -INT -g "$group" -f " sweep " || true
     echo "lanes: $lane stopping (its sweeps write their state and stop their runs)"
-    for _ in $(seq 120); do pgrep -g "$group" >/dev/null || break; sleep 1; done
-    pgrep -g "$group" >/dev/null && echo "lanes: $lane still has processes after 2 min" >&2
+    for _ in $(seq 120); do pgrep -g "$group" -f " sweep " >/dev/null || break; sleep 1; done
+    pgrep -g "$group" -f " sweep " >/dev/null && echo "lanes: $lane's sweep still runs after 2 min" >&2
+    kill -TERM -- "-$group" 2>/dev/null || true  # what is left: the copy loop's sleep
+    for _ in $(seq 10); do running "$lane" || break; sleep 1; done
     # what completed since the lane's last copy (every 2 min) is committed now
     env COMMIT=1 bash -c "$(lane_command "$lane") copy" >> "$DIR/$lane.log" 2>&1 || true
   done
