@@ -13,6 +13,6 @@ set -euo pipefail
 # post-cyclic ones), the medium-dense cell, the check at I = 1e-4 (its
 # shear stage checkpoints, so it spans sessions); flat x CV is cut first.
 export DEST=data/cyclic
-export SWEEPS=${SWEEPS:-cyclic_headline cyclic_rn05 cyclic_small cyclic_flat cyclic_virgin cyclic_flat_small cyclic_medium cyclic_inertial_fine cyclic_flat_cv}
+export SWEEPS=${SWEEPS:-cyclic_headline cyclic_rn05 cyclic_small cyclic_flat cyclic_virgin cyclic_medium cyclic_k50 cyclic_flat_small cyclic_inertial_fine cyclic_flat_cv}
 export WORK=${WORK:-runs/cyclic}
 exec data/run_campaign.sh "$@"
