@@ -113,6 +113,6 @@ case $command in
   pause) signal_all STOP ;;
   resume) signal_all CONT ;;
   stop) stop ;;
-  -h | --help) sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//' ;;
+  -h | --help) sed -n '2,/^[^#]/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//' ;;
   *) echo "lanes: unknown command '$command'; commands: start, status, pause, resume, stop (--help)" >&2; exit 2 ;;
 esac
