@@ -6,21 +6,17 @@ it), and the cycle's end less the start (compaction when negative); means over t
 95 % Student-t half-width. Run from the repository root:
   /usr/bin/python3 data/cyclic/band_table.py data/cyclic/cyclic_rn05/runs/cnl_s* [--cycles 1,2,5,10]"""
 import csv
-import statistics as st
 import sys
 from pathlib import Path
 
-from scipy import stats
-
 sys.path.insert(0, str(Path(__file__).parent))  # cycle_table.py beside this file
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # data/seed_stats.py
+import seed_stats  # noqa: E402
 from cycle_table import cycles_option  # noqa: E402
 
 
 def interval(values):
-    if len(values) < 2:
-        return f"{values[0]:+.4f} (1 run)"
-    h = stats.t.ppf(0.975, len(values) - 1) * st.stdev(values) / len(values) ** 0.5
-    return f"{st.mean(values):+.4f} +- {h:.4f}"
+    return seed_stats.interval(values, "+.4f")
 
 
 def per_cycle(run, cycles):

@@ -5,17 +5,15 @@ change. The same for the shaft of a pile cycled in settlement (data/piles/cyclic
 repository root:
   /usr/bin/python3 data/cyclic/cycle_table.py data/cyclic/cyclic_small/runs/cns-200_s* [--cycles 1,2,5,10,20]"""
 import json
-import statistics as st
 import sys
+from pathlib import Path
 
-from scipy import stats
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # data/seed_stats.py
+import seed_stats  # noqa: E402
 
 
 def interval(values):
-    if len(values) < 2:
-        return f"{values[0]:.3g} (1 run)"
-    h = stats.t.ppf(0.975, len(values) - 1) * st.stdev(values) / len(values) ** 0.5
-    return f"{st.mean(values):.3g} +- {h:.2g}"
+    return seed_stats.interval(values, ".3g", ".2g")
 
 
 ROWS = [("peak +tau/sigma_n", lambda c: c["peak_friction_positive"]),

@@ -11,10 +11,11 @@ relative change with its 95 % interval (Welch's degrees of freedom). Run from th
 import json
 import statistics as st
 import sys
+from pathlib import Path
 
-from scipy import stats
-
-from cycle_table import interval
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # data/seed_stats.py
+from seed_stats import welch  # noqa: E402
+from cycle_table import interval  # noqa: E402
 
 
 def post_cyclic_peaks(runs):
@@ -23,15 +24,6 @@ def post_cyclic_peaks(runs):
 
 def monotonic_peaks(runs):
     return [json.load(open(f"{d}/summary.json"))["peak_friction"] for d in runs]
-
-
-def welch(a, b):
-    """Difference of means b - a, its 95 % half-width and Welch's p (two-sided)."""
-    va, vb = st.variance(a) / len(a), st.variance(b) / len(b)
-    dof = (va + vb) ** 2 / (va ** 2 / (len(a) - 1) + vb ** 2 / (len(b) - 1))
-    diff = st.mean(b) - st.mean(a)
-    half = stats.t.ppf(0.975, dof) * (va + vb) ** 0.5
-    return diff, half, stats.ttest_ind(b, a, equal_var=False).pvalue
 
 
 def split(args):

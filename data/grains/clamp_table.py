@@ -12,9 +12,11 @@ import glob
 import json
 import os
 import re
-import statistics as st
+import sys
+from pathlib import Path
 
-from scipy import stats
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # data/seed_stats.py
+from seed_stats import interval, welch  # noqa: E402
 
 QUANTITIES = [("peak", "peak_friction"), ("residual", "residual_friction"), ("dilation (mm)", "dilation_mm"),
               ("wall band (d50)", "wall_band_d50")]
@@ -35,10 +37,7 @@ def summary(run):
 
 
 def mean_half(x):
-    if len(x) < 2:
-        return " / ".join(f"{v:.3g}" for v in x) + f" ({len(x)} run)"
-    h = stats.t.ppf(0.975, len(x) - 1) * st.stdev(x) / len(x) ** 0.5
-    return f"{st.mean(x):.3f} +- {h:.3f} ({len(x)} runs)"
+    return interval(x, single="{:s}") + f" ({len(x)} run{'s' if len(x) != 1 else ''})"
 
 
 def cell(values):
@@ -64,7 +63,7 @@ def main():
     print("\nclamp 9 against clamp 6 (mean +- 95 % t, runs; Welch's p):")
     for density, q in sorted({(d, q) for d, q, _ in sets}):
         a, b = sets.get((density, q, 9), []), sets.get((density, q, 6), [])
-        p = stats.ttest_ind(a, b, equal_var=False).pvalue if len(a) > 1 and len(b) > 1 else float("nan")
+        p = welch(b, a)[2] if len(a) > 1 and len(b) > 1 else float("nan")
         print(f"  {density} {q}: {mean_half(a)} against {mean_half(b)}, p {p:.2f}")
 
 

@@ -16,8 +16,10 @@ import json
 import statistics as st
 import sys
 import tomllib
+from pathlib import Path
 
-from scipy import stats
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # data/seed_stats.py
+from seed_stats import mean_half  # noqa: E402
 
 UNIFORM = ["data/convergence/truth_clamped/runs/*", "data/convergence/truth_clamped_rn025/runs/*",
            "data/reference/truth2_seeds45/runs/*_cnl-50", "data/reference/truth2_rn/runs/sawtooth-*_cnl"]
@@ -60,11 +62,6 @@ def cells(patterns):
             r = run_of(d)
             out.setdefault((r["grading"], round(r["R_max_d50"], 6)), []).append(r)
     return out
-
-
-def mean_half(values):
-    h = stats.t.ppf(0.975, len(values) - 1) * st.stdev(values) / len(values) ** 0.5 if len(values) > 1 else float("nan")
-    return st.mean(values), h
 
 
 def interpolate(curve, x):

@@ -3,12 +3,11 @@
 seeds 1-3 and from all five, where each seed's value lies, and where each run sheared. Run from
 the repository root:  /usr/bin/python3 data/reference/five_seeds.py"""
 import re
-import statistics as st
 import sys
 
-from scipy import stats
-
 sys.path.insert(0, "data/reference")
+sys.path.insert(0, "data")
+from seed_stats import mean_half as interval  # noqa: E402
 from campaign_runs import campaign_runs  # noqa: E402
 
 CELLS = [("R_n 0.5", "CNL 50 kPa"), ("R_n 0.5", "CNS 50 kPa, K 50 kPa/mm")]
@@ -18,11 +17,6 @@ QUANTITIES = [("peak_friction", "peak friction", "{:.3f}"), ("residual_friction"
 
 def seed_of(run_dir):
     return int(re.search(r"_?s(\d)(_|$)", run_dir.rsplit("/", 1)[-1]).group(1))
-
-
-def interval(values):
-    n = len(values)
-    return st.mean(values), stats.t.ppf(0.975, n - 1) * st.stdev(values) / n ** 0.5
 
 
 def main():

@@ -11,20 +11,18 @@ import collections
 import json
 import math
 import os
-import statistics as st
 import sys
 import tomllib
+from pathlib import Path
 
-from scipy import stats
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # data/seed_stats.py
+from seed_stats import interval  # noqa: E402
 
 PHI_C_DEG = tomllib.load(open("data/params/truth_grains_epsd2.toml", "rb"))["hypoplastic"]["phi_c_deg"]
 
 
 def mean_t(values):
-    if len(values) < 2:
-        return f"{values[0]:.3f}"
-    h = stats.t.ppf(0.975, len(values) - 1) * st.stdev(values) / len(values) ** 0.5
-    return f"{st.mean(values):.3f} +- {h:.3f}"
+    return interval(values, single="{:s}")
 
 
 def shape_of(run):

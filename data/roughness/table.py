@@ -3,10 +3,12 @@ seeds +- the 95 % t half-width (Student's t, n - 1 degrees of freedom) of each r
 the runs it rests on and where each sheared. Cells with no complete run are left out. Run from the
 repository root:  /usr/bin/python3 data/roughness/table.py"""
 import json
-import statistics as st
+import sys
 from pathlib import Path
 
-T975 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262}
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # data/seed_stats.py
+import seed_stats  # noqa: E402
+
 DATA = Path("data")
 SHAPES = DATA / "roughness" / "roughness_shapes" / "runs"
 # (label, R_n, run directories): the sawtooth cells are the truth campaign's own; job names are
@@ -27,10 +29,7 @@ CELLS = [
 
 
 def interval(values):
-    v = [x for x in values if x is not None]
-    if len(v) < 2:
-        return f"{v[0]:.3f} (one run)" if v else "-"
-    return f"{st.mean(v):.3f} +- {T975[len(v) - 1] * st.stdev(v) / len(v) ** 0.5:.3f}"
+    return seed_stats.interval(values, single="{:s} (one run)")
 
 
 def complete(run):
