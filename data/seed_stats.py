@@ -45,3 +45,14 @@ def welch(a, b):
     dof = (va + vb) ** 2 / (va ** 2 / (len(a) - 1) + vb ** 2 / (len(b) - 1))
     half = stats.t.ppf(0.5 + LEVEL / 2, dof) * math.sqrt(va + vb)
     return st.mean(b) - st.mean(a), half, stats.ttest_ind(b, a, equal_var=False).pvalue
+
+
+def seeds_needed(sd, half_width, at_most=1000):
+    """The fewest seeds (>= 2) whose 95 % t half-width, at the SD measured, is at most half_width
+    (as the comparison's src/statistics values_needed); None when sd is 0 or more than at_most."""
+    if not sd > 0:
+        return None
+    for n in range(2, at_most + 1):
+        if stats.t.ppf(0.5 + LEVEL / 2, n - 1) * sd / math.sqrt(n) <= half_width:
+            return n
+    return None

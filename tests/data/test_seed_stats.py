@@ -61,6 +61,15 @@ close("welch difference, one side fixed", diff, -3.0)
 close("welch half-width (nu 2)", half, t2 * math.sqrt(1.0 / 3.0))
 close("welch p (nu 2)", p, 2 * (1 - t_cdf_nu2(3.0 / math.sqrt(1.0 / 3.0))), 1e-7)
 
+# seeds needed: at SD 1, t1 / sqrt(2) is resolved by 2 seeds, t2 / sqrt(3) first by 3 (a margin
+# of 1e-9: scipy's quantile at nu = 1 lies 2e-11 above tan(0.475 pi))
+if seed_stats.seeds_needed(1.0, t1 / math.sqrt(2) * (1 + 1e-9)) != 2:
+    failures.append("seeds_needed for a half-width of t1 / sqrt(2) is not 2")
+if seed_stats.seeds_needed(1.0, t2 / math.sqrt(3) * (1 + 1e-9)) != 3:
+    failures.append("seeds_needed for a half-width of t2 / sqrt(3) is not 3")
+if seed_stats.seeds_needed(0.0, 1.0) is not None:
+    failures.append("seeds_needed with no scatter is not None")
+
 # the text the README tables show
 cases = [(seed_stats.interval([1.0, None, 3.0], ".2f"), f"2.00 +- {t1 * math.sqrt(2) / math.sqrt(2):.2f}"),
          (seed_stats.interval([0.5], ".3f"), "0.500 (1 run)"),
