@@ -148,11 +148,12 @@ Fitted fit(const Problem& p, const FormLimitOptions& o) {
         std::clamp(p.to_x(k, value_of(p.starts[run], u.what)), lsq.lower(i), lsq.upper(i));
     lsq.difference_step(i) = 1e-4 * (lsq.upper(i) - lsq.lower(i));
   }
+  fitting::LeastSquaresSettings s;
+  s.max_evaluations = o.max_evaluations;
+  s.polish_iterations = o.polish_iterations;
   const auto t0 = std::chrono::steady_clock::now();
   int evaluations = 0;
-  // BOBYQA's budget, then each Levenberg-Marquardt iteration's central-difference Jacobian (2 n)
-  // and its step: the most the fit can take (it usually stops earlier)
-  const int budget = o.max_evaluations + o.polish_iterations * (2 * int(n) + 1);
+  const int budget = fitting::most_evaluations(s, int(n));
   lsq.residuals = [&](const Eigen::VectorXd& x) {
     std::vector<double> r;
     for (std::size_t i = 0; i < p.fitted; ++i) {
@@ -172,9 +173,6 @@ Fitted fit(const Problem& p, const FormLimitOptions& o) {
     }
     return out;
   };
-  fitting::LeastSquaresSettings s;
-  s.max_evaluations = o.max_evaluations;
-  s.polish_iterations = o.polish_iterations;
   Fitted f{{}, fitting::fit_least_squares(lsq, s), 0.0};
   f.x = f.result.x;
   f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

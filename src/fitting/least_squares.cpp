@@ -79,7 +79,7 @@ PolishOutcome polish(const LeastSquaresProblem& problem, int iterations, Eigen::
     const Eigen::MatrixXd jtj = J.transpose() * J;
     const Eigen::VectorXd g = J.transpose() * r;
     bool improved = false;
-    for (int tries = 0; tries < 8 && !improved; ++tries, lambda *= 10.0) {
+    for (int tries = 0; tries < kPolishTrials && !improved; ++tries, lambda *= 10.0) {
       Eigen::MatrixXd a = jtj;
       a.diagonal() += lambda * jtj.diagonal().cwiseMax(1e-300);
       const Eigen::VectorXd trial =
@@ -140,6 +140,13 @@ void gauss_newton_covariance(const LeastSquaresProblem& problem, LeastSquaresRes
     }
   }
   at.rmse = std::sqrt(at.residuals.squaredNorm() / double(std::max<Eigen::Index>(m, 1)));
+}
+
+int most_evaluations(const LeastSquaresSettings& settings, int unknowns) {
+  const int polish = settings.polish_iterations > 0
+                         ? 1 + settings.polish_iterations * (2 * unknowns + kPolishTrials)
+                         : 0;
+  return settings.max_evaluations + polish + 2 * unknowns + 1;
 }
 
 LeastSquaresResult fit_least_squares(const LeastSquaresProblem& problem,

@@ -62,6 +62,13 @@ struct LeastSquaresResult {
   bool converged = false;
 };
 
+// The most residual evaluations fit_least_squares can take for `unknowns` parameters: BOBYQA's
+// budget; the polish's first evaluation and, per Levenberg-Marquardt iteration, a
+// central-difference Jacobian (2 unknowns) and up to kPolishTrials trial steps; the covariance's
+// Jacobian and residual. A progress line's "at most" (it usually stops well before).
+inline constexpr int kPolishTrials = 8;
+int most_evaluations(const LeastSquaresSettings& settings, int unknowns);
+
 // Minimises from `start` (clamped into the bounds) and returns the optimum with its covariance.
 LeastSquaresResult fit_least_squares(const LeastSquaresProblem& problem,
                                      const LeastSquaresSettings& settings = {});

@@ -65,3 +65,27 @@ TEST_CASE("a parameter the residuals ignore gets an infinite sigma, the others k
   CHECK(std::isfinite(r.sigma(1)));
   CHECK(r.x(1) == Approx(0.5).margin(0.02));
 }
+
+TEST_CASE("a fit never takes more residual evaluations than most_evaluations says", "[fitting]") {
+  // Rosenbrock's valley as residuals, BOBYQA stopped at its smallest budget and three
+  // Levenberg-Marquardt iterations from there: steps get rejected and retried with a larger
+  // damping, which a bound of one trial a Jacobian would not cover.
+  int counted = 0;
+  fitting::LeastSquaresProblem p;
+  p.residuals = [&counted](const Eigen::VectorXd& x) -> Eigen::VectorXd {
+    ++counted;
+    return Eigen::Vector2d(10.0 * (x(1) - x(0) * x(0)), 1.0 - x(0));
+  };
+  p.start = Eigen::Vector2d(-1.2, 1.0);
+  p.lower = Eigen::Vector2d(-5.0, -5.0);
+  p.upper = Eigen::Vector2d(5.0, 5.0);
+  p.difference_step = Eigen::Vector2d(1e-6, 1e-6);
+  fitting::LeastSquaresSettings s;
+  s.max_evaluations = 5;
+  s.polish_iterations = 3;
+  const auto r = fitting::fit_least_squares(p, s);
+  CHECK(r.evaluations == counted);
+  CHECK(counted <= fitting::most_evaluations(s, 2));
+  // the case exercises retries: more than one trial step per Jacobian somewhere
+  CHECK(counted > s.max_evaluations + 1 + s.polish_iterations * (2 * 2 + 1) + 2 * 2 + 1);
+}
