@@ -17,8 +17,8 @@
 #   cyclic   nice 19  data/cyclic/make.sh: the virgin CNS peaks, the medium-dense cell, K 50, the
 #                     flat small amplitude, the check at I 1e-4, flat CV (data/cyclic/README.md)
 #   grains   nice 19  C_u 2.2 at R_n 0.5, the deeper clamp, twice the travel (data/grains/README.md)
-#   grading  nice 5   C_u 3.2 (the third grading; ~50 min a run: it gets a core of its own), then
-#                     the rest of the densities on that core
+#   grading  nice 5   C_u 3.2 at R_n 0.5 (the third grading; ~50 min a run: it gets a core of its
+#                     own), the rest of the densities, then C_u 3.2 at R_n 0.25
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ALL_LANES=(cyclic grains grading)
@@ -38,7 +38,7 @@ lane_command() {  # the environment and command of a lane
   case $1 in
     cyclic) echo "SWEEPS='cyclic_virgin cyclic_medium cyclic_k50 cyclic_flat_small cyclic_inertial_fine cyclic_flat_cv' data/cyclic/make.sh" ;;
     grains) echo "DEST=data/grains SWEEPS='grains_cu2 clamp_depth truth_travel20' data/run_campaign.sh" ;;
-    grading) echo "DEST=data/grains SWEEPS='grains_cu3 density' data/run_campaign.sh" ;;
+    grading) echo "DEST=data/grains SWEEPS='grains_cu3 density grains_cu3_rn025' data/run_campaign.sh" ;;
   esac
 }
 

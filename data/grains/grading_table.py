@@ -23,7 +23,8 @@ from seed_stats import mean_half  # noqa: E402
 
 UNIFORM = ["data/convergence/truth_clamped/runs/*", "data/convergence/truth_clamped_rn025/runs/*",
            "data/reference/truth2_seeds45/runs/*_cnl-50", "data/reference/truth2_rn/runs/sawtooth-*_cnl"]
-GRADED = ["data/grains/grains_cu2/runs/*", "data/grains/grains_cu3/runs/*", "data/grains/grains_cu4/runs/*"]
+GRADED = ["data/grains/grains_cu2/runs/*", "data/grains/grains_cu3/runs/*", "data/grains/grains_cu3_rn025/runs/*",
+          "data/grains/grains_cu4/runs/*"]
 QUANTITIES = [("peak friction", "peak_friction"), ("residual friction", "residual_friction"),
               ("total dilation (mm)", "dilation_mm"), ("first-layer slip", "wall_slip")]
 
