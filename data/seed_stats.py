@@ -40,8 +40,11 @@ def interval(values, fmt=".3f", half_fmt=None, single="{:s} (1 run)"):
 
 def welch(a, b):
     """b - a: the difference of the means, its 95 % half-width on Welch-Satterthwaite's degrees of
-    freedom, and Welch's two-sided p."""
+    freedom, and Welch's two-sided p; half-width and p NaN when neither side scatters (equal seeds,
+    e.g. a band thickness read in whole bins, leave nothing to test against)."""
     va, vb = st.variance(a) / len(a), st.variance(b) / len(b)
+    if va + vb == 0:
+        return st.mean(b) - st.mean(a), float("nan"), float("nan")
     dof = (va + vb) ** 2 / (va ** 2 / (len(a) - 1) + vb ** 2 / (len(b) - 1))
     half = stats.t.ppf(0.5 + LEVEL / 2, dof) * math.sqrt(va + vb)
     return st.mean(b) - st.mean(a), half, stats.ttest_ind(b, a, equal_var=False).pvalue
@@ -49,7 +52,8 @@ def welch(a, b):
 
 def seeds_needed(sd, half_width, at_most=1000):
     """The fewest seeds (>= 2) whose 95 % t half-width, at the SD measured, is at most half_width
-    (as the comparison's src/statistics values_needed); None when sd is 0 or more than at_most."""
+    (as the comparison's src/statistics values_needed); None when sd is 0 (nothing to resolve) or
+    more than at_most would be needed."""
     if not sd > 0:
         return None
     for n in range(2, at_most + 1):

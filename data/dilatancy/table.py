@@ -12,12 +12,15 @@ import glob
 import math
 import os
 import subprocess
+import sys
 import tempfile
 
 import json
 
 import numpy as np
-from scipy import stats
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))  # data/seed_stats.py
+from seed_stats import interval  # noqa: E402
 
 WINDOW_MM = 1.0  # travel over which the rate is a least-squares slope (both kinds of run)
 # vw3d's calibrated sets: on the plate cells (issue 20) and on the periodic cells (issue 38), the
@@ -108,10 +111,7 @@ def mean_sd(xs):
     xs = np.array(xs, dtype=float)
     if np.isnan(xs).any():
         return "outside (e_d, e_i)"
-    if len(xs) < 2:
-        return f"{xs[0]:.3f}"
-    half = stats.t.ppf(0.975, len(xs) - 1) * xs.std(ddof=1) / math.sqrt(len(xs))
-    return f"{xs.mean():.3f} +- {half:.3f}"
+    return interval(list(xs), single="{:s}")
 
 
 def main():

@@ -37,7 +37,9 @@ def summary(run):
 
 
 def mean_half(x):
-    return interval(x, single="{:s}") + f" ({len(x)} run{'s' if len(x) != 1 else ''})"
+    if len(x) < 2:
+        return " / ".join(f"{v:.3g}" for v in x) + f" ({len(x)} run)"
+    return interval(x) + f" ({len(x)} runs)"
 
 
 def cell(values):

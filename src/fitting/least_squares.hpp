@@ -34,8 +34,8 @@ struct LeastSquaresSettings {
   // BOBYQA's first trust-region radius as a share of each box width; 0 = NLopt's default (a
   // large share, right for a start far from the optimum, wasteful near it).
   double initial_step_share = 0.0;
-  // Most Levenberg-Marquardt iterations after BOBYQA (each 2p+1 evaluations or more); they stop
-  // earlier when converged.
+  // Most Levenberg-Marquardt iterations after BOBYQA (each 2p+1 to 2p+kPolishTrials evaluations);
+  // they stop earlier when converged.
   int polish_iterations = 0;
 };
 
@@ -65,7 +65,8 @@ struct LeastSquaresResult {
 // The most residual evaluations fit_least_squares can take for `unknowns` parameters: BOBYQA's
 // budget; the polish's first evaluation and, per Levenberg-Marquardt iteration, a
 // central-difference Jacobian (2 unknowns) and up to kPolishTrials trial steps; the covariance's
-// Jacobian and residual. A progress line's "at most" (it usually stops well before).
+// Jacobian and residual. A progress line's "at most" (it usually stops well before). For
+// max_evaluations > 0 only: NLopt reads 0 or less as no limit.
 inline constexpr int kPolishTrials = 8;
 int most_evaluations(const LeastSquaresSettings& settings, int unknowns);
 

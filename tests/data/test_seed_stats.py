@@ -53,20 +53,27 @@ t = 3.0 / math.sqrt(2.0 / 3.0)
 close("welch p (nu 4)", p, 2 * (1 - t_cdf_nu4(t)), 1e-7)
 # the half-width at nu = 4 is the t for which the closed-form CDF is 0.975
 close("welch half-width (nu 4)", t_cdf_nu4(half / math.sqrt(2.0 / 3.0)), P, 1e-9)
-# Welch, one side without scatter: nu = 2 of the other; t = -3 / sqrt(1/3)
+# Welch, one side of four without scatter: nu = 2 of the other (three); t = -3 / sqrt(1/3). The
+# sides' sizes differ, so a swap of len(a) and len(b) shows
 with warnings.catch_warnings():  # scipy warns of a side without scatter, which is the point
     warnings.simplefilter("ignore")
-    diff, half, p = seed_stats.welch([5.0, 5.0, 5.0], [1.0, 2.0, 3.0])
+    diff, half, p = seed_stats.welch([5.0, 5.0, 5.0, 5.0], [1.0, 2.0, 3.0])
 close("welch difference, one side fixed", diff, -3.0)
 close("welch half-width (nu 2)", half, t2 * math.sqrt(1.0 / 3.0))
 close("welch p (nu 2)", p, 2 * (1 - t_cdf_nu2(3.0 / math.sqrt(1.0 / 3.0))), 1e-7)
+diff, half, p = seed_stats.welch([2.0, 2.0], [3.0, 3.0])
+if not (diff == 1.0 and math.isnan(half) and math.isnan(p)):
+    failures.append(f"welch without any scatter: {diff}, {half}, {p}; expected 1, nan, nan")
 
 # seeds needed: at SD 1, t1 / sqrt(2) is resolved by 2 seeds, t2 / sqrt(3) first by 3 (a margin
-# of 1e-9: scipy's quantile at nu = 1 lies 2e-11 above tan(0.475 pi))
+# of 1e-9: scipy's quantile at nu = 1 lies 2e-11 (relative) above tan(0.475 pi)); just below
+# t2 / sqrt(3) it takes 4, which n degrees of freedom instead of n - 1 would not
 if seed_stats.seeds_needed(1.0, t1 / math.sqrt(2) * (1 + 1e-9)) != 2:
     failures.append("seeds_needed for a half-width of t1 / sqrt(2) is not 2")
 if seed_stats.seeds_needed(1.0, t2 / math.sqrt(3) * (1 + 1e-9)) != 3:
     failures.append("seeds_needed for a half-width of t2 / sqrt(3) is not 3")
+if seed_stats.seeds_needed(1.0, t2 / math.sqrt(3) * (1 - 1e-9)) != 4:
+    failures.append("seeds_needed just below t2 / sqrt(3) is not 4")
 if seed_stats.seeds_needed(0.0, 1.0) is not None:
     failures.append("seeds_needed with no scatter is not None")
 

@@ -67,8 +67,8 @@ TEST_CASE("a parameter the residuals ignore gets an infinite sigma, the others k
 }
 
 TEST_CASE("a fit never takes more residual evaluations than most_evaluations says", "[fitting]") {
-  // Rosenbrock's valley as residuals, BOBYQA stopped at its smallest budget and three
-  // Levenberg-Marquardt iterations from there: steps get rejected and retried with a larger
+  // Rosenbrock's valley as residuals, BOBYQA stopped after its first interpolation set (2n+1) and
+  // three Levenberg-Marquardt iterations from there: steps get rejected and retried with a larger
   // damping, which a bound of one trial a Jacobian would not cover.
   int counted = 0;
   fitting::LeastSquaresProblem p;

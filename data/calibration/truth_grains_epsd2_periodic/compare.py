@@ -14,9 +14,10 @@ import os
 import sys
 
 import numpy as np
-from scipy import stats
 
 sys.path.insert(0, "data/dilatancy")
+sys.path.insert(0, "data")
+import seed_stats  # noqa: E402
 from table import homogeneous_until, peak_rate  # noqa: E402  the same measures as the dilatancy table
 
 DESIGNS = ["CNL-dense-50", "CNL-loose-50", "CV-dense-50", "CV-loose-50",
@@ -25,13 +26,7 @@ CELLS = [("plates", "data/calibration/truth_grains_epsd2"), ("periodic", "data/c
 
 
 def interval(xs):
-    xs = np.array([x for x in xs if x is not None and math.isfinite(x)], dtype=float)
-    if len(xs) == 0:
-        return "-"
-    if len(xs) == 1:
-        return f"{xs[0]:.3f} (1 seed)"
-    half = stats.t.ppf(0.975, len(xs) - 1) * xs.std(ddof=1) / math.sqrt(len(xs))
-    return f"{xs.mean():.3f} +- {half:.3f}"
+    return seed_stats.interval([x for x in xs if x is not None and math.isfinite(x)], single="{:s} (1 seed)")
 
 
 def measures(run):
