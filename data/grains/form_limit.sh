@@ -6,7 +6,8 @@
 # limit meets is the calibration's; one it still breaks, the form's. No soil tests of the graded
 # grains exist, so nothing says what the form-limit set would cost there (the uniform grains'
 # ../reference/form_limit/ does). Writes data/grains/form_limit/<model>_<grading>/ (form_limit.json,
-# .md, .toml, manifest.json); 11-154 s a fit on a shared core (measured). Run from the repository root:
+# .md, .toml, manifest.json); 11-154 s a fit on a shared core (measured). Run from the repository
+# root:
 #   data/grains/form_limit.sh [GRADING...]     (default: cu2 cu3)
 set -euo pipefail
 IWB=${IWB:-build/iwb}
