@@ -9,8 +9,17 @@ namespace iwb::comparison {
 
 namespace {
 
-constexpr double kPeakTolerance = 0.10, kRatioTolerance = 0.10, kUnTolerance = 0.20,
-                 kStiffnessTolerance = 0.30;
+// The default tolerance of each [requirements] key of dem::cyclic_quantities (issue 34's).
+const Tolerances& default_tolerances() {
+  static const Tolerances t = {{"cycle_peak_friction", 0.10},
+                               {"cycle_sigma_n_ratio", 0.10},
+                               {"cycle_u_n", 0.20},
+                               {"reversal_secant", 0.30},
+                               {"post_cyclic_peak_friction", 0.10},
+                               {"post_cyclic_u_n_change", 0.20}};
+  return t;
+}
+
 constexpr double kUnFloorD50 = 0.02;  // as the monotonic dilation's floor (quantities.cpp)
 constexpr double kFrictionFloor = 0.01;
 
@@ -37,14 +46,15 @@ SeedValues over_seeds(const std::vector<std::optional<double>>& values) {
 
 struct Judge {
   std::vector<CyclicVerdict>& out;
+  // `floor`: the least |DEM mean| the error is taken against (and at least `level`, a trend's)
   void operator()(const std::string& quantity, const std::string& where,
                   const std::vector<std::optional<double>>& dem, std::optional<double> model,
-                  double tolerance, double floor) {
+                  double tolerance, double floor, double level = 0.0) {
     const SeedValues d = over_seeds(dem);
     CyclicVerdict v{quantity,     where,        d.mean,        model,
                     std::nullopt, tolerance,    "not reached", std::max<std::size_t>(d.n, 1),
                     d.sd,         std::nullopt, std::nullopt,  std::nullopt};
-    const double scale = d.mean ? std::max(std::abs(*d.mean), floor) : 1.0;
+    const double scale = d.mean ? std::max({std::abs(*d.mean), floor, level}) : 1.0;
     const SeedInterval i = seed_interval(d.sd, v.seeds, tolerance, scale);
     v.dem_ci = i.ci, v.detection_limit = i.detection_limit, v.seeds_needed = i.seeds_needed;
     if (d.mean && model) v.error = (*model - *d.mean) / scale;
@@ -75,11 +85,11 @@ double stiffness(const cycles::Cycle& c) {
   return 0.5 * (c.at_plus.secant_50_kPa_per_mm + c.at_minus.secant_50_kPa_per_mm);
 }
 
-// A quantity judged per cycle: its name, how it is read, its tolerance and floor.
+// A quantity judged per cycle: its name, how it is read, its [requirements] key and floor.
 struct PerCycle {
   const char* name;
   double (*get)(const cycles::Cycle&);
-  double tolerance;
+  const char* key;
   double floor;
 };
 
@@ -126,44 +136,89 @@ cycles::CyclicQuantities replay_cycles(const DemRun& dem, const Replay& r,
                                    program);
 }
 
+Tolerances cyclic_tolerances(const DemRun& dem) {
+  Tolerances t = default_tolerances();
+  if (dem.boundary == driver::BoundaryKind::kCNL) t.erase("cycle_sigma_n_ratio");  // held
+  if (dem.boundary == driver::BoundaryKind::kCV)                                   // u_n held
+    t.erase("cycle_u_n"), t.erase("post_cyclic_u_n_change");
+  return scene_tolerances(dem, t);
+}
+
+namespace {
+
+using SeedReads = std::vector<std::optional<double>>;
+
+// `get` read from each seed's quantities.
+template <typename Get>
+SeedReads each_seed(const std::vector<cycles::CyclicQuantities>& seeds, Get get) {
+  SeedReads values;
+  for (const auto& s : seeds) values.push_back(get(s));
+  return values;
+}
+
+// Each per-cycle quantity the tolerances keep, at the cycles a reader looks at first, and its
+// change from the first cycle to the last, judged against the larger of the DEM's first-cycle
+// level and its change (a friction or a stiffness is judged on its level, a ratchet of u_n that
+// starts near zero on its change).
+void judge_per_cycle(Judge& judge, const DemRun& dem, const Tolerances& tol,
+                     const std::vector<cycles::CyclicQuantities>& seeds,
+                     const cycles::CyclicQuantities& m) {
+  const std::vector<PerCycle> all = {
+      {"peak_friction_positive", peak_plus, "cycle_peak_friction", kFrictionFloor},
+      {"peak_friction_negative", peak_minus, "cycle_peak_friction", kFrictionFloor},
+      {"sigma_n_ratio", ratio, "cycle_sigma_n_ratio", kFrictionFloor},
+      {"u_n_end_mm", u_n_end, "cycle_u_n", kUnFloorD50 * dem.d50_mm},
+      {"reversal_secant_50_kPa_per_mm", stiffness, "reversal_secant", 1.0}};
+  const auto read = [&](auto get) { return each_seed(seeds, get); };
+  const auto judged = judged_cycles(int(seeds.front().cycles.size()));
+  for (int c : judged)
+    for (const auto& q : all)
+      if (tol.count(q.key))
+        judge(q.name, "cycle " + std::to_string(c),
+              read([&](const auto& s) { return at_cycle(s, c, q.get); }), at_cycle(m, c, q.get),
+              tol.at(q.key), q.floor);
+  const int last = judged.back();
+  if (last < 2) return;
+  for (const auto& q : all) {
+    if (!tol.count(q.key)) continue;
+    const auto change = [&](const cycles::CyclicQuantities& s) -> std::optional<double> {
+      const auto first = at_cycle(s, 1, q.get), end = at_cycle(s, last, q.get);
+      return first && end ? std::optional(*end - *first) : std::nullopt;
+    };
+    const SeedValues first = over_seeds(read([&](const auto& s) { return at_cycle(s, 1, q.get); }));
+    judge(std::string(q.name) + "_change", "cycle 1 to " + std::to_string(last), read(change),
+          change(m), tol.at(q.key), q.floor, first.mean ? std::abs(*first.mean) : 0.0);
+  }
+}
+
+void judge_post_cyclic(Judge& judge, const DemRun& dem, const Tolerances& tol,
+                       const std::vector<cycles::CyclicQuantities>& seeds,
+                       const cycles::CyclicQuantities& m) {
+  const auto peak = [](const auto& s) {
+    return s.post_cyclic ? std::optional(s.post_cyclic->peak_friction) : std::nullopt;
+  };
+  const auto u_n = [](const auto& s) {
+    return s.post_cyclic ? std::optional(s.post_cyclic->u_n_change_mm) : std::nullopt;
+  };
+  const auto read = [&](auto get) { return each_seed(seeds, get); };
+  if (tol.count("post_cyclic_peak_friction"))
+    judge("post_cyclic_peak_friction", "after the cycles", read(peak), peak(m),
+          tol.at("post_cyclic_peak_friction"), kFrictionFloor);
+  if (tol.count("post_cyclic_u_n_change"))
+    judge("post_cyclic_u_n_change_mm", "after the cycles", read(u_n), u_n(m),
+          tol.at("post_cyclic_u_n_change"), kUnFloorD50 * dem.d50_mm);
+}
+
+}  // namespace
+
 std::vector<CyclicVerdict> judge_cycles(const DemRun& dem,
                                         const std::vector<cycles::CyclicQuantities>& seeds,
                                         const cycles::CyclicQuantities& m) {
-  const auto& d = seeds.front();  // the cycles judged: those of the compared run
-  const auto each = [&](auto read) {
-    std::vector<std::optional<double>> values;
-    for (const auto& s : seeds) values.push_back(read(s));
-    return values;
-  };
   std::vector<CyclicVerdict> out;
   Judge judge{out};
-  const bool normal_stress_free = dem.boundary != driver::BoundaryKind::kCNL;  // CNS, CV
-  const bool u_n_free = dem.boundary != driver::BoundaryKind::kCV;             // CNL, CNS
-  std::vector<PerCycle> judged = {
-      {"peak_friction_positive", peak_plus, kPeakTolerance, kFrictionFloor},
-      {"peak_friction_negative", peak_minus, kPeakTolerance, kFrictionFloor}};
-  if (normal_stress_free)
-    judged.push_back({"sigma_n_ratio", ratio, kRatioTolerance, kFrictionFloor});
-  if (u_n_free) judged.push_back({"u_n_end_mm", u_n_end, kUnTolerance, kUnFloorD50 * dem.d50_mm});
-  judged.push_back({"reversal_secant_50_kPa_per_mm", stiffness, kStiffnessTolerance, 1.0});
-  for (int c : judged_cycles(int(d.cycles.size())))
-    for (const auto& q : judged)
-      judge(q.name, "cycle " + std::to_string(c),
-            each([&](const auto& s) { return at_cycle(s, c, q.get); }), at_cycle(m, c, q.get),
-            q.tolerance, q.floor);
-  if (d.post_cyclic) {
-    const auto peak = [](const auto& s) {
-      return s.post_cyclic ? std::optional(s.post_cyclic->peak_friction) : std::nullopt;
-    };
-    const auto u_n = [](const auto& s) {
-      return s.post_cyclic ? std::optional(s.post_cyclic->u_n_change_mm) : std::nullopt;
-    };
-    judge("post_cyclic_peak_friction", "after the cycles", each(peak), peak(m), kPeakTolerance,
-          kFrictionFloor);
-    if (u_n_free)
-      judge("post_cyclic_u_n_change_mm", "after the cycles", each(u_n), u_n(m), kUnTolerance,
-            kUnFloorD50 * dem.d50_mm);
-  }
+  const Tolerances tol = cyclic_tolerances(dem);
+  judge_per_cycle(judge, dem, tol, seeds, m);  // the cycles judged: those of the compared run
+  if (seeds.front().post_cyclic) judge_post_cyclic(judge, dem, tol, seeds, m);
   return out;
 }
 

@@ -58,17 +58,15 @@ std::vector<std::string> notes_for(const std::string& key, const SeedScatter& sc
 
 }  // namespace
 
-Tolerances tolerances_for(const DemRun& dem) {
-  Tolerances t;
-  for (const auto& k : judged_quantities(dem.boundary)) t[k] = quantity(k).tolerance;
-  if (dem.scene_text.empty()) return t;
-  const auto scene =
-      io::parse_toml_text(dem.scene_text, (dem.dir / "manifest.json").string() + " /scene/text");
+Tolerances scene_tolerances(const DemRun& dem, Tolerances defaults) {
+  if (dem.scene_text.empty()) return defaults;
+  const auto where = (dem.dir / "manifest.json").string() + " /scene/text";
+  const auto scene = io::parse_toml_text(dem.scene_text, where);
   const auto* req = scene["requirements"].as_table();
-  if (req == nullptr) return t;
-  io::TableReader reader(*req, (dem.dir / "manifest.json").string() + " /scene/text",
-                         "requirements");
-  for (const auto& k : judged_quantities(dem.boundary))
+  if (req == nullptr) return defaults;
+  io::TableReader reader(*req, where, "requirements");
+  Tolerances t = defaults;
+  for (const auto& [k, tolerance] : defaults)
     if (const auto tol = io::read_tolerance(reader, k)) {
       if (*tol)
         t[k] = **tol;
@@ -76,6 +74,12 @@ Tolerances tolerances_for(const DemRun& dem) {
         t.erase(k);  // "not needed"
     }
   return t;
+}
+
+Tolerances tolerances_for(const DemRun& dem) {
+  Tolerances t;
+  for (const auto& k : judged_quantities(dem.boundary)) t[k] = quantity(k).tolerance;
+  return scene_tolerances(dem, t);
 }
 
 std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const Replay& r,

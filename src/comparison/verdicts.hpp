@@ -31,6 +31,9 @@ using Tolerances = std::map<std::string, double>;
 // The defaults of comparison/quantities.hpp for the quantities `dem`'s boundary condition leaves
 // free, overridden by the [requirements] of the scene it ran ("not needed" drops a quantity).
 Tolerances tolerances_for(const DemRun& dem);
+// `defaults` with each key the [requirements] of `dem`'s scene states put in ("not needed" drops
+// it); keys the defaults do not hold are not read.
+Tolerances scene_tolerances(const DemRun& dem, Tolerances defaults);
 
 struct Verdict {
   std::string key;

@@ -29,11 +29,29 @@ const std::vector<Qoi>& compared_only_quantities() {
   return q;
 }
 
+const std::vector<Qoi>& cyclic_quantities() {
+  static const std::vector<Qoi> q = {
+      {"cycle_peak_friction", "peak tau/sigma_n of each cycle, towards +A and -A"},
+      {"cycle_sigma_n_ratio", "sigma_n at each cycle's end over sigma_n0 (cyclic CNS, CV)"},
+      {"cycle_u_n", "accumulated u_n at each cycle's end (cyclic CNL, CNS)"},
+      {"reversal_secant", "secant stiffness over half the amplitude after each reversal"},
+      {"post_cyclic_peak_friction", "peak tau/sigma_n of the shear after the cycles"},
+      {"post_cyclic_u_n_change", "u_n change over the shear after the cycles (CNL, CNS)"},
+  };
+  return q;
+}
+
+const std::vector<const std::vector<Qoi>*>& requirement_lists() {
+  static const std::vector<const std::vector<Qoi>*> lists = {
+      &quantities_of_interest(), &compared_only_quantities(), &cyclic_quantities()};
+  return lists;
+}
+
 namespace {
 
 std::string known_keys() {
   std::string s;
-  for (const auto* list : {&quantities_of_interest(), &compared_only_quantities()})
+  for (const auto* list : requirement_lists())
     for (const auto& q : *list) s += (s.empty() ? "" : ", ") + std::string(q.key);
   return s;
 }
@@ -42,7 +60,7 @@ std::string known_keys() {
 
 Requirements read_requirements(io::TableReader t) {
   Requirements r;
-  for (const auto* list : {&quantities_of_interest(), &compared_only_quantities()})
+  for (const auto* list : requirement_lists())
     for (const auto& q : *list)
       if (const auto tolerance = io::read_tolerance(t, q.key)) r[q.key] = *tolerance;
   try {

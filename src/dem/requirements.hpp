@@ -20,6 +20,11 @@ const std::vector<Qoi>& quantities_of_interest();
 // Quantities that only `iwb compare` judges (a model against the DEM; comparison/quantities.hpp
 // holds their default tolerances): a scene may state tolerances for them too.
 const std::vector<Qoi>& compared_only_quantities();
+// The cyclic quantities `iwb compare` judges on a cyclic run (issue 34; their default tolerances
+// are comparison/cyclic_verdicts.cpp's), each per cycle and as a change over the cycles.
+const std::vector<Qoi>& cyclic_quantities();
+// Every key [requirements] may hold: the three lists above.
+const std::vector<const std::vector<Qoi>*>& requirement_lists();
 
 // QoI key -> relative tolerance (0.05 = 5 %); nullopt: "not needed". QoIs not named are not needed.
 using Requirements = std::map<std::string, std::optional<double>>;

@@ -263,7 +263,10 @@ void read_boundary(DeclaredTable bc, Scene& s) {
   bc.finish();
 }
 
-void read_travel(DeclaredTable& sh, Shear& shear) {
+// Cycles stay within the specimen: from +A to -A the wall travels 2A, at most the box's length, so
+// that each reversal shears back over grains the half cycle before has met (a periodic box would
+// run any travel, but beyond its length a "cycle" no longer reverses one specimen's contacts).
+void read_travel(DeclaredTable& sh, const Scene& s, Shear& shear) {
   if (sh.one_of({"displacement_mm", "amplitude_mm"}) == "displacement_mm") {
     require(!sh.has("post_cyclic_mm"),
             fmt::format("{} follows cycles; allowed only with amplitude_mm and cycles "
@@ -272,6 +275,11 @@ void read_travel(DeclaredTable& sh, Shear& shear) {
     shear.displacement_m = sh.number("displacement_mm") * kMm;
   } else {
     shear.amplitude_m = sh.number("amplitude_mm") * kMm;
+    require(2.0 * shear.amplitude_m <= s.length_m * (1.0 + 1e-12),
+            fmt::format("{} = {:g}: a cycle from +A to -A travels {:g} mm, beyond the specimen's "
+                        "length of {:g} mm; allowed up to half of it, {:g} mm",
+                        sh.where("amplitude_mm"), shear.amplitude_m / kMm,
+                        2.0 * shear.amplitude_m / kMm, s.length_m / kMm, 0.5 * s.length_m / kMm));
     shear.cycles = sh.whole_number("cycles");
     shear.post_cyclic_m = sh.number("post_cyclic_mm") * kMm;
   }
@@ -298,7 +306,7 @@ void read_speed(DeclaredTable& sh, Scene& s) {
 }
 
 void read_shear(DeclaredTable sh, Scene& s) {
-  read_travel(sh, s.shear);
+  read_travel(sh, s, s.shear);
   read_speed(sh, s);
   read_ramp(sh, s);
   sh.finish();

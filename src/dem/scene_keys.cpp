@@ -160,7 +160,7 @@ std::vector<KeyDeclaration> profile_keys(const std::string& table, const std::st
 
 std::vector<KeyDeclaration> requirement_keys() {
   std::vector<KeyDeclaration> rows;
-  for (const auto* list : {&quantities_of_interest(), &compared_only_quantities()})
+  for (const auto* list : requirement_lists())
     for (const auto& q : *list)
       rows.push_back({.table = "requirements",
                       .key = q.key,

@@ -77,9 +77,9 @@ TEST_CASE(
     "[comparison][cyclic]") {
   const auto d = cyclic_run(driver::BoundaryKind::kCNS);
   const auto v = judged(d, replay_of(d));
-  // CNS: peaks both ways, sigma_n ratio, u_n, reversal stiffness at cycles 1, 2, 3 (5 is beyond),
-  // and the post-cyclic peak and u_n change
-  CHECK(v.size() == 3 * 5 + 2);
+  // CNS: peaks both ways, sigma_n ratio, u_n, reversal stiffness at cycles 1, 2, 3 (5 is beyond)
+  // and their changes from cycle 1 to 3, and the post-cyclic peak and u_n change
+  CHECK(v.size() == 3 * 5 + 5 + 2);
   for (const auto& x : v) {
     INFO(x.quantity << " at " << x.where);
     CHECK(x.verdict == "holds");
@@ -102,6 +102,34 @@ TEST_CASE("a model whose sigma_n falls faster breaks the degradation where the m
   CHECK(find(v, "sigma_n_ratio", "cycle 2").verdict == "breaks");
   CHECK(find(v, "sigma_n_ratio", "cycle 3").verdict == "breaks");
   CHECK(find(v, "u_n_end_mm", "cycle 3").verdict == "holds");  // untouched
+  // the change over the cycles: the DEM's ratio falls from exp(-4/20) to exp(-12/20), the model's
+  // from (1 - 0.2/3) exp(-4/20) to 0.8 exp(-12/20); the miss is taken against the DEM's level at
+  // cycle 1, which is larger than its change
+  const double first = std::exp(-4.0 / 20), last = std::exp(-12.0 / 20);
+  const double miss = (0.8 * last - (1.0 - 0.2 / 3) * first) - (last - first);
+  const auto& change = find(v, "sigma_n_ratio_change", "cycle 1 to 3");
+  CHECK(change.dem.value() == Approx(last - first).epsilon(1e-3));
+  CHECK(change.error.value() == Approx(miss / first).epsilon(1e-2));
+  CHECK(change.verdict == "holds");  // -6.7 % of the level, while cycle 3 itself misses by 20 %
+}
+
+TEST_CASE("a cyclic run's scene states its tolerances in [requirements]", "[comparison][cyclic]") {
+  auto d = cyclic_run(driver::BoundaryKind::kCNS);
+  auto r = replay_of(d);
+  for (std::size_t i = 0; i < r.sigma_n_kPa.size(); ++i)  // as above: -13.3 % at cycle 2
+    r.sigma_n_kPa[i] *= 1.0 - 0.2 * std::min(1.0, d.t_s[i] * kV / 12.0);
+  CHECK(find(judged(d, r), "sigma_n_ratio", "cycle 2").verdict == "breaks");  // the default 10 %
+  d.scene_text = "[requirements]\ncycle_sigma_n_ratio = 0.15\nreversal_secant = \"not needed\"\n";
+  const auto v = judged(d, r);
+  CHECK(find(v, "sigma_n_ratio", "cycle 2").tolerance == 0.15);
+  CHECK(find(v, "sigma_n_ratio", "cycle 2").verdict == "holds");
+  for (const auto& x : v) CHECK(x.quantity.find("secant") == std::string::npos);
+  CHECK(find(v, "peak_friction_positive", "cycle 2").tolerance == 0.10);  // not stated: default
+  const auto t = comparison::cyclic_tolerances(cyclic_run(driver::BoundaryKind::kCV));
+  CHECK(t.count("cycle_sigma_n_ratio") == 1);
+  CHECK(t.count("cycle_u_n") == 0);  // CV holds u_n
+  CHECK(comparison::cyclic_tolerances(cyclic_run(driver::BoundaryKind::kCNL))
+            .count("cycle_sigma_n_ratio") == 0);  // CNL holds sigma_n
 }
 
 TEST_CASE(
