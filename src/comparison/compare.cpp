@@ -238,8 +238,20 @@ void require_startable(const DemRun& dem, const Variant& predicted, const std::s
       dem.dir.string(), predicted.model, params, why));
 }
 
+// A model that builds only its monotonic part would replay a cyclic run's reversals with a law
+// that was never meant for them, and its verdicts would judge that, not the model.
+void require_reversible(const DemRun& dem, const std::string& model) {
+  if (!cyclic_program(dem) || !models::find_model(model).declaration.monotonic_only) return;
+  throw InputError(fmt::format(
+      "--model {}: {} is a cyclic run, and {} builds only its monotonic part (src/models/{}/"
+      "README.md): its path reverses where the model has no law; compare it with a model that "
+      "unloads (an -igs model and its plain counterpart: --model hvwe-igs,hvwe)",
+      model, dem.dir.string(), model, model));
+}
+
 ComparisonInputs read_comparison_inputs(const CompareOptions& opt) {
   ComparisonInputs in{opt, load_dem_run(opt.dem_dir, opt.allow_partial), load_seeds(opt)};
+  require_reversible(in.dem, opt.model);
   in.scatter = seed_scatter(in.dem, in.seeds);  // InputError for a seed of another scene
   if (opt.pooled) apply_pooling(in.scatter, *opt.pooled);
   in.tolerances = tolerances_for(in.dem);

@@ -172,6 +172,9 @@ struct ModelDeclaration {
   // the element's strains back into displacements: its (u, tau, u_n) response does not depend on
   // d_s, which a fit to interface runs therefore leaves alone (Clough & Duncan, Mortara).
   bool displacement_based = false;
+  // Only its monotonic part is built (Mortara's outer surface, without the inner surface that
+  // acts where the path reverses): `iwb compare` refuses it on a cyclic run.
+  bool monotonic_only = false;
   std::string example_parameters;  // a file of data/params/: bench, stability, gold, tests
   std::map<std::string, double> example_start;  // {sigma_n_kPa: 100, e0: 0.8} for the bench
   // The interface models for granular scenes that `iwb plan` and the league of `iwb assess
