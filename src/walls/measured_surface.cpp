@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -29,6 +30,16 @@ struct Row {
 std::vector<Row> read_rows(const std::string& path, bool header) {
   if (!std::filesystem::is_regular_file(path))
     throw InputError(fmt::format("{}: no such file", path));
+  // a mesh has no height per (x, y) to read until it is sampled onto a grid, and one with holes
+  // has none to sample: profilometers export grids, which is what is read
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (extension == ".stl")
+    throw InputError(fmt::format(
+        "{}: an STL mesh; a measured surface is read as a line profile (x_mm,z_mm) or a height "
+        "map (CSV grid): sample the mesh onto a grid first (data/walls/README.md)",
+        path));
   std::ifstream in(path);
   std::vector<Row> rows;
   std::string text;

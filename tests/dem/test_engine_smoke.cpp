@@ -482,6 +482,10 @@ TEST_CASE("LIGGGHTS smoke file wall: a measured profile's mesh carries the load"
           "[dem][liggghts]") {
   check_file("liggghts");
 }
+TEST_CASE("YADE smoke file wall: a measured profile's mesh carries the load",
+          "[dem][yade][heavy]") {
+  check_file("yade");
+}
 TEST_CASE("YADE smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][yade]") {
   check_cnl("yade");
 }
