@@ -132,7 +132,10 @@ cycles::CyclicQuantities replay_cycles(const DemRun& dem, const Replay& r,
   auto travel = cyclic_travel(dem);
   travel.resize(r.u_x_mm.size());  // the rows the replay reached
   if (travel.size() < 2) return {};
-  return cycles::cyclic_quantities({travel, r.u_x_mm, r.u_n_mm, r.sigma_n_kPa, r.tau_kPa, {}},
+  // the band's void ratio the model gives the DEM's wall zone, reported beside the DEM's at each
+  // reversal (where the replay has it for every row)
+  const auto e_band = r.e_band.size() == r.u_x_mm.size() ? r.e_band : std::vector<double>{};
+  return cycles::cyclic_quantities({travel, r.u_x_mm, r.u_n_mm, r.sigma_n_kPa, r.tau_kPa, e_band},
                                    program);
 }
 
