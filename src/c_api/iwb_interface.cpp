@@ -189,6 +189,10 @@ const char* iwb_state_name(const iwb_material* material, int i) {
   return material->state_names[i].c_str();
 }
 
+int iwb_monotonic_only(const iwb_material* material) {
+  return material != nullptr && material->spec->declaration.monotonic_only ? 1 : 0;
+}
+
 int iwb_initial_input_count(const iwb_material* material) {
   return material ? int(material->spec->declaration.initial.size()) : 0;
 }

@@ -61,6 +61,11 @@ IWB_API iwb_status iwb_material_create_from_values(const char* model, const char
 
 IWB_API void iwb_material_destroy(iwb_material* material);
 
+/* 1 if only the model's monotonic part is built (Mortara's outer surface, without the surface
+ * that acts where the path reverses): a caller whose path reverses should refuse it. 0 otherwise,
+ * and for NULL. */
+IWB_API int iwb_monotonic_only(const iwb_material* material);
+
 IWB_API int iwb_state_size(const iwb_material* material);
 /* Name of state component i ("T_n", "e", "p_c", ...), valid while the material lives; NULL if out
  * of range. */

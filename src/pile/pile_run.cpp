@@ -267,6 +267,13 @@ json summary_of(const PileSpec& spec, const Analysis& a,
 }  // namespace
 
 int run_pile(const PileSpec& spec, const PileRunOptions& opt) {
+  // the interface is made first: a model or parameter file it refuses leaves nothing written
+  const ShaftMaterial material(spec.interface, spec.source + " [interface]");
+  if (spec.loading.kind != LoadingKind::kSettlement && iwb_monotonic_only(material.get()))
+    throw InputError(fmt::format(
+        "{} [interface]: model '{}' builds only its monotonic part, and this loading reverses "
+        "the shaft (kind = cyclic); give a model that unloads (an -igs model for cycles)",
+        spec.source, spec.interface.model));
   json m{{"kind", "pile"},
          {"status", "running"},
          {"source", spec.source},
@@ -278,7 +285,6 @@ int run_pile(const PileSpec& spec, const PileRunOptions& opt) {
   io::prepare_run_directory(opt.out, opt.force);
   io::write_manifest(opt.out, m);
   io::write_atomically(opt.out / "pile.toml", opt.spec_text);
-  const ShaftMaterial material(spec.interface, spec.source + " [interface]");
   const int n = spec.pile.elements;
   const long steps = long(head_path(spec.loading).size());
   const std::vector<int> meshes{std::max(1, n / 2), n, 2 * n};
