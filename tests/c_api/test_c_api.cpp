@@ -206,6 +206,18 @@ TEST_CASE(
                    message, sizeof message) == IWB_ERROR_INPUT);
 }
 
+TEST_CASE("c_api: a caller can ask whether only the model's monotonic part is built", "[c_api]") {
+  // Mortara's inner surface (cyclic loading) is not built (src/models/mortara/README.md); the
+  // hypoplastic and elastic-plastic laws unload
+  const Material mortara(Case{"mortara", "table_4_5_mortara.toml", {}});
+  const Material hvwe(Case{"hvwe", "table_5_1_evaluation.toml", {}});
+  const Material mc(Case{"mc", "table_4_3_mohr_coulomb.toml", {}});
+  CHECK(iwb_monotonic_only(mortara.m) == 1);
+  CHECK(iwb_monotonic_only(hvwe.m) == 0);
+  CHECK(iwb_monotonic_only(mc.m) == 0);
+  CHECK(iwb_monotonic_only(nullptr) == 0);
+}
+
 TEST_CASE(
     "c_api: a model whose law is in displacement (hyperbolic) answers the same slip alike at any "
     "thickness",
