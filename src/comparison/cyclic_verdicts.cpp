@@ -172,14 +172,13 @@ void judge_per_cycle(Judge& judge, const DemRun& dem, const Tolerances& tol,
       {"sigma_n_ratio", ratio, "cycle_sigma_n_ratio", kFrictionFloor},
       {"u_n_end_mm", u_n_end, "cycle_u_n", kUnFloorD50 * dem.d50_mm},
       {"reversal_secant_50_kPa_per_mm", stiffness, "reversal_secant", 1.0}};
-  const auto read = [&](auto get) { return each_seed(seeds, get); };
   const auto judged = judged_cycles(int(seeds.front().cycles.size()));
   for (int c : judged)
     for (const auto& q : all)
       if (tol.count(q.key))
         judge(q.name, "cycle " + std::to_string(c),
-              read([&](const auto& s) { return at_cycle(s, c, q.get); }), at_cycle(m, c, q.get),
-              tol.at(q.key), q.floor);
+              each_seed(seeds, [&](const auto& s) { return at_cycle(s, c, q.get); }),
+              at_cycle(m, c, q.get), tol.at(q.key), q.floor);
   const int last = judged.back();
   if (last < 2) return;
   for (const auto& q : all) {
@@ -188,9 +187,11 @@ void judge_per_cycle(Judge& judge, const DemRun& dem, const Tolerances& tol,
       const auto first = at_cycle(s, 1, q.get), end = at_cycle(s, last, q.get);
       return first && end ? std::optional(*end - *first) : std::nullopt;
     };
-    const SeedValues first = over_seeds(read([&](const auto& s) { return at_cycle(s, 1, q.get); }));
-    judge(std::string(q.name) + "_change", "cycle 1 to " + std::to_string(last), read(change),
-          change(m), tol.at(q.key), q.floor, first.mean ? std::abs(*first.mean) : 0.0);
+    const SeedValues first =
+        over_seeds(each_seed(seeds, [&](const auto& s) { return at_cycle(s, 1, q.get); }));
+    judge(std::string(q.name) + "_change", "cycle 1 to " + std::to_string(last),
+          each_seed(seeds, change), change(m), tol.at(q.key), q.floor,
+          first.mean ? std::abs(*first.mean) : 0.0);
   }
 }
 
@@ -203,12 +204,11 @@ void judge_post_cyclic(Judge& judge, const DemRun& dem, const Tolerances& tol,
   const auto u_n = [](const auto& s) {
     return s.post_cyclic ? std::optional(s.post_cyclic->u_n_change_mm) : std::nullopt;
   };
-  const auto read = [&](auto get) { return each_seed(seeds, get); };
   if (tol.count("post_cyclic_peak_friction"))
-    judge("post_cyclic_peak_friction", "after the cycles", read(peak), peak(m),
+    judge("post_cyclic_peak_friction", "after the cycles", each_seed(seeds, peak), peak(m),
           tol.at("post_cyclic_peak_friction"), kFrictionFloor);
   if (tol.count("post_cyclic_u_n_change"))
-    judge("post_cyclic_u_n_change_mm", "after the cycles", read(u_n), u_n(m),
+    judge("post_cyclic_u_n_change_mm", "after the cycles", each_seed(seeds, u_n), u_n(m),
           tol.at("post_cyclic_u_n_change"), kUnFloorD50 * dem.d50_mm);
 }
 

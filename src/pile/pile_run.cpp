@@ -272,7 +272,8 @@ int run_pile(const PileSpec& spec, const PileRunOptions& opt) {
   if (spec.loading.kind != LoadingKind::kSettlement && iwb_monotonic_only(material.get()))
     throw InputError(fmt::format(
         "{} [interface]: model '{}' builds only its monotonic part, and this loading reverses "
-        "the shaft (kind = cyclic); give a model that unloads (an -igs model for cycles)",
+        "the shaft ([loading] kind = cyclic_load or cyclic_settlement); give a model that "
+        "unloads (an -igs model for cycles)",
         spec.source, spec.interface.model));
   json m{{"kind", "pile"},
          {"status", "running"},
