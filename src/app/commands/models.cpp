@@ -18,10 +18,13 @@ int list_models(bool json) {
     nlohmann::json m = {{"name", spec.name},
                         {"summary", spec.summary},
                         {"equations", spec.equations},
-                        {"roughness", spec.uses_roughness}};
+                        {"roughness", spec.uses_roughness},
+                        {"monotonic_only", spec.declaration.monotonic_only}};
+    // A monotonic-only model is refused on cyclic runs and cyclic pile loading; say so up front.
     if (!json)
-      fmt::print("{:<11} {}\n{:<11} equations: {}; wall roughness: {}\n", spec.name, spec.summary,
-                 "", spec.equations, spec.uses_roughness ? "yes" : "no");
+      fmt::print("{:<11} {}\n{:<11} equations: {}; wall roughness: {}; paths: {}\n", spec.name,
+                 spec.summary, "", spec.equations, spec.uses_roughness ? "yes" : "no",
+                 spec.declaration.monotonic_only ? "monotonic only" : "monotonic and cyclic");
     for (const auto* table : spec.tables) {
       if (!json) fmt::print("{:<11} [{}]\n", "", table->name);
       for (const auto& p : table->entries) {
