@@ -90,40 +90,81 @@ void set_value(Variant& v, const models::FitParameter& what, double x) {
   }
 }
 
+namespace {
+
+// The optimiser's coordinate of unknown u and back: ln x for a logarithmic one.
+double to_x(const Unknown& u, double v) {
+  return u.what.logarithmic ? std::log(v) : v;
+}
+double from_x(const Unknown& u, double x) {
+  return u.what.logarithmic ? std::exp(x) : x;
+}
+
+Variant variant_at(const Variant& start, const std::vector<Unknown>& unknowns,
+                   const Eigen::VectorXd& x) {
+  Variant v = start;
+  for (std::size_t k = 0; k < unknowns.size(); ++k)
+    set_value(v, unknowns[k].what, from_x(unknowns[k], x(Eigen::Index(k))));
+  return v;
+}
+
+bool on_bound(const fitting::LeastSquaresProblem& p, const Eigen::VectorXd& x, int k) {
+  const double width = p.upper(k) - p.lower(k);
+  return std::abs(x(k) - p.lower(k)) < kAtBound * width ||
+         std::abs(x(k) - p.upper(k)) < kAtBound * width;
+}
+
+bool any_on_bound(const fitting::LeastSquaresProblem& p, const Eigen::VectorXd& x) {
+  for (int k = 0; k < int(x.size()); ++k)
+    if (on_bound(p, x, k)) return true;
+  return false;
+}
+
+// A start on the edge of the box (eq. 5.35's kappa_r floor on a flat wall) can lead BOBYQA into a
+// local optimum on that edge where the model has no friction at all, although the box holds a
+// far better fit (issue 34's flat cyclic cells). An optimum on a bound is therefore tried once
+// more from the box's centre, and the better of the two kept.
+fitting::LeastSquaresResult fit_with_second_start(fitting::LeastSquaresProblem p,
+                                                  std::string& note) {
+  auto first = fitting::fit_least_squares(p);
+  if (!any_on_bound(p, first.x)) return first;
+  p.start = (p.lower + p.upper) / 2.0;
+  auto second = fitting::fit_least_squares(p);
+  const bool keep_second = second.rmse < first.rmse;
+  note = fmt::format(
+      "the first start ended on a bound (scaled RMS {:.3g}); a second from the box's centre "
+      "ended at {:.3g}: kept the {}",
+      first.rmse, second.rmse, keep_second ? "second" : "first");
+  auto& kept = keep_second ? second : first;
+  kept.evaluations = first.evaluations + second.evaluations;
+  return kept;
+}
+
+}  // namespace
+
 VariantFit fit_variant(const DemRun& dem, const Variant& start, const FitTargets& targets,
                        const std::vector<Unknown>& unknowns) {
   const int n = int(unknowns.size());
-  // the optimiser's coordinate of unknown k and back: ln x for a logarithmic one
-  const auto to_x = [&](int k, double v) {
-    return unknowns[std::size_t(k)].what.logarithmic ? std::log(v) : v;
-  };
-  const auto from_x = [&](int k, double x) {
-    return unknowns[std::size_t(k)].what.logarithmic ? std::exp(x) : x;
-  };
-  const auto variant_at = [&](const Eigen::VectorXd& x) {
-    Variant v = start;
-    for (int k = 0; k < n; ++k) set_value(v, unknowns[std::size_t(k)].what, from_x(k, x(k)));
-    return v;
-  };
   fitting::LeastSquaresProblem p;
   p.residuals = [&](const Eigen::VectorXd& x) {
-    return fit_residuals(dem, replay(dem, variant_at(x)), targets);
+    return fit_residuals(dem, replay(dem, variant_at(start, unknowns, x)), targets);
   };
   p.lower.resize(n), p.upper.resize(n), p.start.resize(n), p.difference_step.resize(n);
   for (int k = 0; k < n; ++k) {
     const auto& u = unknowns[std::size_t(k)];
-    p.lower(k) = to_x(k, u.lower), p.upper(k) = to_x(k, u.upper);
-    p.start(k) = std::clamp(to_x(k, value_of(start, u.what)), p.lower(k), p.upper(k));
+    p.lower(k) = to_x(u, u.lower), p.upper(k) = to_x(u, u.upper);
+    p.start(k) = std::clamp(to_x(u, value_of(start, u.what)), p.lower(k), p.upper(k));
     p.difference_step(k) = u.what.logarithmic ? 1e-4 : 1e-4 * std::max(std::abs(p.start(k)), 0.1);
   }
-  const auto r = fitting::fit_least_squares(p);
-  VariantFit out{variant_at(r.x), {}, r.rmse, r.evaluations, r.stop_reason};
+  VariantFit out;
+  const auto r = fit_with_second_start(p, out.starts);
+  out.best = variant_at(start, unknowns, r.x);
+  out.rms_scaled = r.rmse, out.evaluations = r.evaluations, out.stop_reason = r.stop_reason;
   for (int k = 0; k < n; ++k) {
-    const double v = from_x(k, r.x(k)), width = p.upper(k) - p.lower(k);
-    const double sigma = unknowns[std::size_t(k)].what.logarithmic ? v * r.sigma(k) : r.sigma(k);
-    const bool at_bound = std::abs(r.x(k) - p.lower(k)) < kAtBound * width ||
-                          std::abs(r.x(k) - p.upper(k)) < kAtBound * width;
-    out.values.push_back({unknowns[std::size_t(k)].what.name, v, sigma, at_bound});
+    const auto& u = unknowns[std::size_t(k)];
+    const double v = from_x(u, r.x(k));
+    const double sigma = u.what.logarithmic ? v * r.sigma(k) : r.sigma(k);
+    out.values.push_back({u.what.name, v, sigma, on_bound(p, r.x, k)});
   }
   return out;
 }
@@ -158,6 +199,7 @@ FitResult fit_kappa_and_ds(const DemRun& dem, const Variant& start, const FitTar
                                : fmt::format("ln d_s (kappa_r fixed at {:g})", b.kappa_min),
                   targets.weighting);
   out.stop_reason = r.stop_reason;
+  if (!r.starts.empty()) out.algorithm += "; " + r.starts;
   return out;
 }
 

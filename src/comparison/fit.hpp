@@ -67,6 +67,9 @@ struct VariantFit {
   double rms_scaled = 0.0;
   int evaluations = 0;
   std::string stop_reason;
+  // Empty for one start; else what the second start (from the box's centre) found and which
+  // was kept.
+  std::string starts;
 };
 
 // The value an unknown takes in `v`, and `v` with it set to `x`.
@@ -74,7 +77,8 @@ double value_of(const Variant& v, const models::FitParameter& what);
 void set_value(Variant& v, const models::FitParameter& what, double x);
 
 // Least squares of `targets` over every unknown (NLopt's BOBYQA within the boxes, logarithmic
-// ones as ln x), from the values in `start`; the Gauss-Newton sigmas at the optimum.
+// ones as ln x), from the values in `start`, and once more from the box's centre when the first
+// optimum sits on a bound; the Gauss-Newton sigmas at the optimum kept.
 VariantFit fit_variant(const DemRun& dem, const Variant& start, const FitTargets& targets,
                        const std::vector<Unknown>& unknowns);
 
