@@ -4,7 +4,9 @@
 # fresh machine restarts all of them with one command after ./setup.sh. From the repository root:
 #   data/lanes.sh start [LANE...]   copy build/iwb to runs/bin-iwb-<its sha256> (a rebuild must not
 #                          change the binary under a running campaign) and start the lanes named
-#                          (default: every lane) that are not running
+#                          (default: every lane) that are not running; each runs one DEM job at a
+#                          time, or JOBS at once (JOBS=2 data/lanes.sh start cyclic: the last lane
+#                          left takes both cores)
 #   data/lanes.sh status   each lane's last progress line (its sweep, and each running job's
 #                          stage, how far and ETA)
 #   data/lanes.sh pause    stop the lanes' processes (SIGSTOP), e.g. to time the test suite idle
@@ -62,7 +64,7 @@ start() {
       continue
     fi
     local cmd
-    cmd="COMMIT=1 IWB=$bin JOBS=1 NP=1 $(lane_command "$lane")"
+    cmd="COMMIT=1 IWB=$bin JOBS=${JOBS:-1} NP=1 $(lane_command "$lane")"
     # setsid: the lane's own process group, so that stop reaches its sweeps and nothing else
     setsid nice -n "$(lane_nice "$lane")" bash -c "echo \$\$ > $DIR/$lane.pgid; exec env $cmd" \
       >> "$DIR/$lane.log" 2>&1 < /dev/null &
