@@ -17,7 +17,7 @@ gradings=("$@")
 for g in "${gradings[@]}"; do
   case $g in
     cu2) runs=(data/grains/grains_cu2/runs/rn0.25_s{1,2,3} data/grains/grains_cu2/runs/rn0.5_s{1,2,3}) ;;
-    cu3) runs=(data/grains/grains_cu3/runs/rn0.5_s{1,2,3}) ;;
+    cu3) runs=(data/grains/grains_cu3_rn025/runs/rn0.25_s{1,2,3} data/grains/grains_cu3/runs/rn0.5_s{1,2,3}) ;;
     *) echo "form_limit.sh: unknown grading '$g' (cu2, cu3)" >&2; exit 2 ;;
   esac
   "$IWB" form-limit --runs "${runs[@]}" --model "$MODEL" --params "data/params/grains_${g}_scaled.toml" \
