@@ -4,6 +4,10 @@
 # incremental. Usage: ./setup.sh
 set -euo pipefail
 cd "$(dirname "$0")"
+# Each phase is timed into build/budgets/setup.json for tools/budgets/budgets.py (issue 60).
+t_start=$SECONDS
+fresh_build=false
+[ -f build/build.ninja ] || fresh_build=true
 
 PACKAGES=(
   cmake ninja-build g++ pkg-config
@@ -31,6 +35,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
+t_packages=$SECONDS
 
 # ParaView's Python (pvpython) is Debian's python3-paraview, which declares a conflict with
 # python3-vtk9 (both ship a `vtkmodules` package) and so cannot be installed beside YADE. Its files
@@ -48,6 +53,15 @@ if [ ! -x "$PARAVIEW_PREFIX/usr/bin/pvpython3.11" ]; then
 fi
 
 # Debian's Python (numpy, and the module the C interface's Python caller builds) is /usr/bin/python3
+t_paraview=$SECONDS
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3
+t_configure=$SECONDS
 cmake --build build -j"$(nproc)"
+t_build=$SECONDS
+mkdir -p build/budgets
+cat > build/budgets/setup.json <<JSON
+{"when": "$(date -u +%Y-%m-%dT%H:%M:%SZ)", "cores": $(nproc), "packages_installed": $([ ${#missing[@]} -gt 0 ] && echo true || echo false),
+ "fresh_build": $fresh_build, "packages_s": $((t_packages - t_start)), "paraview_s": $((t_paraview - t_packages)),
+ "configure_s": $((t_configure - t_paraview)), "build_s": $((t_build - t_configure)), "total_s": $((t_build - t_start))}
+JSON
 echo "setup: done; the workbench is build/iwb"

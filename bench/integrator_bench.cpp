@@ -294,6 +294,8 @@ nlohmann::json run_integrator_bench(const IntegratorBenchOptions& opt) {
   const auto inputs = io::shipped_inputs(kParameterSet);
   const TradeoffPath tp;
   const auto settings = tradeoff_settings();
+  // refused before the runs; each bench replaces the last one's files
+  io::claim_output_directory(opt.out, {"bench-integrators", "integrators.md"}, false);
   std::vector<TradeoffPoint> all;
   fmt::print("{:<11} {:<4} {:<16} {:>10} {:>10} {:>10} {:>9}\n", "model", "BC", "setting", "error",
              "evals", "ms", "front");

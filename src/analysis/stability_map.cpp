@@ -6,6 +6,7 @@
 
 #include "analysis/stability_output.hpp"
 #include "common/errors.hpp"
+#include "io/output_directory.hpp"
 #include "io/parameter_file.hpp"
 
 namespace iwb::analysis {
@@ -33,6 +34,8 @@ StabilityMap run_stability_map(const StabilityMapOptions& opt) {
   opt.starting(fmt::format("{} with {} ({} form, {} points) -> {}", opt.model, opt.params,
                            opt.full ? "full" : "reduced", sweep.points(spec).size(),
                            map.dir.string()));
+  // refused before the sweep's minutes; each map replaces the last one's files
+  io::claim_output_directory(map.dir, {"stability", "stability.csv"}, false);
   const auto t0 = std::chrono::steady_clock::now();
   map.results = run_stability_sweep(spec, inputs, sweep);
   map.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

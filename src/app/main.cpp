@@ -8,6 +8,7 @@
 
 #include "app/command_list.hpp"
 #include "app/exit_codes.hpp"
+#include "io/output_directory.hpp"
 #include "models/external/external_model.hpp"
 
 namespace {
@@ -66,11 +67,16 @@ int main(int argc, char** argv) {
   }
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  int code = 0;
   try {
     if (!model_lib.empty())
       iwb::models::add_runtime_model(iwb::models::external_model_spec(model_lib, model_entry));
-    return commands.run_parsed({joined(argc, argv), &g_interrupt}).value_or(0);
+    code = commands.run_parsed({joined(argc, argv), &g_interrupt}).value_or(0);
   } catch (...) {
-    return iwb::app::exit_for(std::current_exception());
+    code = iwb::app::exit_for(std::current_exception());
   }
+  // whatever the command wrote, finished or not, is entered in its directories' ledgers, so that
+  // a later --force removes it (io/output_directory.hpp)
+  iwb::io::record_claimed_directories();
+  return code;
 }

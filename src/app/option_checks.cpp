@@ -119,6 +119,16 @@ CLI::Validator output_directory() {
   });
 }
 
+CLI::Validator non_empty() {
+  return CLI::Validator(
+      [](std::string& text) {
+        return text.find_first_not_of(" \t") == std::string::npos
+                   ? std::string("an empty value; give one, or leave the option out for its default")
+                   : std::string();
+      },
+      "TEXT");
+}
+
 std::vector<std::string> split_list(const std::string& csv) {
   std::vector<std::string> out;
   std::string item;

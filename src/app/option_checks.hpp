@@ -27,6 +27,8 @@ CLI::Validator input_path();
 CLI::Validator output_file();
 // A directory to be written: not an existing file.
 CLI::Validator output_directory();
+// A text that is not empty (an option given as '' would otherwise mean its default).
+CLI::Validator non_empty();
 
 // The items of a comma-separated option value ("liggghts,yade"), empty items dropped.
 std::vector<std::string> split_list(const std::string& csv);

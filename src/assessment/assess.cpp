@@ -19,6 +19,10 @@ namespace iwb::assessment {
 
 namespace {
 
+// The Sobol indices and uncertainty of one model (the league has its own directories); each run
+// replaces the last one's files, and those only (issue 60).
+const io::OutputKind kSensitivityOutput{"assess-sensitivity", "sobol.md"};
+
 // --cov-of KEY=COV, repeated: InputError naming the bad one.
 std::map<std::string, double> own_covs(const std::vector<std::string>& given) {
   std::map<std::string, double> out;
@@ -139,7 +143,7 @@ SobolResult sobol_convergence(const models::ModelSpec& spec, ElementSensitivityO
     }
     md += "\n";
   }
-  io::prepare_run_directory(dir, true);
+  io::prepare_run_directory(dir, kSensitivityOutput, true);
   io::write_atomically(dir / "sobol_convergence.csv", csv_text);
   io::write_atomically(dir / "sobol_convergence.md", md);
   auto fig = comparison::curves_figure(
@@ -178,16 +182,17 @@ AssessOutcome assess_element(const AssessOptions& o) {
   const auto opt = element_options(spec, o);
   const auto dir = o.out.empty() ? std::filesystem::path("runs") / ("assess-" + o.model)
                                  : std::filesystem::path(o.out);
+  io::require_output_directory(dir, kSensitivityOutput, true);  // before the samples' minutes
   if (!o.uncertainty.empty()) {
     const auto r = element_uncertainty(spec, opt, read_distributions(o.uncertainty));
-    io::prepare_run_directory(dir, true);
+    io::prepare_run_directory(dir, kSensitivityOutput, true);
     const auto md = uncertainty_markdown(r, o);
     io::write_atomically(dir / "uncertainty.md", md);
     return {md, {}};
   }
   const auto r =
       o.convergence ? sobol_convergence(spec, opt, o, dir) : element_sensitivity(spec, opt);
-  if (!o.convergence) io::prepare_run_directory(dir, true);
+  if (!o.convergence) io::prepare_run_directory(dir, kSensitivityOutput, true);
   const auto md = sobol_markdown(r, o);
   io::write_atomically(dir / "sobol.csv", sobol_csv(r));
   io::write_atomically(dir / "sobol.md", md);

@@ -167,8 +167,13 @@ AssessOutcome run_league(const AssessOptions& o) {
   // those made from these inputs are reused
   const bool resume = std::filesystem::exists(dir / "manifest.json") &&
                       io::read_json_file(dir / "manifest.json").contains("league");
-  if (!resume) io::prepare_run_directory(dir, o.force);
-  io::write_manifest(dir, {{"command", "assess"}, {"league", header}, {"status", "running"}});
+  const io::OutputKind kind{"assess-league", "league.md"};
+  if (resume)
+    io::claim_output_directory(dir, kind, false);
+  else
+    io::prepare_run_directory(dir, kind, o.force);
+  io::write_manifest(dir, {{"kind", kind.kind}, {"command", "assess"}, {"league", header},
+                           {"status", "running"}});
   std::vector<nlohmann::json> entries;
   for (std::size_t i = 0; i < names.size(); ++i)
     entries.push_back(model_entry(o, ref, names[i], inputs[i], texts, dir,
@@ -183,7 +188,8 @@ AssessOutcome run_league(const AssessOptions& o) {
   io::write_atomically(dir / "league.csv", league_csv(table));
   const auto md = league_markdown(header, table);
   io::write_atomically(dir / "league.md", md);
-  io::write_manifest(dir, {{"command", "assess"}, {"league", header}, {"status", "complete"}});
+  io::write_manifest(dir, {{"kind", kind.kind}, {"command", "assess"}, {"league", header},
+                           {"status", "complete"}});
   return {md.substr(0, md.find("\n![")), dir / "league.md"};  // the table without its figures
 }
 

@@ -230,7 +230,7 @@ SoilTest read_soil_test(const fs::path& dir) {
 
 void write_soil_test(const SoilTest& t, const fs::path& dir, bool force,
                      const nlohmann::json& extra) {
-  io::prepare_run_directory(dir, force);
+  io::prepare_run_directory(dir, {"soiltest"}, force);
   write_soil_test_files(t, dir, extra);
 }
 

@@ -271,7 +271,7 @@ nlohmann::json run_comparison(const CompareOptions& options) {
 nlohmann::json run_comparison(const ComparisonInputs& in) {
   const auto& [opt, dem, seeds, scatter, tolerances, form_limit, given] = in;
   auto candidates = given;
-  io::prepare_run_directory(opt.out, opt.force);
+  io::prepare_run_directory(opt.out, {"comparison"}, opt.force);
   json manifest = manifest_of(opt);
   if (!opt.roughness_scheme.empty()) manifest["inputs"]["roughness_scheme"] = opt.roughness_scheme;
   if (!opt.f_c.empty()) manifest["inputs"]["f_c"] = opt.f_c;

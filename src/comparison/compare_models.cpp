@@ -21,7 +21,7 @@ std::vector<ComparisonInputs> inputs_per_model(const CompareOptions& options,
     auto opt = options;
     opt.model = model;
     opt.out = models.size() > 1 ? options.out / model : options.out;
-    io::require_new_run_directory(opt.out, opt.force);
+    io::require_new_run_directory(opt.out, {"comparison"}, opt.force);
     each.push_back(read_comparison_inputs(opt));
   }
   return each;

@@ -374,7 +374,7 @@ json run_form_limit(const FormLimitOptions& o) {
   check_inputs(o);
   const auto soil_set = validated_parameters(o.model, o.params);
   const Problem p = set_up(o, soil_set);  // InputError for a bad run, before anything is written
-  io::prepare_run_directory(o.out, o.force);
+  io::prepare_run_directory(o.out, {"form_limit"}, o.force);
   json manifest = {{"kind", "form_limit"},
                    {"command_line", o.command_line},
                    {"started", io::utc_timestamp()},

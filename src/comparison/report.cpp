@@ -566,7 +566,8 @@ std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs:
   for (const auto& h : hypotheses) sets.push_back(io::read_json_file(h));
 
   if (html.has_parent_path()) fs::create_directories(html.parent_path());
-  io::StagedDirectory files(html.parent_path() / (html.stem().string() + "_files"));
+  io::StagedDirectory files(html.parent_path() / (html.stem().string() + "_files"),
+                          "report-files");
   std::vector<fs::path> figures;
   std::string body = "<section><h2>Verdicts at a glance</h2>\n" + glance_table(comparisons) +
                      "</section>\n" + models_beside(comparisons);

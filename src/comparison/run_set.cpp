@@ -150,7 +150,8 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
     models::Roughness r{models::find_model(opt.model).declaration.roughness.default_scheme, 1.0};
     chosen_roughness(c, r);  // refused here, before OUT is made
   }
-  fs::create_directories(opt.out);
+  // a set's comparisons are reused or redone one by one (--force: redone); its files stay ours
+  io::claim_output_directory(opt.out, {"hypothesis set"}, false);
   json manifest = {
       {"kind", "hypothesis set"}, {"command_line", opt.command_line}, {"model", opt.model},
       {"parameters", opt.params}, {"started", io::utc_timestamp()},   {"status", "running"}};

@@ -33,10 +33,15 @@ void copy_specimen(const Engine& engine, const fs::path& from, const fs::path& t
   fs::copy_file(record, to / record.filename(), fs::copy_options::overwrite_existing);
 }
 
-// Empties a stale or corrupt entry (its lock, held by the caller, stays).
-void clear_entry(const fs::path& dir) {
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().filename() != io::kLockFileName) fs::remove_all(e.path());
+// Empties a stale or corrupt entry of the files an entry holds, and no other (issue 60: the cache
+// is a directory the user names); its lock, held by the caller, stays.
+void clear_entry(const Engine& engine, const fs::path& dir) {
+  auto names = specimen_files(engine);
+  names.push_back(
+      io::checksum_record_path(dir / engine.restart_file(kConsolidationStage)).filename());
+  names.push_back(kEntryRecord);
+  names.push_back(kEntryInputs);
+  for (const auto& name : names) fs::remove(dir / name);
 }
 
 // The entry's record when it holds an intact specimen, copied into work_dir; null when there is
@@ -54,7 +59,7 @@ json fetch(const Engine& engine, const fs::path& dir, const fs::path& work_dir, 
     if (const auto problem = io::checksum_problem(dir / restart)) why = *problem;
   }
   if (!why.empty()) {
-    clear_entry(dir);
+    clear_entry(engine, dir);
     return nullptr;
   }
   copy_specimen(engine, dir, work_dir);

@@ -198,8 +198,11 @@ nlohmann::json run_crosscheck(const CrosscheckOptions& opt) {
   for (const auto& e : opt.engines) make_engine(e);  // unknown engines are refused before any run
   const std::string text = io::read_file(opt.scene_file);
   parse_scene(text, opt.scene_file.string());  // every value checked before the lock creates OUT
+  const io::OutputKind kind{"dem-crosscheck", "crosscheck.json"};
+  io::require_output_directory(opt.out, kind, false);  // before the lock touches it
   const auto lock =
       io::DirectoryLock::take(opt.out, opt.command_line);  // each seed's run locks its own
+  io::claim_output_directory(opt.out, kind, false);
   nlohmann::json out = {{"kind", "dem-crosscheck"},
                         {"scene", opt.scene_file.string()},
                         {"seeds", opt.seeds},

@@ -130,6 +130,18 @@ void coarse_grain_fields(const RunOptions& opt, nlohmann::json& m) {
   }
 }
 
+// A run directory holds the output of one kind: the manifest's (a scene's run, a soil cell's).
+io::OutputKind run_kind(const nlohmann::json& fresh) {
+  return {fresh.at("kind").get<std::string>()};
+}
+
+// --force removed the earlier run's files and kept what the workbench did not write: said once.
+void report_kept(const std::vector<std::string>& kept, const RunOptions& opt) {
+  if (!kept.empty() && opt.progress)
+    opt.progress(fmt::format("{}: kept {} file(s) the workbench did not write (first: {})",
+                             opt.out.string(), kept.size(), kept.front()));
+}
+
 }  // namespace
 
 std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text, Engine& engine,
@@ -140,10 +152,15 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
   if (opt.resume &&
       !fs::exists(opt.out / "manifest.json"))  // refused before the lock creates anything
     throw InputError(fmt::format("{}: nothing to resume (no manifest.json)", opt.out.string()));
+  if (opt.resume)  // before the lock touches it
+    io::require_output_directory(opt.out, run_kind(fresh), false);
+  else
+    io::require_new_run_directory(opt.out, run_kind(fresh), opt.force);
   auto lock = io::DirectoryLock::take(opt.out, opt.command_line);
   if (lock.stale() && opt.progress) opt.progress(lock.stale_message());
   if (opt.resume) {
     m = earlier_manifest(opt.out, sha, nlohmann::json::json_pointer(sha_key));
+    io::claim_output_directory(opt.out, run_kind(fresh), false);
     if (m.value("status", "") == "complete") {
       out.status = "complete";
       return StagedRun{StageContext{scene, opt.out, opt.out / engine.name(), opt.processes,
@@ -153,7 +170,7 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
     m["status"] = "running";
     m["resumed"].push_back(io::utc_timestamp());
   } else {
-    io::prepare_run_directory(opt.out, opt.force);
+    report_kept(io::prepare_run_directory(opt.out, run_kind(fresh), opt.force), opt);
     m = fresh;
   }
   if (lock.stale()) m["stale_lock_taken_over"] = lock.stale()->describe();

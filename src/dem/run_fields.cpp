@@ -115,6 +115,7 @@ struct RunContext {
   io::CsvTable timeseries;
   nlohmann::json summary;
   double width;
+  std::string manifest_kind;  // the run directory's (a scene's run, a soil cell's)
 };
 
 RunContext open_run(const fs::path& dir, const RunFieldsOptions& opt) {
@@ -128,7 +129,7 @@ RunContext open_run(const fs::path& dir, const RunFieldsOptions& opt) {
                io::read_csv_table(dir / "timeseries.csv"),
                fs::exists(dir / "summary.json") ? io::read_json_file(dir / "summary.json")
                                                 : nlohmann::json::object(),
-               0.0};
+               0.0, m.value("kind", "dem-run")};
   c.numerics = dem::derive(c.scene);
   const double w = opt.width_d50.value_or(c.scene.coarse_graining.width_d50);
   if (!(w > 0.0) || w > 0.5 * c.scene.height_m / c.numerics.d50)
@@ -191,6 +192,7 @@ GrainsOfSnapshot grains_of(const RunContext& c, const fs::path& vtk, long step) 
 
 nlohmann::json coarse_grain_run(const fs::path& dir, const RunFieldsOptions& opt) {
   RunContext c = open_run(dir, opt);
+  io::claim_output_directory(dir, {c.manifest_kind}, false);  // its run's, or refused
   const auto files = snapshot_files(dir / "vtk");
   fs::create_directories(dir / "fields");
   std::vector<SnapshotProfile> profiles;

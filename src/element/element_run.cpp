@@ -61,8 +61,10 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
       nlohmann::json::array();  // each file as it is written, so the list never names a missing one
   m["started"] = io::utc_timestamp();
   m["status"] = "running";
+  const io::OutputKind kind{"element-test"};
+  io::require_new_run_directory(opt.out, kind, opt.force);  // before the lock touches it
   const auto lock = io::DirectoryLock::take(opt.out, opt.command_line);  // until the run is written
-  io::prepare_run_directory(opt.out, opt.force);
+  io::prepare_run_directory(opt.out, kind, opt.force);
   io::write_manifest(opt.out, m);
 
   driver::RunSettings settings = spec.settings;

@@ -10,7 +10,6 @@
 #include <sstream>
 
 #include "common/errors.hpp"
-#include "io/directory_lock.hpp"
 
 namespace iwb::io {
 
@@ -56,7 +55,8 @@ std::string utc_timestamp() {
   return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::chrono::system_clock::now()));
 }
 
-void require_new_run_directory(const fs::path& dir, bool force) {
+void require_new_run_directory(const fs::path& dir, const OutputKind& kind, bool force) {
+  require_output_directory(dir, kind, force);
   if (!force && fs::exists(dir / "manifest.json"))
     throw InputError(
         fmt::format("{}: holds an earlier run (manifest.json); choose another --out "
@@ -64,20 +64,17 @@ void require_new_run_directory(const fs::path& dir, bool force) {
                     dir.string()));
 }
 
-void prepare_run_directory(const fs::path& dir, bool force) {
-  require_new_run_directory(dir, force);
-  if (fs::exists(dir / "manifest.json")) {
-    // Replaced, not overwritten: files the new run does not write again (a snapshot at a step
-    // it never reaches) would otherwise pass for its own. Only a directory with a manifest, that
-    // is a run of ours, is emptied; its lock (directory_lock.hpp), held by the caller, stays.
-    for (const auto& entry : fs::directory_iterator(dir))
-      if (entry.path().filename() != kLockFileName) fs::remove_all(entry.path());
-  }
-  fs::create_directories(dir);
+std::vector<std::string> prepare_run_directory(const fs::path& dir, const OutputKind& kind,
+                                               bool force) {
+  require_new_run_directory(dir, kind, force);
+  // Replaced, not overwritten: files the new run does not write again (a snapshot at a step it
+  // never reaches) would otherwise pass for its own. Only the files the ledger lists go.
+  return claim_output_directory(dir, kind, force);
 }
 
 void write_manifest(const fs::path& dir, const nlohmann::json& manifest) {
   write_atomically(dir / "manifest.json", manifest.dump(2) + "\n");
+  record_written_files(dir);
 }
 
 }  // namespace iwb::io

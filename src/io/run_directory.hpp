@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "io/output_directory.hpp"
+
 namespace iwb::io {
 
 void write_atomically(const std::filesystem::path& path, const std::string& content);
@@ -14,15 +16,18 @@ std::string read_file(const std::filesystem::path& path);
 std::string sha256_hex(const std::string& bytes);
 std::string utc_timestamp();  // ISO 8601, seconds
 
-// Prepares `dir` for a new run: creates it; refuses (InputError) to overwrite a directory that
-// holds a manifest unless `force`; with `force` such a directory is emptied first, so that no file
-// of the earlier run passes for the new one's (but its lock file, DirectoryLock, held by the
-// caller).
-void prepare_run_directory(const std::filesystem::path& dir, bool force);
-// prepare_run_directory's refusal alone, for a command that prepares several directories and
-// checks them all before it writes any.
-void require_new_run_directory(const std::filesystem::path& dir, bool force);
+// Prepares `dir` for a new run of `kind` (output_directory.hpp): claims it; refuses (InputError)
+// to overwrite a directory that holds a manifest unless `force`; with `force` the files the
+// earlier run wrote are removed first, so that none passes for the new one's, and no other file
+// (nor the lock file, DirectoryLock, held by the caller). Returns the files kept.
+std::vector<std::string> prepare_run_directory(const std::filesystem::path& dir,
+                                               const OutputKind& kind, bool force);
+// prepare_run_directory's refusals alone, writing nothing, for a command that prepares several
+// directories and checks them all before it writes any.
+void require_new_run_directory(const std::filesystem::path& dir, const OutputKind& kind,
+                               bool force);
 
+// Writes the manifest and brings the directory's ledger of written files up to date.
 void write_manifest(const std::filesystem::path& dir, const nlohmann::json& manifest);
 
 }  // namespace iwb::io

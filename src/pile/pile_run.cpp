@@ -193,7 +193,7 @@ std::optional<cycles::CyclicQuantities> shaft_cycles(const PileSpec& spec, const
 std::vector<fs::path> draw_figures(const PileSpec& spec, const Analysis& a,
                                    const std::optional<cycles::CyclicQuantities>& per_cycle,
                                    const fs::path& out) {
-  io::StagedDirectory staged(out / "figures");
+  io::StagedDirectory staged(out / "figures", "figures");
   comparison::PlotCurve head{"head", {}, {}}, shaft{"shaft", {}, {}}, base{"base", {}, {}};
   for (const auto& s : a.curve) {
     head.x.push_back(s.head_settlement_mm), head.y.push_back(s.head_load_kN);
@@ -282,8 +282,10 @@ int run_pile(const PileSpec& spec, const PileRunOptions& opt) {
          {"command_line", opt.command_line},
          {"started", io::utc_timestamp()},
          {"interface_library", iwb_version()}};
+  const io::OutputKind kind{"pile"};
+  io::require_new_run_directory(opt.out, kind, opt.force);  // before the lock touches it
   const auto lock = io::DirectoryLock::take(opt.out, opt.command_line);
-  io::prepare_run_directory(opt.out, opt.force);
+  io::prepare_run_directory(opt.out, kind, opt.force);
   io::write_manifest(opt.out, m);
   io::write_atomically(opt.out / "pile.toml", opt.spec_text);
   const int n = spec.pile.elements;

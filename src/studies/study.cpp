@@ -120,6 +120,7 @@ void refuse_earlier_study(const std::vector<ClayCase>& cases, const StudyOptions
 int run_study(const StudyDefinition& study, const StudyOptions& opt) {
   const auto& cases = study.cases;
   refuse_earlier_study(cases, opt);
+  io::claim_output_directory(opt.out, {"study", "study.json"}, opt.force);
   const auto parameters = study_parameters(cases, opt.out);
   std::map<std::string, ClayCurve> curves;
   bool complete = true;

@@ -61,7 +61,7 @@ comparison::Figure figure_of(const FigureSpec& spec,
 std::vector<StudyFigure> draw_figures(const std::vector<FigureSpec>& specs,
                                       const std::map<std::string, ClayCurve>& curves,
                                       const fs::path& out) {
-  io::StagedDirectory staged(out / "figures");
+  io::StagedDirectory staged(out / "figures", "figures");
   std::vector<StudyFigure> figures;
   for (const auto& spec : specs) {
     comparison::draw(figure_of(spec, curves), staged.path());

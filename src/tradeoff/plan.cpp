@@ -14,6 +14,7 @@
 #include "dem/scene.hpp"
 #include "dem/scene_content.hpp"
 #include "io/json_file.hpp"
+#include "io/output_directory.hpp"
 #include "io/parameter_file.hpp"
 #include "io/run_directory.hpp"
 #include "tradeoff/tradeoff.hpp"
@@ -375,7 +376,7 @@ json run_plan(const PlanOptions& opt) {
                {"params_why", opt.params_why},
                {"command_line", opt.command_line}};
   const fs::path out = opt.out.empty() ? ref.parent_path().parent_path() : opt.out;
-  fs::create_directories(out);
+  io::claim_output_directory(out, {"plan", "plan.json", {kTradeoffOutput}}, false);
   io::write_atomically(out / "plan.json", plan.dump(2) + "\n");
   return plan;
 }

@@ -158,8 +158,10 @@ json row_of(const Variant& v, const fs::path& dir) {
 json run_tradeoff(const TradeoffOptions& opt) {
   const auto variants = expand_variants(opt);  // refuses a bad variant before anything runs
   const fs::path out = opt.out.empty() ? default_out(opt.scene_file) : opt.out;
+  io::require_output_directory(out, kTradeoffOutput, false);  // before the lock touches it
   const auto lock =
       io::DirectoryLock::take(out, opt.command_line);  // each variant's run locks its own
+  io::claim_output_directory(out, kTradeoffOutput, false);  // a tradeoff resumes
   std::vector<campaign::Job> jobs;
   fs::create_directories(out / "scenes");
   for (const auto& v : variants) {

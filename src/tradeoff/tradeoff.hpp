@@ -14,8 +14,12 @@
 #include <vector>
 
 #include "campaign/jobs.hpp"
+#include "io/output_directory.hpp"
 
 namespace iwb::tradeoff {
+
+// A tradeoff's directory (issue 60): resumed by a later tradeoff, shared with a plan's plan.json.
+inline const io::OutputKind kTradeoffOutput{"tradeoff", "tradeoff.json"};
 
 // What the errors are measured against. kRefined: every knob refined at once, one seed (a scene
 // not known to be converged). kBase: the scene itself, the mean of its seeds (a scene a

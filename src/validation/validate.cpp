@@ -146,7 +146,8 @@ fs::path replay_parameters(const Inputs& in, const fs::path& dem_dir, const fs::
 ValidateOutcome run_validate(const ValidateOptions& opt) {
   const Inputs in = resolve_inputs(opt);  // refused before anything runs or is written
   for (const auto& w : in.scene.warnings) opt.warning(w);
-  fs::create_directories(opt.out);
+  // its DEM runs are claimed apart (--force replaces them); the replays and report are redone
+  io::claim_output_directory(opt.out, {"validate", "report.html"}, false);
   const std::size_t steps = 2 * in.runs.size() + 1;
   std::size_t step = 0;
   std::vector<fs::path> compares;

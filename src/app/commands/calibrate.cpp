@@ -92,7 +92,7 @@ CLI::App* add_calibrate_options(CLI::App& app, CalibrateCommand& c) {
       ->add_option("--points", c.points,
                    "points of the front besides the one at the given weights (with --pareto)")
       ->needs(pareto)
-      ->check(CLI::Range(calibration::kMinParetoPoints, calibration::kMaxParetoPoints))
+      ->check(whole_in(calibration::kMinParetoPoints, calibration::kMaxParetoPoints))
       ->capture_default_str();
   calibrate->add_option("--out,-o", c.params_out, "parameter file to write (data/params format)")
       ->required()

@@ -48,7 +48,7 @@ void add_dem_fields_command(CLI::App& dem, CommandList& commands) {
          "--width-d50", o->width_d50,
          "kernel width (the Gaussian's standard deviation) in d50; default: the scene's, else 0.5. "
          "A new width recomputes every snapshot")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in({0.0, kMaxCellSizeD50, true}, "d50"));
   cmd->add_flag("--force", o->force, "recompute every snapshot");
   commands.add(cmd, [o](const CommandContext&) {
     dem::RunFieldsOptions opt;

@@ -142,17 +142,22 @@ void add_sweep_command(CLI::App& app, CommandList& commands) {
       ->capture_default_str();
   auto& slurm = opt.slurm;
   sweep->add_option("--partition", slurm.partition,
-                    "Slurm: the partition of the array tasks (default: the cluster's)");
-  sweep->add_option("--account", slurm.account, "Slurm: the account charged (default: yours)");
+                    "Slurm: the partition of the array tasks (default: the cluster's)")
+      ->check(non_empty());
+  sweep->add_option("--account", slurm.account, "Slurm: the account charged (default: yours)")
+      ->check(non_empty());
   sweep->add_option("--time", slurm.time,
                     "Slurm: wall-clock limit of one task (default: the sweep file's [slurm] time, "
-                    "else 01:00:00)");
-  sweep->add_option("--mem", slurm.memory, "Slurm: memory of one task (4000 = MB, or 4G)");
+                    "else 01:00:00)")
+      ->check(non_empty());
+  sweep->add_option("--mem", slurm.memory, "Slurm: memory of one task (4000 = MB, or 4G)")
+      ->check(non_empty());
   sweep->add_option(
       "--prologue", slurm.prologue,
-      "Slurm: a shell line each task runs first, e.g. 'module load openmpi'; repeat for several");
+      "Slurm: a shell line each task runs first, e.g. 'module load openmpi'; repeat for several")
+      ->check(non_empty());
   sweep->add_option("--poll", opt.poll_seconds, "Slurm: seconds between looks at the queue")
-      ->check(CLI::Range(1.0, 3600.0))
+      ->check(number_in({1.0, 3600.0}, "s"))
       ->capture_default_str();
   sweep->add_option("--out,-o", o->out, "campaign directory (default runs/sweep-<sweep file stem>)")
       ->check(output_directory());
