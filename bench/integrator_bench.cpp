@@ -294,8 +294,9 @@ nlohmann::json run_integrator_bench(const IntegratorBenchOptions& opt) {
   const auto inputs = io::shipped_inputs(kParameterSet);
   const TradeoffPath tp;
   const auto settings = tradeoff_settings();
-  // refused before the runs; each bench replaces the last one's files
-  io::claim_output_directory(opt.out, {"bench-integrators", "integrators.md"}, false);
+  // refused before the runs; the files enter the directory's ledger together at the end
+  const io::OutputKind kind{"bench-integrators", "integrators.md"};
+  io::require_output_directory(opt.out, kind, false);
   std::vector<TradeoffPoint> all;
   fmt::print("{:<11} {:<4} {:<16} {:>10} {:>10} {:>10} {:>9}\n", "model", "BC", "setting", "error",
              "evals", "ms", "front");
@@ -310,7 +311,8 @@ nlohmann::json run_integrator_bench(const IntegratorBenchOptions& opt) {
         all.push_back(p);
       }
   io::StagedDirectory staged(
-      opt.out);  // the table, its summary and its fronts together or not at all
+      opt.out,
+      kind.kind);  // the table, its summary and its fronts together or not at all
   io::write_atomically(staged.path() / "integrators.csv", points_csv(all));
   const auto ov = overall(all, tp.increments);
   const std::string md = markdown(all, ov, opt, tp);

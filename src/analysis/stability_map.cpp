@@ -34,8 +34,8 @@ StabilityMap run_stability_map(const StabilityMapOptions& opt) {
   opt.starting(fmt::format("{} with {} ({} form, {} points) -> {}", opt.model, opt.params,
                            opt.full ? "full" : "reduced", sweep.points(spec).size(),
                            map.dir.string()));
-  // refused before the sweep's minutes; each map replaces the last one's files
-  io::claim_output_directory(map.dir, {"stability", "stability.csv"}, false);
+  // refused before the sweep's minutes (the map's files enter the directory's ledger together)
+  io::require_output_directory(map.dir, kStabilityOutput, false);
   const auto t0 = std::chrono::steady_clock::now();
   map.results = run_stability_sweep(spec, inputs, sweep);
   map.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -206,7 +206,8 @@ comparison::Figure boundary_map(const std::vector<StabilityResult>& results,
 std::vector<fs::path> write_stability_map(const std::vector<StabilityResult>& results,
                                           const StabilitySweep& sweep, const StabilityMapInfo& info,
                                           const fs::path& dir) {
-  io::StagedDirectory staged(dir);  // the table, its summary and its maps together or not at all
+  // the table, its summary and its maps together or not at all
+  io::StagedDirectory staged(dir, kStabilityOutput.kind);
   io::write_atomically(staged.path() / "stability.csv", stability_csv(results, info.axis));
   io::write_atomically(staged.path() / "stability.md", stability_markdown(results, sweep, info));
   std::vector<fs::path> figures;

@@ -9,8 +9,12 @@
 #include <vector>
 
 #include "analysis/stability.hpp"
+#include "io/output_directory.hpp"
 
 namespace iwb::analysis {
+
+// A stability map's directory (issue 60): a later map of the same kind replaces its files.
+inline const io::OutputKind kStabilityOutput{"stability", "stability.csv"};
 
 struct StabilityMapInfo {
   std::string model;

@@ -77,6 +77,6 @@ int main(int argc, char** argv) {
   }
   // whatever the command wrote, finished or not, is entered in its directories' ledgers, so that
   // a later --force removes it (io/output_directory.hpp)
-  iwb::io::record_claimed_directories();
+  iwb::io::release_claimed_directories();
   return code;
 }

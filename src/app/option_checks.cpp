@@ -4,6 +4,8 @@
 
 #include <filesystem>
 
+#include "common/errors.hpp"
+
 namespace iwb::app {
 
 namespace fs = std::filesystem;
@@ -33,6 +35,17 @@ std::string kind_of(const fs::path& p) {
   if (fs::is_directory(s)) return "directory";
   if (fs::is_regular_file(s)) return "file";
   return "other";
+}
+
+// A missing input path, or no path at all: '' would otherwise read as "no such file", and CLI11
+// takes the word after an option that needs a value as that value (`--runs --held-out X` gives
+// --runs "--held-out"), which would blame the next option. CLI11 puts the option's name first.
+std::string missing(const std::string& text, const std::string& what) {
+  if (text.find_first_not_of(" \t") == std::string::npos)
+    return fmt::format("an empty value; give a {}", what);
+  if (text.front() == '-')
+    return fmt::format("no {} given ('{}' is the next option, not a {})", what, text, what);
+  return fmt::format("{}: no such {}", text, what);
 }
 
 }  // namespace
@@ -84,7 +97,7 @@ CLI::Validator path_check(const std::string& name,
 CLI::Validator input_file() {
   return path_check("FILE", [](const std::string& text, const std::string& kind) -> std::string {
     if (kind == "file") return "";
-    if (kind == "missing") return text + ": no such file";
+    if (kind == "missing") return missing(text, "file");
     return fmt::format("{}: is a {}, not a file", text,
                        kind == "directory" ? "directory" : "special file");
   });
@@ -93,13 +106,13 @@ CLI::Validator input_file() {
 CLI::Validator input_directory() {
   return path_check("DIR", [](const std::string& text, const std::string& kind) -> std::string {
     if (kind == "directory") return "";
-    return text + (kind == "missing" ? ": no such directory" : ": is a file, not a directory");
+    return kind == "missing" ? missing(text, "directory") : text + ": is a file, not a directory";
   });
 }
 
 CLI::Validator input_path() {
   return path_check("PATH", [](const std::string& text, const std::string& kind) -> std::string {
-    return kind == "missing" ? text + ": no such file or directory" : "";
+    return kind == "missing" ? missing(text, "file or directory") : "";
   });
 }
 
@@ -123,10 +136,18 @@ CLI::Validator non_empty() {
   return CLI::Validator(
       [](std::string& text) {
         return text.find_first_not_of(" \t") == std::string::npos
-                   ? std::string("an empty value; give one, or leave the option out for its default")
+                   ? std::string(
+                         "an empty value; give one, or leave the option out for its default")
                    : std::string();
       },
       "TEXT");
+}
+
+void refuse_given(const CLI::App& command, const std::vector<std::string>& options,
+                  const std::string& why) {
+  for (const auto& name : options)
+    if (const CLI::Option* given = command.get_option(name); given->count() > 0)
+      throw InputError(fmt::format("{} {}: {}; leave it out", name, given->as<std::string>(), why));
 }
 
 std::vector<std::string> split_list(const std::string& csv) {

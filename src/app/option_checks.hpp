@@ -30,6 +30,12 @@ CLI::Validator output_directory();
 // A text that is not empty (an option given as '' would otherwise mean its default).
 CLI::Validator non_empty();
 
+// After parsing: refuses (InputError) the first of `options` given to `command`, naming it, its
+// value and `why` it does not apply ("applies only to --test cyclicshear, not to --test
+// oedometer"): an option the run would ignore is refused rather than ignored.
+void refuse_given(const CLI::App& command, const std::vector<std::string>& options,
+                  const std::string& why);
+
 // The items of a comma-separated option value ("liggghts,yade"), empty items dropped.
 std::vector<std::string> split_list(const std::string& csv);
 

@@ -150,6 +150,19 @@ nlohmann::json model_entry(const AssessOptions& o, const SceneReference& ref,
   return e;
 }
 
+// Per model, its cell of the form-limit records under --form-limits (none without it): read before
+// anything is written, so that an edited record is refused before the runs (issue 60).
+std::vector<nlohmann::json> form_limit_cells(const AssessOptions& o,
+                                             const std::vector<std::string>& names,
+                                             const nlohmann::json& header) {
+  std::vector<nlohmann::json> cells;
+  if (o.form_limits.empty()) return cells;
+  for (const auto& m : names)
+    cells.push_back(comparison::form_limit_cell(o.form_limits, m, header["wall"].get<std::string>(),
+                                                header["boundary"].get<std::string>()));
+  return cells;
+}
+
 }  // namespace
 
 AssessOutcome run_league(const AssessOptions& o) {
@@ -163,6 +176,7 @@ AssessOutcome run_league(const AssessOptions& o) {
   const auto dir = o.out.empty() ? std::filesystem::path("runs") / "assess-league"
                                  : std::filesystem::path(o.out);
   const auto header = league_header(o, ref, runs.front(), names);
+  const auto cells = form_limit_cells(o, names, header);
   // an earlier league continues here: its model records say what they were made from, and only
   // those made from these inputs are reused
   const bool resume = std::filesystem::exists(dir / "manifest.json") &&
@@ -172,24 +186,22 @@ AssessOutcome run_league(const AssessOptions& o) {
     io::claim_output_directory(dir, kind, false);
   else
     io::prepare_run_directory(dir, kind, o.force);
-  io::write_manifest(dir, {{"kind", kind.kind}, {"command", "assess"}, {"league", header},
-                           {"status", "running"}});
+  io::write_manifest(
+      dir, {{"kind", kind.kind}, {"command", "assess"}, {"league", header}, {"status", "running"}});
   std::vector<nlohmann::json> entries;
   for (std::size_t i = 0; i < names.size(); ++i)
     entries.push_back(model_entry(o, ref, names[i], inputs[i], texts, dir,
                                   fmt::format("{}/{}", i + 1, names.size())));
-  if (!o.form_limits.empty())  // read, not stored in the model records: they stay reusable
-    for (auto& e : entries)
-      e["form_limit"] = comparison::form_limit_cell(o.form_limits, e["model"].get<std::string>(),
-                                                    header["wall"].get<std::string>(),
-                                                    header["boundary"].get<std::string>());
+  for (std::size_t i = 0; i < cells.size(); ++i)  // not stored in the model records: reusable
+    entries[i]["form_limit"] = cells[i];
   const auto table = ranked(entries);
   draw_league_figures(table, dir / "figures");
   io::write_atomically(dir / "league.csv", league_csv(table));
   const auto md = league_markdown(header, table);
   io::write_atomically(dir / "league.md", md);
-  io::write_manifest(dir, {{"kind", kind.kind}, {"command", "assess"}, {"league", header},
-                           {"status", "complete"}});
+  io::write_manifest(
+      dir,
+      {{"kind", kind.kind}, {"command", "assess"}, {"league", header}, {"status", "complete"}});
   return {md.substr(0, md.find("\n![")), dir / "league.md"};  // the table without its figures
 }
 

@@ -5,14 +5,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "calibration/seed_scatter.hpp"
 #include "io/output_path.hpp"
 #include "io/parameter_file.hpp"
+#include "io/run_directory.hpp"
 
 namespace iwb::calibration {
 
 namespace {
+
+namespace fs = std::filesystem;
+
+// How a test's status begins when the model refused its parameters or initial state (simulate).
+constexpr std::string_view kRefused = "refused: ";
 
 // The tables of a parameter file but the fitted one: what is held while `fitted` is fitted.
 std::map<std::string, models::ParameterValues> held_tables(const std::string& file,
@@ -45,13 +52,43 @@ std::vector<SoilTest> read_soil_tests(const std::vector<std::string>& dirs,
   return out;
 }
 
+bool refused(const TestFit& t) {
+  return t.status.rfind(kRefused, 0) == 0;
+}
+
+// The --fix that leaves the model no set it admits the tests with: every test refused at the
+// fitted set, and some admitted once that value is freed to the middle of its box (the fit then
+// found nothing to move, which is not the tests' fault). Empty when no --fix is to blame.
+std::string blocking_fix(const CalibrationResult& r, const std::vector<SoilTest>& tests) {
+  if (r.tests.empty() || !std::all_of(r.tests.begin(), r.tests.end(), refused)) return "";
+  for (const auto& p : r.parameters) {
+    if (!p.fixed) continue;
+    auto freed = r.inputs();
+    freed.tables[r.table][p.key] = 0.5 * (p.lower + p.upper);
+    const auto admitted = std::count_if(tests.begin(), tests.end(), [&](const SoilTest& t) {
+      return !refused(test_fit(t, r.model, freed));
+    });
+    if (admitted == 0) continue;
+    const auto& first = r.tests.front();
+    return fmt::format(
+        "--fix {}={:g} leaves no admissible parameter set: the model refuses every soil test at "
+        "the fitted set ({}: {}), and admits {} of {} with {} at the middle of its box ({:g}); "
+        "fix {} where the other parameters can meet it, or leave it to the fit; no parameter "
+        "file written",
+        p.key, p.value, first.name, first.status.substr(kRefused.size()), admitted, tests.size(),
+        p.key, 0.5 * (p.lower + p.upper), p.key);
+  }
+  return "";
+}
+
 // Nothing is written and the input is refused (exit 2), rather than a file of starting values
 // flagged NOT IDENTIFIED (issue 37).
-void refuse_if_nothing_identified(const CalibrationResult& r,
+void refuse_if_nothing_identified(const CalibrationResult& r, const std::vector<SoilTest>& tests,
                                   const std::vector<std::string>& runs) {
   if (std::any_of(r.parameters.begin(), r.parameters.end(),
                   [](const auto& p) { return p.identified && !p.fixed; }))
     return;
+  if (const auto fix = blocking_fix(r, tests); !fix.empty()) throw NothingIdentified(r, fix);
   const std::string give =
       r.held.empty() ? "give oedometer and simple-shear tests, dense and loose, that reach the "
                        "critical state"
@@ -88,6 +125,11 @@ models::ParameterValues parse_fixed(const std::vector<std::string>& items) {
 CalibrationRun run_calibration(const CalibrationRequest& q,
                                const std::function<void(const std::string&)>& progress) {
   io::require_file_destination(q.out, "-o");  // before minutes of fitting, not after
+  // a test twice would weigh double, or be predicted by the fit it took part in
+  const std::vector<fs::path> fit(q.runs.begin(), q.runs.end()),
+      held(q.held_out.begin(), q.held_out.end());
+  io::refuse_repeated_directories("calibrate",
+                                  {{fit, "fit", "runs"}, {held, "hold out", "--held-out"}});
   CalibrationOptions opt = options_of(q);
   std::optional<std::pair<ObjectiveGroup, ObjectiveGroup>> pair;
   if (!q.pareto.empty()) pair = parse_pareto_groups(q.pareto);
@@ -102,7 +144,7 @@ CalibrationRun run_calibration(const CalibrationRequest& q,
   measure_seed_scatter(run.tests);
   if (pair) run.front = trace_front(run.tests, opt, pair->first, pair->second, q.points, progress);
   run.result = run.front ? run.front->given().result : calibrate(run.tests, opt);
-  refuse_if_nothing_identified(run.result, q.runs);
+  refuse_if_nothing_identified(run.result, run.tests, q.runs);
   for (const auto& t : held_out)
     run.result.held_out.push_back(test_fit(t, q.model, run.result.inputs()));
   const auto note_localised = [&run](const std::vector<SoilTest>& tests) {

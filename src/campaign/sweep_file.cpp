@@ -106,11 +106,22 @@ Axis read_axis(io::TableReader& t) {
   return a;
 }
 
+// An unknown model is refused now, not after hours of DEM, naming the file and the key.
+void require_known_model(const io::TableReader& t, const std::string& model) {
+  std::string known;
+  for (const auto& spec : models::model_registry()) {
+    if (spec.name == model) return;
+    known += (known.empty() ? "" : ", ") + spec.name;
+  }
+  throw InputError(
+      fmt::format("{} = \"{}\": unknown model; known models: {}", t.where("model"), model, known));
+}
+
 std::optional<Comparison> read_comparison(io::TableReader& top, const fs::path& folder) {
   auto t = top.table("compare");
   if (!t) return std::nullopt;
   Comparison c{t->optional_text("model").value_or("hvwe"), folder / t->text("params")};
-  models::find_model(c.model);  // refused now, not after hours of DEM
+  require_known_model(*t, c.model);
   if (!fs::exists(c.params))
     throw InputError(fmt::format("{} = \"{}\": no such file ({})", t->where("params"),
                                  t->text("params"), c.params.string()));

@@ -118,12 +118,9 @@ void check_inputs(const FormLimitOptions& o) {
         "declared bounds to fit its form within",
         o.model));
   if (o.fit_runs.empty()) throw InputError("form-limit: no run to fit (--runs)");
-  for (const auto& h : o.held_out)
-    for (const auto& f : o.fit_runs)
-      if (fs::exists(h) && fs::exists(f) && fs::equivalent(h, f))
-        throw InputError(
-            fmt::format("form-limit: {} is given both to fit (--runs) and to hold out (--held-out)",
-                        h.string()));
+  // a run twice would count its residuals twice, or be judged on the fit it took part in
+  io::refuse_repeated_directories(
+      "form-limit", {{o.fit_runs, "fit", "--runs"}, {o.held_out, "hold out", "--held-out"}});
 }
 
 struct Fitted {
@@ -179,16 +176,26 @@ Fitted fit(const Problem& p, const FormLimitOptions& o) {
   return f;
 }
 
-// The soil-test set's sigma per key, from its calibration.json (parameters[].sigma).
+// The soil-test set's sigma per key, from its calibration.json (parameters[].sigma: a number, or
+// null where the calibration could not tell). Read before anything is written: a truncated or
+// edited file is refused before the fit, not after it with the manifest left "running" (issue 60).
 std::map<std::string, double> soil_sigmas(const FormLimitOptions& o) {
   std::map<std::string, double> out;
   const auto file =
       o.calibration.empty() ? fs::path(o.params).parent_path() / "calibration.json" : o.calibration;
   if (!fs::exists(file)) return out;
   const auto j = io::read_json_file(file);
-  for (const auto& e : j.value("parameters", json::array()))
-    if (e.contains("sigma") && e["sigma"].is_number())
-      out[e["key"].get<std::string>()] = e["sigma"].get<double>();
+  if (io::json_optional<std::string>(j, "/kind", file).value_or("") != "calibration")
+    throw InputError(
+        fmt::format("{}: not a calibration record (iwb calibrate's calibration.json, \"kind\": "
+                    "\"calibration\")",
+                    file.string()));
+  const auto& parameters = io::json_array(j, "/parameters", file);
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const auto at = fmt::format("/parameters/{}", i);
+    const auto key = io::json_field<std::string>(j, at + "/key", file);
+    if (const auto sigma = io::json_optional<double>(j, at + "/sigma", file)) out[key] = *sigma;
+  }
   return out;
 }
 
@@ -336,16 +343,34 @@ std::string cause_of(const std::string& verdict, const std::string& form_limit_v
   return form_limit_verdict == "breaks" ? "form" : "calibration";
 }
 
+void check_form_limit_record(const json& record, const fs::path& file) {
+  const auto& runs = io::json_array(record, "/runs", file);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto run = fmt::format("/runs/{}", i);
+    if (io::json_object(record, run, file).contains("dir"))
+      io::json_field<std::string>(record, run + "/dir", file);
+    io::json_field<std::string>(record, run + "/wall", file);
+    io::json_field<std::string>(record, run + "/boundary", file);
+    for (const auto& q : io::json_object(record, run + "/quantities", file).items())
+      for (const char* variant : {"soil_test_predicted", "form_limit"})
+        io::json_field<std::string>(
+            record, fmt::format("{}/quantities/{}/{}/verdict", run, q.key(), variant), file);
+  }
+}
+
 json read_form_limit(const fs::path& file, const std::string& model) {
   const auto j = io::read_json_file(file);
-  if (j.value("kind", "") != "form_limit" || !j.contains("runs"))
+  if (io::json_optional<std::string>(j, "/kind", file).value_or("") != "form_limit" ||
+      !j.contains("runs"))
     throw InputError(
         fmt::format("--form-limit {}: not a form-limit record (iwb form-limit's "
                     "form_limit.json)",
                     file.string()));
-  if (j.value("model", "") != model)
+  const auto of = io::json_optional<std::string>(j, "/model", file);
+  if (of != model)
     throw InputError(fmt::format("--form-limit {}: a form limit of {}, not of {}", file.string(),
-                                 j.value("model", "?"), model));
+                                 of.value_or("?"), model));
+  check_form_limit_record(j, file);
   return j;
 }
 
@@ -373,6 +398,7 @@ std::map<std::string, std::string> form_limit_verdicts(const json& record, const
 json run_form_limit(const FormLimitOptions& o) {
   check_inputs(o);
   const auto soil_set = validated_parameters(o.model, o.params);
+  const auto sigmas = soil_sigmas(o);     // a bad calibration.json too, before the fit
   const Problem p = set_up(o, soil_set);  // InputError for a bad run, before anything is written
   io::prepare_run_directory(o.out, {"form_limit"}, o.force);
   json manifest = {{"kind", "form_limit"},
@@ -393,7 +419,7 @@ json run_form_limit(const FormLimitOptions& o) {
       {"seconds", f.seconds},
       {"converged", f.result.converged},
       {"stop", f.result.stop_reason},
-      {"parameters", parameters_json(p, f, soil_set, soil_sigmas(o))},
+      {"parameters", parameters_json(p, f, soil_set, sigmas)},
       {"soil_test_calibration", o.calibration.empty() ? json() : json(o.calibration.string())},
       {"runs", json::array()}};
   for (const auto& d : o.fit_runs) j["fit_runs"].push_back(d.string());

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "comparison/form_limit.hpp"
 #include "io/json_file.hpp"
 
 namespace iwb::comparison {
@@ -55,9 +56,11 @@ std::optional<fs::path> find_form_limit(const fs::path& dir, const std::string& 
   std::sort(files.begin(), files.end());  // the same record on every machine
   for (const auto& f : files) {
     const auto j = io::read_json_file(f);
-    if (j.value("kind", "") == "form_limit" && j.value("model", "") == model &&
-        !causes_on(j, wall, boundary).empty())
-      return f;
+    if (io::json_optional<std::string>(j, "/kind", f) != "form_limit" ||
+        io::json_optional<std::string>(j, "/model", f) != model)
+      continue;
+    check_form_limit_record(j, f);  // an edited record is refused, not half read (issue 60)
+    if (!causes_on(j, wall, boundary).empty()) return f;
   }
   return std::nullopt;
 }

@@ -25,7 +25,8 @@ std::map<std::string, QuantityCauses> causes_on(const nlohmann::json& record,
 std::string causes_line(const std::map<std::string, QuantityCauses>& causes);
 
 // The form-limit record of `model` under `dir` (DIR/*/form_limit.json) that has runs on `wall`
-// and `boundary`; nullopt when there is none. Records that are not form limits are skipped.
+// and `boundary`; nullopt when there is none. Records that are not form limits, or are another
+// model's, are skipped; one of `model` that check_form_limit_record refuses is an InputError.
 std::optional<std::filesystem::path> find_form_limit(const std::filesystem::path& dir,
                                                      const std::string& model,
                                                      const std::string& wall,

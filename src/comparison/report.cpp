@@ -17,6 +17,7 @@
 #include "comparison/verdict_table.hpp"
 #include "io/csv_table.hpp"
 #include "io/json_file.hpp"
+#include "io/output_directory.hpp"
 #include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 
@@ -245,7 +246,7 @@ bool set_file(const fs::path& p) {
   const auto n = p.filename().string();
   return fs::exists(p.parent_path() / "hypotheses.json") &&
          (n == "hypotheses.json" || n == "hypotheses.md" || n == "manifest.json" ||
-          n == "pooled_scatter.json");
+          n == "pooled_scatter.json" || n == io::kLedgerFileName);
 }
 
 struct ReportInputs {
@@ -566,8 +567,7 @@ std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs:
   for (const auto& h : hypotheses) sets.push_back(io::read_json_file(h));
 
   if (html.has_parent_path()) fs::create_directories(html.parent_path());
-  io::StagedDirectory files(html.parent_path() / (html.stem().string() + "_files"),
-                          "report-files");
+  io::StagedDirectory files(html.parent_path() / (html.stem().string() + "_files"), "report-files");
   std::vector<fs::path> figures;
   std::string body = "<section><h2>Verdicts at a glance</h2>\n" + glance_table(comparisons) +
                      "</section>\n" + models_beside(comparisons);

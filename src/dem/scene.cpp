@@ -168,6 +168,25 @@ int derived_particle_count(DeclaredTable& spec, const Scene& s) {
   return int(std::lround(n));
 }
 
+// The wall's and plate's asperities (R_max: a sawtooth's height, a glued sphere, a map's highest
+// point) must leave a specimen between them: together at most half its height (issue 60: a 10 m
+// measured profile under an 8 d50 specimen reached LIGGGHTS and failed there, or never
+// consolidated).
+constexpr double kMaxAsperityShareOfHeight = 0.5;
+
+void check_asperities(const Scene& s, const std::string& file) {
+  const double d50 = s.particles.d50_m;
+  const double wall = s.wall.max_height_m(), plate = s.plate.max_height_m();
+  const double total = wall + plate;
+  require(total <= kMaxAsperityShareOfHeight * s.height_m + 1e-12,
+          fmt::format("{}: the wall's asperities ({:.4g} d50 high) and the plate's ({:.4g} d50) "
+                      "take {:.3g} of the specimen's height {:g} d50; allowed at most {:g} (a "
+                      "lower wall or plate: height_d50, rms_height_d50, height_scale, "
+                      "sphere_d50; or a taller specimen: specimen.height_d50)",
+                      file, wall / d50, plate / d50, total / s.height_m, s.height_m / d50,
+                      kMaxAsperityShareOfHeight));
+}
+
 void check_geometry(Scene& s, const std::string& file) {
   const double dmax = s.particles.d_max();
   require(
@@ -196,6 +215,7 @@ void check_geometry(Scene& s, const std::string& file) {
                           size / s.particles.d50_m, n));
     }
   }
+  check_asperities(s, file);
   if (s.height_m < kRecommendedHeightInD50 * s.particles.d50_m)
     s.warnings.push_back(
         fmt::format("{}: specimen height {:g} d50 is below {:g} d50; no shear band can "

@@ -427,10 +427,41 @@ std::string cell_scene_text(const std::string& text, const std::string& source,
       source, io::serialise(root));
 }
 
+namespace {
+
+// The cell's keys its options set (dem soiltest --length ...): a cell they make invalid is
+// refused naming the option, not a key of the scene the user would look for in vain (issue 60).
+struct OptionKey {
+  const char* key;
+  const char* option;
+  double SoilCellSpec::*value;
+};
+constexpr OptionKey kOptionKeys[] = {
+    {"specimen.length_d50", "--length", &SoilCellSpec::length_d50},
+    {"specimen.width_d50", "--width", &SoilCellSpec::width_d50},
+    {"specimen.height_d50", "--height", &SoilCellSpec::height_d50}};
+
+Scene parse_cell_scene(const std::string& cell_text, const std::string& source,
+                       const SoilCellSpec& c) {
+  try {
+    return parse_scene(cell_text, source + " (soil cell)");
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    for (const auto& k : kOptionKeys)
+      if (message.find(fmt::format("key '{}'", k.key)) != std::string::npos)
+        throw InputError(
+            fmt::format("{} {:g}: {} (the cell's key is set by {}, not read from the scene)",
+                        k.option, c.*k.value, message, k.option));
+    throw;
+  }
+}
+
+}  // namespace
+
 RunOutcome run_soil_test(const std::string& text, const std::string& source, const SoilCellSpec& c,
                          const RunOptions& opt) {
   const std::string cell_text = cell_scene_text(text, source, c);
-  const Scene cell = parse_scene(cell_text, source + " (soil cell)");
+  const Scene cell = parse_cell_scene(cell_text, source, c);
   const auto engine_ptr = cell_engine(cell, c);
   Engine& engine = *engine_ptr;
   RunOutcome out;

@@ -3,7 +3,9 @@
 #include <fmt/core.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "io/run_directory.hpp"
 
@@ -103,6 +105,33 @@ std::string to_stl(const std::vector<Triangle>& triangles, const std::string& na
     s += "endloop\nendfacet\n";
   }
   return s + "endsolid " + name + "\n";
+}
+
+int densest_triangles(const std::vector<Triangle>& triangles, double reach) {
+  std::map<std::pair<long, long>, int> bins;  // by the centre's bin of side `reach`
+  for (const auto& t : triangles) {
+    const Eigen::Vector3d c = (t.a + t.b + t.c) / 3.0;
+    ++bins[{std::lround(std::floor(c.x() / reach)), std::lround(std::floor(c.y() / reach))}];
+  }
+  int densest = 0;
+  for (const auto& [bin, n] : bins) {
+    int around = 0;
+    for (long i = -1; i <= 1; ++i)
+      for (long j = -1; j <= 1; ++j)
+        if (const auto it = bins.find({bin.first + i, bin.second + j}); it != bins.end())
+          around += it->second;
+    densest = std::max(densest, around);
+  }
+  return densest;
+}
+
+int densest_scene_triangles(const Scene& s, double plate_z, double reach) {
+  const double max_edge = s.particles.d50_m;
+  return std::max(
+      densest_triangles(profile_surface(s.wall, s.length_m, s.width_m, 0.0, false, max_edge),
+                        reach),
+      densest_triangles(profile_surface(s.plate, s.length_m, s.width_m, plate_z, true, max_edge),
+                        reach));
 }
 
 SceneMeshes scene_meshes(const Scene& s, double plate_z) {

@@ -23,6 +23,13 @@ std::vector<Triangle> profile_surface(const RoughnessProfile& profile, double le
 
 std::string to_stl(const std::vector<Triangle>& triangles, const std::string& name);
 
+// The most triangles whose centres, seen from above, lie in one square of side 3 `reach` (the 3 x 3
+// bins of a grain's neighbour stencil, each `reach` = d_max + skin wide): what the mesh neighbour
+// list of one grain can hold at most.
+int densest_triangles(const std::vector<Triangle>& triangles, double reach);
+// The same over the scene's wall and plate meshes.
+int densest_scene_triangles(const Scene& scene, double plate_z, double reach);
+
 // wall.stl (the tested wall's surface on z = 0) and top.stl (the plate's, facing down from
 // plate_z), as both engines read them; edges no longer than d50.
 struct SceneMeshes {

@@ -56,6 +56,8 @@ ElementRunOutcome run_element_to_directory(const ElementTestSpec& spec,
                                  {"sha256", io::sha256_hex(io::read_file(spec.parameter_source))}};
   m["test"] = spec.resolved;
   m["warnings"] = spec.warnings;
+  for (const auto& w : model->initial_warnings(spec.initial))  // a start taken though doubted
+    m["warnings"].push_back(fmt::format("{}: table [initial]: {}", spec.source, w));
   m["state_variables"] = model->state_names();
   m["files"] =
       nlohmann::json::array();  // each file as it is written, so the list never names a missing one

@@ -359,6 +359,16 @@ driver::ExternalPath read_external_path(TableReader t, const ExternalKey& k, dou
   return x;
 }
 
+// A stage that cycles a variable is walked a quarter cycle at a time (driver::stage_path): its
+// increments must split into the quarters, checked here where the file and the key are known.
+void check_quarters(const io::DeclaredTable& t, const driver::Stage& st, const char* key,
+                    const driver::ExternalPath& x) {
+  if (x.kind != driver::ExternalPath::Kind::kCycle || st.increments % (4 * x.cycles) == 0) return;
+  throw InputError(fmt::format(
+      "{} = {} does not split into the {} quarters of the {} cycles of {}; give a multiple of {}",
+      t.where("increments"), st.increments, 4 * x.cycles, x.cycles, key, 4 * x.cycles));
+}
+
 // One [[path.stage]]: label, increments, an optional shear (gamma or u_mm, either sign), the
 // normal control ([boundary] unless `normal` names another; CNL may ramp sigma_n_kPa = { to }),
 // the paths of the external variables the model declares.
@@ -404,6 +414,7 @@ driver::Stage read_stage(io::DeclaredTable t, int index, ElementTestSpec& spec, 
     if (st.external[slot].kind != driver::ExternalPath::Kind::kHold)
       throw InputError(fmt::format("{}: the stage gives this variable twice", t.where(k.key)));
     st.external[slot] = read_external_path(*path, k, current[slot], out);
+    check_quarters(t, st, k.key, st.external[slot]);
   }
   t.finish();
   return st;
@@ -433,6 +444,17 @@ void read_stages(io::DeclaredTable& t, driver::ShearDirection dir, ElementTestSp
   spec.path = driver::stage_path(stages, dir);
 }
 
+// A model that builds only its monotonic part (`iwb models`: monotonic only) has no law where a
+// cyclic path reverses: its cycles would show a law never meant for them (compare and pile
+// refuse it alike).
+void require_reversible(const io::DeclaredTable& t, const std::string& model) {
+  if (!models::find_model(model).declaration.monotonic_only) return;
+  throw InputError(fmt::format(
+      "{} = \"cyclic\": model '{}' is monotonic only (iwb models): it builds no law for where "
+      "the path reverses; give a monotonic, staged or oedometric path, or a model that unloads",
+      t.where("kind"), model));
+}
+
 void read_path(io::DeclaredTable t, ElementTestSpec& spec) {
   const std::string kind = t.text("kind");
   const std::string dir = t.text("direction");
@@ -444,6 +466,7 @@ void read_path(io::DeclaredTable t, ElementTestSpec& spec) {
     spec.path = driver::monotonic_path(spec.boundary, g, d, t.whole_number("increments"));
     out["gamma"] = g;
   } else if (kind == "cyclic") {
+    require_reversible(t, spec.model);
     const double a = strain(t, "amplitude_gamma", "amplitude_u_mm", spec.zone);
     const int cycles = t.whole_number("cycles");
     const int per_quarter = t.whole_number("increments_per_quarter");

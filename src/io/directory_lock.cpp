@@ -87,9 +87,11 @@ std::variant<int, Busy> try_lock(const fs::path& file) {
   for (;;) {
     // Not O_CLOEXEC: the engines inherit the lock (see the header).
     const int fd = ::open(file.c_str(), O_RDWR | O_CREAT, 0644);
-    if (fd < 0)
-      throw std::runtime_error(
-          fmt::format("{}: cannot open the lock file: {}", file.string(), std::strerror(errno)));
+    if (fd <
+        0)  // the directory is not writable (permissions, a read-only file system): the input's
+      throw InputError(
+          fmt::format("{}: cannot create the lock file ({}); choose a directory you can write to",
+                      file.string(), std::strerror(errno)));
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       const int error = errno;
       Busy busy{holder_in(read_fd(fd))};
@@ -102,7 +104,30 @@ std::variant<int, Busy> try_lock(const fs::path& file) {
   }
 }
 
+// The refusal of a directory another iwb holds.
+InputError in_use(const fs::path& dir, const Busy& busy) {
+  std::string who =
+      busy.holder ? busy.holder->describe() : "a process that has not yet said who it is";
+  if (busy.holder && busy.holder->host == this_host() && busy.holder->pid > 0 &&
+      ::kill(pid_t(busy.holder->pid), 0) != 0 && errno == ESRCH)
+    who += "; that process has ended, an engine it started still works there";
+  return InputError(
+      fmt::format("{}: in use by another iwb, {}; wait for it to end or choose another directory",
+                  dir.string(), who));
+}
+
 }  // namespace
+
+void DirectoryLock::require_free(const fs::path& dir) {
+  const int fd = ::open((dir / kLockFileName).c_str(), O_RDONLY);
+  if (fd < 0) return;  // no lock file: nobody holds it
+  const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  const Busy busy{held ? holder_in(read_fd(fd)) : std::nullopt};
+  ::close(fd);
+  const bool by_us = busy.holder && busy.holder->pid == long(::getpid()) &&
+                     busy.holder->host == this_host();  // a command checking its own directory
+  if (held && !by_us) throw in_use(dir, busy);
+}
 
 std::string LockHolder::describe() const {
   std::string s = fmt::format("PID {} on host {} since {}", pid, host, since);
@@ -114,16 +139,7 @@ DirectoryLock DirectoryLock::take(const fs::path& dir, const std::string& comman
   fs::create_directories(dir);
   const fs::path file = dir / kLockFileName;
   auto attempt = try_lock(file);
-  if (auto* busy = std::get_if<Busy>(&attempt)) {
-    std::string who =
-        busy->holder ? busy->holder->describe() : "a process that has not yet said who it is";
-    if (busy->holder && busy->holder->host == this_host() && busy->holder->pid > 0 &&
-        ::kill(pid_t(busy->holder->pid), 0) != 0 && errno == ESRCH)
-      who += "; that process has ended, an engine it started still works there";
-    throw InputError(
-        fmt::format("{}: in use by another iwb, {}; wait for it to end or choose another directory",
-                    dir.string(), who));
-  }
+  if (auto* busy = std::get_if<Busy>(&attempt)) throw in_use(dir, *busy);
   const int fd = std::get<int>(attempt);
   std::optional<LockHolder> stale = holder_in(read_fd(fd));
   write_holder(fd, file, command);

@@ -23,6 +23,9 @@ struct LockHolder {
 
 class DirectoryLock {
  public:
+  // Throws InputError naming the holder if another process holds the lock of `dir`; creates
+  // nothing (a check before a command decides whether it may write there at all).
+  static void require_free(const std::filesystem::path& dir);
   // Takes the lock of `dir` (created if missing), or throws InputError naming the holder.
   static DirectoryLock take(const std::filesystem::path& dir, const std::string& command);
   // Waits until the lock of `dir` is free (another process is working in it); nothing when

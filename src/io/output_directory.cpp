@@ -25,8 +25,7 @@ namespace {
 bool is_bookkeeping(const fs::path& relative) {
   static const std::regex temporary(R"(.*\.tmp[0-9]+$)");
   const std::string name = relative.filename().string();
-  return relative == kLedgerFileName || name == kLockFileName ||
-         std::regex_match(name, temporary);
+  return relative == kLedgerFileName || name == kLockFileName || std::regex_match(name, temporary);
 }
 
 // Every file under `dir` (not following links), by path relative to it, with its mtime.
@@ -42,9 +41,10 @@ std::map<std::string, fs::file_time_type> files_under(const fs::path& dir) {
     }
     if (it->is_directory() && !it->is_symlink()) continue;
     std::error_code ignored;
-    files[relative.generic_string()] = fs::symlink_status(it->path()).type() == fs::file_type::symlink
-                                           ? fs::file_time_type{}
-                                           : it->last_write_time(ignored);
+    files[relative.generic_string()] =
+        fs::symlink_status(it->path()).type() == fs::file_type::symlink
+            ? fs::file_time_type{}
+            : it->last_write_time(ignored);
   }
   return files;
 }
@@ -71,9 +71,10 @@ std::optional<Ledger> read_ledger(const fs::path& dir) {
 }
 
 void write_ledger(const fs::path& dir, const Ledger& l) {
-  json j = {{"kind", l.kind},
-            {"about", "the files iwb wrote into this directory: --force removes these and no other"},
-            {"written", l.written}};
+  json j = {
+      {"kind", l.kind},
+      {"about", "the files iwb wrote into this directory: --force removes these and no other"},
+      {"written", l.written}};
   write_atomically(dir / kLedgerFileName, j.dump(1) + "\n");
 }
 
@@ -129,8 +130,8 @@ void remove_written_files(const fs::path& dir, const std::vector<std::string>& r
   if (!ledger) return;
   for (const auto& f : replacing)
     if (present.count(f) && !ledger->written.count(f))
-      throw InputError(fmt::format("{}: '{}' was not written by the workbench; move it away",
-                                   dir.string(), f));
+      throw InputError(
+          fmt::format("{}: '{}' was not written by the workbench; move it away", dir.string(), f));
   for (const auto& f : ledger->written) remove_with_empty_parents(dir, dir / f);
   ledger->written.clear();
   write_ledger(dir, *ledger);
@@ -148,12 +149,14 @@ void require_output_directory(const fs::path& dir, const OutputKind& k, bool rep
   if (!fs::is_directory(dir))
     throw InputError(fmt::format("{}: is a file, not a directory; give a directory to write into",
                                  dir.string()));
+  DirectoryLock::require_free(dir);  // another iwb at work there is the first thing to say
   if (const auto ledger = read_ledger(dir)) {
     bool accepted = ledger->kind == k.kind;
     for (const auto& a : k.accepts) accepted = accepted || ledger->kind == a.kind;
     if (!accepted)
       throw InputError(fmt::format("{}: holds {}, not of '{}' ({}); choose another directory",
-                                   dir.string(), kind_words(ledger->kind), k.kind, kLedgerFileName));
+                                   dir.string(), kind_words(ledger->kind), k.kind,
+                                   kLedgerFileName));
     return;
   }
   const auto files = files_under(dir);
@@ -217,7 +220,7 @@ void record_written_files(const fs::path& dir) {
   if (now.written != ledger->written) write_ledger(dir, now);
 }
 
-void record_claimed_directories() {
+void release_claimed_directories() {
   std::vector<std::string> dirs;
   {
     std::lock_guard guard(claims().mutex);
@@ -229,6 +232,8 @@ void record_claimed_directories() {
     } catch (const std::exception&) {  // a directory removed since: nothing of ours is left there
     }
   }
+  std::lock_guard guard(claims().mutex);
+  for (const auto& d : dirs) claims().foreign.erase(d);
 }
 
 }  // namespace iwb::io

@@ -25,7 +25,7 @@ inline constexpr const char* kLedgerFileName = "iwb-written.json";
 struct OutputKind {
   std::string kind;
   std::string marker = "manifest.json";
-  std::vector<std::string> accepts = {};
+  std::vector<OutputKind> accepts = {};
 };
 
 // Refuses (InputError, exit 2), writing nothing, a destination that is a file, a non-empty
@@ -43,7 +43,8 @@ std::vector<std::string> claim_output_directory(const std::filesystem::path& dir
 // For a directory a command builds whole (StagedDirectory): removes the files dir's ledger lists
 // and refuses (InputError, nothing removed) a directory that holds files but no ledger, or one of
 // `replacing` that the ledger does not list. Returns nothing; the ledger's list is emptied.
-void remove_written_files(const std::filesystem::path& dir, const std::vector<std::string>& replacing);
+void remove_written_files(const std::filesystem::path& dir,
+                          const std::vector<std::string>& replacing);
 // Adds `files` (relative to dir) to dir's ledger, which is created of `kind` if there is none.
 void adopt_written_files(const std::filesystem::path& dir, const std::string& kind,
                          const std::vector<std::string>& files);
@@ -51,8 +52,9 @@ void adopt_written_files(const std::filesystem::path& dir, const std::string& ki
 // Brings the ledger of `dir` up to date if this process claimed it (else nothing): called by
 // write_manifest, so that a run killed between two manifests loses at most what it wrote since.
 void record_written_files(const std::filesystem::path& dir);
-// The same for every directory this process claimed: the command line calls it when a command
-// ends, whether it succeeded, failed or was interrupted.
-void record_claimed_directories();
+// The same for every directory this process claimed, which it then no longer holds: the command
+// line calls it when a command ends, whether it succeeded, failed or was interrupted. A file that
+// appears in a directory after that is not the workbench's.
+void release_claimed_directories();
 
 }  // namespace iwb::io

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "common/errors.hpp"
+#include "common/input_file.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
 
@@ -40,8 +41,8 @@ std::vector<ParameterSet> sets_in_directory(const fs::path& dir) {
 }  // namespace
 
 ParameterSet read_parameter_set(const fs::path& file) {
-  if (!fs::is_regular_file(file))
-    throw InputError(fmt::format("{}: no such parameter file", file.string()));
+  if (const auto why = unreadable_input_file(file); !why.empty())
+    throw InputError(fmt::format("{}: {}", file.string(), why));
   return read_set(file.filename().string(), file.string(), read_file(file));
 }
 

@@ -72,6 +72,46 @@ std::vector<std::string> prepare_run_directory(const fs::path& dir, const Output
   return claim_output_directory(dir, kind, force);
 }
 
+namespace {
+
+// The path without its spelling: absolute, links resolved, no "." or trailing slash.
+fs::path spelling_free(const fs::path& p) {
+  std::error_code ec;
+  const fs::path canonical = fs::weakly_canonical(p, ec);
+  return ec ? fs::absolute(p).lexically_normal() : canonical;
+}
+
+std::string repeated_directory(const std::string& command, const fs::path& first,
+                               const DirectoryRole& first_role, const fs::path& again,
+                               const DirectoryRole& role) {
+  const std::string given = &first_role == &role
+                                ? fmt::format("twice to {} ({})", role.task, role.option)
+                                : fmt::format("both to {} ({}) and to {} ({})", first_role.task,
+                                              first_role.option, role.task, role.option);
+  return fmt::format("{}: {} is given {}{}", command, first.string(), given,
+                     again == first ? "" : ", the second time as " + again.string());
+}
+
+}  // namespace
+
+void refuse_repeated_directories(const std::string& command,
+                                 const std::vector<DirectoryRole>& roles) {
+  struct Seen {
+    fs::path canonical;
+    const fs::path& given;
+    const DirectoryRole& role;
+  };
+  std::vector<Seen> seen;
+  for (const auto& role : roles)
+    for (const auto& dir : role.dirs) {
+      const fs::path canonical = spelling_free(dir);
+      for (const auto& s : seen)
+        if (s.canonical == canonical)
+          throw InputError(repeated_directory(command, s.given, s.role, dir, role));
+      seen.push_back({canonical, dir, role});
+    }
+}
+
 void write_manifest(const fs::path& dir, const nlohmann::json& manifest) {
   write_atomically(dir / "manifest.json", manifest.dump(2) + "\n");
   record_written_files(dir);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "io/output_directory.hpp"
 
@@ -26,6 +27,17 @@ std::vector<std::string> prepare_run_directory(const std::filesystem::path& dir,
 // directories and checks them all before it writes any.
 void require_new_run_directory(const std::filesystem::path& dir, const OutputKind& kind,
                                bool force);
+
+// Input directories a command takes in one role: `dirs`, given to `task` ("fit") by `option`.
+struct DirectoryRole {
+  const std::vector<std::filesystem::path>& dirs;
+  std::string task, option;
+};
+// Refuses (InputError naming `command`, the directory and its roles) a directory given twice,
+// in one role or in two: compared as std::filesystem::weakly_canonical, so that run, run/, ./run
+// and a link to it are the same.
+void refuse_repeated_directories(const std::string& command,
+                                 const std::vector<DirectoryRole>& roles);
 
 // Writes the manifest and brings the directory's ledger of written files up to date.
 void write_manifest(const std::filesystem::path& dir, const nlohmann::json& manifest);

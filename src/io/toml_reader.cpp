@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/input_file.hpp"
 
 namespace iwb::io {
 
@@ -207,8 +208,8 @@ toml::table parse_toml_text(const std::string& text, const std::string& name) {
 }
 
 toml::table parse_toml_file(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(fmt::format("{}: no such file", path));
+  if (const auto why = unreadable_input_file(path); !why.empty())
+    throw InputError(fmt::format("{}: {}", path, why));
   try {
     return toml::parse_file(path);
   } catch (const toml::parse_error& e) {

@@ -65,7 +65,8 @@ std::string describe(const toml::node& node);  // the value as the user wrote it
 // Anything else is an InputError naming the file, the key and the value.
 std::optional<std::optional<double>> read_tolerance(TableReader& table, const std::string& key);
 
-// Parses `path`; InputError naming the file and the line on syntax errors or a missing file.
+// Parses `path`; InputError naming the file and the line on syntax errors, and the file and what
+// is there when it is not a regular file (missing, a directory, a named pipe).
 toml::table parse_toml_file(const std::string& path);
 toml::table parse_toml_text(const std::string& text, const std::string& name);
 

@@ -70,8 +70,7 @@ struct InterfaceStrainT {
   S eps_n{0.0};
   S gamma_x{0.0};
   S gamma_y{0.0};
-  // Initialised explicitly: Eigen's AutoDiffScalar default constructor leaves its value
-  // uninitialised, so `external{}` would be garbage for Dual.
+  // Initialised explicitly, whatever the scalar's default constructor does.
   std::array<S, kExternalSlots> external{S(0.0), S(0.0), S(0.0)};
 
   S external_of(External slot) const { return external[std::size_t(slot)]; }
@@ -87,6 +86,12 @@ struct InterfaceStress {
   double tau_y = 0.0;
 };
 
+// What a model does with a start outside its state boundary surface (a clay looser than any
+// loading could have made it at that stress): refuse it (InputError, the default), or take it and
+// say so in Model::initial_warnings, for a caller that must reproduce a published start lying
+// outside (seed Table 6.5's CNL column).
+enum class OutsideBoundary { kRefuse, kWarn };
+
 // Initial state of an element test (CONVENTIONS.md): geotechnical sign, kPa.
 struct InitialState {
   double sigma_n = 0.0;
@@ -101,6 +106,7 @@ struct InitialState {
   // mobilised along the vertical compression that prepared the specimen, [-R, 0, 0] (rho = 1), as a
   // soil test's cell was consolidated; false takes the seed's default (5.6).
   bool delta_along_compression = false;
+  OutsideBoundary outside_boundary = OutsideBoundary::kRefuse;
 };
 
 struct NamedValue {
@@ -116,6 +122,9 @@ class Model {
   virtual std::vector<std::string> state_names() const = 0;
   // Throws InputError if the initial state is not admissible (tension, e outside [e_d, e_i]).
   virtual StateVector initial_state(const InitialState& initial) const = 0;
+  // What initial_state accepts but doubts, one sentence each: a start outside the state boundary
+  // surface taken with OutsideBoundary::kWarn. Empty for most models.
+  virtual std::vector<std::string> initial_warnings(const InitialState&) const { return {}; }
 
   // Rate of the state for the stretching d. Hypoplastic rates are homogeneous of degree one in d
   // (rate independence), so integrating over unit pseudo-time with d = the strain increment

@@ -46,8 +46,10 @@ std::vector<std::string> implausible_values(const ParameterTable& table,
   return warnings;
 }
 
-void validate(const ParameterTable& table, const ParameterValues& values,
-              const std::string& source) {
+namespace {
+
+void refuse_unknown_keys(const ParameterTable& table, const ParameterValues& values,
+                         const std::string& source) {
   for (const auto& [key, value] : values) {
     if (table.find(key) == nullptr) {
       std::string known;
@@ -56,15 +58,32 @@ void validate(const ParameterTable& table, const ParameterValues& values,
                                    source, key, value, table.name, known));
     }
   }
-  for (const auto& spec : table.entries) {
-    const auto it = values.find(spec.key);
-    if (it == values.end())
-      throw InputError(fmt::format("{}: missing key '{}' ({}, allowed {})", source, spec.key,
-                                   spec.doc, spec.range()));
-    if (!spec.admits(it->second))
+}
+
+double required_value(const ParameterSpec& spec, const ParameterValues& values,
+                      const std::string& source) {
+  const auto it = values.find(spec.key);
+  if (it == values.end())
+    throw InputError(fmt::format("{}: missing key '{}' ({}, allowed {})", source, spec.key,
+                                 spec.doc, spec.range()));
+  return it->second;
+}
+
+}  // namespace
+
+void require_keys(const ParameterTable& table, const ParameterValues& values,
+                  const std::string& source) {
+  refuse_unknown_keys(table, values, source);
+  for (const auto& spec : table.entries) required_value(spec, values, source);
+}
+
+void validate(const ParameterTable& table, const ParameterValues& values,
+              const std::string& source) {
+  refuse_unknown_keys(table, values, source);
+  for (const auto& spec : table.entries)
+    if (const double v = required_value(spec, values, source); !spec.admits(v))
       throw InputError(fmt::format("{}: key '{}' = {:g} is out of range; allowed {} ({})", source,
-                                   spec.key, it->second, spec.range(), spec.doc));
-  }
+                                   spec.key, v, spec.range(), spec.doc));
   for (const auto& o : table.at_most)
     if (!(values.at(o.lower) <= values.at(o.upper)))
       throw InputError(fmt::format("{}: [{}] must satisfy {} <= {} ({}); got {} = {:g}, {} = {:g}",

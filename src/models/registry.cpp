@@ -54,6 +54,37 @@ std::vector<ModelSpec> checked_and_ordered(std::vector<ModelSpec> specs) {
   return specs;
 }
 
+// "[hypoplastic], [intergranular_strain]": the tables a parameter file gave, for a message.
+std::string tables_given(const ModelInputs& inputs) {
+  if (inputs.tables.empty()) return "no table";
+  std::string names;
+  for (const auto& [name, values] : inputs.tables)
+    names += fmt::format("{}[{}]", names.empty() ? "" : ", ", name);
+  return names;
+}
+
+// The table `name` that `model` reads; InputError naming the model and what the file has.
+const ParameterValues& table_for(const std::string& model, const ModelInputs& in,
+                                 const std::string& name) {
+  const auto it = in.tables.find(name);
+  if (it == in.tables.end())
+    throw InputError(fmt::format("{}: no table [{}] (the model {} reads it; the file has {})",
+                                 in.source, name, model, tables_given(in)));
+  return it->second;
+}
+
+// `spec` whose make first finds every table the model declares, naming the model in the message:
+// a factory's own read (require_table) does not know which model it builds, and a table missing
+// for mc once surfaced as "map::at" (issue 60).
+ModelSpec with_checked_tables(ModelSpec spec) {
+  spec.make = [make = std::move(spec.make), name = spec.name,
+               tables = spec.tables](const ModelInputs& in) {
+    for (const auto* t : tables) table_for(name, in, t->name);
+    return make(in);
+  };
+  return spec;
+}
+
 }  // namespace
 
 std::string declaration_problem(const ModelSpec& spec) {
@@ -83,6 +114,7 @@ std::vector<ModelSpec>& registry_storage() {
     ModelRegistry registry;
     register_all_models(registry);
     auto ordered = checked_and_ordered(registry.take());
+    for (auto& spec : ordered) spec = with_checked_tables(std::move(spec));
     ordered.reserve(ordered.size() + kRuntimeModels);
     return ordered;
   }();
@@ -104,7 +136,7 @@ void add_runtime_model(ModelSpec spec) {
       throw InputError(fmt::format("model '{}' exists already: choose another name", spec.name));
   if (specs.size() == specs.capacity())
     throw InputError(fmt::format("at most {} models may be added at run time", kRuntimeModels));
-  specs.push_back(std::move(spec));
+  specs.push_back(with_checked_tables(std::move(spec)));
 }
 
 std::vector<std::string> ranked_interface_models(bool with_intergranular_strain) {
@@ -135,8 +167,12 @@ const ModelSpec& find_model(const std::string& name) {
 double critical_friction_angle(const ModelSpec& spec, const ModelInputs& inputs) {
   for (const auto* table : spec.tables)
     for (const auto& p : table->entries)
-      if (p.role == ParameterRole::kCriticalFrictionAngle)
-        return require_table(inputs, table->name).at(p.key) * M_PI / 180.0;
+      if (p.role == ParameterRole::kCriticalFrictionAngle) {
+        // read before the model is made (a wall's delta_deg): its checks have not run yet
+        const auto& values = table_for(spec.name, inputs, table->name);
+        require_keys(*table, values, fmt::format("{} [{}]", inputs.source, table->name));
+        return values.at(p.key) * M_PI / 180.0;
+      }
   return NAN;
 }
 
@@ -176,7 +212,8 @@ InitialState offer(const ModelSpec& spec, const ModelInputs& inputs,
 const ParameterValues& require_table(const ModelInputs& inputs, const std::string& name) {
   const auto it = inputs.tables.find(name);
   if (it == inputs.tables.end())
-    throw InputError(fmt::format("{}: no table [{}] of parameters", inputs.source, name));
+    throw InputError(fmt::format("{}: no table [{}] (the file has {})", inputs.source, name,
+                                 tables_given(inputs)));
   return it->second;
 }
 

@@ -29,6 +29,9 @@ struct ClayCase {
   // changed for this case ("thermo_hydro.n_t"): the run reads a copy of the set with them.
   std::map<std::string, double> initial_inputs = {};
   std::map<std::string, double> parameter_changes = {};
+  // The seed's own start, though it lies outside the model's state boundary surface: run, with
+  // the model's warning in the run's manifest and the study's output, where it would be refused.
+  bool seed_start_outside = false;
 };
 
 // The name of the parameter file a case runs with: its set, or the set with its changes.
@@ -48,6 +51,7 @@ inline constexpr int kIncrementsPerQuarter = 50;
 struct ClayCurve {
   std::string status;
   std::vector<double> gamma, eps_n, tau, sigma_n;
+  std::vector<std::string> warnings;  // the run manifest's
 
   double end_tau() const { return tau.back(); }
   double max_tau() const;

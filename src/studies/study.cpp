@@ -51,6 +51,7 @@ std::map<std::string, fs::path> study_parameters(const std::vector<ClayCase>& ca
 ClayCurve curve_of(const element::ElementRunOutcome& o, const models::Model& m) {
   ClayCurve c;
   c.status = o.result.status;
+  c.warnings = o.manifest.value("warnings", std::vector<std::string>{});
   for (const auto& r : o.result.rows) {
     const auto s = m.stress(r.state);
     c.gamma.push_back(r.gamma_x);
@@ -65,7 +66,8 @@ ClayCurve run_case(const std::string& study, const ClayCase& c, const fs::path& 
                    const StudyOptions& opt) {
   const std::string text = element_test_text(c, parameters.string());
   const std::string name = fmt::format("<study:{} {}>", study, c.name);
-  const auto spec = element::parse_element_test(io::parse_toml_text(text, name), name, ".");
+  auto spec = element::parse_element_test(io::parse_toml_text(text, name), name, ".");
+  if (c.seed_start_outside) spec.initial.outside_boundary = models::OutsideBoundary::kWarn;
   element::ElementRunOptions run{opt.out / c.name, opt.force, opt.command_line, text,
                                  opt.interrupt};
   const auto outcome = element::run_element_to_directory(spec, run);
@@ -92,6 +94,7 @@ nlohmann::json summary_json(const std::vector<ClayCase>& cases,
     j["cases"][c.name] = {{"model", c.model},       {"parameters", c.parameters},
                           {"boundary", c.boundary}, {"sigma_n0_kPa", c.sigma_n_kPa},
                           {"status", k.status},     {"end", k.end_values()}};
+    if (!k.warnings.empty()) j["cases"][c.name]["warnings"] = k.warnings;
   }
   for (const auto& c : claims)
     j["claims"].push_back({{"section", c.section},
@@ -132,6 +135,7 @@ int run_study(const StudyDefinition& study, const StudyOptions& opt) {
     complete = complete && curves[c.name].status == "complete";
     fmt::print(stderr, "  case {}/{}: {} ({}) {}\n", i + 1, cases.size(), c.name, c.model,
                curves[c.name].status);
+    for (const auto& w : curves[c.name].warnings) fmt::print(stderr, "    warning: {}\n", w);
     if (opt.interrupt && opt.interrupt->load()) return 1;
   }
   const auto claims = study.claims(curves);

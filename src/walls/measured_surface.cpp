@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/input_file.hpp"
 #include "walls/gauge_windows.hpp"
 
 namespace iwb::walls {
@@ -28,8 +29,8 @@ struct Row {
 
 // The file's data rows (comments after '#' and blank lines dropped), each a list of finite numbers.
 std::vector<Row> read_rows(const std::string& path, bool header) {
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(fmt::format("{}: no such file", path));
+  if (const auto why = unreadable_input_file(path); !why.empty())
+    throw InputError(fmt::format("{}: {}", path, why));
   // a mesh has no height per (x, y) to read until it is sampled onto a grid, and one with holes
   // has none to sample: profilometers export grids, which is what is read
   std::string extension = std::filesystem::path(path).extension().string();

@@ -104,14 +104,16 @@ TEST_CASE("report: a new report replaces the old one whole, a refused one leaves
           "[comparison]") {
   const fs::path out = kReportWork / "replace";
   fs::remove_all(out);
+  const auto earlier = fresh_comparison("replace_earlier");
   const auto good = fresh_comparison("replace_good");
-  auto r = test::run_iwb({"report", good.string(), "-o", (out / "report.html").string()});
+  auto r = test::run_iwb({"report", earlier.string(), "-o", (out / "report.html").string()});
   REQUIRE(r.exit_code == 0);
-  io::write_atomically(out / "report_files" / "stale.svg",
-                       "<svg/>");  // as an earlier report's figure
+  REQUIRE(fs::exists(out / "report_files" / "0-replace_earlier" / "tau_ux.svg"));
+  io::write_atomically(out / "report_files" / "notes.txt", "mine");  // the user's (issue 60)
   r = test::run_iwb({"report", good.string(), "-o", (out / "report.html").string()});
   REQUIRE(r.exit_code == 0);
-  CHECK_FALSE(fs::exists(out / "report_files" / "stale.svg"));
+  CHECK_FALSE(fs::exists(out / "report_files" / "0-replace_earlier"));  // the earlier figures
+  CHECK(io::read_file(out / "report_files" / "notes.txt") == "mine");
   CHECK(fs::exists(out / "report_files" / "0-replace_good" / "tau_ux.svg"));
   refused({(kReportWork / "empty").string()}, out, "neither a directory");  // the good report stays
   CHECK(fs::exists(out / "report_files" / "0-replace_good" / "tau_ux.svg"));

@@ -1,6 +1,7 @@
 // Wall meshes: inside the periodic box, the profile's heights, normals into the granular layer,
 // no triangle longer than the strip size.
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "dem/wall_geometry.hpp"
 #include "walls/random_surface.hpp"
@@ -69,5 +70,18 @@ TEST_CASE(
         CHECK(v->z() == Approx(5e-3 + (down ? -1 : 1) * map->at(v->x(), v->y())).margin(1e-12));
     }
     CHECK(projected == Approx(L * W).epsilon(1e-12));
+  }
+}
+
+// Issue 60: a measured map at 0.1 d50 ended LIGGGHTS with "mesh neighbor list overflow" (a grain's
+// mesh neighbours beyond `neigh_modify one`); the engine's limit is now sized from the densest
+// part of the mesh. On a flat wall cut into cells of side e, a 3 x 3 block of bins of side r holds
+// 9 (r / e)^2 cells of 2 triangles each, and halving e quadruples it.
+TEST_CASE("the densest 3 x 3 bins of a wall mesh hold 18 (reach / edge)^2 triangles when flat",
+          "[dem]") {
+  const double reach = 2e-3;
+  for (double edge : {0.5e-3, 0.25e-3}) {
+    const auto flat = profile_surface(RoughnessProfile{}, 24e-3, 24e-3, 0.0, false, edge);
+    CHECK(densest_triangles(flat, reach) == int(std::lround(18.0 * std::pow(reach / edge, 2))));
   }
 }

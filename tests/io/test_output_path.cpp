@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "common/errors.hpp"
+#include "io/output_directory.hpp"
 #include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 #include "support/cli.hpp"
@@ -46,8 +47,11 @@ TEST_CASE("output: a write onto a directory throws and leaves no temporary file"
 TEST_CASE("output: a staged directory appears only when committed and replaces the earlier one",
           "[io]") {
   fs::remove_all(kWork);
-  io::write_atomically((fs::create_directories(kWork / "figures"), kWork / "figures" / "old.svg"),
-                       "old");
+  {
+    io::StagedDirectory first(kWork / "figures");
+    io::write_atomically(first.path() / "old.svg", "old");
+    first.commit();
+  }
   {
     io::StagedDirectory staged(kWork / "figures");
     io::write_atomically(staged.path() / "new.svg", "new");
@@ -55,12 +59,24 @@ TEST_CASE("output: a staged directory appears only when committed and replaces t
   }                                                    // abandoned: as if a figure had failed
   CHECK(fs::exists(kWork / "figures" / "old.svg"));
   CHECK_FALSE(has_temporary(kWork));
+  io::write_atomically(kWork / "figures" / "notes.txt", "mine");  // the user's, kept
   io::StagedDirectory staged(kWork / "figures");
   io::write_atomically(staged.path() / "new.svg", "new");
   staged.commit();
-  CHECK(test::files_under(kWork / "figures") ==
-        std::map<std::string, std::string>{{"new.svg", "new"}});
+  auto files = test::files_under(kWork / "figures");
+  files.erase(io::kLedgerFileName);
+  CHECK(files == std::map<std::string, std::string>{{"new.svg", "new"}, {"notes.txt", "mine"}});
   CHECK_FALSE(has_temporary(kWork));
+}
+
+TEST_CASE("output: a staged directory never replaces a file the workbench did not write", "[io]") {
+  fs::remove_all(kWork);
+  io::write_atomically((fs::create_directories(kWork / "figures"), kWork / "figures" / "a.svg"),
+                       "the user's");
+  io::StagedDirectory staged(kWork / "figures");
+  io::write_atomically(staged.path() / "a.svg", "ours");
+  CHECK_THROWS_WITH(staged.commit(), Catch::Contains("a.svg"));
+  CHECK(io::read_file(kWork / "figures" / "a.svg") == "the user's");
 }
 
 TEST_CASE("calibrate -o naming a directory is refused before fitting, leaving no temporary file",

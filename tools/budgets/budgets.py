@@ -4,6 +4,9 @@
     tools/budgets/budgets.py [--build DIR] [--check] [--json FILE]
     tools/budgets/budgets.py --measure-tests [--build DIR]     # runs the README's test command
     tools/budgets/budgets.py --measure-validate [--build DIR]  # runs `iwb validate` on the default scene
+    tools/budgets/budgets.py --json data/budgets/latest.json    # record the figures (commit it)
+    tools/budgets/budgets.py --from data/budgets/latest.json --write-readme README.md
+    tools/budgets/budgets.py --from data/budgets/latest.json --check-readme README.md
 
 Figures and where they come from:
 - compiler time per unit and in all: the build log ninja keeps (BUILD/.ninja_log), the latest entry
@@ -15,7 +18,9 @@ Figures and where they come from:
 - validate: BUILD/budgets/validate.json (--measure-validate).
 
 --check exits 1 when the compiler time or a unit exceeds its budget by more than the tolerance
-(25 %): the test `budgets: compiler time ...` runs it on every CI build.
+(25 %): the test `budgets: compiler time ...` runs it on every CI build. The README's budget table
+(between its "BEGIN budgets" and "END budgets" lines) is rendered from the committed record
+data/budgets/latest.json, and --check-readme (a test) fails when it quotes other figures.
 """
 import argparse
 import json
@@ -77,9 +82,11 @@ def figures(build):
     units = ninja_units(build)
     slowest = sorted(units.items(), key=lambda kv: -kv[1])[:10]
     f = {
+        "when": time.strftime("%Y-%m-%d", time.gmtime()),
+        "machine": f"{os.cpu_count()} cores, {os.uname().machine}",
         "compiler_s": round(sum(units.values()), 1),
         "units": len(units),
-        "slowest_units": [{"unit": u, "s": round(s, 1)} for u, s in slowest],
+        "slowest_units": [{"unit": unit_name(u), "s": round(s, 1)} for u, s in slowest],
         "setup": read_json(os.path.join(build, "budgets", "setup.json")),
         "tests": read_json(os.path.join(build, "budgets", "tests.json")) or last_ctest_sum(build),
         "validate": read_json(os.path.join(build, "budgets", "validate.json")),
@@ -95,27 +102,63 @@ def verdict(value, budget):
     return "over" if value <= budget * (1 + TOLERANCE) else f"over by more than {TOLERANCE:.0%}"
 
 
-def print_figures(f):
-    rows = []
-    setup = f["setup"] or {}
-    rows.append(("setup (fresh machine)", setup.get("total_s") if setup.get("packages_installed") else None, BUDGETS["setup_s"]))
-    rows.append(("build, wall (fresh build dir)", setup.get("build_s") if setup.get("fresh_build") else None, BUDGETS["build_wall_s"]))
-    rows.append(("compiler time, all units", f["compiler_s"], BUDGETS["compiler_s"]))
+def unit_name(output):
+    """build/src/CMakeFiles/iwb_dem.dir/Unity/unity_0_cxx.cxx.o -> iwb_dem batch 0; a model's file
+    -> its source path; the tests' folder batches -> tests/<folder>."""
+    m = re.search(r"CMakeFiles/([^/]+)\.dir/(.*)$", output)
+    if not m:
+        return output
+    target, rest = m.groups()
+    rest = re.sub(r"\.(o|gch|pch)$", "", rest)
+    if "Unity/unity_" in rest:
+        batch = rest.split("Unity/unity_", 1)[1]
+        folder = re.search(r"(tests/.*)_cxx\.cxx$", batch)
+        return folder.group(1) if folder else f"{target} batch {batch.replace('_cxx.cxx', '')}"
+    return f"{target} {rest}"
+
+
+def rows_of(f):
+    setup = f.get("setup") or {}
+    tests = f.get("tests") or {}
+    validate = f.get("validate") or {}
     top = f["slowest_units"][0] if f["slowest_units"] else {"s": None, "unit": "-"}
-    rows.append((f"slowest unit ({top['unit']})", top["s"], BUDGETS["unit_s"]))
-    tests = f["tests"] or {}
-    rows.append(("default tests, wall", tests.get("wall_s", tests.get("wall_estimate_s")), BUDGETS["tests_s"]))
-    validate = f["validate"] or {}
-    rows.append(("iwb validate, wall", validate.get("wall_s"), BUDGETS["validate_s"]))
-    print("| budget | measured s | budget s | verdict |\n|---|---|---|---|")
-    for name, value, budget in rows:
-        shown = "-" if value is None else f"{value:.0f}"
-        print(f"| {name} | {shown} | {budget:.0f} | {verdict(value, budget)} |")
-    print("\nslowest units (s): " + ", ".join(f"{u['unit'].split('/')[-1]} {u['s']:.1f}" for u in f["slowest_units"]))
-    if setup:
-        print("setup phases (s): " + ", ".join(f"{k} {v:.0f}" for k, v in setup.items() if k.endswith("_s")))
+    return [
+        ("`./setup.sh` on a fresh machine", setup.get("total_s") if setup.get("packages_installed") else None, BUDGETS["setup_s"]),
+        ("the build, wall (fresh build directory)", setup.get("build_s") if setup.get("fresh_build") else None, BUDGETS["build_wall_s"]),
+        ("the build, compiler time of all units", f["compiler_s"], BUDGETS["compiler_s"]),
+        (f"the slowest unit (`{top['unit']}`)", top["s"], BUDGETS["unit_s"]),
+        ("the README's tests, wall", tests.get("wall_s", tests.get("wall_estimate_s")), BUDGETS["tests_s"]),
+        ("`iwb validate`, wall", validate.get("wall_s"), BUDGETS["validate_s"]),
+    ]
+
+
+def render(f):
+    lines = ["| budget | measured | budget | verdict |", "|---|---|---|---|"]
+    for name, value, budget in rows_of(f):
+        shown = "not measured" if value is None else f"{value:.0f} s"
+        lines.append(f"| {name} | {shown} | {budget:.0f} s | {verdict(value, budget)} |")
+    lines.append("")
+    lines.append(f"Measured {f.get('when', '?')} on {f.get('machine', '?')}; slowest units: "
+                 + ", ".join(f"`{u['unit']}` {u['s']:.1f} s" for u in f["slowest_units"][:5]) + ".")
+    tests = f.get("tests") or {}
     if tests:
-        print("tests: " + ", ".join(f"{k} {v}" for k, v in tests.items()))
+        lines.append("Tests: " + ", ".join(f"{k} {v}" for k, v in tests.items() if k != "command") + ".")
+    setup = f.get("setup") or {}
+    if setup:
+        lines.append("Setup phases: " + ", ".join(f"{k[:-2]} {v:.0f} s" for k, v in setup.items() if k.endswith("_s")) + ".")
+    return "\n".join(lines) + "\n"
+
+
+BEGIN, END = "<!-- BEGIN budgets: tools/budgets/budgets.py --write-readme -->", "<!-- END budgets -->"
+
+
+def readme_block(path):
+    text = open(path).read()
+    if BEGIN not in text or END not in text:
+        raise SystemExit(f"{path}: no budget block ({BEGIN} ... {END})")
+    head, rest = text.split(BEGIN, 1)
+    block, tail = rest.split(END, 1)
+    return head, block, tail
 
 
 def timed(command, build, name, cwd):
@@ -137,6 +180,9 @@ def main():
     p.add_argument("--json", help="also write the figures to this file")
     p.add_argument("--measure-tests", action="store_true", help="run the README's test command, timed")
     p.add_argument("--measure-validate", action="store_true", help="run `iwb validate` (default scene), timed")
+    p.add_argument("--from", dest="from_json", help="read the figures from this record instead of the build")
+    p.add_argument("--write-readme", help="rewrite this README's budget block from the figures")
+    p.add_argument("--check-readme", help="exit 1 unless this README's budget block shows the figures")
     a = p.parse_args()
     build = os.path.abspath(a.build)
     root = os.path.dirname(build)
@@ -146,11 +192,27 @@ def main():
     if a.measure_validate:
         out = os.path.join(build, "budgets", "validate-run")
         timed([os.path.join(build, "iwb"), "validate", "--out", out, "--force"], build, "validate.json", root)
-    f = figures(build)
-    print_figures(f)
+    if a.from_json:
+        f = read_json(a.from_json)
+        if f is None:
+            raise SystemExit(f"{a.from_json}: not a budget record")
+    else:
+        f = figures(build)
+    table = render(f)
+    print(table)
     if a.json:
         with open(a.json, "w") as out:
             json.dump(f, out, indent=1)
+            out.write("\n")
+    if a.write_readme:
+        head, _, tail = readme_block(a.write_readme)
+        with open(a.write_readme, "w") as out:
+            out.write(head + BEGIN + "\n" + table + END + tail)
+    if a.check_readme:
+        _, block, _ = readme_block(a.check_readme)
+        if block.strip() != table.strip():
+            print(f"{a.check_readme}: the budget table is not the record's; run --write-readme", file=sys.stderr)
+            return 1
     if a.check:
         over = []
         limit = 1 + TOLERANCE

@@ -39,4 +39,8 @@ void add_pile_command(CLI::App& app, CommandList& commands);
 // The hypothesis verdicts of a set of comparisons (`compare --runs`, `sweep`), title and verdict.
 void print_hypothesis_checks(const nlohmann::json& hypotheses);
 
+// A soil test's --amplitude and --cycles (dem soiltest, soiltest synthetic) with a --test other
+// than cyclicshear, which would ignore them: InputError naming the option and its value.
+void refuse_cyclic_options(const CLI::App& soiltest, const std::string& test);
+
 }  // namespace iwb::app

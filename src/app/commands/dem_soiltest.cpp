@@ -158,7 +158,10 @@ void add_dem_soiltest_command(CLI::App& dem, CommandList& commands) {
   s->add_flag("--resume", c->resume,
               "continue an interrupted run of the same cell from its last finished stage");
   s->add_flag("--force", c->force, "replace an earlier run in the same directory");
-  commands.add(s, [c](const CommandContext& context) { return run_dem_soiltest(*c, context); });
+  commands.add(s, [c, s](const CommandContext& context) {
+    refuse_cyclic_options(*s, c->test);
+    return run_dem_soiltest(*c, context);
+  });
 }
 
 }  // namespace iwb::app

@@ -94,11 +94,19 @@ int run_synthetic(SyntheticCommand c, const std::string& command_line) {
 
 }  // namespace
 
+void refuse_cyclic_options(const CLI::App& soiltest, const std::string& test) {
+  if (test != "cyclicshear")
+    refuse_given(soiltest, {"--amplitude", "--cycles"},
+                 "applies only to --test cyclicshear, not to --test " + test);
+}
+
 void add_soiltest_synthetic_command(CLI::App& soiltest, CommandList& commands) {
   auto c = std::make_shared<SyntheticCommand>();
   auto* s = add_synthetic_options(soiltest, *c);
-  commands.add(
-      s, [c](const CommandContext& context) { return run_synthetic(*c, context.command_line); });
+  commands.add(s, [c, s](const CommandContext& context) {
+    refuse_cyclic_options(*s, c->test);
+    return run_synthetic(*c, context.command_line);
+  });
 }
 
 }  // namespace iwb::app

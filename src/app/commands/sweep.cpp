@@ -25,6 +25,11 @@ struct SweepCommand {
 // (it decides how many tasks run at once): refused rather than ignored.
 void require_slurm_for_slurm_options(const SweepCommand& o) {
   const auto& s = o.options.slurm;
+  // --emit slurm stops at the script: the submission asked for would silently not happen
+  if (o.emit == "slurm" && o.executor == "slurm")
+    throw InputError(
+        "--emit slurm with --executor slurm: --emit slurm writes the job array for you to submit, "
+        "--executor slurm submits it; give one");
   if (o.executor == "slurm")
     for (const auto& [option, given] :
          {std::pair{"--jobs", o.options.jobs != 1}, {"--stop-after", o.options.stop_after != 0}})
@@ -141,20 +146,23 @@ void add_sweep_command(CLI::App& app, CommandList& commands) {
       ->check(CLI::IsMember({"local", "slurm"}))
       ->capture_default_str();
   auto& slurm = opt.slurm;
-  sweep->add_option("--partition", slurm.partition,
-                    "Slurm: the partition of the array tasks (default: the cluster's)")
+  sweep
+      ->add_option("--partition", slurm.partition,
+                   "Slurm: the partition of the array tasks (default: the cluster's)")
       ->check(non_empty());
   sweep->add_option("--account", slurm.account, "Slurm: the account charged (default: yours)")
       ->check(non_empty());
-  sweep->add_option("--time", slurm.time,
-                    "Slurm: wall-clock limit of one task (default: the sweep file's [slurm] time, "
-                    "else 01:00:00)")
+  sweep
+      ->add_option("--time", slurm.time,
+                   "Slurm: wall-clock limit of one task (default: the sweep file's [slurm] time, "
+                   "else 01:00:00)")
       ->check(non_empty());
   sweep->add_option("--mem", slurm.memory, "Slurm: memory of one task (4000 = MB, or 4G)")
       ->check(non_empty());
-  sweep->add_option(
-      "--prologue", slurm.prologue,
-      "Slurm: a shell line each task runs first, e.g. 'module load openmpi'; repeat for several")
+  sweep
+      ->add_option("--prologue", slurm.prologue,
+                   "Slurm: a shell line each task runs first, e.g. 'module load openmpi'; repeat "
+                   "for several")
       ->check(non_empty());
   sweep->add_option("--poll", opt.poll_seconds, "Slurm: seconds between looks at the queue")
       ->check(number_in({1.0, 3600.0}, "s"))

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 
+#include "common/errors.hpp"
 #include "common/subprocess.hpp"
 #include "common/template.hpp"
 #include "dem/liggghts/liggghts_outputs.hpp"
@@ -196,6 +197,30 @@ constexpr const char* kTimeseriesTitle =
     "t_s ux_m zplate_m sigma_wall_Pa tau_wall_Pa sigma_plate_Pa vsolid_m3 vband_m3 coordination "
     "atoms ke_J";
 
+// LIGGGHTS keeps each grain's mesh neighbours (the triangles near it) in one chunk of at most
+// `neigh_modify one` entries (2000 by default) and stops with "mesh neighbor list overflow" beyond
+// it: a measured map at 0.1 d50 did (issue 60). The chunk is sized from the densest part of the
+// meshes, with half again as margin; its page holds ten chunks (LAMMPS's neigh_modify advice).
+// Beyond kMaxMeshNeighbours the memory is the user's to decide: refused, with the coarser
+// resampling that fits.
+constexpr int kLiggghtsDefaultOne = 2000;
+constexpr double kMeshNeighbourMargin = 1.5;
+constexpr int kMaxMeshNeighbours = 50000;
+
+std::string neighbour_limits(const Scene& s, const Numerics& n) {
+  const double reach = s.particles.d_max() + n.skin;
+  const int densest = densest_scene_triangles(s, n.plate_z, reach);
+  const int one = std::max(kLiggghtsDefaultOne, int(std::ceil(kMeshNeighbourMargin * densest)));
+  if (one > kMaxMeshNeighbours)
+    throw InputError(fmt::format(
+        "{}: the wall's or plate's mesh has {} triangles within 3 (d_max + skin) = {:.3g} mm of "
+        "one grain, more than the {} LIGGGHTS can be given per grain here; coarsen the surface "
+        "(a larger [wall] resample_d50, about {:.2g} times the present cell)",
+        s.source, densest, 3.0 * reach * 1e3, kMaxMeshNeighbours / kMeshNeighbourMargin,
+        std::sqrt(kMeshNeighbourMargin * densest / kMaxMeshNeighbours) * 1.1));
+  return fmt::format("one {} page {}", one, std::max(100000, 10 * one));
+}
+
 }  // namespace
 
 TemplateValues liggghts_values(const Scene& s, const Numerics& n, double z0_consolidated) {
@@ -229,6 +254,7 @@ TemplateValues liggghts_values(const Scene& s, const Numerics& n, double z0_cons
       {"zlo", g(n.zlo)},
       {"zhi", g(n.zhi)},
       {"skin", g(n.skin)},
+      {"neighbour_limits", neighbour_limits(s, n)},
       {"dt", g(n.dt)},
       {"rolling_model", p.rolling_model},
       {"plate_com", fmt::format("{} {} {}", g(0.5 * s.length_m), g(0.5 * s.width_m), g(n.plate_z))},

@@ -128,7 +128,8 @@ struct ApiTzParameters {
 };
 
 ApiTzParameters read(const ModelInputs& in) {
-  const auto& v = in.tables.at("api_tz");
+  const auto& v = require_table(in, "api_tz");
+  require_keys(api_tz_table(), v, in.source + " [api_tz]");
   const double shape = v.at("shape");
   if (shape != 0.0 && shape != 1.0)
     throw InputError(fmt::format("{}: [api_tz] shape = {} is neither 0 (API sand) nor 1 (API clay)",

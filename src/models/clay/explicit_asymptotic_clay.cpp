@@ -55,8 +55,9 @@ std::string ExplicitAsymptoticClayLaw::initial_violation(const StressInvariants&
   if (!(ratio < 1.0 + kAsbsTolerance))
     return fmt::format(
         "outside the asymptotic state boundary surface: e = {:.6g} above the normal compression "
-        "line at p = {:.6g} kPa (f_d / f_d^A = {:.4g})",
-        e, s.mean_stress, ratio);
+        "line at p = {:.6g} kPa (f_d / f_d^A = {:.4g}); the largest e0 at this stress is {:.4f} "
+        "(on the ASBS; or give OCR >= 1)",
+        e, s.mean_stress, ratio, void_ratio_at(s, 1.0, c));
   return {};
 }
 

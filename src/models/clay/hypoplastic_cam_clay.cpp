@@ -35,8 +35,9 @@ std::string HypoplasticCamClayLaw::initial_violation(const StressInvariants& s, 
   if (!(ocr > 1.0 - kAsbsTolerance))
     return fmt::format(
         "outside the asymptotic state boundary surface: e = {:.6g} above the normal compression "
-        "line at p = {:.6g} kPa, q/p = {:.4g} (OCR = {:.4g})",
-        e, s.mean_stress, std::sqrt(s.eta2), ocr);
+        "line at p = {:.6g} kPa, q/p = {:.4g} (OCR = {:.4g}); the largest e0 at this stress is "
+        "{:.4f} (on the ASBS; or give OCR >= 1)",
+        e, s.mean_stress, std::sqrt(s.eta2), ocr, void_ratio_at(s, 1.0, c));
   return {};
 }
 

@@ -166,6 +166,22 @@ struct MasinClayLaw {
         std::pow(state_boundary_pyknotropy<Ops, double>(T, parts, lambda), 1.0 / parts.alpha);
     return std::exp(N - lambda * std::log(p_e)) - 1.0;
   }
+  // Why a start (T, e) lies outside the state boundary surface at its stress, empty inside it:
+  // e above e_SBS, the void ratio of void_ratio_at_stress at OCR 1 (f_d = f_d^SBS, 6.49).
+  template <class Ops>
+  static std::string initial_violation_at_stress(const typename Ops::template Tensor<double>& T,
+                                                 double e, const Constants& c) {
+    return initial_violation_at_stress_with<Ops>(T, e, c.p.lambda_star, c.p.N, c);
+  }
+  template <class Ops>
+  static std::string initial_violation_at_stress_with(
+      const typename Ops::template Tensor<double>& T, double e, double lambda, double N,
+      const Constants& c) {
+    return outside_state_boundary(e, void_ratio_at_stress_with<Ops>(T, 1.0, lambda, N, c), lambda,
+                                  masin_coefficients<double>(lambda, c).alpha);
+  }
+  // The message for a start at e where the surface lies at e_sbs, empty within the tolerance.
+  static std::string outside_state_boundary(double e, double e_sbs, double lambda, double alpha);
   // mean_stress_kPa, p_e_kPa, F_m
   static std::vector<NamedValue> diagnostics(const StressInvariants& s, double e,
                                              const Constants& c);

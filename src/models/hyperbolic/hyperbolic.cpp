@@ -178,7 +178,8 @@ ModelSpec hyperbolic_spec() {
           false,
           {&hyperbolic_table()},
           [](const ModelInputs& in) {
-            const auto& v = in.tables.at("hyperbolic");
+            const auto& v = require_table(in, "hyperbolic");
+            require_keys(hyperbolic_table(), v, in.source + " [hyperbolic]");
             return std::make_unique<Hyperbolic>(HyperbolicParameters{
                 v.at("K_I"), v.at("K_I_ur"), v.at("n_HY"), v.at("R_f"),
                 std::tan(v.at("delta_deg") * M_PI / 180.0), v.at("k_n_kPa_per_mm"), v.at("p_a_kPa"),

@@ -75,46 +75,22 @@ class HypoplasticModel final : public Model {
   const Constants& constants() const { return c_; }
 
   StateVector initial_state(const InitialState& init) const override {
-    StateVector s(state_size());
-    Ops::template pack<double>(kin_.initial_stress(init), s, 0);
-    s(kVoidRatio) = init.e0;
-    if constexpr (kExternalCount > 0)
-      for (int i = 0; i < kExternalCount; ++i) {
-        const auto given = init.named.find(external_key(kExternals[std::size_t(i)]));
-        s(kFirstExternal + i) = given != init.named.end()
-                                    ? given->second
-                                    : Law::initial_external(kExternals[std::size_t(i)], c_);
-      }
-    // a law that knows its asymptotic state boundary surface may be given the density as an OCR
-    // (from the invariants, or from the stress tensor where the surface needs the principal ratio)
-    if (const auto ocr = init.named.find("OCR"); ocr != init.named.end()) {
-      const auto T = Ops::template unpack<double>(s, 0);
-      if constexpr (kExternalCount > 0)
-        s(kVoidRatio) =
-            Law::template void_ratio_at_state<Ops>(T, externals_of<double>(s), ocr->second, c_);
-      else if constexpr (requires { Law::void_ratio_at(StressInvariants{}, 1.0, c_); })
-        s(kVoidRatio) = Law::void_ratio_at(stress_invariants<Ops>(T), ocr->second, c_);
-      else if constexpr (requires { Law::template void_ratio_at_stress<Ops>(T, 1.0, c_); })
-        s(kVoidRatio) = Law::template void_ratio_at_stress<Ops>(T, ocr->second, c_);
-    }
-    if (igs_)
-      Ops::template pack<double>(initial_intergranular_strain(init), s, kDelta);
-    else if (init.delta)
-      throw InputError(
-          fmt::format("{} has no intergranular strain; an initial delta is meaningless "
-                      "for it (use {}-igs)",
-                      name_, name_));
+    const StateVector s = start_of(init);
     std::string why = domain_violation(s);
-    if constexpr (requires { Law::initial_violation(StressInvariants{}, 0.0, c_); })
-      if (why.empty())
-        why = Law::initial_violation(stress_invariants<Ops>(Ops::template unpack<double>(s, 0)),
-                                     s(kVoidRatio), c_);
+    if (why.empty() && init.outside_boundary == OutsideBoundary::kRefuse) why = outside_boundary(s);
     if (!why.empty())
       throw InputError(
-          fmt::format("initial state (sigma_n0 = {:g} kPa, K0 = {:g}, e0 = {:g}) is "
-                      "not admissible for {}: {}",
-                      init.sigma_n, init.K0, s(kVoidRatio), name_, why));
+          fmt::format("{} is not admissible for {}: {}", described(init, s), name_, why));
     return s;
+  }
+
+  std::vector<std::string> initial_warnings(const InitialState& init) const override {
+    if (init.outside_boundary != OutsideBoundary::kWarn) return {};
+    const StateVector s = start_of(init);
+    if (!domain_violation(s).empty()) return {};  // initial_state refuses it
+    const std::string why = outside_boundary(s);
+    if (why.empty()) return {};
+    return {fmt::format("{} is taken as given for {}, though {}", described(init, s), name_, why)};
   }
 
   void rate(const StateVector& s, const InterfaceStrain& d, StateVector& ds) const override {
@@ -172,6 +148,64 @@ class HypoplasticModel final : public Model {
   }
 
  private:
+  // The state the inputs give, not yet checked against the law's domain.
+  StateVector start_of(const InitialState& init) const {
+    StateVector s(state_size());
+    Ops::template pack<double>(kin_.initial_stress(init), s, 0);
+    s(kVoidRatio) = init.e0;
+    if constexpr (kExternalCount > 0)
+      for (int i = 0; i < kExternalCount; ++i) {
+        const auto given = init.named.find(external_key(kExternals[std::size_t(i)]));
+        s(kFirstExternal + i) = given != init.named.end()
+                                    ? given->second
+                                    : Law::initial_external(kExternals[std::size_t(i)], c_);
+      }
+    // a law that knows its asymptotic state boundary surface may be given the density as an OCR
+    // (from the invariants, or from the stress tensor where the surface needs the principal ratio)
+    if (const auto ocr = init.named.find("OCR"); ocr != init.named.end()) {
+      const auto T = Ops::template unpack<double>(s, 0);
+      if constexpr (kExternalCount > 0)
+        s(kVoidRatio) =
+            Law::template void_ratio_at_state<Ops>(T, externals_of<double>(s), ocr->second, c_);
+      else if constexpr (requires { Law::void_ratio_at(StressInvariants{}, 1.0, c_); })
+        s(kVoidRatio) = Law::void_ratio_at(stress_invariants<Ops>(T), ocr->second, c_);
+      else if constexpr (requires { Law::template void_ratio_at_stress<Ops>(T, 1.0, c_); })
+        s(kVoidRatio) = Law::template void_ratio_at_stress<Ops>(T, ocr->second, c_);
+    }
+    if (igs_)
+      Ops::template pack<double>(initial_intergranular_strain(init), s, kDelta);
+    else if (init.delta)
+      throw InputError(
+          fmt::format("{} has no intergranular strain; an initial delta is meaningless "
+                      "for it (use {}-igs)",
+                      name_, name_));
+    return s;
+  }
+
+  // Why a start lies outside the law's state boundary surface (clay: looser than the surface at
+  // its stress), from the invariants, the stress tensor or, with externals, the whole state as
+  // the law needs; empty inside it or for a law without one.
+  std::string outside_boundary(const StateVector& s) const {
+    const auto T = Ops::template unpack<double>(s, 0);
+    const double e = s(kVoidRatio);
+    if constexpr (requires { Law::initial_violation(StressInvariants{}, 0.0, c_); })
+      return Law::initial_violation(stress_invariants<Ops>(T), e, c_);
+    else if constexpr (requires {
+                         Law::template initial_violation_at_state<Ops>(T, 0.0,
+                                                                       externals_of<double>(s), c_);
+                       })
+      return Law::template initial_violation_at_state<Ops>(T, e, externals_of<double>(s), c_);
+    else if constexpr (requires { Law::template initial_violation_at_stress<Ops>(T, 0.0, c_); })
+      return Law::template initial_violation_at_stress<Ops>(T, e, c_);
+    else
+      return {};
+  }
+
+  std::string described(const InitialState& init, const StateVector& s) const {
+    return fmt::format("initial state (sigma_n0 = {:g} kPa, K0 = {:g}, e0 = {:g})", init.sigma_n,
+                       init.K0, s(kVoidRatio));
+  }
+
   template <class S>
   void rate_impl(const StateVectorT<S>& s, const InterfaceStrainT<S>& d,
                  StateVectorT<S>& ds) const {

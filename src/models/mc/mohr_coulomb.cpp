@@ -68,7 +68,8 @@ struct McParameters {
 };
 
 McParameters read(const ModelInputs& in) {
-  const auto& v = in.tables.at("mohr_coulomb");
+  const auto& v = require_table(in, "mohr_coulomb");
+  require_keys(mohr_coulomb_table(), v, in.source + " [mohr_coulomb]");
   const double E = v.at("E_kPa"), nu = v.at("nu");
   McParameters p{E / (2.0 * (1.0 + nu)),
                  0.0,

@@ -149,6 +149,16 @@ struct ThermoHydroClayLaw {
     return MasinClayLaw::void_ratio_at_stress_with<Ops>(effective_stress<Ops, double>(T_net, x, c),
                                                         ocr, line.lambda, line.N, c.base);
   }
+  // Why a start lies outside the state boundary surface of its temperature and suction, at its
+  // effective stress (6.30, 6.44, 6.45, 6.49): the base law's test with lambda*(s,T) and N(s,T).
+  template <class Ops>
+  static std::string initial_violation_at_state(const typename Ops::template Tensor<double>& T_net,
+                                                double e, const std::array<double, 2>& x,
+                                                const Constants& c) {
+    const auto line = compression_line<double>(x[0], x[1], c);
+    return MasinClayLaw::initial_violation_at_stress_with<Ops>(
+        effective_stress<Ops, double>(T_net, x, c), e, line.lambda, line.N, c.base);
+  }
   // mean_stress_kPa (effective), p_e_kPa (at this T and s), F_m, chi, f_d / f_d^SBS
   template <class Ops>
   static std::vector<NamedValue> diagnostics_at(const typename Ops::template Tensor<double>& T_net,
