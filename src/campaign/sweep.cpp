@@ -74,7 +74,7 @@ SweepOutcome run_sweep(const SweepOptions& opt) {
   if (opt.on_slurm)
     check_slurm_submission(jobs, slurm);  // the cluster's judgement too, nothing queued
   SweepOutcome outcome{opt.out.empty() ? default_out(opt.sweep_file) : opt.out, {}, std::nullopt};
-  const io::OutputKind kind{"sweep", "sweep.json"};  // a campaign resumes where it stopped
+  const io::OutputKind kind{"sweep", "sweep.json"};        // a campaign resumes where it stopped
   io::require_output_directory(outcome.out, kind, false);  // before the lock touches it
   const auto lock =
       io::DirectoryLock::take(outcome.out, opt.command_line);  // each job locks its own run

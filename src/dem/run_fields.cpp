@@ -129,7 +129,8 @@ RunContext open_run(const fs::path& dir, const RunFieldsOptions& opt) {
                io::read_csv_table(dir / "timeseries.csv"),
                fs::exists(dir / "summary.json") ? io::read_json_file(dir / "summary.json")
                                                 : nlohmann::json::object(),
-               0.0, m.value("kind", "dem-run")};
+               0.0,
+               m.value("kind", "dem-run")};
   c.numerics = dem::derive(c.scene);
   const double w = opt.width_d50.value_or(c.scene.coarse_graining.width_d50);
   if (!(w > 0.0) || w > 0.5 * c.scene.height_m / c.numerics.d50)

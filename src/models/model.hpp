@@ -70,7 +70,8 @@ struct InterfaceStrainT {
   S eps_n{0.0};
   S gamma_x{0.0};
   S gamma_y{0.0};
-  // Initialised explicitly, whatever the scalar's default constructor does.
+  // Initialised explicitly: Eigen's AutoDiffScalar default constructor leaves its value
+  // uninitialised, so `external{}` would be garbage for Dual.
   std::array<S, kExternalSlots> external{S(0.0), S(0.0), S(0.0)};
 
   S external_of(External slot) const { return external[std::size_t(slot)]; }

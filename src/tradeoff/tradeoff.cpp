@@ -160,7 +160,7 @@ json run_tradeoff(const TradeoffOptions& opt) {
   const fs::path out = opt.out.empty() ? default_out(opt.scene_file) : opt.out;
   io::require_output_directory(out, kTradeoffOutput, false);  // before the lock touches it
   const auto lock =
-      io::DirectoryLock::take(out, opt.command_line);  // each variant's run locks its own
+      io::DirectoryLock::take(out, opt.command_line);       // each variant's run locks its own
   io::claim_output_directory(out, kTradeoffOutput, false);  // a tradeoff resumes
   std::vector<campaign::Job> jobs;
   fs::create_directories(out / "scenes");

@@ -11,8 +11,8 @@ using namespace iwb::coarse_graining;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kA = 1e-3;  // lattice spacing, m
-constexpr int kN = 6;        // lattice points along x and y; 2 kN along z
+constexpr double kSpacing = 1e-3;  // lattice spacing, m
+constexpr int kN = 6;              // lattice points along x and y; 2 kN along z
 
 // A simple cubic lattice filling [0, kN a) x [0, kN a) x [0, 2 kN a), grains of radius 0.4 a, with
 // velocity v(r) and spin omega(r).
@@ -22,17 +22,17 @@ Snapshot lattice(Velocity velocity, Spin spin) {
   for (int i = 0; i < kN; ++i)
     for (int j = 0; j < kN; ++j)
       for (int k = 0; k < 2 * kN; ++k) {
-        const Eigen::Vector3d r((i + 0.5) * kA, (j + 0.5) * kA, (k + 0.5) * kA);
-        s.grains.push_back({r, velocity(r), spin(r), 0.4 * kA, 2.0e-6});
+        const Eigen::Vector3d r((i + 0.5) * kSpacing, (j + 0.5) * kSpacing, (k + 0.5) * kSpacing);
+        s.grains.push_back({r, velocity(r), spin(r), 0.4 * kSpacing, 2.0e-6});
       }
   return s;
 }
 
-const PeriodicCell kCell{kN * kA, kN* kA};
+const PeriodicCell kCell{kN * kSpacing, kN* kSpacing};
 // A Gaussian as wide as the lattice's spacing averages it out: the sampling error of a lattice sum
 // is ~ 2 exp(-2 pi^2 w^2 / a^2) = 5e-9 relative (Poisson summation).
-const GaussianKernel kKernel(kA);
-const double kMiddle = kN * kA;  // half the lattice's height: 6 widths from either face
+const GaussianKernel kKernel(kSpacing);
+const double kMiddle = kN * kSpacing;  // half the lattice's height: 6 widths from either face
 
 Eigen::Vector3d zero(const Eigen::Vector3d&) {
   return Eigen::Vector3d::Zero();
@@ -48,10 +48,10 @@ TEST_CASE("a lattice's coarse-grained solid fraction is its grains' volume per c
           "[coarse_graining]") {
   const auto s = lattice(zero, zero);
   const double expected = 4.0 / 3.0 * kPi * std::pow(0.4, 3);  // (4/3) pi r^3 / a^3
-  const HeightProfile profile(kKernel, kCell, 0.25 * kA, 0.0, 2 * kN * kA);
+  const HeightProfile profile(kKernel, kCell, 0.25 * kSpacing, 0.0, 2 * kN * kSpacing);
   const auto f = coarse_grain(s, profile);
   CHECK(at_height(f, profile, "solid_fraction", kMiddle) == Approx(expected).epsilon(1e-7));
-  const PlaneGrid plane(kKernel, kCell, 0.25 * kA, 0.0, 2 * kN * kA);
+  const PlaneGrid plane(kKernel, kCell, 0.25 * kSpacing, 0.0, 2 * kN * kSpacing);
   const auto g = coarse_grain(s, plane);
   const std::size_t j = std::size_t(std::lround(kMiddle / plane.hz()));
   for (int k = 0; k < plane.nx(); k += 3)
@@ -65,17 +65,18 @@ TEST_CASE("the solid fraction integrates to the grains' volume (mass balance)",
   Snapshot s;
   double volume = 0.0;
   for (int i = 0; i < 300; ++i) {
-    const double r = (0.3 + 0.2 * u(rng)) * kA;
-    s.grains.push_back({{u(rng) * kCell.length_x, u(rng) * kCell.length_y, (2 + 8 * u(rng)) * kA},
-                        Eigen::Vector3d::Zero(),
-                        Eigen::Vector3d::Zero(),
-                        r,
-                        1e-6});
+    const double r = (0.3 + 0.2 * u(rng)) * kSpacing;
+    s.grains.push_back(
+        {{u(rng) * kCell.length_x, u(rng) * kCell.length_y, (2 + 8 * u(rng)) * kSpacing},
+         Eigen::Vector3d::Zero(),
+         Eigen::Vector3d::Zero(),
+         r,
+         1e-6});
     volume += 4.0 / 3.0 * kPi * r * r * r;
   }
-  const GaussianKernel kernel(0.5 * kA);
-  const HeightProfile profile(kernel, kCell, 0.1 * kA, -1 * kA,
-                              13 * kA);  // covers 5 widths beyond the grains
+  const GaussianKernel kernel(0.5 * kSpacing);
+  const HeightProfile profile(kernel, kCell, 0.1 * kSpacing, -1 * kSpacing,
+                              13 * kSpacing);  // covers 5 widths beyond the grains
   const auto nu = coarse_grain(s, profile)["solid_fraction"];
   double integral = 0.0;  // trapezoidal: the kernel is smooth on the spacing, the ends are zero
   for (double v : nu) integral += v * profile.spacing();
@@ -89,13 +90,13 @@ TEST_CASE("a rigid translation has no strain rate, no vorticity and the grains' 
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Snapshot s;  // random positions and masses: the translation's fields do not depend on them
   for (int i = 0; i < 400; ++i)
-    s.grains.push_back({{u(rng) * kCell.length_x, u(rng) * kCell.length_y, 12 * kA * u(rng)},
+    s.grains.push_back({{u(rng) * kCell.length_x, u(rng) * kCell.length_y, 12 * kSpacing * u(rng)},
                         v,
                         Eigen::Vector3d::Zero(),
-                        0.4 * kA,
+                        0.4 * kSpacing,
                         (1 + u(rng)) * 1e-6});
-  const GaussianKernel kernel(0.5 * kA);
-  const PlaneGrid plane(kernel, kCell, 0.25 * kA, 2 * kA, 10 * kA);
+  const GaussianKernel kernel(0.5 * kSpacing);
+  const PlaneGrid plane(kernel, kCell, 0.25 * kSpacing, 2 * kSpacing, 10 * kSpacing);
   const auto f = coarse_grain(s, plane);
   const double scale = v.norm() / kernel.width();  // a strain rate's natural size here
   for (std::size_t i = 0; i < plane.size(); i += 7) {
@@ -115,11 +116,11 @@ TEST_CASE("simple shear on a lattice gives its gradient, its vorticity and no Co
   const auto s =
       lattice([&](const Eigen::Vector3d& r) { return Eigen::Vector3d(rate * r.z(), 0, 0); },
               [&](const Eigen::Vector3d&) { return Eigen::Vector3d(0, 0.5 * rate, 0); });
-  const HeightProfile profile(kKernel, kCell, 0.25 * kA, 0.0, 2 * kN * kA);
+  const HeightProfile profile(kKernel, kCell, 0.25 * kSpacing, 0.0, 2 * kN * kSpacing);
   const auto f = coarse_grain(s, profile);
   CHECK(at_height(f, profile, "shear_rate_dvx_dz_1_s", kMiddle) == Approx(rate).epsilon(1e-6));
   CHECK(at_height(f, profile, "velocity_x_m_s", kMiddle) == Approx(rate * kMiddle).epsilon(1e-6));
-  const PlaneGrid plane(kKernel, kCell, 0.5 * kA, 0.0, 2 * kN * kA);
+  const PlaneGrid plane(kKernel, kCell, 0.5 * kSpacing, 0.0, 2 * kN * kSpacing);
   const auto g = coarse_grain(s, plane);
   const std::size_t i = std::size_t(std::lround(kMiddle / plane.hz())) * plane.nx() + 2;
   CHECK(g["strain_rate_xz_1_s"][i] == Approx(0.5 * rate).epsilon(1e-6));
@@ -136,16 +137,19 @@ TEST_CASE("contact forces on a lattice give the stress a free-body cut gives",
   const double N = 2.0, T = 0.7;  // newtons
   auto s = lattice(zero, zero);
   for (const Grain& lower : s.grains) {
-    const Eigen::Vector3d upper = lower.position + Eigen::Vector3d(0, 0, kA);
-    if (upper.z() > 2 * kN * kA) continue;
+    const Eigen::Vector3d upper = lower.position + Eigen::Vector3d(0, 0, kSpacing);
+    if (upper.z() > 2 * kN * kSpacing) continue;
     s.contacts.push_back(
         {upper, lower.position, Eigen::Vector3d(T, 0, N)});  // force on the upper grain
   }
-  const HeightProfile profile(kKernel, kCell, 0.25 * kA, 0.0, 2 * kN * kA);
+  const HeightProfile profile(kKernel, kCell, 0.25 * kSpacing, 0.0, 2 * kN * kSpacing);
   const auto f = coarse_grain(s, profile);
-  CHECK(at_height(f, profile, "stress_zz_Pa", kMiddle) == Approx(N / (kA * kA)).epsilon(1e-7));
-  CHECK(at_height(f, profile, "stress_xz_Pa", kMiddle) == Approx(T / (kA * kA)).epsilon(1e-7));
-  CHECK(std::abs(at_height(f, profile, "stress_xx_Pa", kMiddle)) < 1e-9 * N / (kA * kA));
+  CHECK(at_height(f, profile, "stress_zz_Pa", kMiddle) ==
+        Approx(N / (kSpacing * kSpacing)).epsilon(1e-7));
+  CHECK(at_height(f, profile, "stress_xz_Pa", kMiddle) ==
+        Approx(T / (kSpacing * kSpacing)).epsilon(1e-7));
+  CHECK(std::abs(at_height(f, profile, "stress_xx_Pa", kMiddle)) <
+        1e-9 * N / (kSpacing * kSpacing));
 }
 
 TEST_CASE("the kernel's closed-form branch integrals equal quadrature", "[coarse_graining]") {

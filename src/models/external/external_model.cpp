@@ -79,9 +79,8 @@ class ExternalModel final : public Model {
     for (int i = 0; i < 3; ++i) {
       double derivative = derivative_of(s(kTn + i));
       for (int j = 0; j < 3; ++j) derivative += ddsdde[i + 3 * j] * derivative_of(du[j]);
-      out(kTn + i) = Dual(value_of(out(kTn + i)), derivative);
-      out(kStrain + i) =
-          Dual(value_of(out(kStrain + i)), derivative_of(s(kStrain + i)) + derivative_of(du[i]));
+      out(kTn + i).derivatives()(0) = derivative;
+      out(kStrain + i).derivatives()(0) = derivative_of(s(kStrain + i)) + derivative_of(du[i]);
     }
   }
   // The rate form for the callers that ask for one (the closed-form mixed control): the response to
