@@ -142,7 +142,8 @@ def render(f):
                  + ", ".join(f"`{u['unit']}` {u['s']:.1f} s" for u in f["slowest_units"][:5]) + ".")
     tests = f.get("tests") or {}
     if tests:
-        lines.append("Tests: " + ", ".join(f"{k} {v}" for k, v in tests.items() if k != "command") + ".")
+        lines.append("The tests' run: " + ", ".join(f"{k} {tests[k]}" for k in ("wall_s", "when", "tests", "sum_s") if k in tests)
+                     + " (the record's `tests` holds its exit code and the load it started at).")
     setup = f.get("setup") or {}
     if setup:
         lines.append("Setup phases: " + ", ".join(f"{k[:-2]} {v:.0f} s" for k, v in setup.items() if k.endswith("_s")) + ".")

@@ -1,32 +1,14 @@
 // hcthm: Masin & Khalili's (2012) thermo-mechanical hypoplasticity for variably saturated clay
-// (seed 6.3), on the reduced interface vectors with the roughness of 6.2.4, and hcthm3d on full
-// 3x3 tensors in simple shear. The state holds the net stress, e, T_K and s_kPa; a test's stages
-// prescribe the paths of T and s (src/driver/path.hpp), which the model alone reads.
-#include "models/clay/masin_clay.hpp"
-#include "models/hypoplastic/family.hpp"
-#include "models/thermo_hydro/thermo_hydro_clay.hpp"
+// (seed 6.3), on the reduced interface vectors with the roughness of 6.2.4 (hcthm3d, on full 3x3
+// tensors in simple shear, is hcthm3d.cpp). The state holds the net stress, e, T_K and s_kPa; a
+// test's stages prescribe the paths of T and s (src/driver/path.hpp), which the model alone reads.
+#include "models/thermo_hydro/hcthm_build.hpp"
 
 namespace iwb::models {
 
 ModelDeclaration masin_clay_declaration(const std::vector<std::string>& stress_components,
                                         bool interface_model,
                                         int listing_order);  // hc/hc.cpp
-
-namespace {
-
-constexpr int kListingOrder = 16;  // after hc, hc3d
-
-template <class Kinematics>
-std::unique_ptr<Model> build(const std::string& name, const Kinematics& kin,
-                             const ModelInputs& in) {
-  const auto p = MasinClayParameters::from(require_table(in, "clay_hypoplasticity"),
-                                           in.source + " [clay_hypoplasticity]");
-  const auto th =
-      ThermoHydroParameters::from(require_table(in, "thermo_hydro"), in.source + " [thermo_hydro]");
-  return make_member<ThermoHydroClayLaw>(
-      name, kin, ThermoHydroClayConstants{make_masin_clay_constants(p, in.roughness), th}, in,
-      WithIntergranularStrain::kNo);
-}
 
 ModelDeclaration thermo_hydro_declaration(const std::vector<std::string>& stress_components,
                                           bool interface_model, int listing_order) {
@@ -62,8 +44,6 @@ ModelDeclaration thermo_hydro_declaration(const std::vector<std::string>& stress
   return d;
 }
 
-}  // namespace
-
 ModelSpec hcthm_spec() {
   return {
       "hcthm",
@@ -74,22 +54,10 @@ ModelSpec hcthm_spec() {
       true,
       {&MasinClayParameters::table(), &ThermoHydroParameters::table()},
       [](const ModelInputs& in) {
-        return build("hcthm", ReducedInterfaceKinematics<algebra::ReducedOps>{}, in);
+        return build_thermo_hydro("hcthm", ReducedInterfaceKinematics<algebra::ReducedOps>{}, in);
       },
       thermo_hydro_declaration(ReducedInterfaceKinematics<algebra::ReducedOps>::component_names(),
-                               true, kListingOrder)};
-}
-
-ModelSpec hcthm3d_spec() {
-  return {
-      "hcthm3d",
-      "Masin & Khalili (2012) thermo-hydro-mechanical clay hypoplasticity, full 3x3 tensors in "
-      "simple shear",
-      "seed 6.3 (6.29-6.52; issue 19 closing note)",
-      false,
-      {&MasinClayParameters::table(), &ThermoHydroParameters::table()},
-      [](const ModelInputs& in) { return build("hcthm3d", SimpleShearKinematics{}, in); },
-      thermo_hydro_declaration(SimpleShearKinematics::component_names(), false, kListingOrder + 1)};
+                               true, kThermoHydroListingOrder)};
 }
 
 }  // namespace iwb::models
