@@ -8,6 +8,7 @@
 
 #include "campaign/slurm.hpp"
 #include "common/errors.hpp"
+#include "common/input_file.hpp"
 #include "dem/engines.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
@@ -122,9 +123,9 @@ std::optional<Comparison> read_comparison(io::TableReader& top, const fs::path& 
   if (!t) return std::nullopt;
   Comparison c{t->optional_text("model").value_or("hvwe"), folder / t->text("params")};
   require_known_model(*t, c.model);
-  if (!fs::exists(c.params))
-    throw InputError(fmt::format("{} = \"{}\": no such file ({})", t->where("params"),
-                                 t->text("params"), c.params.string()));
+  if (const auto why = unreadable_input_file(c.params); !why.empty())
+    throw InputError(fmt::format("{} = \"{}\": {} ({})", t->where("params"), t->text("params"), why,
+                                 c.params.string()));
   t->finish();
   return c;
 }
@@ -140,9 +141,11 @@ SweepSpec parse_sweep(const std::string& text, const fs::path& file) {
   s.description = top.optional_text("description").value_or("");
   const fs::path folder = file.parent_path();
   s.scene_file = folder / top.text("scene");
-  if (!fs::exists(s.scene_file))
-    throw InputError(fmt::format("{} = \"{}\": no such scene file ({})", top.where("scene"),
-                                 top.text("scene"), s.scene_file.string()));
+  // a named pipe would block the read for ever; a directory is not "no such file"
+  if (const auto why = unreadable_input_file(s.scene_file); !why.empty())
+    throw InputError(fmt::format("{} = \"{}\": {} ({})", top.where("scene"), top.text("scene"),
+                                 why == "no such file" ? "no such scene file" : why,
+                                 s.scene_file.string()));
   s.scene_text = io::read_file(s.scene_file);
   s.engines = read_engines(top);
   if (const toml::node* set = top.node("set")) {

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "common/errors.hpp"
+#include "common/input_file.hpp"
 #include "common/physical_limits.hpp"
 #include "dem/scene_keys.hpp"
 #include "dem/shear_start.hpp"
@@ -539,8 +540,8 @@ std::string scene_sha256(const Scene& s, const std::string& text) {
 }
 
 Scene load_scene(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(fmt::format("{}: no such file", path));
+  if (const auto why = unreadable_input_file(path); !why.empty())
+    throw InputError(fmt::format("{}: {}", path, why));
   return parse_scene(io::read_file(path), path);
 }
 
