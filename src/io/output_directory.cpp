@@ -34,7 +34,7 @@ std::map<std::string, fs::file_time_type> files_under(const fs::path& dir) {
   if (!fs::is_directory(dir)) return files;
   for (auto it = fs::recursive_directory_iterator(dir); it != fs::recursive_directory_iterator();
        ++it) {
-    const fs::path relative = fs::relative(it->path(), dir);
+    const fs::path relative = it->path().lexically_relative(dir);  // no system call per file
     if (is_bookkeeping(relative)) {
       if (it->is_directory()) it.disable_recursion_pending();
       continue;
@@ -54,13 +54,31 @@ struct Ledger {
   std::set<std::string> written;
 };
 
+// A ledger's entry names a file inside its directory: never absolute, never through "..", so that
+// an edited ledger cannot make --force remove a file elsewhere.
+bool inside(const std::string& entry) {
+  const fs::path p(entry);
+  if (entry.empty() || p.is_absolute()) return false;
+  for (const auto& part : p)
+    if (part == "..") return false;
+  return true;
+}
+
 std::optional<Ledger> read_ledger(const fs::path& dir) {
   const fs::path file = dir / kLedgerFileName;
   if (!fs::exists(file)) return std::nullopt;
   try {
     const json j = json::parse(read_file(file));
     Ledger l{j.at("kind").get<std::string>(), {}};
-    for (const auto& f : j.at("written")) l.written.insert(f.get<std::string>());
+    for (const auto& f : j.at("written")) {
+      const auto entry = f.get<std::string>();
+      if (!inside(entry))
+        throw InputError(fmt::format(
+            "{}: entry \"{}\" lies outside {}; the ledger lists only the files the workbench "
+            "wrote inside its directory: restore it, or choose another --out",
+            file.string(), entry, dir.string()));
+      l.written.insert(entry);
+    }
     return l;
   } catch (const json::exception& e) {
     throw InputError(fmt::format(

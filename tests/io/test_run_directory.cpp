@@ -111,3 +111,14 @@ TEST_CASE("output directory: a killed run's file written again by its successor 
   CHECK_FALSE(fs::exists(second / "history.csv"));
   CHECK(fs::exists(second / "dumps" / "left.dump"));  // kept: nothing says it is ours
 }
+
+TEST_CASE("output directory: a ledger that names a file outside its directory is refused", "[io]") {
+  const fs::path root = fresh("escape");
+  const fs::path dir = root / "run";
+  write(root / "thesis.txt", "mine\n");
+  write(dir / io::kLedgerFileName,
+        R"({"kind": "element-test", "written": ["../thesis.txt", "history.csv"]})");
+  CHECK_THROWS_WITH(io::prepare_run_directory(dir, kRun, true),
+                    Catch::Contains("\"../thesis.txt\" lies outside"));
+  CHECK(io::read_file(root / "thesis.txt") == "mine\n");
+}
