@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>
@@ -564,29 +565,39 @@ TestFit test_fit(const SoilTest& t, const std::string& model, const models::Mode
   return f;
 }
 
+std::array<std::vector<double>, kObjectiveGroups.size()> group_residuals(
+    const std::vector<SoilTest>& tests, const std::string& model, const models::ModelInputs& in) {
+  std::vector<Simulated> simulated(tests.size());
+  // one test per task: a simulation takes milliseconds, far above TBB's scheduling cost
+  tbb::parallel_for(std::size_t(0), tests.size(),
+                    [&](std::size_t i) { simulated[i] = simulate(tests[i], model, in); });
+  std::array<std::vector<double>, kObjectiveGroups.size()> residuals;
+  for (std::size_t i = 0; i < tests.size(); ++i)
+    for (const auto g : kObjectiveGroups)
+      append_group_residuals(g, tests[i], simulated[i], residuals[std::size_t(g)]);
+  return residuals;
+}
+
+GroupFit group_fit(ObjectiveGroup group, const std::vector<double>& r, double weight) {
+  double squares = 0.0;
+  std::size_t unreached = 0;
+  for (const double x : r)
+    if (x == kUnreachedResidual)
+      ++unreached;
+    else
+      squares += x * x;
+  const std::size_t reached = r.size() - unreached;
+  return {group, weight, r.size(), reached == 0 ? 0.0 : std::sqrt(squares / double(reached)),
+          unreached};
+}
+
 std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::string& model,
                                  const models::ModelInputs& in, const ObjectiveWeights& weights) {
-  std::vector<std::vector<double>> residuals(kObjectiveGroups.size());
-  for (const auto& t : tests) {
-    const Simulated s = simulate(t, model, in);
-    for (const auto g : kObjectiveGroups)
-      append_group_residuals(g, t, s, residuals[std::size_t(g)]);
-  }
+  const auto residuals = group_residuals(tests, model, in);
   std::vector<GroupFit> out;
-  for (const auto g : kObjectiveGroups) {
-    const auto& r = residuals[std::size_t(g)];
-    double squares = 0.0;
-    std::size_t unreached = 0;
-    for (const double x : r)
-      if (x == kUnreachedResidual)
-        ++unreached;
-      else
-        squares += x * x;
-    const std::size_t reached = r.size() - unreached;
-    if (r.empty()) continue;  // no test of this group
-    out.push_back({g, weights[g], r.size(),
-                   reached == 0 ? 0.0 : std::sqrt(squares / double(reached)), unreached});
-  }
+  for (const auto g : kObjectiveGroups)
+    if (!residuals[std::size_t(g)].empty())  // else no test of this group
+      out.push_back(group_fit(g, residuals[std::size_t(g)], weights[g]));
   return out;
 }
 

@@ -132,6 +132,16 @@ struct CalibrationResult {
 CalibrationResult calibrate(const std::vector<SoilTest>& tests,
                             const CalibrationOptions& options = {});
 
+// Each objective group's residuals over `tests` run with `inputs`, unweighted, in scatter units
+// (kUnreachedResidual for a row the model did not reach), indexed by ObjectiveGroup; a group no
+// test gives a residual to is empty. The tests run in parallel: each is its own simulation.
+std::array<std::vector<double>, kObjectiveGroups.size()> group_residuals(
+    const std::vector<SoilTest>& tests, const std::string& model,
+    const models::ModelInputs& inputs);
+
+// The RMS of a group's residuals over the rows the model reached, and how many it did not reach.
+GroupFit group_fit(ObjectiveGroup group, const std::vector<double>& residuals, double weight = 1.0);
+
 // Each objective group's RMS (unweighted, scatter units) over `tests` run with `inputs`; groups
 // no test gives a residual to are left out.
 std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::string& model,

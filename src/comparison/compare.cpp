@@ -205,7 +205,7 @@ namespace {
 // Each "breaks" of every variant labelled with its cause from the form-limit record (issue 38).
 void label_causes(json& variants, const json& record, const fs::path& dem_dir, const DemRun& dem) {
   const auto limit =
-      form_limit_verdicts(record, dem_dir, dem.R_n, dem.d50_mm, driver::to_string(dem.boundary));
+      form_limit_causes(record, dem_dir, dem.R_n, dem.d50_mm, driver::to_string(dem.boundary));
   for (auto& v : variants)
     for (auto& verdict : v["verdicts"]) {
       const auto it = limit.find(verdict["quantity"].get<std::string>());

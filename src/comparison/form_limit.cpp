@@ -1,15 +1,18 @@
 #include "comparison/form_limit.hpp"
 
 #include <fmt/core.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
 #include "comparison/fit.hpp"
 #include "comparison/verdicts.hpp"
+#include "fitting/constrained.hpp"
 #include "fitting/least_squares.hpp"
 #include "io/json_file.hpp"
 #include "io/run_directory.hpp"
@@ -123,6 +126,42 @@ void check_inputs(const FormLimitOptions& o) {
       "form-limit", {{o.fit_runs, "fit", "--runs"}, {o.held_out, "hold out", "--held-out"}});
 }
 
+// The fit runs' residuals at x, each run replayed on its own core (a replay is independent of
+// every other; they are joined in run order, so the result does not depend on the schedule).
+Eigen::VectorXd interface_residuals(const Problem& p, const Eigen::VectorXd& x) {
+  std::vector<Eigen::VectorXd> per_run(p.fitted);
+  tbb::parallel_for(std::size_t(0), p.fitted, [&](std::size_t i) {
+    per_run[i] = fit_residuals(p.runs[i], replay(p.runs[i], p.variant_at(i, x)), p.targets[i]);
+  });
+  Eigen::Index n = 0;
+  for (const auto& r : per_run) n += r.size();
+  Eigen::VectorXd out(n);
+  n = 0;
+  for (const auto& r : per_run) out.segment(n, r.size()) = r, n += r.size();
+  return out;
+}
+
+// The box of each unknown in the fit's coordinates, and the start: the soil-test set, and each
+// wall's predicted kappa_r and d_s (its first run's).
+struct Box {
+  Eigen::VectorXd start, lower, upper;
+};
+
+Box box_of(const Problem& p) {
+  const auto n = Eigen::Index(p.unknowns.size());
+  Box b{Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n)};
+  for (std::size_t k = 0; k < p.unknowns.size(); ++k) {
+    const auto& u = p.unknowns[k];
+    const auto i = Eigen::Index(k);
+    b.lower(i) = p.to_x(k, u.lower), b.upper(i) = p.to_x(k, u.upper);
+    std::size_t run = 0;
+    if (k >= p.materials)
+      while (p.wall_of[run] != (k - p.materials) / p.per_wall) ++run;
+    b.start(i) = std::clamp(p.to_x(k, value_of(p.starts[run], u.what)), b.lower(i), b.upper(i));
+  }
+  return b;
+}
+
 struct Fitted {
   Eigen::VectorXd x;
   fitting::LeastSquaresResult result;
@@ -131,20 +170,10 @@ struct Fitted {
 
 Fitted fit(const Problem& p, const FormLimitOptions& o) {
   const auto n = Eigen::Index(p.unknowns.size());
+  const Box b = box_of(p);
   fitting::LeastSquaresProblem lsq;
-  lsq.start.resize(n), lsq.lower.resize(n), lsq.upper.resize(n), lsq.difference_step.resize(n);
-  for (std::size_t k = 0; k < p.unknowns.size(); ++k) {
-    const auto& u = p.unknowns[k];
-    const auto i = Eigen::Index(k);
-    lsq.lower(i) = p.to_x(k, u.lower), lsq.upper(i) = p.to_x(k, u.upper);
-    // the start: the soil-test set, and each wall's predicted kappa_r and d_s (its first run's)
-    std::size_t run = 0;
-    if (k >= p.materials)
-      while (p.wall_of[run] != (k - p.materials) / p.per_wall) ++run;
-    lsq.start(i) =
-        std::clamp(p.to_x(k, value_of(p.starts[run], u.what)), lsq.lower(i), lsq.upper(i));
-    lsq.difference_step(i) = 1e-4 * (lsq.upper(i) - lsq.lower(i));
-  }
+  lsq.start = b.start, lsq.lower = b.lower, lsq.upper = b.upper;
+  lsq.difference_step = 1e-4 * (b.upper - b.lower);
   fitting::LeastSquaresSettings s;
   s.max_evaluations = o.max_evaluations;
   s.polish_iterations = o.polish_iterations;
@@ -152,13 +181,7 @@ Fitted fit(const Problem& p, const FormLimitOptions& o) {
   int evaluations = 0;
   const int budget = fitting::most_evaluations(s, int(n));
   lsq.residuals = [&](const Eigen::VectorXd& x) {
-    std::vector<double> r;
-    for (std::size_t i = 0; i < p.fitted; ++i) {
-      const auto one =
-          fit_residuals(p.runs[i], replay(p.runs[i], p.variant_at(i, x)), p.targets[i]);
-      r.insert(r.end(), one.data(), one.data() + one.size());
-    }
-    const Eigen::VectorXd out = Eigen::Map<Eigen::VectorXd>(r.data(), Eigen::Index(r.size()));
+    const Eigen::VectorXd out = interface_residuals(p, x);
     if (++evaluations % 100 == 0 && o.progress) {
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -174,6 +197,86 @@ Fitted fit(const Problem& p, const FormLimitOptions& o) {
   f.x = f.result.x;
   f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return f;
+}
+
+// The soil tests' verdict on a set: each group's RMS against kSoilAcceptance times the soil-test
+// set's, and the groups that refuse it.
+struct SoilJudgement {
+  std::vector<FormLimitOptions::SoilGroup> groups;
+  bool accepted = true;
+  std::vector<std::string> refusing;
+};
+
+using Groups = std::vector<FormLimitOptions::SoilGroup>;
+
+// c_g = RMS_g / (factor RMS_g at the soil-test set) - 1 per group, each unreached row adding 1:
+// the set is accepted where every c_g <= 0.
+Eigen::VectorXd soil_constraints(const Groups& at, const Groups& soil_set, double factor) {
+  Eigen::VectorXd c(Eigen::Index(at.size()));
+  for (std::size_t g = 0; g < at.size(); ++g)
+    c(Eigen::Index(g)) =
+        at[g].rms / (factor * std::max(soil_set[g].rms, 1e-12)) - 1.0 + double(at[g].unreached);
+  return c;
+}
+
+SoilJudgement judge_soil(const Groups& at, const Groups& soil_set, double factor) {
+  SoilJudgement j{at, true, {}};
+  const auto c = soil_constraints(at, soil_set, factor);
+  for (std::size_t g = 0; g < at.size(); ++g)
+    if (c(Eigen::Index(g)) > 0.0)
+      j.accepted = false,
+      j.refusing.push_back(fmt::format(
+          "{} RMS {:.3g} against {:.3g} ({:.3g} x {:.3g}){}", at[g].group, at[g].rms,
+          factor * soil_set[g].rms, factor, soil_set[g].rms,
+          at[g].unreached ? fmt::format(", {} rows not reached", at[g].unreached) : std::string()));
+  return j;
+}
+
+FormLimitOptions::Tables tables_at(const Problem& p, const Eigen::VectorXd& x) {
+  return p.variant_at(0, x).inputs.tables;
+}
+
+struct JointFit {
+  Eigen::VectorXd x;
+  fitting::ConstrainedResult result;
+  SoilJudgement soil;
+  double seconds = 0.0;
+};
+
+// The fit runs' residuals as in the free fit, over the sets the soil tests accept: COBYLA from
+// the soil-test set (accepted by construction), each point's runs and soil tests in parallel.
+JointFit fit_joint(const Problem& p, const FormLimitOptions& o, const Groups& soil_set) {
+  const Box b = box_of(p);
+  fitting::ConstrainedProblem c;
+  c.start = b.start, c.lower = b.lower, c.upper = b.upper;
+  c.constraints = Eigen::Index(soil_set.size());
+  const auto t0 = std::chrono::steady_clock::now();
+  int evaluations = 0;
+  c.evaluate = [&](const Eigen::VectorXd& x) {
+    fitting::ConstrainedEvaluation e{
+        interface_residuals(p, x),
+        soil_constraints(o.soil_tests(tables_at(p, x)), soil_set, o.soil_acceptance)};
+    if (++evaluations % 50 == 0 && o.progress) {
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      o.progress(fmt::format(
+          "form limit with the soil tests: {} of at most {} evaluations, RMS {:.4g} scatter "
+          "units{}, {:.0f} s, ETA at most ~{:.0f} s",
+          evaluations, o.joint_evaluations,
+          std::sqrt(e.residuals.squaredNorm() / double(e.residuals.size())),
+          (e.constraints.array() <= 0.0).all() ? "" : " (soil tests refuse this set)", seconds,
+          seconds / evaluations * std::max(0, o.joint_evaluations - evaluations)));
+    }
+    return e;
+  };
+  fitting::ConstrainedSettings s;
+  s.max_evaluations = o.joint_evaluations;
+  JointFit j;
+  j.result = fitting::fit_constrained(c, s);
+  j.x = j.result.x;
+  j.soil = judge_soil(o.soil_tests(tables_at(p, j.x)), soil_set, o.soil_acceptance);
+  j.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return j;
 }
 
 // The soil-test set's sigma per key, from its calibration.json (parameters[].sigma: a number, or
@@ -199,21 +302,26 @@ std::map<std::string, double> soil_sigmas(const FormLimitOptions& o) {
   return out;
 }
 
-json parameters_json(const Problem& p, const Fitted& f, const models::ModelInputs& soil_set,
+// Each unknown's value at x, with its sigma where the fit gives one (the free fit's Gauss-Newton
+// sigma; the constrained fit has none), its box and its move from the soil-test set.
+json parameters_json(const Problem& p, const Eigen::VectorXd& x, const Eigen::VectorXd* sigma_x,
+                     const models::ModelInputs& soil_set,
                      const std::map<std::string, double>& sigmas) {
   json out = json::array();
   for (std::size_t k = 0; k < p.unknowns.size(); ++k) {
     const auto& u = p.unknowns[k];
-    const double v = p.at(k, f.x);
-    const double sigma =
-        u.what.logarithmic ? v * f.result.sigma(Eigen::Index(k)) : f.result.sigma(Eigen::Index(k));
-    const double width = p.to_x(k, u.upper) - p.to_x(k, u.lower), x = f.x(Eigen::Index(k));
+    const auto i = Eigen::Index(k);
+    const double v = p.at(k, x);
+    const double width = p.to_x(k, u.upper) - p.to_x(k, u.lower);
     json e = {{"name", u.what.name},
               {"value", v},
-              {"sigma", std::isfinite(sigma) ? json(sigma) : json()},
               {"box", {u.lower, u.upper}},
-              {"at_bound", std::abs(x - p.to_x(k, u.lower)) < 1e-3 * width ||
-                               std::abs(x - p.to_x(k, u.upper)) < 1e-3 * width}};
+              {"at_bound", std::abs(x(i) - p.to_x(k, u.lower)) < 1e-3 * width ||
+                               std::abs(x(i) - p.to_x(k, u.upper)) < 1e-3 * width}};
+    if (sigma_x) {
+      const double s = u.what.logarithmic ? v * (*sigma_x)(i) : (*sigma_x)(i);
+      e["sigma"] = std::isfinite(s) ? json(s) : json();
+    }
     if (k < p.materials) {
       const double soil = soil_set.tables.at(u.what.table).at(u.what.key);
       e["soil_test_value"] = soil;
@@ -228,11 +336,30 @@ json parameters_json(const Problem& p, const Fitted& f, const models::ModelInput
   return out;
 }
 
+// The cause of a "breaks" of the prediction (form_limit.hpp): the joint set holds it, or not.
+std::pair<std::string, std::string> cause_and_note(const Verdict& free, const Verdict* joint,
+                                                   const SoilJudgement* soil) {
+  const bool free_breaks = free.verdict == "breaks";
+  if (!joint)
+    return {free_breaks ? "form" : "calibration (unchecked)",
+            free_breaks ? "" : "no soil tests judged the set that holds it"};
+  if (soil->accepted && joint->verdict != "breaks") return {"calibration", ""};
+  if (free_breaks) return {"form", "no set inside the boxes holds it"};
+  std::string refusing;
+  for (const auto& r : soil->refusing) refusing += (refusing.empty() ? "" : "; ") + r;
+  return {"form", soil->accepted ? "only sets the soil tests refuse hold it"
+                                 : "the soil tests refuse the joint set: " + refusing};
+}
+
+json variant_json(const Verdict& v) {
+  return {{"error", v.error ? json(*v.error) : json()}, {"verdict", v.verdict}};
+}
+
 // A quantity's verdicts for one run: the soil-test set predicted (kappa_r from the wall, d_s 5
-// d50), fitted (kappa_r and d_s to this run), and the form limit; the cause where the prediction
-// breaks.
-json run_verdicts(const Problem& p, std::size_t i, const Variant& form_limit,
-                  const FormLimitOptions& o) {
+// d50), fitted (kappa_r and d_s to this run), the free form limit and, with soil tests, the joint
+// set; the cause a break of the prediction has.
+json run_verdicts(const Problem& p, std::size_t i, const Eigen::VectorXd& free_x,
+                  const JointFit* joint, const FormLimitOptions& o) {
   const auto& dem = p.runs[i];
   const auto tolerances = tolerances_for(dem);
   const auto own = fit_kappa_and_ds(dem, p.starts[i], p.targets[i], fit_bounds(o.model));
@@ -241,23 +368,22 @@ json run_verdicts(const Problem& p, std::size_t i, const Variant& form_limit,
   const auto judged = [&](const Variant& v) {
     return judge(dem, p.scatters[i], replay(dem, v), tolerances);
   };
-  const auto predicted = judged(p.starts[i]), fit_ds = judged(fitted), limit = judged(form_limit);
+  const auto predicted = judged(p.starts[i]), fit_ds = judged(fitted);
+  const auto limit = judged(p.variant_at(i, free_x));
+  const auto with_soil = joint ? judged(p.variant_at(i, joint->x)) : std::vector<Verdict>{};
   json q = json::object();
   for (std::size_t k = 0; k < limit.size(); ++k) {
-    const auto word = [](const Verdict& v) { return v.verdict; };
+    const auto [cause, note] =
+        cause_and_note(limit[k], joint ? &with_soil[k] : nullptr, joint ? &joint->soil : nullptr);
     json e = {{"dem", limit[k].dem ? json(*limit[k].dem) : json()},
               {"tolerance", limit[k].tolerance},
-              {"soil_test_predicted",
-               {{"error", predicted[k].error ? json(*predicted[k].error) : json()},
-                {"verdict", word(predicted[k])}}},
-              {"soil_test_fitted_kappa_ds",
-               {{"error", fit_ds[k].error ? json(*fit_ds[k].error) : json()},
-                {"verdict", word(fit_ds[k])}}},
-              {"form_limit",
-               {{"error", limit[k].error ? json(*limit[k].error) : json()},
-                {"verdict", word(limit[k])}}}};
-    if (const auto cause = cause_of(predicted[k].verdict, limit[k].verdict); !cause.empty())
-      e["cause"] = cause;
+              {"soil_test_predicted", variant_json(predicted[k])},
+              {"soil_test_fitted_kappa_ds", variant_json(fit_ds[k])},
+              {"form_limit", variant_json(limit[k])},
+              {"cause_if_breaks", cause}};
+    if (joint) e["joint"] = variant_json(with_soil[k]);
+    if (!note.empty()) e["cause_note"] = note;
+    if (const auto c = cause_of(predicted[k].verdict, cause); !c.empty()) e["cause"] = c;
     q[limit[k].key] = e;
   }
   return {{"dir", dem.dir.string()},
@@ -268,68 +394,136 @@ json run_verdicts(const Problem& p, std::size_t i, const Variant& form_limit,
           {"quantities", q}};
 }
 
-std::string markdown(const json& j) {
+std::string num(const json& v, const char* f) {
+  return v.is_number() ? fmt::format(fmt::runtime(f), v.get<double>()) : std::string("-");
+}
+
+std::string percent(const json& v) {
+  return v.is_number() ? fmt::format("{:+.0f} %", 100.0 * v.get<double>()) : std::string("-");
+}
+
+std::string parameters_markdown(const json& j) {
+  const bool joint = j.contains("joint");
   std::string md = fmt::format(
-      "# Form limit of {} ({} fitted runs, {} held out)\n\nFitted: every material parameter with "
-      "a calibration box and each wall's fit parameters, jointly (src: comparison/form_limit.hpp); "
-      "RMS {:.3g} scatter units, {} evaluations, {:.0f} s, {}.\n\n| parameter | form limit | "
-      "soil-test "
-      "set | moved (soil-test sigmas) | on a bound |\n|---|---|---|---|---|\n",
-      j["model"].get<std::string>(), j["fit_runs"].size(), j["held_out"].size(),
-      j["rms_scaled"].get<double>(), j["evaluations"].get<int>(), j["seconds"].get<double>(),
-      j["stop"].get<std::string>());
-  const auto num = [](const json& v, const char* f) {
-    return v.is_number() ? fmt::format(fmt::runtime(f), v.get<double>()) : std::string("-");
-  };
-  const auto percent = [](const json& v) {
-    return v.is_number() ? fmt::format("{:+.0f} %", 100.0 * v.get<double>()) : std::string("-");
-  };
-  for (const auto& e : j["parameters"])
-    md += fmt::format("| {} | {} | {} | {} | {} |\n", e["name"].get<std::string>(),
-                      num(e["value"], "{:.5g}"), num(e.value("soil_test_value", json()), "{:.5g}"),
-                      num(e.value("moved_in_soil_test_sigmas", json()), "{:+.1f}"),
-                      e["at_bound"].get<bool>() ? "yes" : "");
-  if (j.contains("elsewhere")) {
-    md +=
-        "\nWhat the form limit costs elsewhere:\n\n| what | soil-test set | form limit "
-        "|\n|---|---|---|\n";
-    for (const auto& e : j["elsewhere"])
-      md += fmt::format("| {} | {}{} | {}{} |\n", e["what"].get<std::string>(),
-                        num(e["soil_test"], "{:.4g}"), e.value("soil_test_note", ""),
-                        num(e["form_limit"], "{:.4g}"), e.value("form_limit_note", ""));
+      "| parameter | form limit |{} soil-test set | moved (soil-test sigmas) |{} on a bound "
+      "|\n|---|---|{}---|---|{}---|\n",
+      joint ? " with the soil tests |" : "", joint ? " moved with the soil tests |" : "",
+      joint ? "---|" : "", joint ? "---|" : "");
+  for (std::size_t k = 0; k < j["parameters"].size(); ++k) {
+    const auto& e = j["parameters"][k];
+    const json* s = joint ? &j["joint"]["parameters"][k] : nullptr;
+    md += fmt::format(
+        "| {} | {} |{} {} | {} |{} {} |\n", e["name"].get<std::string>(), num(e["value"], "{:.5g}"),
+        s ? " " + num((*s)["value"], "{:.5g}") + " |" : "",
+        num(e.value("soil_test_value", json()), "{:.5g}"),
+        num(e.value("moved_in_soil_test_sigmas", json()), "{:+.1f}"),
+        s ? " " + num(s->value("moved_in_soil_test_sigmas", json()), "{:+.1f}") + " |" : "",
+        e["at_bound"].get<bool>() ? "yes" : "");
   }
-  md +=
+  return md;
+}
+
+std::string soil_markdown(const json& j) {
+  if (!j.contains("soil_tests")) return "";
+  std::string md = fmt::format(
+      "\nThe soil tests ({}) on each set, RMS in scatter units per objective group; a set is "
+      "accepted when every group is at most {:g} x the soil-test set's:\n\n| group | soil-test "
+      "set | form limit | with the soil tests | accepted up to |\n|---|---|---|---|---|\n",
+      j.value("soil_tests_about", std::string("soil tests")), j["soil_acceptance"].get<double>());
+  const auto cell = [&](const json& g, const char* set) {
+    const auto& s = g[set];
+    return num(s["rms"], "{:.4g}") +
+           (s["unreached"].get<int>() > 0
+                ? fmt::format(" ({} rows not reached)", s["unreached"].get<int>())
+                : std::string());
+  };
+  for (const auto& g : j["soil_tests"])
+    md += fmt::format("| {} | {} | {} | {} | {} |\n", g["group"].get<std::string>(),
+                      cell(g, "soil_test"), cell(g, "form_limit"), cell(g, "joint"),
+                      num(g["accepted_up_to"], "{:.4g}"));
+  return md;
+}
+
+std::string runs_markdown(const json& j) {
+  const bool joint = j.contains("joint");
+  std::string md = fmt::format(
       "\n| run | role | quantity | DEM | tolerance | predicted error | fitted kappa_r, d_s | form "
-      "limit | cause |\n|---|---|---|---|---|---|---|---|---|\n";
+      "limit |{} cause of a break |\n|---|---|---|---|---|---|---|---|{}---|\n",
+      joint ? " with the soil tests |" : "", joint ? "---|" : "");
   for (const auto& r : j["runs"])
     for (const auto& [key, q] : r["quantities"].items()) {
       const auto cell = [&](const char* variant) {
         return fmt::format("{} ({})", percent(q[variant]["error"]),
                            q[variant]["verdict"].get<std::string>());
       };
-      md +=
-          fmt::format("| {} | {} | {} | {} | {:.0f} % | {} | {} | {} | {} |\n",
-                      fs::path(r["dir"].get<std::string>()).filename().string(),
-                      r["role"].get<std::string>(), key, num(q["dem"], "{:.4g}"),
-                      100.0 * q["tolerance"].get<double>(), cell("soil_test_predicted"),
-                      cell("soil_test_fitted_kappa_ds"), cell("form_limit"), q.value("cause", ""));
+      const std::string cause =
+          q.contains("cause")
+              ? q["cause"].get<std::string>() + (q.contains("cause_note")
+                                                     ? ": " + q["cause_note"].get<std::string>()
+                                                     : std::string())
+              : std::string();
+      md += fmt::format("| {} | {} | {} | {} | {:.0f} % | {} | {} | {} |{} {} |\n",
+                        fs::path(r["dir"].get<std::string>()).filename().string(),
+                        r["role"].get<std::string>(), key, num(q["dem"], "{:.4g}"),
+                        100.0 * q["tolerance"].get<double>(), cell("soil_test_predicted"),
+                        cell("soil_test_fitted_kappa_ds"), cell("form_limit"),
+                        joint ? " " + cell("joint") + " |" : "", cause);
     }
   return md;
 }
 
-// The fitted material set as a parameter file, usable with `iwb compare --params`.
-std::string parameter_file(const Problem& p, const Fitted& f, const FormLimitOptions& o) {
+std::string markdown(const json& j) {
+  std::string md = fmt::format(
+      "# Form limit of {} ({} fitted runs, {} held out)\n\nFitted: every material parameter with "
+      "a calibration box and each wall's fit parameters, jointly (src: comparison/form_limit.hpp); "
+      "RMS {:.3g} scatter units, {} evaluations, {:.0f} s, {}.\n",
+      j["model"].get<std::string>(), j["fit_runs"].size(), j["held_out"].size(),
+      j["rms_scaled"].get<double>(), j["evaluations"].get<int>(), j["seconds"].get<double>(),
+      j["stop"].get<std::string>());
+  if (j.contains("joint")) {
+    const auto& s = j["joint"];
+    md += fmt::format(
+        "\nWith the soil tests: the same unknowns over the sets the soil tests accept (COBYLA from "
+        "the soil-test set): RMS {:.3g} scatter units, {} evaluations, {:.0f} s, {}; the soil "
+        "tests {} the set.\n",
+        s["rms_scaled"].get<double>(), s["evaluations"].get<int>(), s["seconds"].get<double>(),
+        s["stop"].get<std::string>(), s["accepted"].get<bool>() ? "accept" : "REFUSE");
+  } else {
+    md +=
+        "\nNo soil tests judged the sets: a break the form limit holds is \"calibration "
+        "(unchecked)\".\n";
+  }
+  return md + "\n" + parameters_markdown(j) + soil_markdown(j) + runs_markdown(j);
+}
+
+// A fitted material set as a parameter file, usable with `iwb compare --params`.
+std::string parameter_file(const Problem& p, const Eigen::VectorXd& x, const std::string& what,
+                           const FormLimitOptions& o) {
   std::map<std::string, std::string> tables;
   for (std::size_t k = 0; k < p.materials; ++k)
     tables[p.unknowns[k].what.table] +=
-        fmt::format("{} = {:.9g}\n", p.unknowns[k].what.key, p.at(k, f.x));
+        fmt::format("{} = {:.9g}\n", p.unknowns[k].what.key, p.at(k, x));
   std::string s = fmt::format(
-      "# The form limit of {} (`iwb form-limit`, {}): the material set fitted jointly with kappa_r "
-      "and d_s to DEM runs, not a soil calibration. form_limit.json says on which runs.\n# "
-      "Command: {}\n",
-      o.model, io::utc_timestamp(), o.command_line);
+      "# {} of {} (`iwb form-limit`, {}): the material set fitted jointly with kappa_r and d_s to "
+      "DEM runs, not a soil calibration. form_limit.json says on which runs.\n# Command: {}\n",
+      what, o.model, io::utc_timestamp(), o.command_line);
   for (const auto& [name, body] : tables) s += fmt::format("[{}]\n{}", name, body);
   return s;
+}
+
+// Per group, its RMS at the soil-test set, the free form limit and the joint set.
+json soil_json(const Groups& soil, const Groups& free, const Groups& joint, double factor) {
+  json out = json::array();
+  const auto at = [](const FormLimitOptions::SoilGroup& g) {
+    return json{{"rms", g.rms}, {"unreached", g.unreached}};
+  };
+  for (std::size_t g = 0; g < soil.size(); ++g)
+    out.push_back({{"group", soil[g].group},
+                   {"soil_test", at(soil[g])},
+                   {"form_limit", at(free[g])},
+                   {"joint", at(joint[g])},
+                   {"accepted_up_to", factor * soil[g].rms}});
+  return out;
 }
 
 }  // namespace
@@ -338,9 +532,13 @@ std::string wall_name(double R_n, double d50_mm) {
   return fmt::format("R_n {:g}, d50 {:g} mm", R_n, d50_mm);
 }
 
-std::string cause_of(const std::string& verdict, const std::string& form_limit_verdict) {
-  if (verdict != "breaks" || form_limit_verdict.empty()) return "";
-  return form_limit_verdict == "breaks" ? "form" : "calibration";
+std::string cause_of(const std::string& verdict, const std::string& cause_if_breaks) {
+  return verdict == "breaks" ? cause_if_breaks : "";
+}
+
+std::string cause_if_breaks(const json& q) {
+  if (q.contains("cause_if_breaks")) return q["cause_if_breaks"].get<std::string>();
+  return q["form_limit"]["verdict"] == "breaks" ? "form" : "calibration (unchecked)";
 }
 
 void check_form_limit_record(const json& record, const fs::path& file) {
@@ -351,10 +549,12 @@ void check_form_limit_record(const json& record, const fs::path& file) {
       io::json_field<std::string>(record, run + "/dir", file);
     io::json_field<std::string>(record, run + "/wall", file);
     io::json_field<std::string>(record, run + "/boundary", file);
-    for (const auto& q : io::json_object(record, run + "/quantities", file).items())
+    for (const auto& q : io::json_object(record, run + "/quantities", file).items()) {
+      const auto at = fmt::format("{}/quantities/{}", run, q.key());
       for (const char* variant : {"soil_test_predicted", "form_limit"})
-        io::json_field<std::string>(
-            record, fmt::format("{}/quantities/{}/{}/verdict", run, q.key(), variant), file);
+        io::json_field<std::string>(record, fmt::format("{}/{}/verdict", at, variant), file);
+      io::json_optional<std::string>(record, at + "/cause_if_breaks", file);
+    }
   }
 }
 
@@ -374,9 +574,9 @@ json read_form_limit(const fs::path& file, const std::string& model) {
   return j;
 }
 
-std::map<std::string, std::string> form_limit_verdicts(const json& record, const fs::path& dem_dir,
-                                                       double R_n, double d50_mm,
-                                                       const std::string& boundary) {
+std::map<std::string, std::string> form_limit_causes(const json& record, const fs::path& dem_dir,
+                                                     double R_n, double d50_mm,
+                                                     const std::string& boundary) {
   const json* match = nullptr;
   for (const auto& r : record["runs"]) {
     const fs::path d = r.value("dir", "");
@@ -390,8 +590,7 @@ std::map<std::string, std::string> form_limit_verdicts(const json& record, const
   }
   std::map<std::string, std::string> out;
   if (match)
-    for (const auto& [key, q] : (*match)["quantities"].items())
-      out[key] = q["form_limit"]["verdict"].get<std::string>();
+    for (const auto& [key, q] : (*match)["quantities"].items()) out[key] = cause_if_breaks(q);
   return out;
 }
 
@@ -407,6 +606,12 @@ json run_form_limit(const FormLimitOptions& o) {
                    {"status", "running"}};
   io::write_manifest(o.out, manifest);
   const Fitted f = fit(p, o);
+  std::optional<JointFit> joint;
+  Groups at_soil;
+  if (o.soil_tests) {
+    at_soil = o.soil_tests(soil_set.tables);
+    joint = fit_joint(p, o, at_soil);
+  }
   json j = {
       {"kind", "form_limit"},
       {"model", o.model},
@@ -419,25 +624,39 @@ json run_form_limit(const FormLimitOptions& o) {
       {"seconds", f.seconds},
       {"converged", f.result.converged},
       {"stop", f.result.stop_reason},
-      {"parameters", parameters_json(p, f, soil_set, sigmas)},
+      {"parameters", parameters_json(p, f.x, &f.result.sigma, soil_set, sigmas)},
       {"soil_test_calibration", o.calibration.empty() ? json() : json(o.calibration.string())},
       {"runs", json::array()}};
+  if (joint) {
+    j["soil_tests_about"] = o.soil_tests_about;
+    j["soil_acceptance"] = o.soil_acceptance;
+    j["soil_tests"] =
+        soil_json(at_soil, o.soil_tests(tables_at(p, f.x)), joint->soil.groups, o.soil_acceptance);
+    j["joint"] = {{"rms_scaled", joint->result.rmse},
+                  {"evaluations", joint->result.evaluations},
+                  {"seconds", joint->seconds},
+                  {"stop", joint->result.stop_reason},
+                  {"accepted", joint->soil.accepted},
+                  {"refusing", joint->soil.refusing},
+                  {"parameters", parameters_json(p, joint->x, nullptr, soil_set, sigmas)}};
+  }
   for (const auto& d : o.fit_runs) j["fit_runs"].push_back(d.string());
   for (const auto& d : o.held_out) j["held_out"].push_back(d.string());
   for (const auto& w : p.walls) j["walls"].push_back(w.name());
-  for (std::size_t i = 0; i < p.runs.size(); ++i) {
-    Variant v = p.variant_at(i, f.x);
-    v.label = "form limit";
-    j["runs"].push_back(run_verdicts(p, i, v, o));
-  }
-  if (o.elsewhere)
-    j["elsewhere"] = o.elsewhere(p.variant_at(0, f.x).inputs.tables, soil_set.tables);
+  for (std::size_t i = 0; i < p.runs.size(); ++i)
+    j["runs"].push_back(run_verdicts(p, i, f.x, joint ? &*joint : nullptr, o));
+  std::vector<std::string> files = {"form_limit.json", "form_limit.md", "form_limit.toml"};
   io::write_atomically(o.out / "form_limit.json", j.dump(2) + "\n");
   io::write_atomically(o.out / "form_limit.md", markdown(j));
-  io::write_atomically(o.out / "form_limit.toml", parameter_file(p, f, o));
+  io::write_atomically(o.out / "form_limit.toml", parameter_file(p, f.x, "The form limit", o));
+  if (joint) {
+    io::write_atomically(o.out / "form_limit_joint.toml",
+                         parameter_file(p, joint->x, "The form limit with the soil tests", o));
+    files.push_back("form_limit_joint.toml");
+  }
   manifest["finished"] = io::utc_timestamp();
   manifest["status"] = "complete";
-  manifest["files"] = {"form_limit.json", "form_limit.md", "form_limit.toml"};
+  manifest["files"] = files;
   io::write_manifest(o.out, manifest);
   return j;
 }

@@ -23,7 +23,7 @@ std::map<std::string, QuantityCauses> causes_on(const json& record, const std::s
       ++c.runs;
       if (q["soil_test_predicted"]["verdict"] != "breaks") continue;
       ++c.predicted_breaks;
-      if (q["form_limit"]["verdict"] == "breaks") ++c.form;
+      ++c.by_cause[cause_if_breaks(q)];
     }
   }
   return out;
@@ -34,13 +34,13 @@ std::string causes_line(const std::map<std::string, QuantityCauses>& causes) {
   std::vector<std::string> parts;
   for (const auto& [quantity, c] : causes) {
     if (c.predicted_breaks == 0) continue;
-    const int calibration = c.predicted_breaks - c.form;
-    if (c.form > 0 && calibration > 0)
-      parts.push_back(
-          fmt::format("{}: form {}, calibration {} of {}", quantity, c.form, calibration, c.runs));
-    else
-      parts.push_back(fmt::format("{}: {} {} of {}", quantity, c.form > 0 ? "form" : "calibration",
-                                  c.predicted_breaks, c.runs));
+    std::vector<std::pair<std::string, int>> order(c.by_cause.begin(), c.by_cause.end());
+    std::stable_sort(order.begin(), order.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+    std::string line;
+    for (const auto& [cause, n] : order)
+      line += fmt::format("{}{} {}", line.empty() ? "" : ", ", cause, n);
+    parts.push_back(fmt::format("{}: {} of {}", quantity, line, c.runs));
   }
   if (parts.empty()) return "nothing breaks";
   std::string line;

@@ -10,17 +10,18 @@
 namespace iwb::comparison {
 
 // Over a record's runs of one wall and boundary, per quantity: the runs, those the soil-test set's
-// prediction breaks, and of these the ones the form limit breaks too (the form's; the others are
-// the calibration's).
+// prediction breaks, and these counted by cause (form, calibration, calibration (unchecked):
+// comparison/form_limit.hpp).
 struct QuantityCauses {
-  int runs = 0, predicted_breaks = 0, form = 0;
+  int runs = 0, predicted_breaks = 0;
+  std::map<std::string, int> by_cause;
 };
 std::map<std::string, QuantityCauses> causes_on(const nlohmann::json& record,
                                                 const std::string& wall,
                                                 const std::string& boundary);
 
-// "residual_friction: form 3 of 3; total_dilation: calibration 3 of 3": each quantity the
-// prediction breaks, with the cause of most of its breaks (both counted where they split);
+// "residual_friction: form 3 of 3; total_dilation: form 2, calibration 1 of 3": each quantity the
+// prediction breaks, with its breaks counted by cause, the most frequent first;
 // "nothing breaks" when the prediction breaks none; empty for no runs.
 std::string causes_line(const std::map<std::string, QuantityCauses>& causes);
 

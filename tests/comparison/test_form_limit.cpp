@@ -1,13 +1,24 @@
 // The form limit (issue 38 item 4) on "DEM" runs that hvwe itself wrote (Table 5.1): a
-// miscalibrated soil set's breaks are the calibration's, since a set inside the declared boxes
-// (Table 5.1's own) reproduces the runs; on runs whose tau is three times the model's, no set
-// inside the boxes reaches the peak, and the break is the form's.
+// miscalibrated soil set's breaks could be the calibration's, since a set inside the declared
+// boxes (Table 5.1's own) reproduces the runs; on runs whose tau is three times the model's, no
+// set inside the boxes reaches the peak, and the break is the form's. Whether it is the
+// calibration's is for the soil tests to say (issue 59). They are stood in for by what they
+// measure: every material parameter, each to 2 % (a residual (value - measured) / (0.02
+// measured) per parameter, and a misfit of one scatter unit no set removes, the form's own miss
+// on soil tests); the form limit knows soil tests only through the residuals it is given.
+//   - soil tests that measured Table 5.1 (the runs' own set) accept the set that mends the
+//     miscalibrated peak: the break is the calibration's;
+//   - on runs 1.25 times stronger than Table 5.1, soil tests that measured Table 5.1 refuse every
+//     set that could reach them (kappa_r <= 1 only lowers the friction), while without them a
+//     larger phi_c does: the break is the form's, with the soil tests.
 #include <fmt/core.h>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 
 #include "common/errors.hpp"
+#include "comparison/compare.hpp"
 #include "comparison/form_limit.hpp"
 #include "io/run_directory.hpp"
 #include "support/synthetic_dem.hpp"
@@ -63,11 +74,64 @@ TEST_CASE("a form limit on runs the model wrote holds everywhere and blames the 
       INFO(r["dir"] << " " << key << ": " << q.dump());
       CHECK(q["form_limit"]["verdict"] != "breaks");
     }
-  // phi_c 33 against 28 degrees: the predicted peak misses by ~20 % and breaks, for calibration
-  for (const auto& c : causes(j, "peak_friction")) CHECK(c == "calibration");
+  // phi_c 33 against 28 degrees: the predicted peak misses by ~20 % and breaks; a set mends it,
+  // but no soil test judged that set
+  for (const auto& c : causes(j, "peak_friction")) CHECK(c == "calibration (unchecked)");
+  CHECK_FALSE(j.contains("joint"));
   CHECK(fs::exists(fs::path(j["fit_runs"][0].get<std::string>())));
   for (const char* f : {"form_limit.json", "form_limit.md", "form_limit.toml", "manifest.json"})
     CHECK(fs::exists(form_limit_of("form_limit_own", 1.0).out / f));
+}
+
+namespace {
+const fs::path kTable51 = "data/params/table_5_1_evaluation.toml";  // tests run from the root
+
+// Soil tests that measured Table 5.1's every parameter to 2 %, with a unit misfit beside.
+comparison::FormLimitOptions::SoilTests soil_tests_measuring_table_5_1() {
+  const std::map<std::string, double> measured = {
+      {"phi_c_deg", 28.0}, {"hs_kPa", 2e6}, {"n", 0.29},     {"ed0", 0.61},
+      {"ec0", 0.96},       {"ei0", 1.09},   {"alpha", 0.13}, {"beta", 2.0}};
+  return [measured](const comparison::FormLimitOptions::Tables& t) {
+    std::vector<double> r = {1.0};
+    for (const auto& [key, m] : measured)
+      r.push_back((t.at("hypoplastic").at(key) - m) / (0.02 * m));
+    double squares = 0.0;
+    for (const double x : r) squares += x * x;
+    return std::vector<comparison::FormLimitOptions::SoilGroup>{
+        {"shear", r, std::sqrt(squares / double(r.size())), 0}};
+  };
+}
+}  // namespace
+
+TEST_CASE("a break is the calibration's only when a set the soil tests accept mends it",
+          "[comparison]") {
+  // phi_c 33 against the measured 28 is 8.9 units: the soil-test set's RMS is sqrt((1 + 8.9^2) /
+  // 9) = 3.0, and they accept up to 1.25 x 3.0, which Table 5.1 itself (RMS 1/3) meets
+  auto agree = form_limit_of("form_limit_soil_agree", 1.0);
+  agree.soil_tests = soil_tests_measuring_table_5_1();
+  agree.joint_evaluations = 300;
+  const auto a = comparison::run_form_limit(agree);
+  INFO(a["joint"].dump());
+  CHECK(a["joint"]["accepted"].get<bool>());
+  for (const auto& c : causes(a, "peak_friction")) CHECK(c == "calibration");
+  CHECK(fs::exists(agree.out / "form_limit_joint.toml"));
+  // Table 5.1 as the soil-test set (RMS 1/3, accepted up to 0.42: every parameter within ~0.75 of
+  // its 2 %) on runs 1.25 times stronger: the prediction's peak misses by -20 %
+  auto strong = form_limit_of("form_limit_soil_refuse", 1.25);
+  strong.params = kTable51.string();
+  strong.soil_tests = soil_tests_measuring_table_5_1();
+  strong.joint_evaluations = 300;
+  const auto s = comparison::run_form_limit(strong);
+  INFO(s["joint"].dump());
+  CHECK(s["joint"]["accepted"].get<bool>());  // COBYLA stays inside: it started there
+  for (const auto& run : s["runs"]) {
+    const auto& q = run["quantities"]["peak_friction"];
+    INFO(q.dump());
+    REQUIRE(q["soil_test_predicted"]["verdict"] == "breaks");
+    CHECK(q["form_limit"]["verdict"] != "breaks");  // without the soil tests a set mends it
+    CHECK(q["joint"]["verdict"] == "breaks");
+    CHECK(q["cause"] == "form");
+  }
 }
 
 TEST_CASE("a form limit on runs three times stronger than the model blames the form",
@@ -110,9 +174,9 @@ TEST_CASE("compare with a form-limit record says which broke, and refuses anothe
     // a cause on every break and on nothing else
     CHECK(v.contains("cause") == (v["verdict"] == "breaks"));
     if (v["quantity"] == "peak_friction" && v["verdict"] == "breaks")
-      peak_labelled = v["cause"] == "calibration";
+      peak_labelled = v["cause"] == "calibration (unchecked)";
   }
-  CHECK(peak_labelled);  // phi_c 33 against 28: the peak breaks, and the form could meet it
+  CHECK(peak_labelled);  // phi_c 33 against 28: the peak breaks, and a set (unjudged) meets it
   c.model = "ahe";
   CHECK_THROWS_WITH(comparison::run_comparison(c),
                     Catch::Contains("a form limit of hvwe, not of ahe"));

@@ -9,7 +9,7 @@
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
-#include "calibration/soil_test_costs.hpp"
+#include "calibration/soil_test_judge.hpp"
 
 namespace iwb::app {
 
@@ -57,10 +57,23 @@ void add_form_limit_command(CLI::App& app, CommandList& commands) {
                   "the soil-test set's calibration.json, for its sigmas (default: the one beside "
                   "--params, if any)")
       ->check(input_file());
-  cmd->add_option("--soil-tests", c->soil_tests,
-                  "soil-test run directories: each objective group's RMS with the soil-test set "
-                  "and with the form limit's, what the form limit costs there")
-      ->check(input_directory());
+  auto* soil =
+      cmd->add_option(
+             "--soil-tests", c->soil_tests,
+             "soil-test run directories (the calibration's): the sets they accept bound the "
+             "joint fit, and each group's RMS with each set is reported")
+          ->check(input_directory());
+  cmd->add_option("--soil-acceptance", c->options.soil_acceptance,
+                  "a set the soil tests accept: every objective group's RMS at most this times "
+                  "the soil-test set's")
+      ->capture_default_str()
+      ->check(number_in(closed(1.0, 100.0)))
+      ->needs(soil);
+  cmd->add_option("--joint-evaluations", c->options.joint_evaluations,
+                  "COBYLA's budget for the fit with the soil tests")
+      ->capture_default_str()
+      ->check(whole_in(10, 1000000))
+      ->needs(soil);
   cmd->add_option("--out,-o", c->out, "output directory")->required()->check(output_directory());
   cmd->add_option("--max-evaluations", c->options.max_evaluations,
                   "BOBYQA's budget before Levenberg-Marquardt finishes")
@@ -73,17 +86,26 @@ void add_form_limit_command(CLI::App& app, CommandList& commands) {
     for (const auto& r : c->held_out) o.held_out.push_back(r);
     o.out = c->out;
     o.calibration = c->calibration;
-    o.elsewhere = calibration::soil_test_costs(
+    o.soil_tests = calibration::soil_test_judge(
         c->soil_tests);  // read now: a bad test is refused before the fit
+    o.soil_tests_about = fmt::format("{} soil tests", c->soil_tests.size());
     o.command_line = context.command_line;
     o.progress = [](const std::string& line) {
       fmt::print("{}\n", line);
       std::fflush(stdout);
     };
     const auto j = comparison::run_form_limit(o);
-    fmt::print("form limit: RMS {:.4g} scatter units after {} evaluations ({:.0f} s) -> {}\n",
+    fmt::print("form limit: RMS {:.4g} scatter units after {} evaluations ({:.0f} s)\n",
                j["rms_scaled"].get<double>(), j["evaluations"].get<int>(),
-               j["seconds"].get<double>(), (o.out / "form_limit.md").string());
+               j["seconds"].get<double>());
+    if (j.contains("joint"))
+      fmt::print(
+          "with the soil tests: RMS {:.4g} scatter units after {} evaluations ({:.0f} s); the "
+          "soil tests {} it\n",
+          j["joint"]["rms_scaled"].get<double>(), j["joint"]["evaluations"].get<int>(),
+          j["joint"]["seconds"].get<double>(),
+          j["joint"]["accepted"].get<bool>() ? "accept" : "refuse");
+    fmt::print("-> {}\n", (o.out / "form_limit.md").string());
     return 0;
   });
 }
