@@ -64,6 +64,25 @@ double lowest_change(const std::vector<double>& sigma, std::size_t n) {
   return lowest;
 }
 
+// The friction |tau| / sigma_n along the travel, over the rows every series has, and its peak.
+struct FrictionPath {
+  std::vector<double> s, friction;
+  std::size_t peak = 0;
+};
+
+FrictionPath friction_path(const Curve& c) {
+  const std::size_t n =
+      std::min({c.u_x_mm.size(), c.tau_kPa.size(), c.sigma_n_kPa.size(), c.u_n_mm.size()});
+  FrictionPath f;
+  if (n < 2) return f;
+  f.friction.resize(n);
+  for (std::size_t i = 0; i < n; ++i) f.friction[i] = std::abs(c.tau_kPa[i]) / c.sigma_n_kPa[i];
+  f.s = travel(c.u_x_mm, n);
+  for (std::size_t i = 1; i < n; ++i)
+    if (f.friction[i] > f.friction[f.peak]) f.peak = i;
+  return f;
+}
+
 }  // namespace
 
 const std::vector<QuantityInfo>& quantity_table() {
@@ -82,6 +101,13 @@ const std::vector<QuantityInfo>& quantity_table() {
        false},
       {"wall_zone_dilation", "dilation of the wall zone (its void ratio, last fifth)", "mm", 0.20,
        0.02, true},
+      // issue 59: the states the residual and the dilation are meant to reach, where a run that
+      // stopped on the way resolves them (statistics/steady_state.hpp); judged like the residual
+      // and the total dilation, and always shown as extrapolated
+      {"critical_state_friction", "critical-state friction tau/sigma_n (extrapolated)", "", 0.05,
+       0.01, false},
+      {"critical_state_dilation", "critical-state dilation u_n (extrapolated)", "mm", 0.20, 0.02,
+       true},
   };
   return t;
 }
@@ -98,27 +124,42 @@ std::vector<std::string> judged_quantities(driver::BoundaryKind boundary) {
   if (boundary != driver::BoundaryKind::kCNL)
     k.insert(k.end(), {"sigma_n_change", "sigma_n_lowest"});
   if (boundary != driver::BoundaryKind::kCV) k.push_back("wall_zone_dilation");
+  k.push_back("critical_state_friction");
+  if (boundary != driver::BoundaryKind::kCV) k.push_back("critical_state_dilation");
   return k;
+}
+
+bool is_extrapolated(const std::string& key) {
+  return key == "critical_state_friction" || key == "critical_state_dilation";
+}
+
+std::optional<statistics::SteadyState> friction_steady_state(const Curve& c, double d50_mm) {
+  const auto f = friction_path(c);
+  if (f.s.size() < 2) return std::nullopt;
+  return statistics::steady_state(f.s, f.friction, f.s[f.peak],
+                                  (1.0 - kResidualWindowShare) * f.s.back(),
+                                  kSteadyBlockD50 * d50_mm);
 }
 
 std::map<std::string, std::optional<double>> evaluate_quantities(
     const Curve& c, const std::vector<std::string>& keys) {
   std::map<std::string, std::optional<double>> out;
   for (const auto& k : keys) out[k] = std::nullopt;
-  const std::size_t n =
-      std::min({c.u_x_mm.size(), c.tau_kPa.size(), c.sigma_n_kPa.size(), c.u_n_mm.size()});
+  const auto path = friction_path(c);
+  const std::size_t n = path.s.size();
   if (n < 2) return out;
-  std::vector<double> friction(n);
-  for (std::size_t i = 0; i < n; ++i) friction[i] = std::abs(c.tau_kPa[i]) / c.sigma_n_kPa[i];
-  const auto s = travel(c.u_x_mm, n);
+  const auto& friction = path.friction;
+  const auto& s = path.s;
   std::vector<bool> last(n);
   double sum = 0.0;
   int count = 0;
   for (std::size_t i = 0; i < n; ++i)
     if ((last[i] = s[i] >= (1.0 - kResidualWindowShare) * s.back())) sum += friction[i], ++count;
-  std::size_t peak = 0;
-  for (std::size_t i = 1; i < n; ++i)
-    if (friction[i] > friction[peak]) peak = i;
+  const std::size_t peak = path.peak;
+  const auto settled = [&](const std::vector<double>& y) -> std::optional<double> {
+    const auto fit = statistics::fit_decay(s, y, s[peak]);
+    return fit && fit->resolved() ? std::optional<double>(fit->steady) : std::nullopt;
+  };
   const std::map<std::string, std::optional<double>> all = {
       {"peak_friction", friction[peak]},
       {"u_x_at_peak", c.u_x_mm[peak]},
@@ -128,6 +169,9 @@ std::map<std::string, std::optional<double>> evaluate_quantities(
       {"sigma_n_change", c.sigma_n_kPa[n - 1] - c.sigma_n_kPa[0]},
       {"sigma_n_lowest", lowest_change(c.sigma_n_kPa, n)},
       {"wall_zone_dilation", zone_dilation(c, n, last)},
+      {"critical_state_friction", settled(friction)},
+      {"critical_state_dilation",
+       settled(std::vector<double>(c.u_n_mm.begin(), c.u_n_mm.begin() + long(n)))},
   };
   for (const auto& k : keys) out[k] = all.at(k);
   return out;

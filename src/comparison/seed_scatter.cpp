@@ -107,8 +107,9 @@ std::string summary_text(const DemRun& r, const char* key) {
 }
 
 // The runs a cell's statistics rest on: those that sheared at the wall under test, while any did
-// (summary.json shear_mode); the others are recorded in out.left_out, the residuals that still
-// drift in out.not_steady and the runs whose shear split between wall and plate in out.split.
+// (summary.json shear_mode); the others are recorded in out.left_out, the residuals that have not
+// settled (friction_steady_state) in out.not_steady and the runs whose shear split between wall
+// and plate in out.split.
 std::vector<const DemRun*> admitted(const std::vector<const DemRun*>& all, SeedScatter& out) {
   constexpr const char* kAtThePlate = "localised at the plate";
   std::vector<const DemRun*> kept;
@@ -119,7 +120,9 @@ std::vector<const DemRun*> admitted(const std::vector<const DemRun*>& all, SeedS
     if (std::find(kept.begin(), kept.end(), r) == kept.end())
       out.left_out.emplace_back(r->dir.string(), kAtThePlate);
   for (const auto* r : kept) {
-    if (summary_text(*r, "residual_is") == "not steady") out.not_steady.push_back(r->dir.string());
+    const auto settled = friction_steady_state(
+        {r->u_x_mm, r->tau_kPa, r->sigma_n_kPa, r->u_n_mm, &r->e_band, r->wall_zone_mm}, r->d50_mm);
+    if (!settled || !settled->steady) out.not_steady.push_back(r->dir.string());
     if (summary_text(*r, "shear_mode") == "split between wall and plate")
       out.split.push_back(r->dir.string());
   }

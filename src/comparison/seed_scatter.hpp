@@ -26,8 +26,8 @@ struct SeedScatter {
   // plate, not the wall under test (issue 36), and is not averaged with those that sheared there.
   std::vector<std::pair<std::string, std::string>> left_out;
   bool only_plate_runs = false;  // every run localised at the plate: kept, as nothing else is left
-  // Runs kept whose residual still drifted over the last fifth (summary.json residual_is): the
-  // verdicts on the residual and on the dilation say how many.
+  // Runs kept whose friction had not settled over the last fifth (friction_steady_state, issue
+  // 59): the residual is not judged on them, and the verdicts on the dilation say how many.
   std::vector<std::string> not_steady;
   // Runs kept whose shear split between the wall and the plate (a far field moving at 25-75 % of
   // the first layer's speed): they measured the wall in part.

@@ -37,8 +37,11 @@ std::string percent(const json& x) {
 }
 
 std::string model_cell(const json& verdict) {
-  if (!verdict["model"].is_number()) return "not reached";
+  if (!verdict["model"].is_number())
+    return verdict.value("verdict", "") == "not resolved" ? "not resolved" : "not reached";
   const std::string unit = verdict["unit"];
+  if (!verdict["relative_error"].is_number())  // the DEM did not resolve it (an extrapolation)
+    return value(verdict["model"], unit);
   return fmt::format("{} ({:+.0f} %)", value(verdict["model"], unit),
                      100 * verdict["relative_error"].get<double>());
 }

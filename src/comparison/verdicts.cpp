@@ -56,6 +56,29 @@ std::vector<std::string> notes_for(const std::string& key, const SeedScatter& sc
   return notes;
 }
 
+// A residual is judged only where every run it rests on has settled, an extrapolation only where
+// every run and the model resolve it (issue 59): anything else would judge a number that is not
+// the state the model is meant to reach.
+void unjudged(Verdict& v, const SeedScatter& scatter) {
+  if (v.key == "residual_friction" && !scatter.not_steady.empty()) {
+    v.verdict = "not steady";
+    v.notes.push_back(
+        fmt::format("not judged: the friction of {} of {} runs had not settled over the last fifth "
+                    "(statistics/steady_state.hpp); shear further, or read critical_state_friction",
+                    scatter.not_steady.size(), std::max<std::size_t>(1, scatter.runs.size())));
+  }
+  if (!is_extrapolated(v.key)) return;
+  v.notes.push_back("extrapolated: the decay fitted after the peak, beyond the run's end");
+  const auto values = scatter.quantity_values.find(v.key);
+  const std::size_t resolved = values == scatter.quantity_values.end() ? 0 : values->second.size();
+  const std::size_t runs = std::max<std::size_t>(1, scatter.runs.size());
+  if (!v.dem || !v.model || (scatter.from_seeds() && resolved < runs)) {
+    v.verdict = "not resolved";
+    v.notes.push_back(fmt::format("the decay is resolved in {} of {} runs{}", resolved, runs,
+                                  v.model ? "" : " and not in the model's replay"));
+  }
+}
+
 }  // namespace
 
 Tolerances scene_tolerances(const DemRun& dem, Tolerances defaults) {
@@ -121,6 +144,7 @@ std::vector<Verdict> judge(const DemRun& dem, const SeedScatter& scatter, const 
     if (const auto note = scatter.quantity_note.find(q.key); note != scatter.quantity_note.end())
       v.notes.push_back(note->second);
     v.verdict = verdict_word(v.model ? v.error : std::nullopt, v.tolerance, scale, v.dem_ci);
+    unjudged(v, scatter);
     out.push_back(v);
   }
   return out;

@@ -284,14 +284,21 @@ TEST_CASE("seeds: a key only a newer run records does not split a cell, a value 
 TEST_CASE(
     "a seed that sheared at the plate is left out of the cell, a drifting residual is counted",
     "[comparison][verdicts]") {
-  auto a = comparison::load_dem_run(
-      test::write_synthetic_dem({.name = "cell_a", .seed = 1, .tau_noise_kPa = 0.5}));
-  auto b = comparison::load_dem_run(
-      test::write_synthetic_dem({.name = "cell_b", .seed = 2, .tau_noise_kPa = 0.5}));
-  auto c = comparison::load_dem_run(
-      test::write_synthetic_dem({.name = "cell_c", .seed = 3, .tau_noise_kPa = 0.5}));
+  // sheared ten times as far as the other synthetic runs: hvwe's friction has settled by the end
+  const auto cell = [](const char* name, int seed) {
+    return comparison::load_dem_run(test::write_synthetic_dem({.name = name,
+                                                               .gamma = 5.0,
+                                                               .increments = 2500,
+                                                               .output_every = 50,
+                                                               .seed = seed,
+                                                               .tau_noise_kPa = 0.5}));
+  };
+  auto a = cell("cell_a", 1), b = cell("cell_b", 2), c = cell("cell_c", 3);
   c.summary["shear_mode"] = "localised at the plate";  // as the summary says of such a run
-  b.summary["residual_is"] = "not steady";
+  // b's friction still rising by 10 % over its last fifth: a residual that has not settled
+  const double s_end = b.u_x_mm.back();
+  for (std::size_t i = 0; i < b.u_x_mm.size(); ++i)
+    if (b.u_x_mm[i] > 0.8 * s_end) b.tau_kPa[i] *= 1.0 + 0.5 * (b.u_x_mm[i] / s_end - 0.8);
   b.summary["shear_mode"] = "split between wall and plate";
   const auto s = comparison::seed_scatter(a, {b, c});
   CHECK(s.runs == std::vector<std::string>{a.dir.string(), b.dir.string()});
@@ -415,14 +422,26 @@ TEST_CASE("iwb compare on a committed reference run judges dilation, predicted a
     std::set<std::string> judged;
     for (const auto& v : verdicts) {
       INFO(which << " " << v.dump());
-      judged.insert(v["quantity"].get<std::string>());
+      const std::string q = v["quantity"];
+      judged.insert(q);
+      // a residual that has not settled is not judged, nor an extrapolation that is not resolved
+      // (issue 59); every other verdict rests on a number and its seed interval
+      if (v["verdict"] == "not steady") {
+        CHECK(q == "residual_friction");
+        continue;
+      }
+      if (v["verdict"] == "not resolved") {
+        CHECK(q.rfind("critical_state_", 0) == 0);
+        continue;
+      }
       CHECK(v["dem_seed_sd"].is_number());
       CHECK(v["relative_error"].is_number());
       CHECK((v["verdict"] == "holds" || v["verdict"] == "breaks" ||
              v["verdict"] == "within DEM scatter"));
     }
     CHECK(judged == std::set<std::string>{"peak_friction", "u_x_at_peak", "residual_friction",
-                                          "total_dilation", "dilation_rate", "wall_zone_dilation"});
+                                          "total_dilation", "dilation_rate", "wall_zone_dilation",
+                                          "critical_state_friction", "critical_state_dilation"});
   }
   CHECK(fs::exists(opt.out / "seed_band.csv"));
   CHECK(r["verdicts"]["summary"]["scan"]["points"] ==

@@ -25,6 +25,7 @@ struct SyntheticDem {
   double d_s_mm = 1.0;    // shear-zone thickness: u_x = gamma d_s, u_n = eps_n d_s
   double R_n = 1.0;
   double d50_mm = 0.2;
+  double gamma = 0.5;        // the shear strain at the end: u_x = gamma d_s
   bool distributed = false;  // velocity profile over the whole specimen instead of a wall band
   int increments = 250;
   int output_every = 5;
@@ -65,7 +66,7 @@ inline std::filesystem::path write_synthetic_dem(const SyntheticDem& spec) {
   s.e0 = 0.70;
   s.bc = spec.bc;
   s.inputs = table_5_1(spec.kappa_r);
-  s.gamma = 0.5;
+  s.gamma = spec.gamma;
   s.increments = spec.increments;
   s.output_every = spec.output_every;
   const auto run = shear(s);

@@ -70,7 +70,8 @@ void add_form_limit_command(CLI::App& app, CommandList& commands) {
       ->check(number_in(closed(1.0, 100.0)))
       ->needs(soil);
   cmd->add_option("--joint-evaluations", c->options.joint_evaluations,
-                  "COBYLA's budget for the fit with the soil tests")
+                  "COBYLA's budget for each pass (up to 4, restarted while one gains 1 %) of the "
+                  "fit with the soil tests")
       ->capture_default_str()
       ->check(whole_in(10, 1000000))
       ->needs(soil);
