@@ -81,7 +81,7 @@ TEST_CASE(
     "LIGGGHTS: a CNS run after a CNL run of the same scene does not consolidate, with the results "
     "of one "
     "that did, and a corrupt cached specimen is rebuilt",
-    "[dem][liggghts]") {
+    "[dem][liggghts][heavy]") {
   const fs::path root = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "liggghts" / "consolidate_once";
   fs::remove_all(root);
   const auto engine = dem::make_engine("liggghts");

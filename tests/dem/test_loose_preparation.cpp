@@ -78,7 +78,7 @@ void check_settled_collapse(const fs::path& dir) {
 // all (they settle towards random close packing, e ~0.56), collapse when the test's contacts take
 // over.
 TEST_CASE("LIGGGHTS: a looser preparation, and a shear that waits for it to settle",
-          "[dem][liggghts]") {
+          "[dem][liggghts][heavy]") {
   const auto base = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "liggghts" / "loose_preparation";
   const auto sliding = run(base / "sliding", prepared_text("0.1"), "liggghts");
   const auto rolling = run(base / "rolling", tested_frictionless(prepared_text("0.5")), "liggghts");
@@ -105,7 +105,7 @@ TEST_CASE("LIGGGHTS: a looser preparation, and a shear that waits for it to sett
 // (A lower specimen than the smoke scene's, 250 grains in 5 d50 instead of 400 in 8: the test
 // asks for a collapse and a settle, which any height shows, at 60 % of the cost.)
 TEST_CASE("YADE: a specimen that collapses at the test's contacts settles before shear starts",
-          "[dem][yade]") {
+          "[dem][yade][heavy]") {
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "yade" / "loose_preparation";
   const std::string lower =
       test::replaced(test::replaced(prepared_text(""), "height_d50 = 8\n", "height_d50 = 5\n"),

@@ -113,7 +113,7 @@ void truncated_restart_rebuilt(const std::string& engine_name) {
 }  // namespace
 
 TEST_CASE("LIGGGHTS: a truncated consolidation restart is rebuilt on --resume, never used",
-          "[dem][liggghts]") {
+          "[dem][liggghts][heavy]") {
   truncated_restart_rebuilt("liggghts");
 }
 TEST_CASE("YADE: a truncated consolidation restart is rebuilt on --resume, never used",
@@ -135,7 +135,7 @@ TEST_CASE("YADE: a servo that does not converge fails the run with its reason", 
 // (seen). Two
 // consolidation windows are too few to settle, so the run stops at the servo, after the insertion
 // has counted its grains: a few seconds instead of a full consolidation.
-TEST_CASE("LIGGGHTS: a narrow truth box inserts every grain", "[dem][liggghts]") {
+TEST_CASE("LIGGGHTS: a narrow truth box inserts every grain", "[dem][liggghts][heavy]") {
   std::string text = io::read_file("data/scenes/truth.toml");
   text = replaced(text, "length_d50 = 24", "length_d50 = 12");
   text = replaced(text, "height_d50 = 20", "height_d50 = 10");
@@ -209,7 +209,7 @@ TEST_CASE("dem summary recomputes the summary of a committed run unchanged in it
 // target 50 kPa), and in the 20 d50 specimens of data/convergence the wall's mean sigma_n rose to
 // 54-70 kPa. The default gain for this stiffness (scene.hpp) must hold the plate within 10 %.
 TEST_CASE("LIGGGHTS: stiff grains under CNL: the plate's force holds its target while shearing",
-          "[dem][liggghts]") {
+          "[dem][liggghts][heavy]") {
   // 1 mm of shear, 50 rows: the scene's second mm adds 9 s and nothing the check below needs
   const std::string text = replaced(test::smoke_sheared_over("data/scenes/smoke.toml", 1.0),
                                     "youngs_modulus_Pa = 1.0e8", "youngs_modulus_Pa = 4.2e9");

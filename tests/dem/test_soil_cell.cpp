@@ -93,7 +93,7 @@ TEST_CASE("DEM soil cell oedometer compresses on loading and swells less on unlo
 }
 
 TEST_CASE("YADE soil cell oedometer compresses on loading and swells less on unloading",
-          "[dem][soil][yade]") {
+          "[dem][soil][yade][heavy]") {
   check_oedometer("yade");
 }
 
@@ -171,7 +171,7 @@ TEST_CASE(
 // interface scenes' default gains the 10 kPa cell's plate chattered from step to step between
 // about -10 and +29 kPa (a mean of 10: dem/scene.hpp, servo_loop_number), rows reading either.
 TEST_CASE("DEM soil cell: stiff grains prepared dense consolidate at 10 and at 200 kPa",
-          "[dem][liggghts]") {
+          "[dem][liggghts][heavy]") {
   auto c = small_cell(SoilTestKind::kSimpleShear);
   c.height_d50 = 6.0;
   c.gamma = 0.02;

@@ -42,6 +42,7 @@ void add_all_commands(CLI::App& app, CommandList& commands) {
   add_soiltest_synthetic_command(soiltest, commands);
   add_calibrate_command(app, commands);
   add_form_limit_command(app, commands);
+  add_claims_command(app, commands);
   add_tradeoff_command(app, commands);
   add_plan_command(app, commands);
   add_pile_command(app, commands);

@@ -21,6 +21,7 @@ void add_dem_roughness_command(CLI::App& dem, CommandList& commands);
 void add_dem_fields_command(CLI::App& dem, CommandList& commands);
 void add_compare_command(CLI::App& app, CommandList& commands);
 void add_form_limit_command(CLI::App& app, CommandList& commands);
+void add_claims_command(CLI::App& app, CommandList& commands);
 void add_sweep_command(CLI::App& app, CommandList& commands);
 void add_report_command(CLI::App& app, CommandList& commands);
 void add_validate_command(CLI::App& app, CommandList& commands);

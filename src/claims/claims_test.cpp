@@ -1,0 +1,114 @@
+#include "claims/claims.hpp"
+
+#include <fmt/core.h>
+#include <fnmatch.h>
+
+#include <algorithm>
+
+#include "common/errors.hpp"
+#include "io/json_file.hpp"
+
+namespace iwb::claims {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// The run directories a pattern names, relative to the claims file; a '*' in the last component
+// matches names (sorted, so that every machine reads the same order).
+std::vector<fs::path> runs_of(const fs::path& base, const std::string& pattern, const Claim& c) {
+  const fs::path p = base / pattern;
+  std::vector<fs::path> out;
+  if (pattern.find('*') == std::string::npos) {
+    if (fs::is_directory(p)) out.push_back(p);
+  } else if (fs::is_directory(p.parent_path())) {
+    for (const auto& e : fs::directory_iterator(p.parent_path()))
+      if (e.is_directory() && fnmatch(p.filename().c_str(), e.path().filename().c_str(), 0) == 0)
+        out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  if (out.empty())
+    throw InputError(fmt::format("claim '{}': \"{}\" names no run directory (under {})", c.id,
+                                 pattern, base.string()));
+  return out;
+}
+
+double number_at(const json& summary, const std::string& pointer, const fs::path& run) {
+  const json::json_pointer at(pointer);
+  if (!summary.contains(at) || !summary.at(at).is_number())
+    throw InputError(fmt::format("{}: summary.json has no number at {}", run.string(), pointer));
+  return summary.at(at).get<double>();
+}
+
+bool flagged(const json& summary, std::string& why) {
+  const auto mode = summary.value("shear_mode", std::string());
+  if (mode == "split between wall and plate" || mode == "localised at the plate") {
+    why = mode;
+    return true;
+  }
+  return false;
+}
+
+Group read_group(const fs::path& base, const std::vector<std::string>& patterns, const Claim& c) {
+  Group g;
+  for (const auto& pattern : patterns)
+    for (const auto& run : runs_of(base, pattern, c)) {
+      const auto summary = io::read_json_file(run / "summary.json");
+      std::string why;
+      if (flagged(summary, why)) {
+        if (c.flagged == "exclude") {
+          g.excluded.emplace_back(run.string(), why);
+          continue;
+        }
+        ++g.flagged_included;
+      }
+      double v = number_at(summary, c.quantity, run);
+      if (!c.relative_to.empty()) {
+        const double r = number_at(summary, c.relative_to, run);
+        v = (v - r) / r;
+      }
+      g.runs.push_back(run.string());
+      g.values.push_back(v);
+    }
+  g.sample = statistics::describe(g.values);
+  return g;
+}
+
+std::string status_of(const ClaimResult& r, double q) {
+  if (!r.difference) return "not testable";
+  if (r.p_adjusted > q) return "not resolved";
+  const double e = r.difference->effect;
+  const std::string& x = r.claim.expect;
+  const bool agrees = x == "b != a" || (x == "b > a" && e > 0.0) || (x == "b < a" && e < 0.0);
+  return agrees ? "supported" : "contradicted";
+}
+
+}  // namespace
+
+ClaimsReport test_claims(const ClaimsFile& file) {
+  ClaimsReport report{file, {}};
+  const fs::path base = file.file.has_parent_path() ? file.file.parent_path() : fs::path(".");
+  std::vector<double> p;
+  for (const auto& c : file.claims) {
+    ClaimResult r;
+    r.claim = c;
+    r.a = read_group(base, c.a, c);
+    r.b = read_group(base, c.b, c);
+    r.difference = statistics::compare_groups(r.a.sample, r.b.sample);
+    report.results.push_back(r);
+    if (r.difference) p.push_back(r.difference->p_value);
+  }
+  // the family: every claim that could be tested
+  const auto adjusted = statistics::benjamini_hochberg(p);
+  std::size_t k = 0;
+  for (auto& r : report.results) {
+    if (r.difference) r.p_adjusted = adjusted[k++];
+    r.status = status_of(r, file.q);
+    if (r.status == "not resolved" && !r.difference->prediction_interval)
+      r.seeds_needed = statistics::seeds_to_resolve(r.a.sample, r.b.sample, r.difference->effect);
+  }
+  return report;
+}
+
+}  // namespace iwb::claims

@@ -1,0 +1,40 @@
+#pragma once
+// The tests a campaign's claims rest on (issue 59, "one statistics layer for every claim"): two
+// groups of DEM seeds compared by Welch's t-test (unequal scatter: a rough and a flat wall do not
+// scatter alike), a single run against a group by the group's prediction interval, and a family of
+// such tests controlled for multiplicity by Benjamini & Hochberg (1995).
+#include <optional>
+#include <vector>
+
+namespace iwb::statistics {
+
+struct Sample {
+  int n = 0;
+  double mean = 0.0, sd = 0.0;  // sample SD (n - 1)
+};
+Sample describe(const std::vector<double>& values);
+
+struct Difference {
+  double effect = 0.0;               // mean of b - mean of a
+  double half_width = 0.0;           // of its 95 % interval
+  double degrees_of_freedom = 0.0;   // Welch-Satterthwaite (or n_a - 1 for one run)
+  double p_value = 1.0;              // two-sided
+  bool prediction_interval = false;  // b is a single run, judged against a's interval
+};
+
+// b against a: Welch's t-test when both have at least two values; a single b against a's 95 %
+// prediction interval, t = (b - mean_a) / (sd_a sqrt(1 + 1/n_a)) with n_a - 1 degrees of freedom;
+// nullopt when neither applies (a group of fewer than two, or no scatter at all).
+std::optional<Difference> compare_groups(const Sample& a, const Sample& b);
+
+// Benjamini-Hochberg adjusted p-values, in the order given: p_(i) m / i made monotone from the
+// largest down and capped at 1. A test is significant at false-discovery rate q where its adjusted
+// p is at most q.
+std::vector<double> benjamini_hochberg(const std::vector<double>& p_values);
+
+// The fewest seeds per group (>= 2) whose Welch interval would be narrower than |effect|, for the
+// scatter measured; nullopt beyond `at_most` or for no effect.
+std::optional<int> seeds_to_resolve(const Sample& a, const Sample& b, double effect,
+                                    int at_most = 1000);
+
+}  // namespace iwb::statistics

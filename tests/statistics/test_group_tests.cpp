@@ -1,0 +1,55 @@
+// Welch's test, the prediction interval of one run and Benjamini-Hochberg, against an independent
+// implementation: the expected figures were computed with SciPy 1.10 (scipy.stats.ttest_ind with
+// equal_var=False, scipy.stats.t) and Benjamini & Hochberg's step-up rule written out by hand in
+// numpy, outside this repository's code.
+#include <catch2/catch.hpp>
+
+#include "statistics/group_tests.hpp"
+
+using namespace iwb;
+
+TEST_CASE("Welch's test of two groups of seeds matches SciPy", "[statistics]") {
+  const auto a = statistics::describe({0.418, 0.392, 0.447});
+  const auto b = statistics::describe({0.343, 0.301, 0.385, 0.37});
+  const auto d = statistics::compare_groups(a, b);
+  REQUIRE(d);
+  CHECK_FALSE(d->prediction_interval);
+  CHECK(d->effect == Approx(-0.06925).margin(1e-12));
+  CHECK(d->degrees_of_freedom == Approx(4.985616216165435).epsilon(1e-9));
+  CHECK(d->p_value == Approx(0.03609332062368329).epsilon(1e-6));
+  CHECK(d->half_width == Approx(0.06259376081893905).epsilon(1e-6));
+}
+
+TEST_CASE("one run against a group's 95 % prediction interval matches SciPy's t", "[statistics]") {
+  const auto a = statistics::describe({1.6, 1.7, 1.5, 1.8, 1.65});
+  const auto d = statistics::compare_groups(a, statistics::describe({2.43}));
+  REQUIRE(d);
+  CHECK(d->prediction_interval);
+  CHECK(d->degrees_of_freedom == 4.0);
+  CHECK(d->p_value == Approx(0.0031170422689728566).epsilon(1e-6));
+  CHECK(d->half_width == Approx(0.34004369032912846).epsilon(1e-6));
+  // one value against one value: nothing to test
+  CHECK_FALSE(statistics::compare_groups(statistics::describe({1.0}), statistics::describe({2.0})));
+}
+
+TEST_CASE("Benjamini-Hochberg adjusts five p-values as the step-up rule does", "[statistics]") {
+  // the five cells: only p 0.009 survives at q 0.05 once the family is counted
+  const auto adjusted = statistics::benjamini_hochberg({0.009, 0.035, 0.17, 0.10, 0.08});
+  REQUIRE(adjusted.size() == 5);
+  CHECK(adjusted[0] == Approx(0.045));
+  CHECK(adjusted[1] == Approx(0.0875));
+  CHECK(adjusted[2] == Approx(0.17));
+  CHECK(adjusted[3] == Approx(0.125));
+  CHECK(adjusted[4] == Approx(0.125));
+}
+
+TEST_CASE("the seeds a difference needs narrow the Welch interval below the effect",
+          "[statistics]") {
+  const statistics::Sample a{3, 0.40, 0.03}, b{3, 0.36, 0.03};
+  const auto n = statistics::seeds_to_resolve(a, b, -0.04);
+  REQUIRE(n);
+  const auto at = statistics::compare_groups({*n, 0.40, 0.03}, {*n, 0.36, 0.03});
+  const auto before = statistics::compare_groups({*n - 1, 0.40, 0.03}, {*n - 1, 0.36, 0.03});
+  CHECK(at->half_width < 0.04);
+  CHECK(before->half_width >= 0.04);
+}
