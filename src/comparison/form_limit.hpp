@@ -68,7 +68,7 @@ struct FormLimitOptions {
   // A set the soil tests accept: every group's RMS at most this times the soil-test set's, and
   // every row reached (kSoilAcceptance).
   double soil_acceptance = kSoilAcceptance;
-  int joint_evaluations = 600;  // COBYLA's budget for each pass of the joint fit (up to 4)
+  int joint_evaluations = 600;  // COBYLA's budget a pass of the joint fit (2 starts x 4 passes)
 };
 
 // Fits, predicts, judges and writes OUT/form_limit.json, OUT/form_limit.md and OUT/form_limit.toml

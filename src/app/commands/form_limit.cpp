@@ -23,11 +23,15 @@ constexpr const char* kFormLimitHelp =
     "soil-test set of --params. The --held-out runs are predicted with the result. Every run is "
     "judged on the quantities of interest three ways: the soil-test set predicted (kappa_r from "
     "the wall, d_s 5 d50), the soil-test set with kappa_r and d_s fitted to the run, and the form "
-    "limit. A quantity the prediction breaks is put down to the form when it still breaks at the "
-    "form limit (no parameter set inside the boxes meets it), else to the calibration. Writes "
-    "form_limit.json, form_limit.md (tables) and form_limit.toml (the fitted set, for compare "
-    "--params); each parameter's move from the soil-test set in that set's sigmas when a "
-    "calibration.json sits beside --params.\n"
+    "limit. With --soil-tests the same unknowns are fitted again over only the sets the soil "
+    "tests accept (every objective group's RMS at most --soil-acceptance times the soil-test "
+    "set's; COBYLA from the soil-test set and from the free form limit's set), and a quantity the "
+    "prediction breaks is put down to the calibration only where that joint set holds it, else to "
+    "the form (the note says whether no set holds it or only sets the soil tests refuse). Without "
+    "soil tests a break the free form limit holds is \"calibration (unchecked)\". Writes "
+    "form_limit.json, form_limit.md (tables), form_limit.toml (the free set, for compare "
+    "--params) and form_limit_joint.toml (the joint set); each parameter's move from the "
+    "soil-test set in that set's sigmas when a calibration.json sits beside --params.\n"
     "Example: iwb form-limit --runs data/reference/truth2_seeds45/runs/s4_cnl-50 --held-out "
     "data/reference/truth2_seeds45/runs/s5_cnl-50 --model hvwe --params "
     "data/params/truth_grains_epsd2.toml -o runs/form-limit";
@@ -70,8 +74,9 @@ void add_form_limit_command(CLI::App& app, CommandList& commands) {
       ->check(number_in(closed(1.0, 100.0)))
       ->needs(soil);
   cmd->add_option("--joint-evaluations", c->options.joint_evaluations,
-                  "COBYLA's budget for each pass (up to 4, restarted while one gains 1 %) of the "
-                  "fit with the soil tests")
+                  "COBYLA's budget for each pass of the fit with the soil tests (two starts, "
+                  "the soil-test set and the free form limit's set, up to 4 passes each, "
+                  "restarted while a pass gains 1 %)")
       ->capture_default_str()
       ->check(whole_in(10, 1000000))
       ->needs(soil);
