@@ -19,7 +19,8 @@ namespace {
 
 const fs::path kDir = fs::path(IWB_TEST_RUNS_DIR) / "claims";
 
-void run(const std::string& name, double value, const std::string& mode = "localised at the wall") {
+void write_summary(const std::string& name, double value,
+                   const std::string& mode = "localised at the wall") {
   fs::create_directories(kDir / name);
   std::ofstream(kDir / name / "summary.json")
       << nlohmann::json{{"peak_friction", value}, {"shear_mode", mode}}.dump();
@@ -31,7 +32,7 @@ std::string claim(const std::string& id, const std::string& a, const std::string
          a + "\"]\nb = [\"" + b + "\"]\nexpect = \"b < a\"\nflagged = \"" + flagged + "\"\n";
 }
 
-claims::ClaimsReport test(const std::string& body) {
+claims::ClaimsReport test_file(const std::string& body) {
   std::ofstream(kDir / "claims.toml") << "q = 0.05\n" << body;
   return claims::test_claims(claims::read_claims(kDir / "claims.toml"));
 }
@@ -39,11 +40,11 @@ claims::ClaimsReport test(const std::string& body) {
 void write_runs() {
   fs::remove_all(kDir);
   const double a[] = {0.418, 0.392, 0.447}, b[] = {0.343, 0.301, 0.385, 0.37};
-  for (int i = 0; i < 3; ++i) run("flat_s" + std::to_string(i + 1), a[i]);
-  for (int i = 0; i < 4; ++i) run("rough_s" + std::to_string(i + 1), b[i]);
-  run("rough_s5", 10.0, "localised at the plate");
-  for (int i = 0; i < 3; ++i) run("x_s" + std::to_string(i + 1), 0.40 + 0.01 * i);
-  for (int i = 0; i < 3; ++i) run("y_s" + std::to_string(i + 1), 0.41 - 0.02 * i);
+  for (int i = 0; i < 3; ++i) write_summary("flat_s" + std::to_string(i + 1), a[i]);
+  for (int i = 0; i < 4; ++i) write_summary("rough_s" + std::to_string(i + 1), b[i]);
+  write_summary("rough_s5", 10.0, "localised at the plate");
+  for (int i = 0; i < 3; ++i) write_summary("x_s" + std::to_string(i + 1), 0.40 + 0.01 * i);
+  for (int i = 0; i < 3; ++i) write_summary("y_s" + std::to_string(i + 1), 0.41 - 0.02 * i);
 }
 
 }  // namespace
@@ -51,7 +52,7 @@ void write_runs() {
 TEST_CASE("a claim alone is supported where Welch's test is significant in its direction",
           "[claims]") {
   write_runs();
-  const auto r = test(claim("rough-lower", "flat_*", "rough_*"));
+  const auto r = test_file(claim("rough-lower", "flat_*", "rough_*"));
   REQUIRE(r.results.size() == 1);
   const auto& c = r.results[0];
   CHECK(c.b.sample.n == 4);  // rough_s5 formed its band at the plate: left out
@@ -65,13 +66,14 @@ TEST_CASE("a claim alone is supported where Welch's test is significant in its d
 TEST_CASE("beside a second claim the same test is not resolved after Benjamini-Hochberg",
           "[claims]") {
   write_runs();
-  const auto r = test(claim("rough-lower", "flat_*", "rough_*") + claim("other", "x_*", "y_*"));
+  const auto r =
+      test_file(claim("rough-lower", "flat_*", "rough_*") + claim("other", "x_*", "y_*"));
   REQUIRE(r.results.size() == 2);
   CHECK(r.results[0].p_adjusted == Approx(2.0 * 0.03609332062368329).epsilon(1e-6));
   CHECK(r.results[0].status == "not resolved");
   CHECK(r.results[0].seeds_needed.has_value());
   // a run at the plate kept where the claim says so: its 10.0 reverses the sign
-  const auto kept = test(claim("rough-lower", "flat_*", "rough_*", "include"));
+  const auto kept = test_file(claim("rough-lower", "flat_*", "rough_*", "include"));
   CHECK(kept.results[0].b.flagged_included == 1);
   CHECK(kept.results[0].difference->effect > 0.0);
   CHECK(kept.results[0].status != "supported");
@@ -79,7 +81,7 @@ TEST_CASE("beside a second claim the same test is not resolved after Benjamini-H
 
 TEST_CASE("a claims file with a repeated id or a pattern naming no run is refused", "[claims]") {
   write_runs();
-  CHECK_THROWS_WITH(test(claim("a", "flat_*", "rough_*") + claim("a", "x_*", "y_*")),
+  CHECK_THROWS_WITH(test_file(claim("a", "flat_*", "rough_*") + claim("a", "x_*", "y_*")),
                     Catch::Contains("another claim has this id"));
-  CHECK_THROWS_AS(test(claim("a", "none_*", "rough_*")), InputError);
+  CHECK_THROWS_AS(test_file(claim("a", "none_*", "rough_*")), InputError);
 }
