@@ -51,8 +51,9 @@ std::vector<std::string> notes_for(const std::string& key, const SeedScatter& sc
     notes.push_back(
         fmt::format("{} of {} runs split between wall and plate", scatter.split.size(), n));
   if (needs_steady_end(key) && !scatter.not_steady.empty())
-    notes.push_back(fmt::format("{} of {} runs not steady at the end (residual still drifting)",
-                                scatter.not_steady.size(), n));
+    notes.push_back(fmt::format(
+        "{} of {} runs not steady at the end (friction not settled over the last fifth)",
+        scatter.not_steady.size(), n));
   return notes;
 }
 
