@@ -100,7 +100,8 @@ std::vector<Distribution> varied_parameters(const models::ModelSpec& spec,
     keys += (keys.empty() ? "" : ", ") + key;
   }
   for (const auto& [key, value] : cov_of)
-    if (std::none_of(out.begin(), out.end(), [&](const Distribution& d) { return d.name == key; }))
+    if (std::none_of(out.begin(), out.end(),
+                     [&k = key](const Distribution& d) { return d.name == k; }))
       throw InputError(fmt::format("--cov-of {}={}: {} varies no parameter '{}'; it varies {}", key,
                                    value, spec.name, key, keys));
   return out;

@@ -451,8 +451,8 @@ ParameterEstimate estimate_of(const Calibrator& c, const BoxEntry& b, const Join
 void check_fixed(const models::ParameterTable& table, const Boxes& boxes,
                  const models::ParameterValues& fixed) {
   for (const auto& [key, value] : fixed) {
-    const bool calibrated =
-        std::any_of(boxes.begin(), boxes.end(), [&](const BoxEntry& b) { return b.key == key; });
+    const bool calibrated = std::any_of(boxes.begin(), boxes.end(),
+                                        [&k = key](const BoxEntry& b) { return b.key == k; });
     const auto* spec = table.find(key);
     if (!calibrated)
       throw InputError(

@@ -30,8 +30,9 @@ void write_scenes(const std::vector<Job>& jobs, const fs::path& out) {
 // The hypothesis checks over the runs that completed; failed runs are left out, not compared.
 comparison::RunSetOutcome compare_complete_runs(const Comparison& c, const nlohmann::json& record,
                                                 const SweepOptions& opt, const fs::path& out) {
-  comparison::RunSetOptions set{{},    c.model, c.params.string(), out / "compare",
-                                false, true,    opt.command_line};
+  comparison::RunSetOptions set;
+  set.model = c.model, set.params = c.params.string(), set.out = out / "compare";
+  set.allow_partial = false, set.force = true, set.command_line = opt.command_line;
   // force: DIR/compare belongs to the campaign; a re-run job's comparison is stale, not precious.
   for (const auto& j : record["jobs"])
     if (j["status"] == "complete") set.dem_dirs.push_back(out / j["run"].get<std::string>());

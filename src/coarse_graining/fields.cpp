@@ -2,6 +2,8 @@
 
 #include <array>
 #include <cmath>
+#include <deque>
+#include <iterator>
 #include <numbers>
 #include <stdexcept>
 
@@ -61,8 +63,11 @@ void add_contacts(const std::vector<Contact>& contacts, const SamplingGrid& grid
   }
 }
 
+// The fields as they are derived, each added by the reference `add` returns. A deque, because
+// growing a vector would move the fields already handed out and leave those references dangling
+// (undefined behaviour that GCC's code happened to survive and clang's did not).
 struct Derived {
-  std::vector<Field> fields;
+  std::deque<Field> fields;
   std::vector<double>& add(const std::string& name, std::size_t n) {
     fields.push_back({name, std::vector<double>(n, 0.0)});
     return fields.back().values;
@@ -115,7 +120,8 @@ FieldSet derive(const Sums& s) {
     spin[i] = c[kSpinY] / c[kRho];
     cosserat[i] = spin[i] - 0.5 * vort[i];
   }
-  return FieldSet{std::move(d.fields)};
+  return FieldSet{
+      {std::make_move_iterator(d.fields.begin()), std::make_move_iterator(d.fields.end())}};
 }
 
 }  // namespace

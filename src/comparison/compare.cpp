@@ -250,7 +250,10 @@ void require_reversible(const DemRun& dem, const std::string& model) {
 }
 
 ComparisonInputs read_comparison_inputs(const CompareOptions& opt) {
-  ComparisonInputs in{opt, load_dem_run(opt.dem_dir, opt.allow_partial), load_seeds(opt)};
+  ComparisonInputs in;
+  in.options = opt;
+  in.dem = load_dem_run(opt.dem_dir, opt.allow_partial);
+  in.seeds = load_seeds(opt);
   require_reversible(in.dem, opt.model);
   in.scatter = seed_scatter(in.dem, in.seeds);  // InputError for a seed of another scene
   if (opt.pooled) apply_pooling(in.scatter, *opt.pooled);

@@ -499,7 +499,7 @@ std::string runs_markdown(const json& j) {
       joint ? " with the soil tests |" : "", joint ? "---|" : "");
   for (const auto& r : j["runs"])
     for (const auto& [key, q] : r["quantities"].items()) {
-      const auto cell = [&](const char* variant) {
+      const auto cell = [&q = q](const char* variant) {
         return fmt::format("{} ({})", percent(q[variant]["error"]),
                            q[variant]["verdict"].get<std::string>());
       };

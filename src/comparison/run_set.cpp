@@ -163,8 +163,10 @@ RunSetOutcome run_hypothesis_set(const RunSetOptions& opt) {
   try {
     // the other seeds of each run's scene in the set: their scatter weighs its fit and verdicts
     for (std::size_t i = 0; i < names.size(); ++i) {
-      CompareOptions c{opt.dem_dirs[i],   opt.model, opt.params,      opt.out / names[i],
-                       opt.allow_partial, opt.force, opt.command_line};
+      CompareOptions c;
+      c.dem_dir = opt.dem_dirs[i], c.model = opt.model, c.params = opt.params;
+      c.out = opt.out / names[i];
+      c.allow_partial = opt.allow_partial, c.force = opt.force, c.command_line = opt.command_line;
       c.predicted_ds_d50 = opt.predicted_ds_d50;
       c.form_limit = opt.form_limit;
       c.roughness_scheme = opt.roughness_scheme, c.f_c = opt.f_c;

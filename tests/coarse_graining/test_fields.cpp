@@ -165,13 +165,13 @@ TEST_CASE("the kernel's closed-form branch integrals equal quadrature", "[coarse
                                                                 {{1.5, 1.0}, {2.5, 1.1}},
                                                                 {{0.1, -2.0}, {0.1, 2.0}},
                                                                 {{0.2, 0.3}, {0.2, 0.3}}}) {
-    const double q = simpson([&](double s) {
+    const double q = simpson([&, &a = a, &b = b](double s) {
       const Eigen::Vector2d r = a + s * (b - a);
       return k.planar(-r.x(), -r.y()).phi;
     });
     CHECK(k.planar_along(a, b) == Approx(q).epsilon(1e-10));
-    const double qz =
-        simpson([&](double s) { return k.vertical(-(a.y() + s * (b.y() - a.y()))).phi; });
+    const double qz = simpson(
+        [&, &a = a, &b = b](double s) { return k.vertical(-(a.y() + s * (b.y() - a.y()))).phi; });
     CHECK(k.vertical_along(a.y(), b.y()) == Approx(qz).epsilon(1e-10));
   }
 }

@@ -17,7 +17,7 @@ nlohmann::json summary_of(const std::string& name) {
   const auto dir = std::filesystem::path(IWB_TEST_RUNS_DIR) / "dem" / name;
   dem::LiggghtsEngine engine;
   const auto outcome = dem::run_scene(dem::parse_scene(text, file), text, engine,
-                                      {dir, 2, false, true, "tests", nullptr, nullptr});
+                                      {dir, 2, false, true, "tests", nullptr, nullptr, {}});
   INFO(outcome.status);
   REQUIRE(outcome.complete());
   return nlohmann::json::parse(io::read_file(dir / "summary.json"));

@@ -123,6 +123,8 @@ std::unique_ptr<toml::node> admitted(const std::string& scene, const KeyDeclarat
     case KeyKind::kPath:
       return std::make_unique<toml::value<std::string>>("no such file.csv");
     case KeyKind::kNumberList:
+    case KeyKind::kTable:
+    case KeyKind::kTables:
       return nullptr;  // tried only where a scene has one
     case KeyKind::kNumber: {
       const double v = row.range.admits(1.0) ? 1.0 : 0.5 * (row.range.lower + row.range.upper);
@@ -173,6 +175,9 @@ std::vector<std::unique_ptr<toml::node>> refused_values(const KeyDeclaration& ro
       break;
     case KeyKind::kNumberList:
       out.push_back(std::make_unique<toml::array>(1.0, std::nan("")));
+      break;
+    case KeyKind::kTable:
+    case KeyKind::kTables:  // a table's own keys are rows of their own
       break;
   }
   return out;

@@ -56,7 +56,8 @@ TEST_CASE(
   io::CsvTable t;
   t.columns = {"t_s", "u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa"};
   for (int i = 0; i <= 100; ++i) {
-    const double u = 0.05 * i, before = u < 3.875;
+    const double u = 0.05 * i;
+    const bool before = u < 3.875;
     t.rows.push_back({0.01 * i, u, 0.1 * std::min(u, 3.875), 50.0, 50.0 * (before ? 0.7 : 0.5)});
   }
   const auto s = dem::summarize(scene(), t, {});

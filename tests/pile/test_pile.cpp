@@ -102,7 +102,7 @@ TEST_CASE(
     "[pile][cyclic]") {
   // A = 5 mm, far beyond the slip's elastic part and the pile's shortening under its capacity
   // (P L / 2 EA = 0.28 mm): at +-A every stress point slips, at tau = +-tan(phi) sigma_n0(z)
-  constexpr double kA = 5.0;
+  constexpr double kAmplitude = 5.0;
   const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "pile" / "plastic_cycles";
   const auto file = write_case(
       dir,
@@ -110,18 +110,18 @@ TEST_CASE(
       0.0, 10,
       fmt::format("kind = \"cyclic_settlement\"\namplitude_mm = {}\ncycles = 3\n"
                   "increments_per_quarter = 4\n",
-                  kA));
+                  kAmplitude));
   const auto out = run(file, dir / "run");
   const double capacity = M_PI * kD * std::tan(M_PI / 6) * kK0 * kGamma * kL * kL / 2.0;
   const auto curve = io::read_csv_table(out / "load_settlement.csv");
   const auto w = curve.values("head_settlement_mm"), shaft = curve.values("shaft_load_kN");
   int at_plus = 0, at_minus = 0;
   for (std::size_t r = 0; r < w.size(); ++r) {
-    if (w[r] == Approx(kA).epsilon(1e-12)) {
+    if (w[r] == Approx(kAmplitude).epsilon(1e-12)) {
       ++at_plus;
       CHECK(shaft[r] == Approx(capacity));
     }
-    if (w[r] == Approx(-kA).epsilon(1e-12)) {
+    if (w[r] == Approx(-kAmplitude).epsilon(1e-12)) {
       ++at_minus;
       CHECK(shaft[r] == Approx(-capacity));
     }

@@ -26,7 +26,8 @@ TEST_CASE("tradeoff knobs: dt, kappa and I scale their own quantity and leave th
   const auto base = dem::parse_scene(text, "smoke.toml");
   const auto dt = variant(text, "dt", 0.5);
   CHECK(dem::derive(dt).dt == Approx(0.5 * dem::derive(base).dt).epsilon(1e-9));
-  CHECK(dem::derive(dt).shear_steps == Approx(2.0 * dem::derive(base).shear_steps).epsilon(1e-3));
+  CHECK(dem::derive(dt).shear_steps ==
+        Approx(2.0 * double(dem::derive(base).shear_steps)).epsilon(1e-3));
   CHECK(dt.particle_count == base.particle_count);
   // consolidation windows of the same physical duration: twice the steps
   CHECK(dt.consolidation.window_steps == 2 * base.consolidation.window_steps);

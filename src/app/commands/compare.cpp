@@ -41,13 +41,10 @@ int compare_set(const CompareCommand& o, const CommandContext& context) {
     throw InputError("--model: a set (--runs) is compared with one model; give one");
   auto c = o.options;
   c.model = o.models.front();
-  comparison::RunSetOptions opt{{o.set_runs.begin(), o.set_runs.end()},
-                                c.model,
-                                c.params,
-                                o.out.empty() ? "runs/hypotheses" : o.out,
-                                c.allow_partial,
-                                c.force,
-                                context.command_line};
+  comparison::RunSetOptions opt;
+  opt.dem_dirs = {o.set_runs.begin(), o.set_runs.end()};
+  opt.model = c.model, opt.params = c.params, opt.out = o.out.empty() ? "runs/hypotheses" : o.out;
+  opt.allow_partial = c.allow_partial, opt.force = c.force, opt.command_line = context.command_line;
   opt.predicted_ds_d50 = c.predicted_ds_d50;
   opt.form_limit = c.form_limit;
   opt.roughness_scheme = c.roughness_scheme, opt.f_c = c.f_c;

@@ -110,7 +110,7 @@ std::string frictionless_drift(double consolidation_friction) {
 
 // Material properties for one grain type, or two when the wall has a glued layer (same material).
 std::string materials(const Particles& p, double friction, double rolling_friction, int types) {
-  auto repeat = [types](const std::string& v, int n) {
+  auto repeat = [](const std::string& v, int n) {
     std::string out;
     for (int i = 0; i < n; ++i) out += " " + v;
     return out;

@@ -35,7 +35,7 @@ Library open(const std::string& path, const std::string& name) {
   void* h = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (h == nullptr) throw InputError(fmt::format("--model-lib {}: {}", path, dlerror()));
   Library lib{std::shared_ptr<void>(h, [](void* p) { dlclose(p); })};
-  for (const std::string symbol : {name, name + "_"})
+  for (const std::string& symbol : {name, name + "_"})
     if (void* f = dlsym(h, symbol.c_str())) {
       lib.entry = reinterpret_cast<UmatEntry>(f);
       return lib;
