@@ -71,7 +71,8 @@ json to_json(const ClaimsReport& report) {
 
 std::string markdown(const ClaimsReport& report) {
   std::map<std::string, int> count;
-  for (const auto& r : report.results) ++count[r.status];
+  std::size_t tested = 0;
+  for (const auto& r : report.results) ++count[r.status], tested += r.difference ? 1 : 0;
   std::string tally;
   for (const auto& [status, n] : count)
     tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", n, status);
@@ -79,15 +80,19 @@ std::string markdown(const ClaimsReport& report) {
       "{} claims, tested by `iwb claims {}` (Welch's t-test, or one run against a group's 95 % "
       "prediction interval; Benjamini-Hochberg over the {} at q = {:g}; effects b - a with their "
       "95 % interval; runs split between wall and plate or at the plate handled as each claim "
-      "says): {}.\n\n| claim | says | runs a, b | a | b | b - a (95 %) | p | p, BH | status |\n"
+      "says; the seeds a group would need: those at which the measured effect and scatter give p "
+      "at most q / {}, which survives the control whatever the others give): {}.\n\n| claim | says "
+      "| runs a, b | a | b | b - a (95 %) | p | p, BH | status |\n"
       "|---|---|---|---|---|---|---|---|---|\n",
       report.results.size(), report.file.file.filename().string(), report.results.size(),
-      report.file.q, tally);
+      report.file.q, tested, tally);
   for (const auto& r : report.results) {
     const auto& d = r.difference;
     std::string status = r.status;
     if (r.seeds_needed)
       status += fmt::format(" ({} seeds a group would resolve it)", *r.seeds_needed);
+    else if (r.status == "not resolved" && d && !d->prediction_interval)
+      status += " (not within 1000 seeds a group)";
     md += fmt::format("| {} | {} (flagged runs: {}) | {}, {} | {} | {} | {} | {} | {} | {} |\n",
                       r.claim.id, r.claim.says, r.claim.flagged, runs_cell(r.a), runs_cell(r.b),
                       mean_sd(r.a), mean_sd(r.b),

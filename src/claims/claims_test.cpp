@@ -99,14 +99,17 @@ ClaimsReport test_claims(const ClaimsFile& file) {
     report.results.push_back(r);
     if (r.difference) p.push_back(r.difference->p_value);
   }
-  // the family: every claim that could be tested
+  // the family: every claim that could be tested; a claim whose p is at most q / m survives the
+  // control whatever the others give, the level the seeds a group needs are counted for
   const auto adjusted = statistics::benjamini_hochberg(p);
+  const double alpha = file.q / double(std::max<std::size_t>(p.size(), 1));
   std::size_t k = 0;
   for (auto& r : report.results) {
     if (r.difference) r.p_adjusted = adjusted[k++];
     r.status = status_of(r, file.q);
     if (r.status == "not resolved" && !r.difference->prediction_interval)
-      r.seeds_needed = statistics::seeds_to_resolve(r.a.sample, r.b.sample, r.difference->effect);
+      r.seeds_needed =
+          statistics::seeds_to_resolve(r.a.sample, r.b.sample, r.difference->effect, alpha);
   }
   return report;
 }

@@ -70,12 +70,13 @@ std::vector<double> benjamini_hochberg(const std::vector<double>& p) {
   return adjusted;
 }
 
-std::optional<int> seeds_to_resolve(const Sample& a, const Sample& b, double effect, int at_most) {
+std::optional<int> seeds_to_resolve(const Sample& a, const Sample& b, double effect, double alpha,
+                                    int at_most) {
   if (!(std::abs(effect) > 0.0)) return std::nullopt;
   for (int n = 2; n <= at_most; ++n) {
     const Sample sa{n, a.mean, a.sd}, sb{n, b.mean, b.sd};
     const auto d = compare_groups(sa, sb);
-    if (d && d->half_width < std::abs(effect)) return n;
+    if (d && d->p_value <= alpha) return n;
   }
   return std::nullopt;
 }

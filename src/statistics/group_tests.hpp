@@ -32,9 +32,12 @@ std::optional<Difference> compare_groups(const Sample& a, const Sample& b);
 // p is at most q.
 std::vector<double> benjamini_hochberg(const std::vector<double>& p_values);
 
-// The fewest seeds per group (>= 2) whose Welch interval would be narrower than |effect|, for the
-// scatter measured; nullopt beyond `at_most` or for no effect.
-std::optional<int> seeds_to_resolve(const Sample& a, const Sample& b, double effect,
+// The fewest seeds per group (>= 2) at which the effect and scatter measured would give Welch's
+// two-sided p at most `alpha`: a claim tested among m at false-discovery rate q survives
+// Benjamini-Hochberg whatever the others give once its p is at most q / m, so a family passes
+// alpha = q / m. (At the measured effect, not a power calculation: about even odds of resolving
+// it with that many seeds.) nullopt beyond `at_most` or for no effect.
+std::optional<int> seeds_to_resolve(const Sample& a, const Sample& b, double effect, double alpha,
                                     int at_most = 1000);
 
 }  // namespace iwb::statistics
