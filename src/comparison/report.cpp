@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "comparison/band_figures.hpp"
+#include "comparison/cell_glance.hpp"
 #include "comparison/cyclic_figures.hpp"
 #include "comparison/cyclic_verdicts.hpp"
 #include "comparison/dem_run.hpp"
@@ -569,8 +570,12 @@ std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs:
   if (html.has_parent_path()) fs::create_directories(html.parent_path());
   io::StagedDirectory files(html.parent_path() / (html.stem().string() + "_files"), "report-files");
   std::vector<fs::path> figures;
-  std::string body = "<section><h2>Verdicts at a glance</h2>\n" + glance_table(comparisons) +
-                     "</section>\n" + models_beside(comparisons);
+  std::vector<nlohmann::json> cmps;
+  for (const auto& c : comparisons) cmps.push_back(c.cmp);
+  std::string body = "<section><h2>Verdicts at a glance: one row per cell</h2>\n" +
+                     cell_glance_html(cell_rows(cmps)) +
+                     "</section>\n<section><h2>Runs at a glance</h2>\n" +
+                     glance_table(comparisons) + "</section>\n" + models_beside(comparisons);
   for (std::size_t i = 0; i < hypotheses.size(); ++i)
     body += hypotheses_section(hypotheses[i], sets[i]);
   for (std::size_t k = 0; k < comparisons.size(); ++k) {
