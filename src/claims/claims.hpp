@@ -66,14 +66,28 @@ struct ClaimResult {
   std::optional<int> seeds_needed;
 };
 
+// What the family's runs cost (issue 59 item 4, core-hours per resolved claim): each distinct run
+// read, excluded ones included, at the engine's wall time its manifest records (the stages'
+// wall_seconds times the engine's processes). A lower bound: a resumed stage records its last
+// attempt only, and a consolidation taken from the cache the copy, not the consolidation once run.
+struct FamilyCost {
+  int runs = 0;                 // distinct runs read
+  int runs_without_record = 0;  // no manifest.json with stages: not counted
+  double core_hours = 0.0;
+};
+
 struct ClaimsReport {
   ClaimsFile file;
   std::vector<ClaimResult> results;
+  FamilyCost cost;
 };
 
 // Reads every run (InputError naming the run and the pointer when a value is missing or not a
 // number, or a pattern matching no run), tests each claim and controls the family.
 ClaimsReport test_claims(const ClaimsFile& file);
+
+// A run's engine core-hours from its manifest.json; nullopt without one or without stages.
+std::optional<double> engine_core_hours(const std::filesystem::path& run);
 
 nlohmann::json to_json(const ClaimsReport& report);
 // The table a README shows: one row per claim, the family's control in a line above it.

@@ -1,5 +1,6 @@
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <map>
 
 #include "claims/claims.hpp"
@@ -22,6 +23,28 @@ json group_json(const Group& g) {
           {"sd", g.sample.sd},
           {"excluded", excluded},
           {"flagged_included", g.flagged_included}};
+}
+
+int resolved_count(const ClaimsReport& report) {
+  return int(std::count_if(report.results.begin(), report.results.end(), [](const ClaimResult& r) {
+    return r.status == "supported" || r.status == "contradicted";
+  }));
+}
+
+// What the family's runs cost and what it resolved for it (issue 59 item 4).
+std::string cost_line(const ClaimsReport& report) {
+  const auto& c = report.cost;
+  const int resolved = resolved_count(report);
+  std::string line = fmt::format(
+      "The family's {} runs cost {:.1f} engine core-hours at least, as their manifests record "
+      "(each "
+      "stage's last attempt, times its ranks){}: ",
+      c.runs, c.core_hours,
+      c.runs_without_record > 0 ? fmt::format(", {} without a record", c.runs_without_record)
+                                : std::string());
+  if (resolved == 0) return line + "no claim resolved.\n\n";
+  return line + fmt::format("{:.1f} core-hours per resolved claim ({} resolved).\n\n",
+                            c.core_hours / resolved, resolved);
 }
 
 std::string mean_sd(const Group& g) {
@@ -66,7 +89,12 @@ json to_json(const ClaimsReport& report) {
           {"file", report.file.file.string()},
           {"q", report.file.q},
           {"control", "Benjamini-Hochberg over every testable claim of the file"},
-          {"claims", claims}};
+          {"claims", claims},
+          {"cost",
+           {{"runs", report.cost.runs},
+            {"runs_without_record", report.cost.runs_without_record},
+            {"engine_core_hours", report.cost.core_hours},
+            {"resolved_claims", resolved_count(report)}}}};
 }
 
 std::string markdown(const ClaimsReport& report) {
@@ -86,6 +114,7 @@ std::string markdown(const ClaimsReport& report) {
       "|---|---|---|---|---|---|---|---|---|\n",
       report.results.size(), report.file.file.filename().string(), report.results.size(),
       report.file.q, tested, tally);
+  md.insert(md.find("\n\n") + 2, cost_line(report));
   for (const auto& r : report.results) {
     const auto& d = r.difference;
     std::string status = r.status;

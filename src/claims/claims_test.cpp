@@ -4,6 +4,7 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "common/errors.hpp"
 #include "io/json_file.hpp"
@@ -75,6 +76,27 @@ Group read_group(const fs::path& base, const std::vector<std::string>& patterns,
   return g;
 }
 
+FamilyCost cost_of(const std::vector<ClaimResult>& results) {
+  std::vector<std::string> runs;
+  for (const auto& r : results)
+    for (const Group* g : {&r.a, &r.b}) {
+      for (const auto& run : g->runs) runs.push_back(fs::path(run).lexically_normal().string());
+      for (const auto& [run, why] : g->excluded)
+        runs.push_back(fs::path(run).lexically_normal().string());
+    }
+  std::sort(runs.begin(), runs.end());
+  runs.erase(std::unique(runs.begin(), runs.end()), runs.end());
+  FamilyCost cost;
+  cost.runs = int(runs.size());
+  for (const auto& run : runs) {
+    if (const auto h = engine_core_hours(run))
+      cost.core_hours += *h;
+    else
+      ++cost.runs_without_record;
+  }
+  return cost;
+}
+
 std::string status_of(const ClaimResult& r, double q) {
   if (!r.difference) return "not testable";
   if (r.p_adjusted > q) return "not resolved";
@@ -86,8 +108,23 @@ std::string status_of(const ClaimResult& r, double q) {
 
 }  // namespace
 
+std::optional<double> engine_core_hours(const fs::path& run) {
+  if (!fs::is_regular_file(run / "manifest.json")) return std::nullopt;
+  const auto m = io::read_json_file(run / "manifest.json");
+  if (!m.contains("stages") || !m["stages"].is_object() || m["stages"].empty()) return std::nullopt;
+  double seconds = 0.0;
+  for (const auto& [name, stage] : m["stages"].items())
+    if (stage.is_object() && stage.contains("wall_seconds") && stage["wall_seconds"].is_number())
+      seconds += stage["wall_seconds"].get<double>();
+  int processes = 1;
+  if (m.contains("engine") && m["engine"].is_object() && m["engine"].contains("processes") &&
+      m["engine"]["processes"].is_number_integer())
+    processes = m["engine"]["processes"].get<int>();
+  return seconds * processes / 3600.0;
+}
+
 ClaimsReport test_claims(const ClaimsFile& file) {
-  ClaimsReport report{file, {}};
+  ClaimsReport report{file, {}, {}};
   const fs::path base = file.file.has_parent_path() ? file.file.parent_path() : fs::path(".");
   std::vector<double> p;
   for (const auto& c : file.claims) {
@@ -111,6 +148,7 @@ ClaimsReport test_claims(const ClaimsFile& file) {
       r.seeds_needed =
           statistics::seeds_to_resolve(r.a.sample, r.b.sample, r.difference->effect, alpha);
   }
+  report.cost = cost_of(report.results);
   return report;
 }
 

@@ -85,3 +85,35 @@ TEST_CASE("a claims file with a repeated id or a pattern naming no run is refuse
                     Catch::Contains("another claim has this id"));
   CHECK_THROWS_AS(test_file(claim("a", "none_*", "rough_*")), InputError);
 }
+
+// Core-hours per resolved claim (issue 59 item 4): flat_s1-3 ran one rank for an hour each (a
+// consolidation of 600 s and a shear of 3000 s), rough_s1-5 two ranks for half an hour each, the
+// run at the plate included (it cost as much though its value is left out): 3 x 1 + 5 x 2 x 0.5 =
+// 8 core-hours over 8 runs; the claim above is then the only one resolved.
+TEST_CASE("a claims family states what its runs cost per resolved claim", "[claims]") {
+  write_runs();
+  const auto manifest = [](const std::string& run, double consolidate_s, double shear_s, int np) {
+    std::ofstream(kDir / run / "manifest.json")
+        << nlohmann::json{{"engine", {{"name", "liggghts"}, {"processes", np}}},
+                          {"stages",
+                           {{"consolidate", {{"status", "done"}, {"wall_seconds", consolidate_s}}},
+                            {"shear", {{"status", "done"}, {"wall_seconds", shear_s}}}}}}
+               .dump();
+  };
+  for (int i = 1; i <= 3; ++i) manifest("flat_s" + std::to_string(i), 600.0, 3000.0, 1);
+  for (int i = 1; i <= 5; ++i) manifest("rough_s" + std::to_string(i), 300.0, 1500.0, 2);
+  CHECK(claims::engine_core_hours(kDir / "flat_s1") == Approx(1.0));
+  CHECK_FALSE(claims::engine_core_hours(kDir / "x_s1"));  // no manifest
+  const auto r = test_file(claim("rough-lower", "flat_*", "rough_*"));
+  CHECK(r.cost.runs == 8);
+  CHECK(r.cost.runs_without_record == 0);
+  CHECK(r.cost.core_hours == Approx(8.0));
+  CHECK_THAT(claims::markdown(r),
+             Catch::Contains("8.0 core-hours per resolved claim (1 resolved)"));
+  // the same runs in a second claim are counted once; runs without a manifest are counted apart
+  const auto two = test_file(claim("rough-lower", "flat_*", "rough_*") +
+                             claim("again", "rough_*", "flat_*") + claim("other", "x_*", "y_*"));
+  CHECK(two.cost.runs == 14);
+  CHECK(two.cost.runs_without_record == 6);
+  CHECK(two.cost.core_hours == Approx(8.0));
+}
