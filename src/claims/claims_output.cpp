@@ -37,8 +37,7 @@ std::string cost_line(const ClaimsReport& report) {
   const int resolved = resolved_count(report);
   std::string line = fmt::format(
       "The family's {} runs cost {:.1f} engine core-hours at least, as their manifests record "
-      "(each "
-      "stage's last attempt, times its ranks){}: ",
+      "(each stage's last attempt, times its ranks){}: ",
       c.runs, c.core_hours,
       c.runs_without_record > 0 ? fmt::format(", {} without a record", c.runs_without_record)
                                 : std::string());
@@ -109,12 +108,12 @@ std::string markdown(const ClaimsReport& report) {
       "prediction interval; Benjamini-Hochberg over the {} at q = {:g}; effects b - a with their "
       "95 % interval; runs split between wall and plate or at the plate handled as each claim "
       "says; the seeds a group would need: those at which the measured effect and scatter give p "
-      "at most q / {}, which survives the control whatever the others give): {}.\n\n| claim | says "
-      "| runs a, b | a | b | b - a (95 %) | p | p, BH | status |\n"
-      "|---|---|---|---|---|---|---|---|---|\n",
+      "at most q / {}, which survives the control whatever the others give): {}.\n\n",
       report.results.size(), report.file.file.filename().string(), report.results.size(),
       report.file.q, tested, tally);
-  md.insert(md.find("\n\n") + 2, cost_line(report));
+  md += cost_line(report) +
+        "| claim | says | runs a, b | a | b | b - a (95 %) | p | p, BH | status |\n"
+        "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : report.results) {
     const auto& d = r.difference;
     std::string status = r.status;
