@@ -109,8 +109,8 @@ std::string markdown(const ClaimsReport& report) {
       "95 % interval; runs split between wall and plate or at the plate handled as each claim "
       "says; the seeds a group would need: those at which the measured effect and scatter give p "
       "at most q / {}, which survives the control whatever the others give): {}.\n\n",
-      report.results.size(), report.file.file.filename().string(), report.results.size(),
-      report.file.q, tested, tally);
+      report.results.size(), report.file.file.filename().string(), tested, report.file.q, tested,
+      tally);
   md += cost_line(report) +
         "| claim | says | runs a, b | a | b | b - a (95 %) | p | p, BH | status |\n"
         "|---|---|---|---|---|---|---|---|---|\n";
