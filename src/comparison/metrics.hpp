@@ -5,12 +5,13 @@
 
 #include "comparison/dem_run.hpp"
 #include "comparison/replay.hpp"
+#include "statistics/steady_state.hpp"
 
 namespace iwb::comparison {
 
-// The residual window: the last fifth of the travelled displacement, as the DEM summary has it
-// (src/dem/summary.cpp), so that the DEM's numbers here equal its summary.json.
-inline constexpr double kResidualWindowShare = 0.2;
+// The residual window, the DEM summary's own (statistics/steady_state.hpp), so that the DEM's
+// numbers here equal its summary.json.
+using statistics::kResidualWindowShare;
 
 struct Metrics {
   double rmse_tau_kPa;

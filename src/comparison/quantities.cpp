@@ -136,9 +136,7 @@ bool is_extrapolated(const std::string& key) {
 std::optional<statistics::SteadyState> friction_steady_state(const Curve& c, double d50_mm) {
   const auto f = friction_path(c);
   if (f.s.size() < 2) return std::nullopt;
-  return statistics::steady_state(f.s, f.friction, f.s[f.peak],
-                                  (1.0 - kResidualWindowShare) * f.s.back(),
-                                  kSteadyBlockD50 * d50_mm);
+  return statistics::residual_steady_state(f.s, f.friction, f.peak, d50_mm);
 }
 
 std::map<std::string, std::optional<double>> evaluate_quantities(

@@ -52,12 +52,6 @@ struct Curve {
 std::map<std::string, std::optional<double>> evaluate_quantities(
     const Curve& curve, const std::vector<std::string>& keys);
 
-// The block length of the steady-state test's window, in grains: block means of 1 mm on the truth
-// runs (d50 2 mm) sheared 20 mm correlate at lag 1 by 0.29 on average over 10-20 mm (0.58 for
-// 0.4 mm blocks, -0.2 for 2 mm; data/grains/truth_travel20): nearly independent, where a shorter
-// block would make the drift's interval too narrow.
-inline constexpr double kSteadyBlockD50 = 0.5;
-
 // Whether the friction has settled over the last fifth (statistics/steady_state.hpp, the decay
 // fitted from the peak on, blocks of kSteadyBlockD50 grains): what the residual verdict requires
 // of every DEM run it rests on.

@@ -167,9 +167,19 @@ const std::vector<SummaryRow>& summary_rows() {
       {"u_x_at_peak_mm", "displacement to the peak", "mm", ""},
       {"residual_friction", "residual friction (mean of the last fifth)", "", ""},
       {"residual_is", "residual", "", ""},
-      {"residual_drift_over_last_fifth", "drift of the friction over the last fifth", "", ""},
+      {"/residual_test/to_go_at_window_centre",
+       "what the decay fitted from the peak has still to go at the last fifth's centre", "",
+       "none: too few rows"},
+      {"/residual_test/window_drift", "drift of the last fifth's half-grain block means", "",
+       "none: too few rows"},
+      {"end_of_path_friction", "end-of-path friction (a cyclic run: mean of the last fifth)", "",
+       ""},
       {"dilation_mm", "total dilation u_n", "mm", ""},
       {"dilatancy_angle_deg", "dilatancy angle (last fifth)", "deg", ""},
+      {"/dilatancy_rate_at_peak/rate", "dilatancy rate d u_n / d u_x within 2 d50 of the peak", "",
+       "none: too short a run"},
+      {"/dilatancy_rate_at_peak/ci95", "its 95 % half-width over half-grain blocks", "",
+       "none: too short a run"},
       {"sigma_n_mean_kPa", "mean normal stress", "kPa", ""},
       {"sigma_n_max_relative_deviation", "largest deviation of sigma_n from the target", "", ""},
       {"shear_mode", "where the specimen shears", "", ""},
@@ -190,8 +200,10 @@ const std::vector<SummaryRow>& summary_rows() {
 std::string summary_table(const nlohmann::json& s) {
   std::string h = "<table><tr><th>quantity</th><th>value</th></tr>";
   for (const auto& r : summary_rows()) {
-    if (!s.contains(r.key)) continue;
-    const auto& v = s[r.key];
+    // a key, or a JSON pointer into one of summary.json's objects
+    const nlohmann::json::json_pointer at(r.key[0] == '/' ? r.key : std::string("/") + r.key);
+    if (!s.contains(at)) continue;
+    const auto& v = s.at(at);
     const std::string unit = *r.unit ? std::string(" ") + r.unit : "";
     const std::string text = v.is_number()   ? fmt::format("{:.4g}{}", v.get<double>(), unit)
                              : v.is_string() ? v.get<std::string>()

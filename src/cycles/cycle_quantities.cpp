@@ -100,11 +100,14 @@ Cycle cycle(const Rows& r, const Program& program, int c, double sigma_n0, doubl
   const double A = program.amplitude_mm, start = (c - 1) * 4.0 * A, end = c * 4.0 * A;
   Cycle out;
   out.number = c;
+  int rows = 0;
   for (std::size_t i : r.within(start, end)) {
     const double f = r.path.tau_kPa[i] / r.path.sigma_n_kPa[i];
     out.peak_friction_positive = std::max(out.peak_friction_positive, f);
     out.peak_friction_negative = std::max(out.peak_friction_negative, -f);
+    out.mean_friction += std::abs(f), ++rows;
   }
+  out.mean_friction = rows > 0 ? out.mean_friction / rows : NAN;
   out.sigma_n_end_kPa = r.sigma_n().at(end);
   out.sigma_n_ratio = out.sigma_n_end_kPa / sigma_n0;
   out.u_n_end_mm = r.u_n().at(end);
@@ -177,6 +180,7 @@ nlohmann::json to_json(const CyclicQuantities& q) {
          {"peak_friction", std::max(c.peak_friction_positive, c.peak_friction_negative)},
          {"peak_friction_positive", c.peak_friction_positive},
          {"peak_friction_negative", c.peak_friction_negative},
+         {"mean_friction", c.mean_friction},
          {"sigma_n_end_kPa", c.sigma_n_end_kPa},
          {"sigma_n_ratio", c.sigma_n_ratio},
          {"u_n_end_mm", c.u_n_end_mm},

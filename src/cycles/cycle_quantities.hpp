@@ -45,6 +45,9 @@ struct Cycle {
   int number = 0;
   // the largest tau/sigma_n towards +A and the largest -tau/sigma_n towards -A
   double peak_friction_positive = 0.0, peak_friction_negative = 0.0;
+  // the mean of |tau|/sigma_n over the cycle's rows: the cycle's own level of friction, to which a
+  // cyclic run's end state is compared (issue 59: not a monotonic residual)
+  double mean_friction = 0.0;
   double sigma_n_end_kPa = 0.0;
   double sigma_n_ratio = 0.0;     // sigma_n at the cycle's end over sigma_n0 (CNS, CV: degradation)
   double u_n_end_mm = 0.0;        // accumulated u_n (dilation positive)

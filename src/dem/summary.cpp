@@ -8,7 +8,7 @@ namespace iwb::dem {
 
 namespace {
 
-constexpr double kLastFraction = 0.2;    // "residual" window: the last fifth of u_x
+using statistics::kResidualWindowShare;  // the end friction's window: the last fifth
 constexpr double kFirstLayerD50 = 1.0;   // the first grain layer above the wall surface
 constexpr double kDistributedR2 = 0.95;  // a linear velocity profile this good: no band
 constexpr double kDefaultBandD50 = 10.0;
@@ -163,7 +163,7 @@ Summary summarize(const Scene& scene, const io::CsvTable& ts, const io::CsvTable
   const auto peak = std::max_element(friction.begin(), friction.end());
   s.peak_friction = *peak;
   s.u_x_at_peak_mm = ux[std::size_t(peak - friction.begin())];
-  const double u_end = travel.back(), u_from = (1.0 - kLastFraction) * u_end;
+  const double u_end = travel.back(), u_from = (1.0 - kResidualWindowShare) * u_end;
   std::vector<double> xs, fs, ns;
   for (std::size_t i = 0; i < ux.size(); ++i)
     if (travel[i] >= u_from)
@@ -179,10 +179,14 @@ Summary summarize(const Scene& scene, const io::CsvTable& ts, const io::CsvTable
     s.cyclic = cycles::cyclic_quantities(
         path, {scene.shear.amplitude_m * 1e3, scene.shear.cycles, scene.shear.post_cyclic_m * 1e3});
   }
-  s.residual_friction = std::accumulate(fs.begin(), fs.end(), 0.0) / double(fs.size());
-  const Fit f = linear_fit(xs, fs);
-  s.residual_drift = f.slope * (u_end - u_from);
-  s.steady = std::abs(s.residual_drift) < kSteadyDrift;
+  s.end_friction = std::accumulate(fs.begin(), fs.end(), 0.0) / double(fs.size());
+  const double d50_mm = scene.particles.d50_m * 1e3;
+  const std::size_t peak_row = std::size_t(peak - friction.begin());
+  if (!scene.shear.cyclic()) {
+    s.residual_test = statistics::residual_steady_state(travel, friction, peak_row, d50_mm);
+    s.rate_at_peak = statistics::local_rate(travel, un, travel[peak_row], kRateHalfSpanD50 * d50_mm,
+                                            statistics::kSteadyBlockD50 * d50_mm);
+  }
   s.dilation_mm = un.back();
   s.dilatancy_angle_deg = std::atan(linear_fit(xs, ns).slope) * 180.0 / M_PI;
   const double target = scene.boundary.sigma_n_Pa / 1e3;
@@ -197,12 +201,9 @@ nlohmann::json to_json(const Summary& s) {
   auto opt = [](const std::optional<double>& v) {
     return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
   };
-  return {
+  nlohmann::json out = {
       {"peak_friction", s.peak_friction},
       {"u_x_at_peak_mm", s.u_x_at_peak_mm},
-      {"residual_friction", s.residual_friction},
-      {"residual_drift_over_last_fifth", s.residual_drift},
-      {"residual_is", s.steady ? "steady" : "not steady"},
       {"dilation_mm", s.dilation_mm},
       {"dilatancy_angle_deg", s.dilatancy_angle_deg},
       {"sigma_n_mean_kPa", s.sigma_n_mean_kPa},
@@ -219,7 +220,16 @@ nlohmann::json to_json(const Summary& s) {
       {"cyclic", s.cyclic ? cycles::to_json(*s.cyclic) : nlohmann::json(nullptr)},
       {"definitions",
        {{"friction", "tau/sigma_n, both on the tested wall"},
-        {"residual", "mean of the last fifth of u_x; 'not steady' if it drifts by more than 0.02"},
+        {"residual",
+         "mean |tau|/sigma_n over the last fifth of the travel (a monotonic run); 'steady' only "
+         "where the decay fitted from the peak has at most 2.5 % of it to go at the window's "
+         "centre and the window's half-grain block means do not drift "
+         "(statistics/steady_state.hpp)"},
+        {"end_of_path_friction",
+         "a cyclic run's mean |tau|/sigma_n over the last fifth of its travel: not a residual"},
+        {"dilatancy_rate_at_peak",
+         "d u_n / d u_x over 2 d50 either side of the peak friction: the mean of the least-squares "
+         "slopes of half-grain blocks, with its 95 % t half-width over the blocks"},
         {"far_field_speed",
          "median vx over the middle third of the specimen, relative to the first grain layer"},
         {"wall_band", "from the wall until vx is within 10 % of its drop to the far field"},
@@ -228,6 +238,32 @@ nlohmann::json to_json(const Summary& s) {
          "where vx falls from 0.9 to 0.1 of the first grain layer's speed; only when the far field "
          "is at rest (< 0.25); 'distributed shear' when the profile is linear (R^2 > 0.95)"},
         {"e_band", "porosity of the band (or the lowest 10 d50) as void ratio"}}}};
+  if (s.cyclic) {
+    out["end_of_path_friction"] = s.end_friction;
+    out["last_cycle_mean_friction"] = nullptr;
+    if (!s.cyclic->cycles.empty())
+      out["last_cycle_mean_friction"] = s.cyclic->cycles.back().mean_friction;
+    return out;
+  }
+  out["residual_friction"] = s.end_friction;
+  out["residual_is"] = s.steady() ? "steady" : "not steady";
+  out["residual_test"] = nullptr;
+  if (s.residual_test)
+    out["residual_test"] = {
+        {"to_go_at_window_centre", s.residual_test->remaining},
+        {"window_mean", s.residual_test->window_mean},
+        {"window_drift", s.residual_test->window_drift},
+        {"window_drift_ci95", s.residual_test->window_drift_ci},
+        {"allowed", statistics::kSteadyShare * std::abs(s.residual_test->window_mean)},
+        {"extrapolated_steady", opt(s.residual_test->extrapolated)}};
+  out["dilatancy_rate_at_peak"] = nullptr;
+  if (s.rate_at_peak)
+    out["dilatancy_rate_at_peak"] = {{"rate", s.rate_at_peak->rate},
+                                     {"ci95", s.rate_at_peak->half_width},
+                                     {"blocks", s.rate_at_peak->blocks},
+                                     {"from_u_x_mm", s.rate_at_peak->from},
+                                     {"to_u_x_mm", s.rate_at_peak->to}};
+  return out;
 }
 
 }  // namespace iwb::dem

@@ -9,15 +9,25 @@
 #include "cycles/cycle_quantities.hpp"
 #include "dem/scene.hpp"
 #include "io/csv_table.hpp"
+#include "statistics/local_rate.hpp"
+#include "statistics/steady_state.hpp"
 
 namespace iwb::dem {
 
 struct Summary {
   double peak_friction = 0.0;  // max tau/sigma_n (sigma_n on the tested wall)
   double u_x_at_peak_mm = 0.0;
-  double residual_friction = 0.0;      // mean over the last fifth of the displacement
-  double residual_drift = 0.0;         // change of tau/sigma_n over that window (linear fit)
-  bool steady = false;                 // |drift| below kSteadyDrift: only then is it "residual"
+  // mean |tau|/sigma_n over the last fifth of the travel: the residual of a monotonic run, the
+  // end-of-path friction of a cyclic one (issue 59: not a residual, and named apart)
+  double end_friction = 0.0;
+  // the residual rule of statistics::residual_steady_state (the comparison's own); only then is
+  // the end friction a "residual". nullopt: too few rows to tell.
+  std::optional<statistics::SteadyState> residual_test;
+  bool steady() const { return residual_test && residual_test->steady; }
+  // d u_n / d u_x over kRateHalfSpanD50 either side of the peak friction, in blocks of
+  // statistics::kSteadyBlockD50 (statistics/local_rate.hpp): the dilatancy rate at the peak with
+  // its 95 % interval; nullopt where the run is too short for three blocks
+  std::optional<statistics::LocalRate> rate_at_peak;
   double dilation_mm = 0.0;            // u_n at the end
   double dilatancy_angle_deg = 0.0;    // atan(du_n/du_x) over the last fifth
   double sigma_n_mean_kPa = 0.0;       // during shear, on the wall
@@ -38,7 +48,10 @@ struct Summary {
   std::optional<cycles::CyclicQuantities> cyclic;  // cyclic shear only: per cycle, and after them
 };
 
-inline constexpr double kSteadyDrift = 0.02;  // friction change over the last fifth (DEM.md)
+// The span of the dilatancy rate at the peak: 2 d50 either side (4 d50 in all, 8 blocks of half a
+// grain): long enough for a t-interval with 7 degrees of freedom, short against the 10-20 d50 over
+// which the truth runs' rate falls from its peak (data/dilatancy).
+inline constexpr double kRateHalfSpanD50 = 2.0;
 
 Summary summarize(const Scene& scene, const io::CsvTable& timeseries, const io::CsvTable& profiles);
 nlohmann::json to_json(const Summary& s);

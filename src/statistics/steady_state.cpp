@@ -115,4 +115,12 @@ std::optional<SteadyState> steady_state(const std::vector<double>& s, const std:
   return out;
 }
 
+std::optional<SteadyState> residual_steady_state(const std::vector<double>& s,
+                                                 const std::vector<double>& friction,
+                                                 std::size_t peak, double d50_mm) {
+  if (s.size() < 2 || peak >= s.size()) return std::nullopt;
+  return steady_state(s, friction, s[peak], (1.0 - kResidualWindowShare) * s.back(),
+                      kSteadyBlockD50 * d50_mm);
+}
+
 }  // namespace iwb::statistics

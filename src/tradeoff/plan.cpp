@@ -332,6 +332,9 @@ json run_plan(const PlanOptions& opt) {
   const dem::Scene scene = load_scene_to_plan(opt.scene_file);
   const json t = load_tradeoff(opt);
   const fs::path ref = reference_run(opt);
+  const fs::path out = opt.out.empty() ? ref.parent_path().parent_path() : opt.out;
+  // a directory that cannot take plan.json is refused before the models are replayed (seconds)
+  io::require_output_directory(out, kPlanOutput, false);
   const auto judged_on = base_runs(opt, t);
   if (judged_on.empty())
     throw InputError(
@@ -375,8 +378,7 @@ json run_plan(const PlanOptions& opt) {
                {"parameter_samples", opt.samples},
                {"params_why", opt.params_why},
                {"command_line", opt.command_line}};
-  const fs::path out = opt.out.empty() ? ref.parent_path().parent_path() : opt.out;
-  io::claim_output_directory(out, {"plan", "plan.json", {kTradeoffOutput}}, false);
+  io::claim_output_directory(out, kPlanOutput, false);
   io::write_atomically(out / "plan.json", plan.dump(2) + "\n");
   return plan;
 }

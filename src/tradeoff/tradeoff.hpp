@@ -20,6 +20,8 @@ namespace iwb::tradeoff {
 
 // A tradeoff's directory (issue 60): resumed by a later tradeoff, shared with a plan's plan.json.
 inline const io::OutputKind kTradeoffOutput{"tradeoff", "tradeoff.json"};
+// a plan writes plan.json into a directory of its own or beside its tradeoff
+inline const io::OutputKind kPlanOutput{"plan", "plan.json", {kTradeoffOutput}};
 
 // What the errors are measured against. kRefined: every knob refined at once, one seed (a scene
 // not known to be converged). kBase: the scene itself, the mean of its seeds (a scene a

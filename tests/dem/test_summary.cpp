@@ -1,8 +1,11 @@
 // Derived quantities on synthetic contract tables whose answers are known.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "dem/summary.hpp"
+#include "io/csv_table.hpp"
 #include "io/run_directory.hpp"
 
 using namespace iwb;
@@ -19,7 +22,7 @@ io::CsvTable series(double peak, double residual, double drift) {
     const double u = 0.05 * i;  // 5 mm
     const double mu =
         u < 1.0 ? peak * u
-                : (u < 2.0 ? peak - (peak - residual) * (u - 1.0) : residual + drift * (u - 4.0));
+                : (u < 2.0 ? peak - (peak - residual) * (u - 1.0) : residual + drift * (u - 2.0));
     t.rows.push_back({0.01 * i, u, 0.05 * u, 50.0, 50.0 * mu});
   }
   return t;
@@ -38,12 +41,65 @@ TEST_CASE("peak, residual and the steadiness verdict", "[dem]") {
   const auto steady = dem::summarize(scene(), series(0.8, 0.6, 0.0), {});
   CHECK(steady.peak_friction == Approx(0.8));
   CHECK(steady.u_x_at_peak_mm == Approx(1.0));
-  CHECK(steady.residual_friction == Approx(0.6));
-  CHECK(steady.steady);
+  CHECK(steady.end_friction == Approx(0.6));
+  CHECK(steady.steady());
   CHECK(steady.dilatancy_angle_deg == Approx(std::atan(0.05) * 180 / M_PI));
-  const auto drifting = dem::summarize(scene(), series(0.8, 0.6, 0.1), {});
-  CHECK_FALSE(drifting.steady);  // 0.1 per mm over the last mm: not a residual
+  // a friction still falling in a straight line at 0.05 per mm from 2 mm to the end (0.45 at 5 mm)
+  // has no end in sight: whatever decay describes it has far more than 2.5 % of the last fifth's
+  // mean (0.46) still to go
+  const auto drifting = dem::summarize(scene(), series(0.8, 0.6, -0.05), {});
+  CHECK_FALSE(drifting.steady());
   CHECK(dem::to_json(drifting)["residual_is"] == "not steady");
+}
+
+TEST_CASE(
+    "the dilatancy rate at the peak is the slope within 2 d50 of it, with the blocks' interval",
+    "[dem]") {
+  // d50 2 mm: the span is the peak at 6 mm +- 4 mm, in 8 blocks of 1 mm. u_n = 0.2 u - 0.01 u^2
+  // has the rate 0.2 - 0.02 u: 0.08 at 6 mm. Each block's slope is the rate at its rows' centre
+  // (2.475, 3.475, ... 9.5); their mean 0.0805 within 1e-3 of 0.08, and their SD 0.02 sqrt(6) =
+  // 0.04899, a 95 % half-width of t_{0.975,7} 0.04899 / sqrt 8 = 0.0410.
+  io::CsvTable t;
+  t.columns = {"t_s", "u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa"};
+  for (int i = 0; i <= 400; ++i) {
+    const double u = 0.05 * i;
+    const double mu = u < 6.0 ? 0.1 * u : 0.6 - 0.01 * (u - 6.0);
+    t.rows.push_back({0.01 * i, u, 0.2 * u - 0.01 * u * u, 50.0, 50.0 * mu});
+  }
+  const auto s = dem::summarize(scene(), t, {});
+  REQUIRE(s.rate_at_peak);
+  CHECK(s.rate_at_peak->blocks == 8);
+  CHECK(s.rate_at_peak->from == Approx(2.0));
+  CHECK(s.rate_at_peak->rate == Approx(0.08).margin(1e-3));
+  CHECK(s.rate_at_peak->half_width == Approx(0.0410).epsilon(0.01));
+  const auto j = dem::to_json(s);
+  CHECK(j["dilatancy_rate_at_peak"]["ci95"].get<double>() == Approx(s.rate_at_peak->half_width));
+}
+
+TEST_CASE("a cyclic run's end state is named apart from a residual", "[dem]") {
+  // a committed cyclic run (flat wall, CV, 10 cycles of 1 mm, then 5 mm of post-cyclic shear):
+  // its summary names the end-of-path friction and the last cycle's mean, and no residual; the
+  // last cycle's mean is recomputed here from the rows of its travel, 9 A 4 .. 10 A 4 (v t)
+  const std::filesystem::path dir = "data/cyclic/cyclic_flat_cv/runs/flat_cv_s2";
+  const auto manifest = nlohmann::json::parse(io::read_file(dir / "manifest.json"));
+  const auto sc = dem::parse_scene(manifest["scene"]["text"].get<std::string>(), "manifest.json");
+  REQUIRE(sc.shear.cyclic());
+  const auto ts = io::read_csv_table(dir / "timeseries.csv");
+  const auto j = dem::to_json(dem::summarize(sc, ts, io::read_csv_table(dir / "profiles.csv")));
+  CHECK_FALSE(j.contains("residual_friction"));
+  CHECK_FALSE(j.contains("residual_is"));
+  REQUIRE(j.contains("end_of_path_friction"));
+  const double A = sc.shear.amplitude_m * 1e3, v = sc.shear.velocity_m_s * 1e3;
+  const auto time = ts.values("t_s"), tau = ts.values("tau_kPa"), sigma = ts.values("sigma_n_kPa");
+  const double from = 4.0 * A * (sc.shear.cycles - 1), to = 4.0 * A * sc.shear.cycles;
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t i = 0; i < time.size(); ++i) {
+    const double s = v * (time[i] - time.front());
+    if (s >= from && s <= to) sum += std::abs(tau[i] / sigma[i]), ++n;
+  }
+  REQUIRE(n > 100);
+  CHECK(j["last_cycle_mean_friction"].get<double>() == Approx(sum / n).epsilon(0.01));
 }
 
 TEST_CASE(
@@ -61,9 +117,7 @@ TEST_CASE(
     t.rows.push_back({0.01 * i, u, 0.1 * std::min(u, 3.875), 50.0, 50.0 * (before ? 0.7 : 0.5)});
   }
   const auto s = dem::summarize(scene(), t, {});
-  CHECK(s.residual_friction == Approx(0.5).epsilon(1e-12));
-  CHECK(s.residual_drift == Approx(0.0).margin(1e-12));
-  CHECK(s.steady);
+  CHECK(s.end_friction == Approx(0.5).epsilon(1e-12));
   CHECK(s.dilatancy_angle_deg == Approx(0.0).margin(1e-9));
   CHECK(s.peak_friction == Approx(0.7));
   CHECK(s.dilation_mm == Approx(0.3875));
