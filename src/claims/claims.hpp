@@ -23,6 +23,11 @@
 //   b = ["cyclic_small/runs/rough_cns*"]       # the last component matches names
 //   expect = "b > a"                           # "b > a", "b < a" or "b != a"
 //   flagged = "exclude"                        # runs split or at the plate: "exclude" or "include"
+//   unsteady = "include"                       # a claim on /residual_friction: runs whose
+//                                              # residual_is is not "steady" are left out
+//                                              # ("exclude", the default: a residual is settled)
+//                                              # or kept ("include": the claim is then on the
+//                                              # friction at the runs' stated travel, and says so)
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -36,6 +41,7 @@ namespace iwb::claims {
 
 struct Claim {
   std::string id, says, quantity, relative_to, expect, flagged;
+  std::string unsteady = "exclude";
   std::vector<std::string> a, b;
 };
 

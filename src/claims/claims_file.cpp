@@ -53,6 +53,7 @@ Claim read_claim(io::TableReader& t) {
   c.b = patterns(t, "b");
   c.expect = one_of(t, "expect", {"b > a", "b < a", "b != a"});
   c.flagged = one_of(t, "flagged", {"exclude", "include"});
+  if (t.optional_text("unsteady")) c.unsteady = one_of(t, "unsteady", {"exclude", "include"});
   t.finish();
   return c;
 }

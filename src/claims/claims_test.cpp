@@ -51,11 +51,24 @@ bool flagged(const json& summary, std::string& why) {
   return false;
 }
 
+// A run whose friction has not settled (summary.json's residual_is, the comparison's own rule):
+// its "residual" is a point on the way down, and averaging it with settled ones compares
+// different states (issue 59); left out of a claim on the residual unless the claim says it is on
+// the friction at the runs' stated travel (unsteady = "include").
+bool unsettled(const json& summary, const Claim& c) {
+  return c.quantity == "/residual_friction" && c.unsteady == "exclude" &&
+         summary.value("residual_is", std::string()) != "steady";
+}
+
 Group read_group(const fs::path& base, const std::vector<std::string>& patterns, const Claim& c) {
   Group g;
   for (const auto& pattern : patterns)
     for (const auto& run : runs_of(base, pattern, c)) {
       const auto summary = io::read_json_file(run / "summary.json");
+      if (unsettled(summary, c)) {
+        g.excluded.emplace_back(run.string(), "residual not steady");
+        continue;
+      }
       std::string why;
       if (flagged(summary, why)) {
         if (c.flagged == "exclude") {

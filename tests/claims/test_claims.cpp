@@ -79,6 +79,38 @@ TEST_CASE("beside a second claim the same test is not resolved after Benjamini-H
   CHECK(kept.results[0].status != "supported");
 }
 
+TEST_CASE("a claim on the residual leaves out runs whose friction has not settled", "[claims]") {
+  // the same values as the supported claim above, as residuals; one rough run's residual is not
+  // steady and far off (10.0): excluded it changes nothing, included it reverses the sign
+  write_runs();
+  const auto residual = [](const std::string& name, double value, const std::string& is) {
+    std::ofstream(kDir / name / "summary.json") << nlohmann::json{
+        {"residual_friction", value},
+        {"residual_is", is},
+        {"shear_mode", "localised at the wall"}}.dump();
+  };
+  const double a[] = {0.418, 0.392, 0.447}, b[] = {0.343, 0.301, 0.385, 0.37};
+  for (int i = 0; i < 3; ++i) residual("flat_s" + std::to_string(i + 1), a[i], "steady");
+  for (int i = 0; i < 4; ++i) residual("rough_s" + std::to_string(i + 1), b[i], "steady");
+  residual("rough_s5", 10.0, "not steady");
+  auto on_residual = [](std::string text) {
+    return text.replace(text.find("/peak_friction"), 14, "/residual_friction");
+  };
+  const auto r = test_file(on_residual(claim("rough-lower", "flat_*", "rough_*")));
+  REQUIRE(r.results[0].b.excluded.size() == 1);
+  CHECK(r.results[0].b.excluded[0].second == "residual not steady");
+  CHECK(r.results[0].difference->p_value == Approx(0.03609332062368329).epsilon(1e-6));
+  // flagged = "include" is about runs off the wall; the unsettled run stays out
+  const auto off_wall =
+      test_file(on_residual(claim("rough-lower", "flat_*", "rough_*", "include")));
+  CHECK(off_wall.results[0].b.excluded.size() == 1);
+  // unsteady = "include": the claim is on the friction at the stated travel, the run counts
+  const auto kept = test_file(on_residual(claim("rough-lower", "flat_*", "rough_*")) +
+                              "unsteady = \"include\"\n");
+  CHECK(kept.results[0].b.excluded.empty());
+  CHECK(kept.results[0].difference->effect > 0.0);
+}
+
 TEST_CASE("a claims file with a repeated id or a pattern naming no run is refused", "[claims]") {
   write_runs();
   CHECK_THROWS_WITH(test_file(claim("a", "flat_*", "rough_*") + claim("a", "x_*", "y_*")),
