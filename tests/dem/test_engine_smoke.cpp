@@ -431,7 +431,7 @@ void check_instant_start(const std::string& engine) {
 TEST_CASE(
     "LIGGGHTS on two ranks: each rank holds a quarter to three quarters of the grains in every "
     "stage",
-    "[dem][liggghts]") {
+    "[dem][liggghts][heavy]") {
   const std::string file = "data/scenes/smoke.toml";
   const auto r = run_text(file, io::read_file(file), "smoke-two-ranks", "liggghts", 2);
   const std::regex nlocal(R"(Nlocal:\s+(\S+) ave (\S+) max (\S+) min)");
@@ -471,7 +471,7 @@ TEST_CASE("LIGGGHTS smoke CV: the plate does not move and sigma_n is free", "[de
   check_cv("liggghts");
 }
 TEST_CASE("LIGGGHTS smoke random wall: the areal mesh carries the load and drags the grains",
-          "[dem][liggghts]") {
+          "[dem][liggghts][heavy]") {
   check_random("liggghts");
 }
 TEST_CASE("YADE smoke random wall: the areal mesh carries the load and drags the grains",
@@ -499,7 +499,7 @@ TEST_CASE("YADE smoke glued: the glued layer carries the wall's load and drags t
           "[dem][yade][heavy]") {
   check_glued("yade");
 }
-TEST_CASE("YADE smoke CV: the plate does not move and sigma_n is free", "[dem][yade]") {
+TEST_CASE("YADE smoke CV: the plate does not move and sigma_n is free", "[dem][yade][heavy]") {
   check_cv("yade");
 }
 TEST_CASE(
@@ -512,7 +512,7 @@ TEST_CASE("LIGGGHTS smoke instant start: tau jumps and stays flat until the shea
   check_instant_start("liggghts");
 }
 TEST_CASE("YADE smoke start of shear: from the rest state, tau rises without a start-up plateau",
-          "[dem][yade]") {
+          "[dem][yade][heavy]") {
   check_ramped_start("yade");
 }
 TEST_CASE("YADE smoke instant start: tau jumps and stays flat until the shear wave is back",

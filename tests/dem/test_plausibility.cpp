@@ -226,6 +226,6 @@ TEST_CASE("LIGGGHTS: the smoke scene at inertial number 1e6 is failed as implaus
   garbage_run("liggghts");
 }
 TEST_CASE("YADE: the smoke scene at inertial number 1e6 is failed as implausible, not complete",
-          "[dem][yade]") {
+          "[dem][yade][heavy]") {
   garbage_run("yade");
 }

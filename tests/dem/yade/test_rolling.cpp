@@ -78,7 +78,7 @@ std::map<std::string, double> yade_contact(const Scene& s) {
 TEST_CASE(
     "YADE's rolling spring for an epsd2 scene is LIGGGHTS's k_t R*^2 of a d50 contact at sigma_n0, "
     "its cap mu_r R* F_n",
-    "[dem][yade]") {
+    "[dem][yade][heavy]") {
   const Scene truth = load_scene("data/scenes/truth.toml");
   REQUIRE(truth.particles.rolling_model == "epsd2");
   const auto contact = yade_contact(truth);
@@ -96,7 +96,7 @@ TEST_CASE(
 }
 
 TEST_CASE("YADE's rolling spring for a cdt scene stays Ai et al.'s 2.25 k_n mu_r^2 R*^2",
-          "[dem][yade]") {
+          "[dem][yade][heavy]") {
   Scene cdt = load_scene("data/scenes/truth.toml");
   cdt.particles.rolling_model = "cdt";
   const auto contact = yade_contact(cdt);
