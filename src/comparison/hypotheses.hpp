@@ -42,10 +42,11 @@ inline constexpr double kKappaSingleRunTolerance = 0.05;
 inline constexpr double kKappaResolution = 0.01;
 // The assumed band thickness of d_s = k d50 (DEM.md), in d50.
 inline constexpr double kBandMinD50 = 5.0, kBandMaxD50 = 10.0;
-// What the collapse check resolves: friction differences below the summary's steadiness limit
-// (kSteadyDrift, 0.02) and dilations below 0.05 d50 (a twentieth of a grain) are within what one
-// run's steady window fluctuates by. Below these a difference collapses whatever the seed scatter;
-// with no seed scatter (one run per d50) they are the only criterion.
+// What the collapse check resolves: friction differences below 0.02 (the summary's former
+// steadiness limit on the drift over the last fifth; the steady rule is now
+// statistics::residual_steady_state's) and dilations below 0.05 d50 (a twentieth of a grain) are
+// within what one run's steady window fluctuates by. Below these a difference collapses whatever
+// the seed scatter; with no seed scatter (one run per d50) they are the only criterion.
 inline constexpr double kFrictionResolution = 0.02;
 inline constexpr double kDilationResolutionD50 = 0.05;
 

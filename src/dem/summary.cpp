@@ -185,7 +185,7 @@ Summary summarize(const Scene& scene, const io::CsvTable& ts, const io::CsvTable
   if (!scene.shear.cyclic()) {
     s.residual_test = statistics::residual_steady_state(travel, friction, peak_row, d50_mm);
     s.rate_at_peak = statistics::local_rate(travel, un, travel[peak_row], kRateHalfSpanD50 * d50_mm,
-                                            statistics::kSteadyBlockD50 * d50_mm);
+                                            kRateBlockD50 * d50_mm);
   }
   s.dilation_mm = un.back();
   s.dilatancy_angle_deg = std::atan(linear_fit(xs, ns).slope) * 180.0 / M_PI;
@@ -228,8 +228,8 @@ nlohmann::json to_json(const Summary& s) {
         {"end_of_path_friction",
          "a cyclic run's mean |tau|/sigma_n over the last fifth of its travel: not a residual"},
         {"dilatancy_rate_at_peak",
-         "d u_n / d u_x over 2 d50 either side of the peak friction: the mean of the least-squares "
-         "slopes of half-grain blocks, with its 95 % t half-width over the blocks"},
+         "d u_n / d u_x over half a d50 either side of the peak friction: the mean of the "
+         "least-squares slopes of blocks of d50 / 8, with its 95 % t half-width over the blocks"},
         {"far_field_speed",
          "median vx over the middle third of the specimen, relative to the first grain layer"},
         {"wall_band", "from the wall until vx is within 10 % of its drop to the far field"},

@@ -53,12 +53,14 @@ TEST_CASE("peak, residual and the steadiness verdict", "[dem]") {
 }
 
 TEST_CASE(
-    "the dilatancy rate at the peak is the slope within 2 d50 of it, with the blocks' interval",
+    "the dilatancy rate at the peak is the slope within half a grain of it, with the blocks' "
+    "interval",
     "[dem]") {
-  // d50 2 mm: the span is the peak at 6 mm +- 4 mm, in 8 blocks of 1 mm. u_n = 0.2 u - 0.01 u^2
-  // has the rate 0.2 - 0.02 u: 0.08 at 6 mm. Each block's slope is the rate at its rows' centre
-  // (2.475, 3.475, ... 9.5); their mean 0.0805 within 1e-3 of 0.08, and their SD 0.02 sqrt(6) =
-  // 0.04899, a 95 % half-width of t_{0.975,7} 0.04899 / sqrt 8 = 0.0410.
+  // d50 2 mm: the span is the peak at 6 mm +- 1 mm, in 8 blocks of 0.25 mm. u_n = 0.2 u - 0.01 u^2
+  // has the rate 0.2 - 0.02 u. Each block's slope is the rate at its rows' centre (rows every
+  // 0.05 mm: 5.10, 5.35, ... 6.60, and 6.875 for the last block, which keeps its end row): their
+  // mean 5.9781 gives 0.080438, their SD 0.61752 a slope SD of 0.012350 and a 95 % half-width of
+  // t_{0.975,7} 0.012350 / sqrt 8 = 0.010325.
   io::CsvTable t;
   t.columns = {"t_s", "u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa"};
   for (int i = 0; i <= 400; ++i) {
@@ -69,9 +71,9 @@ TEST_CASE(
   const auto s = dem::summarize(scene(), t, {});
   REQUIRE(s.rate_at_peak);
   CHECK(s.rate_at_peak->blocks == 8);
-  CHECK(s.rate_at_peak->from == Approx(2.0));
-  CHECK(s.rate_at_peak->rate == Approx(0.08).margin(1e-3));
-  CHECK(s.rate_at_peak->half_width == Approx(0.0410).epsilon(0.01));
+  CHECK(s.rate_at_peak->from == Approx(5.0));
+  CHECK(s.rate_at_peak->rate == Approx(0.080438).epsilon(1e-4));
+  CHECK(s.rate_at_peak->half_width == Approx(0.010325).epsilon(1e-3));
   const auto j = dem::to_json(s);
   CHECK(j["dilatancy_rate_at_peak"]["ci95"].get<double>() == Approx(s.rate_at_peak->half_width));
 }
