@@ -6,7 +6,8 @@
 # restore puts DEST's committed runs into WORK (so `iwb sweep` reuses them), sweeps runs
 # data/sweeps/<s>.toml for each s into WORK/<s>, copy puts each sweep's compact files into DEST/<s>
 # (data/copy_campaign.sh; also every COPY_EVERY_S seconds while the sweeps run).
-# Environment: DEST, SWEEPS (required, in order of value); IWB (build/iwb: give a copy, so that a
+# Environment: DEST, SWEEPS (required, in order of value: a name of data/sweeps/ or a sweep file's
+# path, e.g. a plan of `iwb claims --plan-seeds` committed under DEST; its name is the file's); IWB (build/iwb: give a copy, so that a
 # rebuild does not change the binary under a running campaign); JOBS runs at once (2) with NP
 # ranks each (1): on 2 cores two one-rank runs finish 1.9 times as many runs per hour as one
 # two-rank run; WORK (runs/<DEST's name>); COMMIT=1 commits DEST/<sweep> after every copy (only
@@ -25,11 +26,16 @@ export IWB_CONSOLIDATED_DIR=${IWB_CONSOLIDATED_DIR:-$PWD/$WORK/consolidated}
 stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(restore sweeps copy)
 
+sweep_name() { local s=${1##*/}; echo "${s%.toml}"; }
+sweep_file() { case $1 in */* | *.toml) echo "$1" ;; *) echo "data/sweeps/$1.toml" ;; esac; }
+
 # Commits the sweeps' directories only: a file edited by hand elsewhere under DEST (its README, a
 # script) is the editor's to commit, under its own message.
 copy_all() {
   local copied=()
+  local s
   for s in "${sweeps[@]}"; do
+    s=$(sweep_name "$s")
     [ -f "$WORK/$s/sweep.json" ] && data/copy_campaign.sh "$WORK/$s" "$DEST/$s" && copied+=("$DEST/$s")
   done
   if [ "$COMMIT" = 1 ] && [ ${#copied[@]} -gt 0 ] && [ -n "$(git status --porcelain -- "${copied[@]}")" ]; then
@@ -50,10 +56,13 @@ copy_while_running() {
 for stage in "${stages[@]}"; do
   case $stage in
     restore)
-      for s in "${sweeps[@]}"; do data/restore_campaign.sh "$DEST/$s" "$WORK/$s"; done ;;
+      for s in "${sweeps[@]}"; do
+        s=$(sweep_name "$s")
+        data/restore_campaign.sh "$DEST/$s" "$WORK/$s"
+      done ;;
     sweeps)
       (for s in "${sweeps[@]}"; do
-         "$IWB" sweep "data/sweeps/$s.toml" --jobs "$JOBS" --np "$NP" -o "$WORK/$s"
+         "$IWB" sweep "$(sweep_file "$s")" --jobs "$JOBS" --np "$NP" -o "$WORK/$(sweep_name "$s")"
        done) &
       runner=$!
       copy_while_running "$runner" &

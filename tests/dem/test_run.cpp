@@ -125,7 +125,8 @@ TEST_CASE("LIGGGHTS: a servo that does not converge fails the run with its reaso
           "[dem][liggghts]") {
   servo_failure("liggghts");
 }
-TEST_CASE("YADE: a servo that does not converge fails the run with its reason", "[dem][yade][heavy]") {
+TEST_CASE("YADE: a servo that does not converge fails the run with its reason",
+          "[dem][yade][heavy]") {
   servo_failure("yade");
 }
 
@@ -281,7 +282,8 @@ TEST_CASE("YADE: a clamp under the plate holds its grains while the wall shears 
 // (Law2_ScGeom_CapillaryPhys_Capillarity reads the capillary tables the runner writes; without
 // them it runs dry with a warning only, so a bridge count of 0 is the failure this catches), and
 // LIGGGHTS, which has no such law, refuses it before anything is written.
-TEST_CASE("YADE: a wet scene holds liquid bridges between most touching grains", "[dem][yade][heavy]") {
+TEST_CASE("YADE: a wet scene holds liquid bridges between most touching grains",
+          "[dem][yade][heavy]") {
   // 0.2 mm of shear (10 rows), not the smoke scene's 2 mm: the bridges are counted at the end of
   // each stage, and the shear stage only has to keep them (76 s of YADE saved)
   const std::string text = replaced(test::smoke_sheared_over("data/scenes/smoke.toml", 0.2),

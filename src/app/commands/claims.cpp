@@ -9,6 +9,7 @@
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
+#include "claims/seed_plan.hpp"
 #include "common/errors.hpp"
 #include "io/run_directory.hpp"
 
@@ -26,20 +27,47 @@ constexpr const char* kClaimsHelp =
     "Writes claims.json and claims.md to -o. With --readme FILE the table replaces FILE's block "
     "between '<!-- BEGIN claims: NAME -->' and '<!-- END claims -->' (NAME the claims file's name; "
     "nothing else of FILE is touched); with --check-readme FILE it only says whether that block is "
-    "current (exit 1 if not).\n"
+    "current (exit 1 if not). With --plan-seeds DIR and --budget-core-hours H it plans the runs "
+    "that would resolve the claims left undecided (issue 59, \"evidence where it decides\"): per "
+    "group of runs, the seeds its claims need at the measured effect and scatter, more where some "
+    "of its runs were left out (split, at the plate, not steady), each priced at the group's mean "
+    "engine core-hours; claims cheapest first within the budget; writes plan.md, plan.json and "
+    "an `iwb sweep` file per group to DIR.\n"
     "Example: iwb claims data/cyclic/claims.toml -o runs/claims-cyclic --readme "
-    "data/cyclic/README.md";
+    "data/cyclic/README.md\n"
+    "Example: iwb claims data/cyclic/claims.toml --plan-seeds runs/seeds-cyclic "
+    "--budget-core-hours 10";
 
 struct ClaimsCommand {
-  std::string file, out, readme, check_readme;
+  std::string file, out, readme, check_readme, plan_seeds;
+  double budget_core_hours = 0.0;
   bool force = false;
 };
 
 const io::OutputKind kClaimsOutput{"claims"};
+const io::OutputKind kSeedPlanOutput{"seed-plan", "plan.json"};
+
+int run_seed_plan(const ClaimsCommand& c, const claims::ClaimsReport& report,
+                  const CommandContext& context) {
+  const auto plan = claims::plan_seeds(report, c.budget_core_hours);
+  io::prepare_run_directory(c.plan_seeds, kSeedPlanOutput, c.force);
+  claims::write_seed_plan(plan, c.plan_seeds);
+  std::vector<std::string> files = {"plan.json", "plan.md"};
+  for (const auto& g : plan.groups)
+    files.push_back("scenes/" + g.name + ".toml"), files.push_back("sweeps/" + g.name + ".toml");
+  io::write_manifest(c.plan_seeds, {{"kind", "seed-plan"},
+                                    {"command_line", context.command_line},
+                                    {"finished", io::utc_timestamp()},
+                                    {"status", "complete"},
+                                    {"files", files}});
+  fmt::print("{}", claims::markdown(plan));
+  return 0;
+}
 
 int run_claims(const ClaimsCommand& c, const CommandContext& context) {
   const auto file = claims::read_claims(c.file);
   const auto report = claims::test_claims(file);  // every run read before anything is written
+  if (!c.plan_seeds.empty()) return run_seed_plan(c, report, context);
   const std::string table = claims::markdown(report);
   const std::string name = std::filesystem::path(c.file).filename().string();
   if (!c.check_readme.empty()) {
@@ -85,11 +113,21 @@ void add_claims_command(CLI::App& app, CommandList& commands) {
   auto* check = cmd->add_option("--check-readme", c->check_readme,
                                 "README whose claims block to check (writes nothing)")
                     ->check(input_file());
-  cmd->add_flag("--force", c->force, "replace an earlier claims output in the same directory");
-  check->excludes(out)->excludes(readme);
+  auto* plan = cmd->add_option("--plan-seeds", c->plan_seeds,
+                               "directory for the plan of seeds that would resolve the undecided "
+                               "claims (plan.md, plan.json, sweeps/, scenes/)")
+                   ->check(output_directory());
+  auto* budget = cmd->add_option("--budget-core-hours", c->budget_core_hours,
+                                 "engine core-hours the planned runs may cost, in all")
+                     ->check(number_in(positive(1e6), "core-hours"));
+  plan->needs(budget);
+  budget->needs(plan);
+  cmd->add_flag("--force", c->force, "replace an earlier output in the same directory");
+  check->excludes(out)->excludes(readme)->excludes(plan);
+  plan->excludes(out)->excludes(readme);
   commands.add(cmd, [c](const CommandContext& context) {
-    if (c->check_readme.empty() && c->out.empty())
-      throw InputError("iwb claims: --out is required (or --check-readme alone)");
+    if (c->check_readme.empty() && c->out.empty() && c->plan_seeds.empty())
+      throw InputError("iwb claims: --out is required (or --check-readme or --plan-seeds alone)");
     return run_claims(*c, context);
   });
 }
