@@ -11,18 +11,22 @@
 
 #include "claims/claims.hpp"
 #include "common/errors.hpp"
+#include "support/case_directory.hpp"
 
 using namespace iwb;
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kDir = fs::path(IWB_TEST_RUNS_DIR) / "claims";
+// the running case's own directory (tests/support/case_directory.hpp)
+fs::path runs_dir() {
+  return test::case_directory(fs::path(IWB_TEST_RUNS_DIR) / "claims");
+}
 
 void write_summary(const std::string& name, double value,
                    const std::string& mode = "localised at the wall") {
-  fs::create_directories(kDir / name);
-  std::ofstream(kDir / name / "summary.json")
+  fs::create_directories(runs_dir() / name);
+  std::ofstream(runs_dir() / name / "summary.json")
       << nlohmann::json{{"peak_friction", value}, {"shear_mode", mode}}.dump();
 }
 
@@ -33,12 +37,12 @@ std::string claim(const std::string& id, const std::string& a, const std::string
 }
 
 claims::ClaimsReport test_file(const std::string& body) {
-  std::ofstream(kDir / "claims.toml") << "q = 0.05\n" << body;
-  return claims::test_claims(claims::read_claims(kDir / "claims.toml"));
+  std::ofstream(runs_dir() / "claims.toml") << "q = 0.05\n" << body;
+  return claims::test_claims(claims::read_claims(runs_dir() / "claims.toml"));
 }
 
 void write_runs() {
-  fs::remove_all(kDir);
+  fs::remove_all(runs_dir());
   const double a[] = {0.418, 0.392, 0.447}, b[] = {0.343, 0.301, 0.385, 0.37};
   for (int i = 0; i < 3; ++i) write_summary("flat_s" + std::to_string(i + 1), a[i]);
   for (int i = 0; i < 4; ++i) write_summary("rough_s" + std::to_string(i + 1), b[i]);
@@ -84,7 +88,7 @@ TEST_CASE("a claim on the residual leaves out runs whose friction has not settle
   // steady and far off (10.0): excluded it changes nothing, included it reverses the sign
   write_runs();
   const auto residual = [](const std::string& name, double value, const std::string& is) {
-    std::ofstream(kDir / name / "summary.json") << nlohmann::json{
+    std::ofstream(runs_dir() / name / "summary.json") << nlohmann::json{
         {"residual_friction", value},
         {"residual_is", is},
         {"shear_mode", "localised at the wall"}}.dump();
@@ -125,7 +129,7 @@ TEST_CASE("a claims file with a repeated id or a pattern naming no run is refuse
 TEST_CASE("a claims family states what its runs cost per resolved claim", "[claims]") {
   write_runs();
   const auto manifest = [](const std::string& run, double consolidate_s, double shear_s, int np) {
-    std::ofstream(kDir / run / "manifest.json")
+    std::ofstream(runs_dir() / run / "manifest.json")
         << nlohmann::json{{"engine", {{"name", "liggghts"}, {"processes", np}}},
                           {"stages",
                            {{"consolidate", {{"status", "done"}, {"wall_seconds", consolidate_s}}},
@@ -134,8 +138,8 @@ TEST_CASE("a claims family states what its runs cost per resolved claim", "[clai
   };
   for (int i = 1; i <= 3; ++i) manifest("flat_s" + std::to_string(i), 600.0, 3000.0, 1);
   for (int i = 1; i <= 5; ++i) manifest("rough_s" + std::to_string(i), 300.0, 1500.0, 2);
-  CHECK(claims::engine_core_hours(kDir / "flat_s1") == Approx(1.0));
-  CHECK_FALSE(claims::engine_core_hours(kDir / "x_s1"));  // no manifest
+  CHECK(claims::engine_core_hours(runs_dir() / "flat_s1") == Approx(1.0));
+  CHECK_FALSE(claims::engine_core_hours(runs_dir() / "x_s1"));  // no manifest
   const auto r = test_file(claim("rough-lower", "flat_*", "rough_*"));
   CHECK(r.cost.runs == 8);
   CHECK(r.cost.runs_without_record == 0);

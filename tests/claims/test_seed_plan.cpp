@@ -19,30 +19,34 @@
 
 #include "claims/claims.hpp"
 #include "claims/seed_plan.hpp"
+#include "support/case_directory.hpp"
 
 using namespace iwb;
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kPlanRuns = fs::path(IWB_TEST_RUNS_DIR) / "seed_plan";
+// the running case's own directory (tests/support/case_directory.hpp)
+fs::path plan_runs_dir() {
+  return test::case_directory(fs::path(IWB_TEST_RUNS_DIR) / "seed_plan");
+}
 
 void write_planned_run(const std::string& name, int seed, double value, double hours, int ranks,
                        const std::string& mode = "localised at the wall") {
-  fs::create_directories(kPlanRuns / name);
-  std::ofstream(kPlanRuns / name / "summary.json")
+  fs::create_directories(plan_runs_dir() / name);
+  std::ofstream(plan_runs_dir() / name / "summary.json")
       << nlohmann::json{{"peak_friction", value}, {"shear_mode", mode}}.dump();
-  std::ofstream(kPlanRuns / name / "manifest.json")
-      << nlohmann::json{{"seed", seed},
-                        {"engine", {{"name", "liggghts"}, {"processes", ranks}}},
-                        {"scene", {{"text", "description = 'the scene of " + name + "'\n"}}},
-                        {"stages",
-                         {{"shear", {{"status", "done"}, {"wall_seconds", hours * 3600}}}}}}
-             .dump();
+  std::ofstream(plan_runs_dir() / name / "manifest.json") << nlohmann::json{
+      {"seed", seed},
+      {"engine", {{"name", "liggghts"}, {"processes", ranks}}},
+      {"scene", {{"text", "description = 'the scene of " + name + "'\n"}}},
+      {"stages",
+       {{"shear",
+         {{"status", "done"}, {"wall_seconds", hours * 3600}}}}}}.dump();
 }
 
 claims::ClaimsReport two_undecided_claims() {
-  fs::remove_all(kPlanRuns);
+  fs::remove_all(plan_runs_dir());
   const double a[] = {0.418, 0.392, 0.447}, b[] = {0.343, 0.301, 0.385, 0.37};
   for (int i = 0; i < 3; ++i)
     write_planned_run("flat_s" + std::to_string(i + 1), i + 1, a[i], 1.0, 1);
@@ -59,8 +63,8 @@ claims::ClaimsReport two_undecided_claims() {
     body += std::string("[[claim]]\nid = \"") + id +
             "\"\nsays = \"s\"\nquantity = " + "\"/peak_friction\"\na = [\"" + a_ + "\"]\nb = [\"" +
             b_ + "\"]\nexpect = \"b != a\"\nflagged = \"exclude\"\n";
-  std::ofstream(kPlanRuns / "claims.toml") << body;
-  return claims::test_claims(claims::read_claims(kPlanRuns / "claims.toml"));
+  std::ofstream(plan_runs_dir() / "claims.toml") << body;
+  return claims::test_claims(claims::read_claims(plan_runs_dir() / "claims.toml"));
 }
 
 const claims::GroupPlan* group_of(const claims::SeedPlan& plan, const std::string& pattern) {
@@ -119,7 +123,7 @@ TEST_CASE("a seed plan writes a sweep per group that sets the new seeds on the g
           "[claims]") {
   const auto report = two_undecided_claims();
   const auto plan = claims::plan_seeds(report, 1000.0);
-  const fs::path out = kPlanRuns / "plan";
+  const fs::path out = plan_runs_dir() / "plan";
   claims::write_seed_plan(plan, out);
   for (const auto& g : plan.groups) {
     const auto sweep = toml::parse_file((out / "sweeps" / (g.name + ".toml")).string());
