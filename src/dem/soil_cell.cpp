@@ -13,6 +13,8 @@
 #include "dem/summary.hpp"
 #include "dem/yade/yade_engine.hpp"
 #include "dem/yade/yade_periodic_cell.hpp"
+#include "io/directory_lock.hpp"
+#include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_override.hpp"
 #include "io/toml_reader.hpp"
@@ -239,6 +241,20 @@ nlohmann::json linearity_json(const io::CsvTable& profiles) {
           {"homogeneous_rule", fmt::format("R^2 of vx/v_wall against height at least {:g} in every "
                                            "profile window",
                                            calibration::kHomogeneousCellR2)}};
+}
+
+// The cell's summary (manifest cell_summary): the interface summary's quantities of its series,
+// and how homogeneously it sheared.
+nlohmann::json cell_summary(const Scene& cell, const io::CsvTable& timeseries,
+                            const io::CsvTable& profiles, bool periodic_cell) {
+  auto summary = to_json(summarize(cell, timeseries, profiles));
+  summary.update(linearity_json(profiles));
+  if (periodic_cell)  // no wall, no plate: what the interface summary reads at them is not there
+    for (const char* key :
+         {"wall_slip", "wall_share_of_velocity_drop", "far_field_speed", "wall_band_d50",
+          "plate_band_d50", "band_thickness_d50", "band_thickness_erfc_fit_d50"})
+      summary.erase(key);
+  return summary;
 }
 
 SoilTest simple_shear_result(const Scene& cell, const ContractTables& tables,
@@ -478,14 +494,7 @@ RunOutcome run_soil_test(const std::string& text, const std::string& source, con
       const ContractTables tables = engine.assemble(run->ctx, run->facts);
       t = simple_shear_result(cell, tables, run->facts, c.test);
       io::write_atomically(opt.out / "profiles.csv", tables.profiles.to_csv());
-      auto summary = to_json(summarize(cell, tables.timeseries, tables.profiles));
-      summary.update(linearity_json(tables.profiles));
-      if (periodic(c))  // no wall, no plate: what the interface summary reads at them is not there
-        for (const char* key :
-             {"wall_slip", "wall_share_of_velocity_drop", "far_field_speed", "wall_band_d50",
-              "plate_band_d50", "band_thickness_d50", "band_thickness_erfc_fit_d50"})
-          summary.erase(key);
-      m["cell_summary"] = summary;
+      m["cell_summary"] = cell_summary(cell, tables.timeseries, tables.profiles, periodic(c));
       m["engine_facts"] = tables.facts;
       m["gamma_reached"] = t.control.back();
       m["files"] = periodic(c)
@@ -507,6 +516,34 @@ RunOutcome run_soil_test(const std::string& text, const std::string& source, con
     io::write_manifest(opt.out, m);
   }
   return out;
+}
+
+nlohmann::json resummarize_cell(const fs::path& dir) {
+  const fs::path manifest = dir / "manifest.json";
+  if (!fs::exists(manifest))
+    throw InputError(fmt::format("{}: not a run directory (no manifest.json)", dir.string()));
+  const auto lock = io::DirectoryLock::take(dir, "iwb dem summary");
+  auto m = io::read_json_file(manifest);
+  const auto status = io::json_field<std::string>(m, "/status", manifest);
+  if (status != "complete" || !m.contains("cell_summary"))
+    throw InputError(
+        fmt::format("{}: a soil test whose status is '{}'{}; only complete simple "
+                    "shear cells are summarised",
+                    manifest.string(), status,
+                    m.contains("cell_summary") ? "" : " and without a cell_summary"));
+  const Scene cell = parse_scene(io::json_field<std::string>(m, "/cell_scene/text", manifest),
+                                 manifest.string() + ": /cell_scene/text");
+  const auto ts = io::read_csv_table(dir / "timeseries.csv");
+  for (const char* column : {"u_x_mm", "u_n_mm", "sigma_n_kPa", "tau_kPa"})
+    if (ts.column(column) < 0)
+      throw InputError(
+          fmt::format("{}: no column '{}'", (dir / "timeseries.csv").string(), column));
+  // cells run before the periodic one existed record no "cell": they had plates
+  const bool periodic_cell = m.value("cell", std::string("plates")) == "periodic";
+  m["cell_summary"] =
+      cell_summary(cell, ts, io::read_csv_table(dir / "profiles.csv"), periodic_cell);
+  io::write_atomically(manifest, m.dump(2) + "\n");
+  return m["cell_summary"];
 }
 
 }  // namespace iwb::dem

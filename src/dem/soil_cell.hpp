@@ -84,4 +84,9 @@ std::vector<double> oedometer_levels_kPa(const SoilCellSpec& spec);
 RunOutcome run_soil_test(const std::string& scene_text, const std::string& source,
                          const SoilCellSpec& spec, const RunOptions& options);
 
+// A complete simple-shear cell's cell_summary recomputed from its committed files (the cell's
+// scene in the manifest, timeseries.csv, profiles.csv) and written back into its manifest: what
+// `iwb dem summary` does for an interface run. InputError for anything else.
+nlohmann::json resummarize_cell(const std::filesystem::path& dir);
+
 }  // namespace iwb::dem

@@ -336,3 +336,39 @@ TEST_CASE("a suction beyond the capillary tables is refused, naming the largest 
       dem::parse_scene(text, "wet.toml"),
       Catch::Contains("key 'particles.suction_kPa' = 100") && Catch::Contains("at most 24.3 kPa"));
 }
+
+// A committed periodic soil cell (data/dilatancy, seed 1): `dem summary` recomputes its
+// cell_summary in the manifest from its files. Its peak friction is the committed one to the
+// CSV's digits, and its dilatancy rate at the peak is recomputed here by hand from the rows: the
+// mean of the least-squares slopes of u_n on u_x in 8 blocks of d50 / 8 over d50 / 2 either side of
+// the peak friction (d50 2 mm).
+TEST_CASE("dem summary recomputes a soil cell's summary, its rate at the peak as the rows give it",
+          "[dem]") {
+  const fs::path committed = "data/dilatancy/periodic/seed1/simpleshear-CNL-as-scene-50";
+  const auto dir = fs::path(IWB_TEST_RUNS_DIR) / "dem" / "cell_summary";
+  test::fresh_copy(committed, dir);
+  REQUIRE(test::run_iwb({"dem", "summary", dir.string()}).exit_code == 0);
+  const auto before = nlohmann::json::parse(io::read_file(committed / "manifest.json"));
+  const auto after = nlohmann::json::parse(io::read_file(dir / "manifest.json"))["cell_summary"];
+  CHECK(after["peak_friction"].get<double>() ==
+        Approx(before["cell_summary"]["peak_friction"].get<double>()).epsilon(1e-9));
+  const auto ts = io::read_csv_table(dir / "timeseries.csv");
+  const auto ux = ts.values("u_x_mm"), un = ts.values("u_n_mm"), tau = ts.values("tau_kPa"),
+             sigma = ts.values("sigma_n_kPa");
+  std::size_t peak = 0;
+  for (std::size_t i = 0; i < ux.size(); ++i)
+    if (std::abs(tau[i]) / sigma[i] > std::abs(tau[peak]) / sigma[peak]) peak = i;
+  const double from = std::max(ux.front(), ux[peak] - 1.0), width = 2.0 / 8;
+  double sum = 0.0;
+  for (int b = 0; b < 8; ++b) {
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = 0; i < ux.size(); ++i)
+      if (ux[i] >= from + b * width &&
+          (ux[i] < from + (b + 1) * width || (b == 7 && ux[i] <= from + 2.0)))
+        n += 1, sx += ux[i], sy += un[i], sxx += ux[i] * ux[i], sxy += ux[i] * un[i];
+    REQUIRE(n >= 3);
+    sum += (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  }
+  CHECK(after["dilatancy_rate_at_peak"]["rate"].get<double>() == Approx(sum / 8).epsilon(1e-9));
+  CHECK(after["dilatancy_rate_at_peak"]["ci95"].get<double>() > 0.0);
+}
