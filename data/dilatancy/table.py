@@ -6,6 +6,13 @@ flat, R_n 0.25 and R_n 0.5 walls; and vw3d with the calibrated set, started at e
 void ratio. In simple shear d u_n / d u_x = d eps_n / d gamma, and at an interface whose dilation
 happens in a band of thickness d_s it is d eps_n / d gamma of the band: the rate compares the three
 whatever the band's thickness. Run from the repository root: /usr/bin/python3 data/dilatancy/table.py
+
+Every DEM measure is the product's (issue 59: no table script re-implements a rule): the rate at
+the peak and the peak friction from each run's summary (summary.json; a soil cell's manifest
+cell_summary, both recomputed by `iwb dem summary`), the element span from cell_summary's
+element_until_gamma (calibration's own rule). The rate is d u_n / d u_x over half a d50 either side
+of the peak friction, the mean of 8 block slopes (src/dem/summary.hpp); until 2 Dec it was the
+largest 1 mm windowed slope here, which grows with the noise.
 """
 import csv
 import glob
@@ -22,7 +29,6 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))  # data/seed_stats.py
 from seed_stats import interval  # noqa: E402
 
-WINDOW_MM = 1.0  # travel over which the rate is a least-squares slope (both kinds of run)
 # vw3d's calibrated sets: on the plate cells (issue 20) and on the periodic cells (issue 38), the
 # latter where it exists
 PARAMS = {"plates": "data/params/truth_grains_epsd2.toml",
@@ -35,16 +41,18 @@ def load(path):
     return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
 
 
-def peak_rate(ux, un):
-    """Largest least-squares slope of u_n over u_x in a window of WINDOW_MM, and where it is."""
-    best, at = -np.inf, np.nan
-    for x in ux:
-        m = (ux >= x - WINDOW_MM / 2) & (ux <= x + WINDOW_MM / 2)
-        if m.sum() > 3:
-            s = np.polyfit(ux[m], un[m], 1)[0]
-            if s > best:
-                best, at = s, x
-    return best, at
+def summary_of(run_dir):
+    """The product's summary of a run: summary.json, or a soil cell's manifest cell_summary."""
+    path = os.path.join(run_dir, "summary.json")
+    if os.path.exists(path):
+        return json.load(open(path))
+    return json.load(open(os.path.join(run_dir, "manifest.json")))["cell_summary"]
+
+
+def rate_at_peak(summary):
+    """(rate, 95 % half-width over its blocks) of the summary's dilatancy rate at the peak."""
+    r = summary["dilatancy_rate_at_peak"]
+    return r["rate"], r["ci95"]
 
 
 def model_run(e0, params, sigma_kPa=50.0, gamma=0.5):
@@ -66,33 +74,26 @@ def model_run(e0, params, sigma_kPa=50.0, gamma=0.5):
 
 
 def homogeneous_until(manifest_path):
-    """A periodic cell's gamma at the end of the last profile window before its velocity profile
-    bends (R^2 below the threshold) in two windows running or in the last one, as
-    src/calibration/soil_test.cpp reads it; "all" when it never does; "" for a plate cell (no
-    claim)."""
+    """A periodic cell's element span as the product records it (cell_summary.element_until_gamma:
+    0 throughout, -1 not from the first window): "all", "none" or the gamma; "" for a plate cell."""
     m = json.load(open(manifest_path))
     if m.get("cell") != "periodic":
         return ""
-    cs = m["cell_summary"]
-    r2 = [w["r2"] for w in cs["profile_linearity_r2_by_window"]] + [0.0]
-    bent = [v < cs.get("homogeneous_r2_threshold", 0.9) for v in r2]
-    per_mm = m["gamma_reached"] / m["cell_scene"]["resolved"]["shear"]["travel_mm"]
-    for k in range(len(r2) - 1):
-        if bent[k] and bent[k + 1]:
-            return f"{cs['profile_linearity_r2_by_window'][k - 1]['u_x_mm_window'] * per_mm:.2f}" if k else "none"
-    return "all"
+    g = m["cell_summary"]["element_until_gamma"]
+    return "all" if g == 0 else ("none" if g < 0 else f"{g:.2f}")
 
 
 def soil_rows(pattern):
     out = []
     for f in sorted(glob.glob(pattern)):
         d = load(f)
-        mu = d["tau_kPa"] / d["sigma_n_kPa"]
+        run = os.path.dirname(f)
+        s = summary_of(run)
         height = d["u_x_mm"][-1] / d["gamma"][-1]
-        rate, at = peak_rate(d["u_x_mm"], d["u_n_mm"])
+        rate, ci = rate_at_peak(s)
         models = [x for k in SETS for x in model_run(d["e"][0], PARAMS[k])]
-        out.append((f.split("/")[-3], d["e"][0], mu.max(), rate, at / height,
-                    homogeneous_until(f.replace("timeseries.csv", "manifest.json")), *models))
+        out.append((f.split("/")[-3], d["e"][0], s["peak_friction"], rate, ci, s["u_x_at_peak_mm"] / height,
+                    homogeneous_until(os.path.join(run, "manifest.json")), *models))
     return out
 
 
@@ -100,8 +101,10 @@ def interface_rows(pattern):
     out = []
     for f in sorted(glob.glob(pattern)):
         d = load(f)
-        rate, at = peak_rate(d["u_x_mm"], d["u_n_mm"])
-        out.append((f.split("/")[-2], d["e_band"][0], d["e_specimen"][0], (d["tau_kPa"] / d["sigma_n_kPa"]).max(), rate, at))
+        s = summary_of(os.path.dirname(f))
+        rate, ci = rate_at_peak(s)
+        out.append((f.split("/")[-2], d["e_band"][0], d["e_specimen"][0], s["peak_friction"], rate, ci,
+                    s["u_x_at_peak_mm"]))
     return out
 
 
@@ -117,9 +120,9 @@ def mean_sd(xs):
 def main():
     print("## Soil cell, CNL 50 kPa (12 x 6 x 12 d50, I 3e-4), against vw3d from the cell's own e0\n")
     print("Periodic cells: homogeneous until gamma (the end of the last profile window whose velocity profile is")
-    print("straight, R^2 >= 0.9; \"all\": every window). The peak rate's gamma lies before it where the peak is an element's.\n")
+    print("straight, R^2 >= 0.9; \"all\": every window). The rate is the summary's, at the peak friction's gamma.\n")
     sets = "".join(f" vw3d ({k} set) peak friction | rate |" for k in SETS)
-    print("| cell | density | seed | e0 | DEM peak friction | DEM peak rate | at gamma | homogeneous until |" + sets)
+    print("| cell | density | seed | e0 | DEM peak friction | DEM rate at the peak (95 %, blocks) | at gamma | homogeneous until |" + sets)
     print("|---|---|---|---|---|---|---|---|" + "---|---|" * len(SETS))
     groups = {}
     calib = "data/calibration/truth_grains_epsd2{}/seed*/simpleshear-CNL-{}-50/timeseries.csv"
@@ -132,11 +135,11 @@ def main():
             ("periodic", "loose", calib.format("_periodic", "loose"))]:
         rows = soil_rows(pattern)
         groups[(cell, name)] = rows
-        for seed, e0, mu, rate, g, until, *models in rows:
-            print(f"| {cell} | {name} | {seed} | {e0:.3f} | {mu:.3f} | {rate:.3f} | {g:.3f} | {until} |" +
+        for seed, e0, mu, rate, ci, g, until, *models in rows:
+            print(f"| {cell} | {name} | {seed} | {e0:.3f} | {mu:.3f} | {rate:.3f} +- {ci:.3f} | {g:.3f} | {until} |" +
                   "".join(f" {x:.3f} |" for x in models))
     print("\n## Interface runs of the truth scene, CNL 50 kPa\n")
-    print("| wall | run | e_band at start | e_specimen at start | peak friction | peak rate | at u_x (mm) |")
+    print("| wall | run | e_band at start | e_specimen at start | peak friction | rate at the peak (95 %, blocks) | at u_x (mm) |")
     print("|---|---|---|---|---|---|---|")
     iface = {}
     for wall, pattern in [("flat", "data/reference/truth2_rn/runs/flat_s*_cnl/timeseries.csv"),
@@ -144,14 +147,14 @@ def main():
                           ("R_n 0.5", "data/convergence/truth_clamped/runs/*/timeseries.csv")]:
         rows = interface_rows(pattern)
         iface[wall] = rows
-        for run, eb, es, mu, rate, at in rows:
-            print(f"| {wall} | {run} | {eb:.3f} | {es:.3f} | {mu:.3f} | {rate:.3f} | {at:.2f} |")
+        for run, eb, es, mu, rate, ci, at in rows:
+            print(f"| {wall} | {run} | {eb:.3f} | {es:.3f} | {mu:.3f} | {rate:.3f} +- {ci:.3f} | {at:.2f} |")
     print("\n## Means over the seeds (95 % t-intervals)\n")
-    print("| what | e at start | peak friction | peak dilatancy rate |" + "".join(f" vw3d ({k} set) from the same e0: peak friction, rate |" for k in SETS))
+    print("| what | e at start | peak friction | dilatancy rate at the peak |" + "".join(f" vw3d ({k} set) from the same e0: peak friction, rate |" for k in SETS))
     print("|---|---|---|---|" + "---|" * len(SETS))
     for (cell, name), rows in groups.items():
         if rows:
-            models = "".join(f" {mean_sd([r[6 + 2 * k] for r in rows])}, {mean_sd([r[7 + 2 * k] for r in rows])} |"
+            models = "".join(f" {mean_sd([r[7 + 2 * k] for r in rows])}, {mean_sd([r[8 + 2 * k] for r in rows])} |"
                              for k in range(len(SETS)))
             print(f"| soil cell ({cell}), {name} | {mean_sd([r[1] for r in rows])} | {mean_sd([r[2] for r in rows])} | "
                   f"{mean_sd([r[3] for r in rows])} |" + models)

@@ -2,10 +2,11 @@
 // A campaign's claims, declared and tested in one place (issue 59 item 3): "roughness lowers the
 // loss of friction ratio" is a claim about cells of DEM runs, not a sentence in a README. A claims
 // file (data/<campaign>/claims.toml) declares each claim: the runs of its two groups, the quantity
-// read from each run's summary.json, the direction it asserts, and what is done with runs whose
-// band split between wall and plate or formed at the plate. One analysis tests them all: Welch's
-// t-test between groups (one run against a group: its prediction interval), the family of a file
-// controlled by Benjamini-Hochberg at the file's q, and a status per claim:
+// read from each run's summary.json (a soil cell's: its manifest's cell_summary), the direction it
+// asserts, and what is done with runs whose band split between wall and plate or formed at the
+// plate. One analysis tests them all: Welch's t-test between groups (one run against a group: its
+// prediction interval), the family of a file controlled by Benjamini-Hochberg at the file's q, and
+// a status per claim:
 //   supported      significant after the control, in the direction claimed;
 //   contradicted   significant after the control, the other way;
 //   not resolved   not significant after the control (never read as "equal"): with the seeds per

@@ -77,9 +77,12 @@ GroupPlan group_plan(const Group& g, const std::vector<std::string>& patterns, i
       if (m.contains("seed") && m["seed"].is_number_integer())
         top_seed = std::max(top_seed, m["seed"].get<int>());
       if (p.scene_text.empty() && m.contains("/scene/text"_json_pointer) &&
-          std::find(g.runs.begin(), g.runs.end(), run) != g.runs.end())
-        p.scene_text = m.at("/scene/text"_json_pointer).get<std::string>(),
+          std::find(g.runs.begin(), g.runs.end(), run) != g.runs.end()) {
+        p.scene_text = m.at("/scene/text"_json_pointer).get<std::string>();
         p.engine = m.value("/engine/name"_json_pointer, std::string("liggghts"));
+        p.soil_cells = m.value("kind", std::string()) == "soiltest";
+        p.command_line = m.value("command_line", std::string());
+      }
     }
   }
   p.core_hours_per_run = priced > 0 ? hours / priced : 0.0;
@@ -175,7 +178,8 @@ json to_json(const SeedPlan& plan) {
                       {"seeds", g.seeds},
                       {"core_hours_per_run", g.core_hours_per_run},
                       {"claims", g.claims},
-                      {"sweep", "sweeps/" + g.name + ".toml"}});
+                      {"sweep", g.soil_cells ? json(nullptr) : json("sweeps/" + g.name + ".toml")},
+                      {"command_line", g.command_line}});
   json left = json::array();
   for (const auto& [id, why] : plan.left_out) left.push_back({{"claim", id}, {"why", why}});
   return {{"budget_core_hours", plan.budget_core_hours},
@@ -197,9 +201,12 @@ std::string markdown(const SeedPlan& plan) {
     for (int x : g.seeds) seeds += (seeds.empty() ? "" : ", ") + std::to_string(x);
     for (const auto& c : g.claims) claims += (claims.empty() ? "" : ", ") + c;
     for (const auto& p : g.patterns) patterns += (patterns.empty() ? "`" : "`, `") + p;
-    s += fmt::format("| {}` | {} / {} | {} | {} | {} | {:.1f} | {} | `sweeps/{}.toml` |\n",
-                     patterns, g.usable, g.read, g.needed, g.to_run, seeds,
-                     g.to_run * g.core_hours_per_run, claims, g.name);
+    const std::string how = g.soil_cells ? "soil cells: `iwb dem soiltest` as its runs were "
+                                           "(plan.json's command_line), with these seeds"
+                                         : fmt::format("`sweeps/{}.toml`", g.name);
+    s += fmt::format("| {}` | {} / {} | {} | {} | {} | {:.1f} | {} | {} |\n", patterns, g.usable,
+                     g.read, g.needed, g.to_run, seeds, g.to_run * g.core_hours_per_run, claims,
+                     how);
   }
   if (plan.groups.empty()) s += "| (none) | | | | | | | |\n";
   if (!plan.left_out.empty()) {
@@ -215,6 +222,7 @@ void write_seed_plan(const SeedPlan& plan, const fs::path& dir) {
   fs::create_directories(dir / "scenes");
   fs::create_directories(dir / "sweeps");
   for (const auto& g : plan.groups) {
+    if (g.soil_cells) continue;  // a sweep runs interface runs only
     io::write_atomically(dir / "scenes" / (g.name + ".toml"), g.scene_text);
     std::string seeds;
     for (int x : g.seeds) seeds += (seeds.empty() ? "" : ", ") + std::to_string(x);

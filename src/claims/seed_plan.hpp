@@ -27,6 +27,10 @@ struct GroupPlan {
   std::string name;                   // for its files: from the group's first pattern
   std::vector<std::string> patterns;  // as the claims file names them
   std::string scene_text, engine;
+  // a group of soil cells (`iwb dem soiltest`): no sweep runs them; the command a kept run was
+  // made with is given instead, to be run with the new seeds
+  bool soil_cells = false;
+  std::string command_line;
   int usable = 0, read = 0, needed = 0, to_run = 0;
   std::vector<int> seeds;  // the new runs' seeds
   double core_hours_per_run = 0.0;
@@ -42,8 +46,8 @@ struct SeedPlan {
 
 SeedPlan plan_seeds(const ClaimsReport& report, double budget_core_hours);
 
-// DIR/plan.md and plan.json, and per group DIR/scenes/<name>.toml and DIR/sweeps/<name>.toml (an
-// `iwb sweep` file over the seed alone). The caller has claimed DIR.
+// DIR/plan.md and plan.json, and per group of interface runs DIR/scenes/<name>.toml and
+// DIR/sweeps/<name>.toml (an `iwb sweep` file over the seed alone). The caller has claimed DIR.
 void write_seed_plan(const SeedPlan& plan, const std::filesystem::path& dir);
 std::string markdown(const SeedPlan& plan);
 nlohmann::json to_json(const SeedPlan& plan);

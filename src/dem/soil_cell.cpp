@@ -249,6 +249,9 @@ nlohmann::json cell_summary(const Scene& cell, const io::CsvTable& timeseries,
                             const io::CsvTable& profiles, bool periodic_cell) {
   auto summary = to_json(summarize(cell, timeseries, profiles));
   summary.update(linearity_json(profiles));
+  summary["definitions"]["element_until_gamma"] =
+      "a periodic cell's gamma up to which it sheared as an element (calibration's "
+      "element_until_gamma): 0 throughout (or not a periodic cell), -1 not from the first window";
   if (periodic_cell)  // no wall, no plate: what the interface summary reads at them is not there
     for (const char* key :
          {"wall_slip", "wall_share_of_velocity_drop", "far_field_speed", "wall_band_d50",
@@ -497,6 +500,7 @@ RunOutcome run_soil_test(const std::string& text, const std::string& source, con
       m["cell_summary"] = cell_summary(cell, tables.timeseries, tables.profiles, periodic(c));
       m["engine_facts"] = tables.facts;
       m["gamma_reached"] = t.control.back();
+      m["cell_summary"]["element_until_gamma"] = calibration::element_until_gamma(m);
       m["files"] = periodic(c)
                        ? nlohmann::json{"timeseries.csv", "profiles.csv"}
                        : nlohmann::json{"timeseries.csv", "profiles.csv", "vtk/particles.pvd",
@@ -517,6 +521,24 @@ RunOutcome run_soil_test(const std::string& text, const std::string& source, con
   }
   return out;
 }
+
+// The summary's keys derived from the time series alone (src/dem/summary.cpp to_json): the rest
+// come from the profiles.
+constexpr const char* kSeriesSummaryKeys[] = {"peak_friction",
+                                              "u_x_at_peak_mm",
+                                              "dilation_mm",
+                                              "dilatancy_angle_deg",
+                                              "sigma_n_mean_kPa",
+                                              "sigma_n_max_relative_deviation",
+                                              "residual_friction",
+                                              "residual_is",
+                                              "residual_test",
+                                              "residual_drift_over_last_fifth",
+                                              "dilatancy_rate_at_peak",
+                                              "end_of_path_friction",
+                                              "last_cycle_mean_friction",
+                                              "cyclic",
+                                              "definitions"};
 
 nlohmann::json resummarize_cell(const fs::path& dir) {
   const fs::path manifest = dir / "manifest.json";
@@ -540,8 +562,21 @@ nlohmann::json resummarize_cell(const fs::path& dir) {
           fmt::format("{}: no column '{}'", (dir / "timeseries.csv").string(), column));
   // cells run before the periodic one existed record no "cell": they had plates
   const bool periodic_cell = m.value("cell", std::string("plates")) == "periodic";
-  m["cell_summary"] =
-      cell_summary(cell, ts, io::read_csv_table(dir / "profiles.csv"), periodic_cell);
+  const bool profiles_kept = fs::exists(dir / "profiles.csv");
+  auto fresh = cell_summary(
+      cell, ts, profiles_kept ? io::read_csv_table(dir / "profiles.csv") : io::CsvTable{},
+      periodic_cell);
+  if (!profiles_kept) {  // cells committed without profiles.csv: what it gave stays as written
+    auto kept = m["cell_summary"];
+    for (const char* key : kSeriesSummaryKeys)
+      if (fresh.contains(key))
+        kept[key] = fresh[key];
+      else
+        kept.erase(key);
+    fresh = kept;
+  }
+  m["cell_summary"] = fresh;
+  m["cell_summary"]["element_until_gamma"] = calibration::element_until_gamma(m);
   io::write_atomically(manifest, m.dump(2) + "\n");
   return m["cell_summary"];
 }

@@ -139,3 +139,40 @@ TEST_CASE("a seed plan writes a sweep per group that sets the new seeds on the g
   }
   CHECK(fs::is_regular_file(out / "plan.md"));
 }
+
+TEST_CASE("a seed plan names soil cells' runs by their command, and writes no sweep for them",
+          "[claims]") {
+  const fs::path dir = plan_runs_dir();
+  fs::remove_all(dir);
+  // three soil cells (no summary.json: the manifest's cell_summary) against three interface runs
+  const double cells[] = {0.22, 0.16, 0.17}, walls[] = {0.22, 0.27, 0.19};
+  for (int i = 0; i < 3; ++i) {
+    const auto cell = dir / ("cell_s" + std::to_string(i + 1));
+    fs::create_directories(cell);
+    std::ofstream(cell / "manifest.json") << nlohmann::json{
+        {"kind", "soiltest"},
+        {"seed", i + 1},
+        {"command_line", "iwb dem soiltest truth.toml --test simpleshear"},
+        {"engine", {{"name", "liggghts"}, {"processes", 1}}},
+        {"scene", {{"text", "description = 'the interface scene'\n"}}},
+        {"stages", {{"shear", {{"wall_seconds", 360.0}}}}},
+        {"cell_summary", {{"rate", cells[i]}}}}.dump();
+    write_planned_run("wall_s" + std::to_string(i + 1), i + 1, walls[i], 1.0, 1);
+    std::ofstream(dir / ("wall_s" + std::to_string(i + 1)) / "summary.json")
+        << nlohmann::json{{"rate", walls[i]}, {"shear_mode", "localised at the wall"}}.dump();
+  }
+  std::ofstream(dir / "claims.toml")
+      << "q = 0.05\n[[claim]]\nid = \"r\"\nsays = \"s\"\nquantity = \"/rate\"\na = "
+         "[\"cell_s*\"]\nb = [\"wall_s*\"]\nexpect = \"b > a\"\nflagged = \"exclude\"\n"
+         "[[claim]]\nid = \"other\"\nsays = \"s\"\nquantity = \"/rate\"\na = [\"wall_s*\"]\nb = "
+         "[\"cell_s*\"]\nexpect = \"b != a\"\nflagged = \"exclude\"\n";
+  const auto report = claims::test_claims(claims::read_claims(dir / "claims.toml"));
+  const auto plan = claims::plan_seeds(report, 1000.0);
+  const auto* cells_plan = group_of(plan, "cell_s*");
+  REQUIRE(cells_plan);
+  CHECK(cells_plan->soil_cells);
+  CHECK(cells_plan->command_line == "iwb dem soiltest truth.toml --test simpleshear");
+  CHECK(cells_plan->core_hours_per_run == Approx(0.1));
+  claims::write_seed_plan(plan, dir / "plan");
+  CHECK_FALSE(fs::exists(dir / "plan" / "sweeps" / (cells_plan->name + ".toml")));
+}

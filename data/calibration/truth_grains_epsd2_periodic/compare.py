@@ -1,7 +1,7 @@
 """The truth grains' simple-shear designs in the plate cell (../truth_grains_epsd2/) and in the
 periodic cell (here, issue 38 item 1), side by side: per design the mean and 95 % Student-t
 interval over the seeds of e0, peak tau/sigma_n, the peak dilatancy rate d eps_n / d gamma (CNL;
-a least-squares slope of u_n over u_x in a window of 1 mm, as ../../dilatancy/table.py), tau/sigma_n
+the summary's rate at the peak friction, as ../../dilatancy/table.py reads it), tau/sigma_n
 over the last fifth, and sigma_n at the end (CV); for the periodic cells how far they sheared
 homogeneously (the gamma calibrate reads them to). Run from the repository root:
 /usr/bin/python3 data/calibration/truth_grains_epsd2_periodic/compare.py > data/calibration/truth_grains_epsd2_periodic/compare.md
@@ -18,7 +18,7 @@ import numpy as np
 sys.path.insert(0, "data/dilatancy")
 sys.path.insert(0, "data")
 import seed_stats  # noqa: E402
-from table import homogeneous_until, peak_rate  # noqa: E402  the same measures as the dilatancy table
+from table import homogeneous_until, rate_at_peak, summary_of  # noqa: E402  the dilatancy table's reads
 
 DESIGNS = ["CNL-dense-50", "CNL-loose-50", "CV-dense-50", "CV-loose-50",
            "CNL-dense-200", "CNL-loose-200", "CV-dense-200", "CV-loose-200"]
@@ -35,7 +35,7 @@ def measures(run):
     gamma, tau, sn, e = col("gamma"), col("tau_kPa"), col("sigma_n_kPa"), col("e")
     ratio = tau / sn
     last = gamma >= 0.8 * gamma[-1]
-    rate = peak_rate(col("u_x_mm"), col("u_n_mm"))[0] if "CNL" in run else None
+    rate = rate_at_peak(summary_of(run))[0] if "CNL" in run else None
     return {"e0": e[0], "peak": ratio.max(), "rate": rate, "residual": ratio[last].mean(),
             "sigma_end": sn[-1], "until": homogeneous_until(os.path.join(run, "manifest.json"))}
 

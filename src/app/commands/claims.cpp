@@ -54,7 +54,8 @@ int run_seed_plan(const ClaimsCommand& c, const claims::ClaimsReport& report,
   claims::write_seed_plan(plan, c.plan_seeds);
   std::vector<std::string> files = {"plan.json", "plan.md"};
   for (const auto& g : plan.groups)
-    files.push_back("scenes/" + g.name + ".toml"), files.push_back("sweeps/" + g.name + ".toml");
+    if (!g.soil_cells)
+      files.push_back("scenes/" + g.name + ".toml"), files.push_back("sweeps/" + g.name + ".toml");
   io::write_manifest(c.plan_seeds, {{"kind", "seed-plan"},
                                     {"command_line", context.command_line},
                                     {"finished", io::utc_timestamp()},
