@@ -130,11 +130,6 @@ void coarse_grain_fields(const RunOptions& opt, nlohmann::json& m) {
   }
 }
 
-// A run directory holds the output of one kind: the manifest's (a scene's run, a soil cell's).
-io::OutputKind run_kind(const nlohmann::json& fresh) {
-  return {fresh.at("kind").get<std::string>()};
-}
-
 // --force removed the earlier run's files and kept what the workbench did not write: said once.
 void report_kept(const std::vector<std::string>& kept, const RunOptions& opt) {
   if (!kept.empty() && opt.progress)
@@ -145,22 +140,24 @@ void report_kept(const std::vector<std::string>& kept, const RunOptions& opt) {
 }  // namespace
 
 std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text, Engine& engine,
-                                    const RunOptions& opt, const nlohmann::json& fresh,
-                                    RunOutcome& out, const std::string& sha_key) {
+                                    const RunOptions& opt, const std::string& kind,
+                                    const std::function<nlohmann::json()>& fresh, RunOutcome& out,
+                                    const std::string& sha_key) {
+  const io::OutputKind run_kind{kind};
   auto& m = out.manifest;
   const std::string sha = scene_sha256(scene, text);
   if (opt.resume &&
       !fs::exists(opt.out / "manifest.json"))  // refused before the lock creates anything
     throw InputError(fmt::format("{}: nothing to resume (no manifest.json)", opt.out.string()));
   if (opt.resume)  // before the lock touches it
-    io::require_output_directory(opt.out, run_kind(fresh), false);
+    io::require_output_directory(opt.out, run_kind, false);
   else
-    io::require_new_run_directory(opt.out, run_kind(fresh), opt.force);
+    io::require_new_run_directory(opt.out, run_kind, opt.force);
   auto lock = io::DirectoryLock::take(opt.out, opt.command_line);
   if (lock.stale() && opt.progress) opt.progress(lock.stale_message());
   if (opt.resume) {
     m = earlier_manifest(opt.out, sha, nlohmann::json::json_pointer(sha_key));
-    io::claim_output_directory(opt.out, run_kind(fresh), false);
+    io::claim_output_directory(opt.out, run_kind, false);
     if (m.value("status", "") == "complete") {
       out.status = "complete";
       return StagedRun{StageContext{scene, opt.out, opt.out / engine.name(), opt.processes,
@@ -170,8 +167,8 @@ std::optional<StagedRun> run_stages(const Scene& scene, const std::string& text,
     m["status"] = "running";
     m["resumed"].push_back(io::utc_timestamp());
   } else {
-    report_kept(io::prepare_run_directory(opt.out, run_kind(fresh), opt.force), opt);
-    m = fresh;
+    report_kept(io::prepare_run_directory(opt.out, run_kind, opt.force), opt);
+    m = fresh();
   }
   if (lock.stale()) m["stale_lock_taken_over"] = lock.stale()->describe();
   const fs::path work = opt.out / engine.name();
@@ -219,8 +216,9 @@ RunOutcome run_scene(const Scene& scene, const std::string& text, Engine& engine
   if (const auto why = engine.unsupported(scene); !why.empty())
     throw InputError(fmt::format("{}: {} (engine {})", scene.source, why, engine.name()));
   RunOutcome out;
-  const auto run =
-      run_stages(scene, text, engine, opt, fresh_manifest(scene, text, engine, opt), out);
+  const auto run = run_stages(
+      scene, text, engine, opt, "dem-run", [&] { return fresh_manifest(scene, text, engine, opt); },
+      out);
   if (!run || run->complete_before) return out;
   auto& m = out.manifest;
   const auto& ctx = run->ctx;

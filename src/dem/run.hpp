@@ -50,9 +50,13 @@ struct StagedRun {
   std::optional<io::DirectoryLock> lock;
   bool complete_before = false;
 };
+// `fresh` makes a new run's manifest (of kind `kind`); it is called only once the output
+// directory is accepted (it asks the engine for its version: half a second of MPI start-up that a
+// refused directory should not cost).
 std::optional<StagedRun> run_stages(const Scene& scene, const std::string& scene_text,
                                     Engine& engine, const RunOptions& options,
-                                    const nlohmann::json& fresh, RunOutcome& out,
+                                    const std::string& kind,
+                                    const std::function<nlohmann::json()>& fresh, RunOutcome& out,
                                     const std::string& sha_key = "/scene/sha256");
 
 RunOutcome run_scene(const Scene& scene, const std::string& scene_text, Engine& engine,

@@ -484,9 +484,10 @@ RunOutcome run_soil_test(const std::string& text, const std::string& source, con
   const auto engine_ptr = cell_engine(cell, c);
   Engine& engine = *engine_ptr;
   RunOutcome out;
-  const auto run = run_stages(cell, cell_text, engine, opt,
-                              fresh_manifest(text, source, cell_text, cell, c, engine, opt), out,
-                              "/cell_scene/sha256");
+  const auto run = run_stages(
+      cell, cell_text, engine, opt, "soiltest",
+      [&] { return fresh_manifest(text, source, cell_text, cell, c, engine, opt); }, out,
+      "/cell_scene/sha256");
   if (!run || run->complete_before) return out;
   auto& m = out.manifest;
   try {
