@@ -27,6 +27,10 @@ struct DemRun {
   // manifest /scene/resolved without its seed (runs of one scene with other seeds have equal
   // ones) and /scene/text (its [requirements] state the tolerances a model is judged by)
   nlohmann::json scene_but_seed;
+  // cycles in its shear stage: its end state is an end of path, not a residual (issue 59)
+  bool cyclic() const {
+    return scene_but_seed.is_object() && scene_but_seed.value("/shear/cycles"_json_pointer, 0) > 0;
+  }
   std::string scene_text;
 
   std::optional<double> band_d50() const;  // the measured wall band, if the run localised there

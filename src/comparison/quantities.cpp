@@ -90,6 +90,8 @@ const std::vector<QuantityInfo>& quantity_table() {
       {"peak_friction", "peak friction tau/sigma_n", "", 0.10, 0.01, false},
       {"u_x_at_peak", "displacement to the peak u_x", "mm", 0.30, 0.05, true},
       {"residual_friction", "residual friction tau/sigma_n (last fifth)", "", 0.05, 0.01, false},
+      {"end_of_path_friction", "end-of-path friction |tau|/sigma_n (last fifth of a cyclic run)",
+       "", 0.05, 0.01, false},
       {"total_dilation", "total dilation u_n at the end", "mm", 0.20, 0.02, true},
       {"dilation_rate", "dilation rate du_n/du_x (last fifth)", "", 0.20, 0.01, false},
       {"sigma_n_change", "normal stress change at the end", "kPa", 0.20, 1.0, false},
@@ -118,12 +120,14 @@ const QuantityInfo& quantity(const std::string& key) {
   throw std::logic_error(fmt::format("no quantity of interest '{}'", key));
 }
 
-std::vector<std::string> judged_quantities(driver::BoundaryKind boundary) {
-  std::vector<std::string> k = {"peak_friction", "u_x_at_peak", "residual_friction"};
+std::vector<std::string> judged_quantities(driver::BoundaryKind boundary, bool cyclic) {
+  std::vector<std::string> k = {"peak_friction", "u_x_at_peak",
+                                cyclic ? "end_of_path_friction" : "residual_friction"};
   if (boundary != driver::BoundaryKind::kCV) k.insert(k.end(), {"total_dilation", "dilation_rate"});
   if (boundary != driver::BoundaryKind::kCNL)
     k.insert(k.end(), {"sigma_n_change", "sigma_n_lowest"});
   if (boundary != driver::BoundaryKind::kCV) k.push_back("wall_zone_dilation");
+  if (cyclic) return k;
   k.push_back("critical_state_friction");
   if (boundary != driver::BoundaryKind::kCV) k.push_back("critical_state_dilation");
   return k;
@@ -162,6 +166,7 @@ std::map<std::string, std::optional<double>> evaluate_quantities(
       {"peak_friction", friction[peak]},
       {"u_x_at_peak", c.u_x_mm[peak]},
       {"residual_friction", count > 0 ? std::optional<double>(sum / count) : std::nullopt},
+      {"end_of_path_friction", count > 0 ? std::optional<double>(sum / count) : std::nullopt},
       {"total_dilation", c.u_n_mm[n - 1] - c.u_n_mm[0]},
       {"dilation_rate", slope(s, c.u_n_mm, last)},
       {"sigma_n_change", c.sigma_n_kPa[n - 1] - c.sigma_n_kPa[0]},

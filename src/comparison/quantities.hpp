@@ -30,7 +30,9 @@ const std::vector<QuantityInfo>& quantity_table();
 const QuantityInfo& quantity(const std::string& key);
 
 // The quantities that a boundary condition leaves free to judge: CV fixes u_n, CNL fixes sigma_n.
-std::vector<std::string> judged_quantities(driver::BoundaryKind boundary);
+// A cyclic run is judged on its end-of-path friction instead of a residual, and on no critical
+// state: its path reverses, so neither is reached (issue 59, the cyclic end state named apart).
+std::vector<std::string> judged_quantities(driver::BoundaryKind boundary, bool cyclic = false);
 
 // A response along u_x in contract units (compression positive, u_n > 0 dilation); `rows` of
 // each series are used (a replay that stopped early has fewer than the DEM). With the void ratio

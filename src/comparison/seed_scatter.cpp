@@ -87,7 +87,7 @@ SeriesScatter series_scatter(const std::vector<const DemRun*>& all,
 }
 
 void quantity_scatter(const std::vector<const DemRun*>& all, SeedScatter& out) {
-  const auto keys = judged_quantities(all.front()->boundary);
+  const auto keys = judged_quantities(all.front()->boundary, all.front()->cyclic());
   std::map<std::string, std::vector<double>> values;
   for (const auto* r : all)
     for (const auto& [k, v] : evaluate_quantities(

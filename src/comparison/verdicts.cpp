@@ -102,7 +102,7 @@ Tolerances scene_tolerances(const DemRun& dem, Tolerances defaults) {
 
 Tolerances tolerances_for(const DemRun& dem) {
   Tolerances t;
-  for (const auto& k : judged_quantities(dem.boundary)) t[k] = quantity(k).tolerance;
+  for (const auto& k : judged_quantities(dem.boundary, dem.cyclic())) t[k] = quantity(k).tolerance;
   return scene_tolerances(dem, t);
 }
 

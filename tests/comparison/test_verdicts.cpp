@@ -8,6 +8,7 @@
 
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
+#include "comparison/dem_run.hpp"
 #include "comparison/fit.hpp"
 #include "comparison/quantities.hpp"
 #include "comparison/verdicts.hpp"
@@ -130,6 +131,22 @@ TEST_CASE("each boundary condition judges what it leaves free", "[comparison][ve
   CHECK(has(cns, "sigma_n_lowest"));
   CHECK(has(cv, "sigma_n_lowest"));
   CHECK_FALSE(has(cnl, "sigma_n_lowest"));
+}
+
+TEST_CASE("a cyclic run is judged on its end of path, not on a residual or a critical state",
+          "[comparison][verdicts]") {
+  // a committed cyclic run (CV, 10 cycles of 1 mm and 5 mm after) and a monotonic one
+  const auto cyclic = comparison::load_dem_run("data/cyclic/cyclic_flat_cv/runs/flat_cv_s2");
+  const auto monotonic = comparison::load_dem_run("data/reference/truth2_rn/runs/flat_s1_cnl");
+  REQUIRE(cyclic.cyclic());
+  REQUIRE_FALSE(monotonic.cyclic());
+  const auto c = comparison::tolerances_for(cyclic), m = comparison::tolerances_for(monotonic);
+  CHECK(c.count("end_of_path_friction") == 1);
+  for (const char* k : {"residual_friction", "critical_state_friction"}) {
+    CHECK(c.count(k) == 0);
+    CHECK(m.count(k) == 1);
+  }
+  CHECK(m.count("end_of_path_friction") == 0);
 }
 
 TEST_CASE("verdict rule: holds within the tolerance, breaks beyond it and the DEM's scatter",
