@@ -69,6 +69,7 @@ GroupPlan group_plan(const Group& g, const std::vector<std::string>& patterns, i
   p.to_run = int(std::ceil(double(extra) * p.read / p.usable - 1e-9));
   double hours = 0.0;
   int priced = 0, top_seed = 0;
+  bool unseeded = false;  // a run whose manifest gives no seed: new seeds could repeat it
   for (const auto& run : all_runs(g)) {
     if (const auto h = engine_core_hours(run)) hours += *h, ++priced;
     const fs::path manifest = fs::path(run) / "manifest.json";
@@ -76,6 +77,8 @@ GroupPlan group_plan(const Group& g, const std::vector<std::string>& patterns, i
       const auto m = io::read_json_file(manifest);
       if (m.contains("seed") && m["seed"].is_number_integer())
         top_seed = std::max(top_seed, m["seed"].get<int>());
+      else
+        unseeded = true;
       if (p.scene_text.empty() && m.contains("/scene/text"_json_pointer) &&
           std::find(g.runs.begin(), g.runs.end(), run) != g.runs.end()) {
         p.scene_text = m.at("/scene/text"_json_pointer).get<std::string>();
@@ -84,6 +87,10 @@ GroupPlan group_plan(const Group& g, const std::vector<std::string>& patterns, i
         p.command_line = m.value("command_line", std::string());
       }
     }
+  }
+  if (unseeded || top_seed == 0) {
+    p.to_run = -2;
+    return p;
   }
   p.core_hours_per_run = priced > 0 ? hours / priced : 0.0;
   for (int k = 1; k <= p.to_run; ++k) p.seeds.push_back(top_seed + k);
@@ -119,10 +126,17 @@ SeedPlan plan_seeds(const ClaimsReport& report, double budget_core_hours) {
     Candidate c{
         &r,
         {group_plan(r.a, r.claim.a, *r.seeds_needed), group_plan(r.b, r.claim.b, *r.seeds_needed)}};
-    if (c.groups[0].to_run < 0 || c.groups[1].to_run < 0) {
+    const int worst = std::min(c.groups[0].to_run, c.groups[1].to_run);
+    if (worst == -1) {
       plan.left_out.emplace_back(r.claim.id,
                                  "every run of a group was left out (split, at the plate or not "
                                  "steady): its scene needs changing before seeds");
+      continue;
+    }
+    if (worst == -2) {
+      plan.left_out.emplace_back(r.claim.id,
+                                 "a group's runs do not all record their seed (manifest.json "
+                                 "\"seed\"): new seeds could repeat one");
       continue;
     }
     for (const auto& g : c.groups) c.standalone += cost(g);

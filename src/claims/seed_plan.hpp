@@ -10,7 +10,8 @@
 //     planned (its scene needs changing, not more seeds), and is named so;
 //   - each run costs the group's mean engine core-hours (engine_core_hours: a lower bound);
 //   - the new seeds are the next above every seed the group's runs have (manifest.json "seed"),
-//     and the scene the text a kept run ran (manifest.json scene.text), the seed set by the sweep.
+//     and the scene the text a kept run ran (manifest.json scene.text), the seed set by the sweep;
+//     a group some of whose runs record no seed is not planned (a new seed could repeat one).
 // A group shared by claims is planned once, for the most runs any of them needs. Claims are taken
 // cheapest first (the runs their groups still need, priced) while the total stays within the
 // budget; the rest are listed with why they were left out.

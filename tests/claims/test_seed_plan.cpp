@@ -176,3 +176,20 @@ TEST_CASE("a seed plan names soil cells' runs by their command, and writes no sw
   claims::write_seed_plan(plan, dir / "plan");
   CHECK_FALSE(fs::exists(dir / "plan" / "sweeps" / (cells_plan->name + ".toml")));
 }
+
+TEST_CASE("a seed plan does not number seeds for a group whose runs do not record theirs",
+          "[claims]") {
+  auto report = two_undecided_claims();
+  // flat_s2's manifest without its seed: a new run could repeat it
+  const auto manifest = plan_runs_dir() / "flat_s2" / "manifest.json";
+  auto m = nlohmann::json::parse(std::ifstream(manifest));
+  m.erase("seed");
+  std::ofstream(manifest) << m.dump();
+  report = claims::test_claims(claims::read_claims(plan_runs_dir() / "claims.toml"));
+  const auto plan = claims::plan_seeds(report, 1000.0);
+  CHECK_FALSE(group_of(plan, "flat_*"));
+  bool said = false;
+  for (const auto& [id, why] : plan.left_out)
+    said = said || (id == "rough-lower" && why.find("record their seed") != std::string::npos);
+  CHECK(said);
+}
