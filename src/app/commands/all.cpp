@@ -37,6 +37,7 @@ void add_all_commands(CLI::App& app, CommandList& commands) {
   add_bench_integrators_command(bench, commands);
   add_bench_assess_command(bench, commands);
   add_bench_dem_command(bench, commands);
+  add_bench_calibration_command(bench, commands);
   auto& soiltest = add_group(
       app, "soiltest", "Soil element tests in the soil-test contract (src/calibration/README.md).");
   add_soiltest_synthetic_command(soiltest, commands);

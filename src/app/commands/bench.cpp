@@ -5,6 +5,7 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "bench/assess_bench.hpp"
+#include "bench/calibration_bench.hpp"
 #include "bench/dem_bench.hpp"
 #include "bench/element_bench.hpp"
 #include "bench/integrator_bench.hpp"
@@ -92,6 +93,23 @@ void add_bench_dem_command(CLI::App& bench, CommandList& commands) {
       ->capture_default_str();
   commands.add(dem, [o](const CommandContext&) {
     bench::run_dem_bench(*o);
+    return 0;
+  });
+}
+
+void add_bench_calibration_command(CLI::App& bench, CommandList& commands) {
+  auto o = std::make_shared<bench::CalibrationBenchOptions>();
+  auto* calibration = bench.add_subcommand(
+      "calibration",
+      "CPU and wall seconds of a full calibration: vw3d on five noise-free synthetic Table 5.2 "
+      "Hostun soil tests (an oedometer, dense and loose CNL and CV simple shears), the unit "
+      "test's workload; evaluations and the largest relative error of a recovered parameter "
+      "(about 11 s of CPU on the 2-core machine).");
+  calibration->add_option("--repeats", o->repeats, "calibrations; the fastest is reported")
+      ->check(whole_in(1, 100))
+      ->capture_default_str();
+  commands.add(calibration, [o](const CommandContext&) {
+    bench::run_calibration_bench(*o);
     return 0;
   });
 }

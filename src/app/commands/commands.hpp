@@ -29,6 +29,7 @@ void add_stability_command(CLI::App& app, CommandList& commands);
 void add_assess_command(CLI::App& app, CommandList& commands);
 void add_bench_element_command(CLI::App& bench, CommandList& commands);
 void add_bench_integrators_command(CLI::App& bench, CommandList& commands);
+void add_bench_calibration_command(CLI::App& bench, CommandList& commands);
 void add_bench_assess_command(CLI::App& bench, CommandList& commands);
 void add_bench_dem_command(CLI::App& bench, CommandList& commands);
 void add_soiltest_synthetic_command(CLI::App& soiltest, CommandList& commands);
