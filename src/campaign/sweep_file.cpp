@@ -121,7 +121,8 @@ void require_known_model(const io::TableReader& t, const std::string& model) {
 std::optional<Comparison> read_comparison(io::TableReader& top, const fs::path& folder) {
   auto t = top.table("compare");
   if (!t) return std::nullopt;
-  Comparison c{t->optional_text("model").value_or("hvwe"), folder / t->text("params")};
+  Comparison c{t->optional_text("model").value_or(models::kDefaultInterfaceModel),
+               folder / t->text("params")};
   require_known_model(*t, c.model);
   if (const auto why = unreadable_input_file(c.params); !why.empty())
     throw InputError(fmt::format("{} = \"{}\": {} ({})", t->where("params"), t->text("params"), why,

@@ -17,6 +17,7 @@
 #include "comparison/replay.hpp"
 #include "comparison/seed_scatter.hpp"
 #include "comparison/verdicts.hpp"
+#include "models/registry.hpp"
 
 namespace iwb::comparison {
 
@@ -28,7 +29,7 @@ inline constexpr int kScanPoints = 12;
 
 struct CompareOptions {
   std::filesystem::path dem_dir;
-  std::string model = "hvwe";
+  std::string model = models::kDefaultInterfaceModel;
   std::string params;  // parameter file
   std::filesystem::path out;
   bool allow_partial = false;

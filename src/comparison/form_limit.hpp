@@ -39,7 +39,7 @@ namespace iwb::comparison {
 inline constexpr double kSoilAcceptance = 1.25;
 
 struct FormLimitOptions {
-  std::string model = "hvwe";
+  std::string model = models::kDefaultInterfaceModel;
   std::string params;  // the soil-test set: the start, and what the movement is measured from
   // its calibration.json (parameters[].sigma); empty: the one beside `params`, if any
   std::filesystem::path calibration;
@@ -109,3 +109,4 @@ std::string cause_if_breaks(const nlohmann::json& quantity);
 std::string cause_of(const std::string& verdict, const std::string& cause_if_breaks);
 
 }  // namespace iwb::comparison
+#include "models/registry.hpp"

@@ -10,12 +10,13 @@
 
 #include "comparison/compare.hpp"
 #include "comparison/hypotheses.hpp"
+#include "models/registry.hpp"
 
 namespace iwb::comparison {
 
 struct RunSetOptions {
   std::vector<std::filesystem::path> dem_dirs;
-  std::string model = "hvwe";
+  std::string model = models::kDefaultInterfaceModel;
   std::string params;
   std::filesystem::path out;
   bool allow_partial = false;

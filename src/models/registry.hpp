@@ -14,6 +14,10 @@
 
 namespace iwb::models {
 
+// The interface model a comparison, a form limit, a set of runs or a sweep's [compare] replays
+// unless told another: the seed's enhanced model (issue 58: written once).
+inline constexpr const char* kDefaultInterfaceModel = "hvwe";
+
 // What a model is built from: parameter tables by TOML table name, where they came from (for
 // messages), and the wall roughness (interface models only).
 struct ModelInputs {

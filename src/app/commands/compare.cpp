@@ -14,6 +14,7 @@
 #include "comparison/compare_models.hpp"
 #include "comparison/run_set.hpp"
 #include "comparison/verdict_table.hpp"
+#include "models/registry.hpp"
 
 namespace iwb::app {
 
@@ -29,7 +30,7 @@ namespace {
 
 struct CompareCommand {
   comparison::CompareOptions options;
-  std::vector<std::string> models = {"hvwe"};
+  std::vector<std::string> models = {::iwb::models::kDefaultInterfaceModel};
   std::string dem_dir, out;
   std::vector<std::string> set_runs, seed_runs;
   bool own_scatter = false;
