@@ -28,8 +28,7 @@ constexpr double kMinWidthInDmax = 3.0;           // periodic images must not to
 constexpr double kRecommendedHeightInD50 = 20.0;  // DEM.md: ~7 d50 gives no band
 constexpr double kMinFreeHeightInD50 = 5.0;       // below the plate's clamp: a band is 5-10 d50
 constexpr double kMaxCapillaryNumber =
-    400.0;                             // u* of every capillary table (dem-scripts/yade/capillary)
-constexpr double kMaxParticles = 1e8;  // as for an explicit [specimen] particles
+    400.0;  // u* of every capillary table (dem-scripts/yade/capillary)
 
 void require(bool ok, const std::string& message) {
   if (!ok) throw InputError(message);

@@ -1,5 +1,6 @@
 #include "dem/scene_keys.hpp"
 
+
 #include "common/physical_limits.hpp"
 #include "dem/requirements.hpp"
 
@@ -277,7 +278,7 @@ io::KeyDeclarations declare() {
       {.table = "specimen",
        .key = "particles",
        .kind = KeyKind::kWholeNumber,
-       .default_note = "derived (at most 1e8)",
+       .default_note = "derived from the box (within the range)",
        .meaning = "particles requested; a run that inserts fewer fails"},
       {.table = "specimen",
        .key = "consolidation_friction",

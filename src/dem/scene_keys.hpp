@@ -6,6 +6,10 @@
 
 namespace iwb::dem {
 
+// The most particles a scene may ask for, given or derived from the box (a 1e8-grain run would
+// take the engine months on the machines this serves).
+inline constexpr double kMaxParticles = 1e8;
+
 const io::KeyDeclarations& scene_keys();
 
 }  // namespace iwb::dem
