@@ -1,6 +1,5 @@
 #include "dem/scene_keys.hpp"
 
-
 #include "common/physical_limits.hpp"
 #include "dem/requirements.hpp"
 
