@@ -35,7 +35,7 @@ InterfaceSpec read_interface(io::TableReader t, const std::filesystem::path& bas
   InterfaceSpec s;
   s.model = t.text("model");
   s.parameters = base_dir / t.text("parameters");
-  s.kappa_r = t.optional_number_in("kappa_r", Range{0.0, 1.0, true, false}).value_or(1.0);
+  s.kappa_r = t.optional_number_in("kappa_r", Range{0.0, 1.0, true, false}).value_or(s.kappa_r);
   s.d_s_mm = t.positive("d_s_mm", 1e4);
   // the model's own [initial] inputs besides sigma_n_kPa and K0, which the depth sets; checked
   // by the model when the shaft's stress points are made (the C interface names a bad key)

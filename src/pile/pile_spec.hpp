@@ -26,8 +26,8 @@ struct SoilProfile {
 struct InterfaceSpec {
   std::string model;
   std::filesystem::path parameters;
-  double kappa_r = 1.0;
-  double d_s_mm = 0.0;                    // the virtual thickness d_s^v (seed 7.1)
+  double kappa_r = 1.0;  // the default when [interface] gives none: a fully rough shaft
+  double d_s_mm = 0.0;   // the virtual thickness d_s^v (seed 7.1)
   std::map<std::string, double> initial;  // the model's other [initial] inputs (e0, OCR, delta...)
 };
 
