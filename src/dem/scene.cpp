@@ -234,8 +234,9 @@ void read_ramp(DeclaredTable& t, Scene& s) {
   require(!sh.cyclic() || sh.ramp_transits == 0.0,
           fmt::format("{} = {:g}: cyclic shear starts at full speed; allowed 0 with 'cycles'",
                       t.where("ramp_transits"), sh.ramp_transits));
-  sh.shear_wave_speed_m_s = effective_medium_shear_wave_speed(s.particles, s.boundary.sigma_n_Pa,
-                                                              s.solid_fraction_estimate);
+  sh.shear_wave_speed_m_s = effective_medium_shear_wave_speed(
+      s.particles.youngs_modulus_Pa, s.particles.poisson, s.particles.density_kg_m3,
+      s.boundary.sigma_n_Pa, s.solid_fraction_estimate);
   sh.ramp_s = ramp_time_s(sh.ramp_transits, s.height_m, sh.shear_wave_speed_m_s);
   if (sh.ramp_s > 0.0 && sh.ramp_displacement_m() >= sh.displacement_m)  // allowed, but say so
     s.warnings.push_back(fmt::format(

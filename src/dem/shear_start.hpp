@@ -5,9 +5,7 @@
 // start and a staircase in tau(u_x) that belong to the start-up, not to the interface. The wall's
 // speed therefore ramps linearly from 0 to v over a time T of a few round trips
 // (dem-scripts/README.md has the measurements).
-#include <nlohmann/json.hpp>
-
-#include "dem/scene.hpp"
+// It reads no scene: scene.cpp derives the ramp from it (dem/ramp_numerics.hpp records it).
 
 namespace iwb::dem {
 
@@ -29,14 +27,13 @@ inline constexpr double kDefaultRampTransits = 4.0;
 //   c_s = sqrt(G_eff / ((1 - phi) rho))
 // with G = E / (2 (1 + nu)) of the grains, phi the porosity, Z the coordination number;
 // independent of the grain size.
-double effective_medium_shear_wave_speed(const Particles& p, double pressure_Pa,
+// The grains' Young's modulus (Pa), Poisson's ratio and density (kg/m^3).
+double effective_medium_shear_wave_speed(double youngs_modulus_Pa, double poisson,
+                                         double density_kg_m3, double pressure_Pa,
                                          double solid_fraction,
                                          double coordination = kEffectiveMediumCoordination);
 
 // The ramp time T = transits x 2 H / c_s (s).
 double ramp_time_s(double transits, double height_m, double shear_wave_speed_m_s);
-
-// The ramp as the manifest's numerics record it: rule, c_s, time, displacement and steps at dt.
-nlohmann::json ramp_numerics(const Scene& s, double dt);
 
 }  // namespace iwb::dem

@@ -14,7 +14,7 @@
 #include "dem/liggghts/liggghts_outputs.hpp"
 #include "dem/liggghts/shear_checkpoint.hpp"
 #include "dem/numerics.hpp"
-#include "dem/shear_start.hpp"
+#include "dem/ramp_numerics.hpp"
 #include "dem/stage_follower.hpp"
 #include "dem/wall_geometry.hpp"
 #include "io/checksum_record.hpp"

@@ -9,7 +9,7 @@
 
 #include "common/subprocess.hpp"
 #include "dem/contract_outputs.hpp"
-#include "dem/shear_start.hpp"
+#include "dem/ramp_numerics.hpp"
 #include "dem/snapshots.hpp"
 #include "dem/stage_follower.hpp"
 #include "dem/wall_geometry.hpp"
