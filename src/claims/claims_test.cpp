@@ -37,16 +37,21 @@ std::vector<fs::path> runs_of(const fs::path& base, const std::string& pattern, 
 
 // A run's summary: summary.json of an interface run, the manifest's cell_summary of a soil cell
 // (`iwb dem soiltest`; both written by the run and recomputed by `iwb dem summary`).
-json summary_of(const fs::path& run) {
+struct RunSummary {
+  json summary;
+  bool soil_cell = false;  // no wall and no plate: where its band sits is not a flag
+};
+
+RunSummary summary_of(const fs::path& run) {
   if (fs::exists(run / "summary.json") || !fs::exists(run / "manifest.json"))
-    return io::read_json_file(run / "summary.json");  // its absence named as such
+    return {io::read_json_file(run / "summary.json"), false};  // its absence named as such
   const auto m = io::read_json_file(run / "manifest.json");
   if (!m.contains("cell_summary") || !m["cell_summary"].is_object())
     throw InputError(
         fmt::format("{}: neither summary.json nor a soil cell's cell_summary in "
                     "manifest.json",
                     run.string()));
-  return m["cell_summary"];
+  return {m["cell_summary"], true};
 }
 
 double number_at(const json& summary, const std::string& pointer, const fs::path& run) {
@@ -78,14 +83,12 @@ Group read_group(const fs::path& base, const std::vector<std::string>& patterns,
   Group g;
   for (const auto& pattern : patterns)
     for (const auto& run : runs_of(base, pattern, c)) {
-      const auto summary = summary_of(run);
+      const auto [summary, soil_cell] = summary_of(run);
       if (unsettled(summary, c)) {
         g.excluded.emplace_back(run.string(), "residual not steady");
         continue;
       }
       std::string why;
-      // a soil cell has no wall and no plate to split between: its band's place is not a flag
-      const bool soil_cell = !fs::exists(run / "summary.json");
       if (!soil_cell && flagged(summary, why)) {
         if (c.flagged == "exclude") {
           g.excluded.emplace_back(run.string(), why);
