@@ -95,6 +95,8 @@ ClaimsReport test_claims(const ClaimsFile& file);
 
 // A run's engine core-hours from its manifest.json; nullopt without one or without stages.
 std::optional<double> engine_core_hours(const std::filesystem::path& run);
+// The same from a manifest already read.
+std::optional<double> engine_core_hours(const nlohmann::json& manifest);
 
 nlohmann::json to_json(const ClaimsReport& report);
 // The table a README shows: one row per claim, the family's control in a line above it.

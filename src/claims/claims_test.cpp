@@ -121,7 +121,7 @@ FamilyCost cost_of(const std::vector<ClaimResult>& results) {
   FamilyCost cost;
   cost.runs = int(runs.size());
   for (const auto& run : runs) {
-    if (const auto h = engine_core_hours(run))
+    if (const auto h = engine_core_hours(fs::path(run)))
       cost.core_hours += *h;
     else
       ++cost.runs_without_record;
@@ -142,7 +142,10 @@ std::string status_of(const ClaimResult& r, double q) {
 
 std::optional<double> engine_core_hours(const fs::path& run) {
   if (!fs::is_regular_file(run / "manifest.json")) return std::nullopt;
-  const auto m = io::read_json_file(run / "manifest.json");
+  return engine_core_hours(io::read_json_file(run / "manifest.json"));
+}
+
+std::optional<double> engine_core_hours(const json& m) {
   if (!m.contains("stages") || !m["stages"].is_object() || m["stages"].empty()) return std::nullopt;
   double seconds = 0.0;
   for (const auto& [name, stage] : m["stages"].items())

@@ -71,10 +71,10 @@ GroupPlan group_plan(const Group& g, const std::vector<std::string>& patterns, i
   int priced = 0, top_seed = 0;
   bool unseeded = false;  // a run whose manifest gives no seed: new seeds could repeat it
   for (const auto& run : all_runs(g)) {
-    if (const auto h = engine_core_hours(run)) hours += *h, ++priced;
     const fs::path manifest = fs::path(run) / "manifest.json";
     if (fs::is_regular_file(manifest)) {
       const auto m = io::read_json_file(manifest);
+      if (const auto h = engine_core_hours(m)) hours += *h, ++priced;
       if (m.contains("seed") && m["seed"].is_number_integer())
         top_seed = std::max(top_seed, m["seed"].get<int>());
       else
