@@ -158,6 +158,10 @@ std::vector<Variant> standard_variants(const DemRun& dem, const std::string& mod
   for (const auto& [d_s, label] : thicknesses) {
     Variant v{fmt::format("{}, {}", kappa_label, label), model, parameters, d_s};
     v.inputs.roughness = {spec.declaration.roughness.default_scheme, kappa};
+    // for a model that reads the wall beside kappa_r, or a length in grains
+    v.inputs.roughness.R_n = dem.R_n;
+    v.inputs.roughness.mean_abs_slope = dem.wall_mean_abs_slope;
+    v.inputs.d50_mm = dem.d50_mm;
     out.push_back(v);
   }
   out.front().label = "predicted: " + out.front().label;

@@ -83,6 +83,9 @@ DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
     throw InputError(fmt::format("{}: missing (the run-directory contract's velocity profiles)",
                                  (dir / "profiles.csv").string()));
   if (fs::exists(dir / "summary.json")) r.summary = io::read_json_file(dir / "summary.json");
+  if (r.summary.is_object())
+    r.wall_mean_abs_slope =
+        io::json_optional<double>(r.summary, "/wall_mean_abs_slope", dir / "summary.json");
   return r;
 }
 

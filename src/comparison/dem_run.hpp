@@ -21,6 +21,8 @@ struct DemRun {
   double d50_mm;
   double R_n;
   double wall_zone_mm = 0.0;  // the zone whose void ratio is e_band (common/band_zone.hpp)
+  // the wall's mean |dz/dx| (summary.json); empty for a summary written before it was recorded
+  std::optional<double> wall_mean_abs_slope;
   // the time series, contract units
   std::vector<double> t_s, u_x_mm, u_n_mm, sigma_n_kPa, tau_kPa, e_band;
   nlohmann::json summary;  // may be empty (partial runs)

@@ -24,18 +24,41 @@ using nlohmann::json;
 
 namespace {
 
-// The material unknowns: every parameter of the model's tables with a declared calibration box.
-std::vector<Unknown> material_unknowns(const models::ModelSpec& spec) {
+bool named_in(const std::vector<std::string>& free, const std::string& table,
+              const std::string& key) {
+  return std::find(free.begin(), free.end(), key) != free.end() ||
+         std::find(free.begin(), free.end(), table + "." + key) != free.end();
+}
+
+// The material unknowns: every parameter of the model's tables with a declared calibration box
+// (`free` empty), or those `free` names.
+std::vector<Unknown> material_unknowns(const models::ModelSpec& spec,
+                                       const std::vector<std::string>& free = {}) {
   std::vector<Unknown> out;
   for (const auto* table : spec.tables)
     for (const auto& e : table->entries)
-      if (e.calibration)
+      if (e.calibration && (free.empty() || named_in(free, table->name, e.key)))
         out.push_back(
             {{e.key, models::FitParameter::Target::kParameter, table->name, e.key,
               e.calibration->lower, e.calibration->upper, false, e.calibration->logarithmic},
              e.calibration->lower,
              e.calibration->upper});
   return out;
+}
+
+// Each name of --free is a parameter of the model's tables with a calibration box.
+void check_free(const models::ModelSpec& spec, const std::vector<std::string>& free) {
+  for (const auto& name : free) {
+    bool found = false;
+    for (const auto* table : spec.tables)
+      for (const auto& e : table->entries)
+        if (e.calibration && named_in({name}, table->name, e.key)) found = true;
+    if (!found)
+      throw InputError(fmt::format(
+          "form-limit: --free {}: not a parameter of {} with a calibration box (iwb models {} "
+          "lists them; write KEY or TABLE.KEY)",
+          name, spec.name, spec.name));
+  }
 }
 
 // A wall: the runs of one R_n and d50 share its kappa_r and d_s.
@@ -106,10 +129,10 @@ Problem set_up(const FormLimitOptions& o, const models::ModelInputs& soil_set) {
     p.starts.push_back(standard_variants(r, o.model, soil_set).front());
     p.wall_of.push_back(wall_index(p.walls, r));
   }
-  p.unknowns = material_unknowns(spec);
+  p.unknowns = material_unknowns(spec, o.free);
   p.materials = p.unknowns.size();
-  p.per_wall = spec.declaration.fit.size();
-  add_wall_unknowns(p, spec);
+  p.per_wall = o.hold_walls ? 0 : spec.declaration.fit.size();
+  if (!o.hold_walls) add_wall_unknowns(p, spec);
   return p;
 }
 
@@ -120,6 +143,9 @@ void check_inputs(const FormLimitOptions& o) {
         "form-limit: model '{}' declares no calibration box for any parameter: there are no "
         "declared bounds to fit its form within",
         o.model));
+  check_free(spec, o.free);
+  if (o.hold_walls && material_unknowns(spec, o.free).empty())
+    throw InputError("form-limit: --hold-walls with nothing else to fit");
   if (o.fit_runs.empty()) throw InputError("form-limit: no run to fit (--runs)");
   // a run twice would count its residuals twice, or be judged on the fit it took part in
   io::refuse_repeated_directories(
@@ -383,6 +409,20 @@ json parameters_json(const Problem& p, const Eigen::VectorXd& x, const Eigen::Ve
   return out;
 }
 
+// What a fit of some parameters only gives a break: not the form, not the calibration.
+constexpr const char* kNotJudged = "not judged";
+
+// What the fit frees, in words: the record's "fitted".
+std::string fitted_text(const FormLimitOptions& o) {
+  std::string materials = "every material parameter with a calibration box";
+  if (!o.free.empty()) {
+    materials.clear();
+    for (const auto& f : o.free) materials += (materials.empty() ? "" : ", ") + f;
+  }
+  return materials + (o.hold_walls ? "; each wall's kappa_r and d_s held at the prediction"
+                                   : "; each wall's fit parameters");
+}
+
 // The cause of a "breaks" of the prediction (form_limit.hpp): the joint set holds it, or not.
 std::pair<std::string, std::string> cause_and_note(const Verdict& free, const Verdict* joint,
                                                    const SoilJudgement* soil) {
@@ -420,8 +460,10 @@ json run_verdicts(const Problem& p, std::size_t i, const Eigen::VectorXd& free_x
   const auto with_soil = joint ? judged(p.variant_at(i, joint->x)) : std::vector<Verdict>{};
   json q = json::object();
   for (std::size_t k = 0; k < limit.size(); ++k) {
-    const auto [cause, note] =
+    auto [cause, note] =
         cause_and_note(limit[k], joint ? &with_soil[k] : nullptr, joint ? &joint->soil : nullptr);
+    if (o.restricted())
+      cause = kNotJudged, note = "the fit held parameters (see fitted): not a form limit";
     json e = {{"dem", limit[k].dem ? json(*limit[k].dem) : json()},
               {"tolerance", limit[k].tolerance},
               {"soil_test_predicted", variant_json(predicted[k])},
@@ -438,6 +480,7 @@ json run_verdicts(const Problem& p, std::size_t i, const Eigen::VectorXd& free_x
           {"wall", p.walls[p.wall_of[i]].name()},
           {"boundary", driver::to_string(dem.boundary)},
           {"seeds", p.scatters[i].runs.size()},
+          {"cell_runs", p.scatters[i].runs},  // the seeds its scatter came from: its cell
           {"quantities", q}};
 }
 
@@ -521,10 +564,10 @@ std::string runs_markdown(const json& j) {
 
 std::string markdown(const json& j) {
   std::string md = fmt::format(
-      "# Form limit of {} ({} fitted runs, {} held out)\n\nFitted: every material parameter with "
-      "a calibration box and each wall's fit parameters, jointly (src: comparison/form_limit.hpp); "
-      "RMS {:.3g} scatter units, {} evaluations, {:.0f} s, {}.\n",
-      j["model"].get<std::string>(), j["fit_runs"].size(), j["held_out"].size(),
+      "# {} of {} ({} fitted runs, {} held out)\n\nFitted: {}, jointly (src: "
+      "comparison/form_limit.hpp); RMS {:.3g} scatter units, {} evaluations, {:.0f} s, {}.\n",
+      j.value("restricted", false) ? "Fit" : "Form limit", j["model"].get<std::string>(),
+      j["fit_runs"].size(), j["held_out"].size(), j["fitted"].get<std::string>(),
       j["rms_scaled"].get<double>(), j["evaluations"].get<int>(), j["seconds"].get<double>(),
       j["stop"].get<std::string>());
   if (j.contains("joint")) {
@@ -547,14 +590,15 @@ std::string markdown(const json& j) {
 // A fitted material set as a parameter file, usable with `iwb compare --params`.
 std::string parameter_file(const Problem& p, const Eigen::VectorXd& x, const std::string& what,
                            const FormLimitOptions& o) {
+  // every table of the set, the held parameters as given: a file `iwb compare --params` reads
   std::map<std::string, std::string> tables;
-  for (std::size_t k = 0; k < p.materials; ++k)
-    tables[p.unknowns[k].what.table] +=
-        fmt::format("{} = {:.9g}\n", p.unknowns[k].what.key, p.at(k, x));
+  for (const auto& [table, values] : tables_at(p, x))
+    for (const auto& [key, value] : values)
+      tables[table] += fmt::format("{} = {:.9g}\n", key, value);
   std::string s = fmt::format(
-      "# {} of {} (`iwb form-limit`, {}): the material set fitted jointly with kappa_r and d_s to "
-      "DEM runs, not a soil calibration. form_limit.json says on which runs.\n# Command: {}\n",
-      what, o.model, io::utc_timestamp(), o.command_line);
+      "# {} of {} (`iwb form-limit`, {}): fitted to DEM runs ({}), not a soil calibration. "
+      "form_limit.json says on which runs.\n# Command: {}\n",
+      what, o.model, io::utc_timestamp(), fitted_text(o), o.command_line);
   for (const auto& [name, body] : tables) s += fmt::format("[{}]\n{}", name, body);
   return s;
 }
@@ -667,6 +711,8 @@ json run_form_limit(const FormLimitOptions& o) {
       {"fit_runs", json::array()},
       {"held_out", json::array()},
       {"walls", json::array()},
+      {"fitted", fitted_text(o)},
+      {"restricted", o.restricted()},
       {"rms_scaled", f.result.rmse},
       {"evaluations", f.result.evaluations},
       {"seconds", f.seconds},

@@ -44,6 +44,14 @@ struct FormLimitOptions {
   // its calibration.json (parameters[].sigma); empty: the one beside `params`, if any
   std::filesystem::path calibration;
   std::vector<std::filesystem::path> fit_runs, held_out;
+  // Only these material parameters ("table.key" or "key") are fitted, the others held at
+  // `params`; empty: every one with a calibration box. With `hold_walls` each wall's kappa_r and
+  // d_s stay at their prediction (eq. 5.35, 5 d50) instead of being fitted. Either makes the run a
+  // fit of those parameters, not a form limit: a break it leaves says nothing of the form, and no
+  // cause is given (issue 56: a candidate's new parameters fitted with the soil held).
+  std::vector<std::string> free;
+  bool hold_walls = false;
+  bool restricted() const { return !free.empty() || hold_walls; }
   std::filesystem::path out;
   bool force = false;
   std::string command_line;

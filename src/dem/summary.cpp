@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "walls/descriptors.hpp"
+
 namespace iwb::dem {
 
 namespace {
@@ -194,6 +196,12 @@ Summary summarize(const Scene& scene, const io::CsvTable& ts, const io::CsvTable
   for (double x : sigma)
     s.sigma_n_max_deviation = std::max(s.sigma_n_max_deviation, std::abs(x / target - 1.0));
   shear_band(profiles, s);
+  // a flat wall has none; a scene without a box (a test's synthetic run) describes no wall
+  if (scene.wall.kind != walls::ProfileKind::kFlat && scene.length_m > 0.0 && scene.width_m > 0.0 &&
+      scene.particles.d50_m > 0.0)
+    s.wall_mean_abs_slope =
+        walls::describe_roughness(scene.wall, scene.length_m, scene.width_m, scene.particles.d50_m)
+            .mean_abs_slope;
   return s;
 }
 
@@ -217,6 +225,7 @@ nlohmann::json to_json(const Summary& s) {
       {"band_thickness_erfc_fit_d50", opt(s.band_thickness_erf_d50)},
       {"wall_slip", s.wall_slip},
       {"e_band", opt(s.e_band)},
+      {"wall_mean_abs_slope", s.wall_mean_abs_slope},
       {"cyclic", s.cyclic ? cycles::to_json(*s.cyclic) : nlohmann::json(nullptr)},
       {"definitions",
        {{"friction", "tau/sigma_n, both on the tested wall"},
@@ -237,7 +246,9 @@ nlohmann::json to_json(const Summary& s) {
         {"band",
          "where vx falls from 0.9 to 0.1 of the first grain layer's speed; only when the far field "
          "is at rest (< 0.25); 'distributed shear' when the profile is linear (R^2 > 0.95)"},
-        {"e_band", "porosity of the band (or the lowest 10 d50) as void ratio"}}}};
+        {"e_band", "porosity of the band (or the lowest 10 d50) as void ratio"},
+        {"wall_mean_abs_slope",
+         "the tested wall's mean |dz/dx| along the shear, from the scene (iwb dem roughness)"}}}};
   if (s.cyclic) {
     out["end_of_path_friction"] = s.end_friction;
     out["last_cycle_mean_friction"] = nullptr;

@@ -44,6 +44,9 @@ struct Summary {
   std::optional<double> band_thickness_erf_d50;  // erfc fit of the wall band
   double wall_slip = 0.0;                        // 1 - v(first layer)/v(wall)
   std::optional<double> e_band;                  // void ratio in the band (or the lowest 10 d50)
+  // the tested wall's mean |dz/dx| along the shear (walls/descriptors.hpp): what a model whose
+  // asperities ride reads of the wall beside R_n (issue 56)
+  double wall_mean_abs_slope = 0.0;
 
   std::optional<cycles::CyclicQuantities> cyclic;  // cyclic shear only: per cycle, and after them
 };

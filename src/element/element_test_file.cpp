@@ -74,6 +74,9 @@ void read_roughness(std::optional<io::DeclaredTable> r, ElementTestSpec& spec) {
               {"kappa_r", 1.0},
               {"origin", "default (fully rough)"}};
   spec.inputs.roughness.scheme = support.default_scheme;
+  if (!r && (support.reads_normalized_roughness || support.reads_mean_slope))
+    throw InputError(fmt::format("model '{}' reads the wall: give a [roughness] table with {}",
+                                 spec.model, support.reads_mean_slope ? "mean_abs_slope" : "R_n"));
   if (!r) {
     spec.resolved["roughness"] = model.uses_roughness ? out : json(nullptr);
     return;
@@ -98,12 +101,27 @@ void read_roughness(std::optional<io::DeclaredTable> r, ElementTestSpec& spec) {
                     "give scheme = \"arnold-herle\" with a sand model, or drop it",
                     r->where("f_c")));
   if (f_c) spec.inputs.roughness.f_c = models::parse_arnold_herle_factor(*f_c, r->where("f_c"));
+  const auto slope = r->optional_number("mean_abs_slope");
+  if (slope && !support.reads_mean_slope)
+    throw InputError(fmt::format("{}: model '{}' reads no wall slope; drop it",
+                                 r->where("mean_abs_slope"), spec.model));
+  if (support.reads_mean_slope && !slope)
+    throw InputError(
+        fmt::format("{}: model '{}' reads the wall's mean |slope| (its asperities' ride): give "
+                    "mean_abs_slope (iwb dem roughness reports it)",
+                    r->where(), spec.model));
+  spec.inputs.roughness.mean_abs_slope = slope;
   const std::string source = r->one_of({"kappa_r", "R_n", "delta_deg"});
   if (source == "R_n" && !support.from_normalized_roughness)
     throw InputError(
         fmt::format("{}: model '{}' takes no R_n (eq. 5.35 is Gutjahr's for sand); give kappa_r or "
                     "delta_deg",
                     r->where("R_n"), spec.model));
+  if (support.reads_normalized_roughness && source != "R_n")
+    throw InputError(fmt::format(
+        "{}: model '{}' reads the wall's R_n beside kappa_r (its roughness dilatancy); give R_n "
+        "(kappa_r then follows from eq. 5.35)",
+        r->where(source), spec.model));
   models::KappaR k{1.0, {}};
   std::string origin;
   if (source == "kappa_r") {
@@ -113,6 +131,7 @@ void read_roughness(std::optional<io::DeclaredTable> r, ElementTestSpec& spec) {
     const double base = r->number("log_base");
     const double rn = r->number("R_n");
     k = models::kappa_r_from_normalized_roughness(rn, base);
+    spec.inputs.roughness.R_n = rn;
     origin = fmt::format("R_n = {:g}, eq. 5.35 with log base {:g}", rn, base);
   } else {
     const double delta = r->number("delta_deg");
@@ -264,6 +283,7 @@ void read_zone(std::optional<io::DeclaredTable> t, ElementTestSpec& spec) {
     const bool grain_form = !t->has("d_s_mm") && (t->has("d50_mm") || t->has("d_s_over_d50"));
     spec.zone.d_s_mm =
         !grain_form ? t->number("d_s_mm") : t->number("d50_mm") * t->number("d_s_over_d50");
+    if (grain_form) spec.inputs.d50_mm = t->number("d50_mm");  // a length in grains reads it
     spec.zone.measure = t->text("strain_measure") == "tangent"
                             ? driver::ShearStrainMeasure::kTangent
                             : driver::ShearStrainMeasure::kLinear;
@@ -559,6 +579,9 @@ ElementTestSpec parse_element_test(const toml::table& root, const std::string& s
   auto& file = top.reader();
   read_model(declared(file.required_table("model"), "model"), spec, base_dir);
   read_roughness(optional_table(file, "roughness"), spec);
+  // the zone before the model is built: a model with a length in grains reads its d50
+  read_zone(optional_table(file, "shear_zone"), spec);
+  spec.inputs.shear_zone_mm = spec.zone.d_s_mm;
   models::find_model(spec.model).make(spec.inputs);  // parameters validated before anything runs
   for (const auto* table : models::find_model(spec.model).tables)
     if (const auto it = spec.inputs.tables.find(table->name); it != spec.inputs.tables.end())
@@ -566,8 +589,6 @@ ElementTestSpec parse_element_test(const toml::table& root, const std::string& s
                                                 spec.parameter_source + " [" + table->name + "]"))
         spec.warnings.push_back(std::move(w));
   read_initial(file.required_table("initial"), spec);
-  read_zone(optional_table(file, "shear_zone"), spec);
-  spec.inputs.shear_zone_mm = spec.zone.d_s_mm;
   read_boundary(declared(file.required_table("boundary"), "boundary"), spec);
   read_path(declared(file.required_table("path"), "path"), spec);
   read_integration(optional_table(file, "integration"), spec);

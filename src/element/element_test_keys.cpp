@@ -73,6 +73,13 @@ KeyDeclarations model_and_roughness_keys() {
        .meaning = "... or from normalized roughness, eq. 5.35 (values below 0.05 clamp with a "
                   "warning; sand models only) ..."},
       {.table = "roughness",
+       .key = "mean_abs_slope",
+       .range = closed(0.0, kMaxSlope),
+       .need = Need::kConditional,
+       .when = "a model that reads the wall's slope (hvwe-pg)",
+       .meaning = "the wall's mean |dz/dx| along the shear direction (`iwb dem roughness`): the "
+                  "asperities' ride, hvwe-pg only"},
+      {.table = "roughness",
        .key = "log_base",
        .range = {1.0, 1e3, true, false},
        .value = 10.0,

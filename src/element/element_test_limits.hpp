@@ -10,6 +10,7 @@ namespace iwb::element {
 inline constexpr double kMaxShearStrain = 10.0;  // 1000 % shear strain
 inline constexpr double kMaxLengthMm = 1e4;      // shear-zone thickness, grain size
 inline constexpr double kMaxRoughness = 100.0;   // R_n = R_max / d50
+inline constexpr double kMaxSlope = 10.0;        // mean |dz/dx|: 84 degrees
 inline constexpr double kMaxIncrements = 1e8;    // a path longer than this would run for hours
 inline const Range kRelativeTolerance{0.0, 0.1, true, false};  // rtol, Newton tolerance
 

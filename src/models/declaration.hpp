@@ -116,6 +116,12 @@ struct RoughnessSupport {
   RoughnessScheme default_scheme = RoughnessScheme::kGutjahr;
   bool from_normalized_roughness = false;  // eq. 5.35 (Gutjahr, granular) allowed
   KappaFromAngle from_angle = KappaFromAngle::kNone;
+  // The model reads the wall's R_n itself (Roughness::R_n), beside kappa_r: an element test must
+  // give [roughness] R_n, never kappa_r alone (issue 56).
+  bool reads_normalized_roughness = false;
+  // It reads the wall's mean |slope| (Roughness::mean_abs_slope) and the grains' d50: an element
+  // test must give [roughness] mean_abs_slope and [shear_zone] d50_mm.
+  bool reads_mean_slope = false;
 
   // The declared scheme called `name` ("gutjahr", ...), nullopt if the model declares none such.
   std::optional<RoughnessScheme> scheme_named(const std::string& name) const;

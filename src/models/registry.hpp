@@ -4,6 +4,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct ModelInputs {
   // displacement (hyperbolic, eq. 3.49) scales by to act on strains. Element tests set it from
   // [shear_zone], the replay per variant; elsewhere (stability map, benches) 1 mm, u = gamma.
   double shear_zone_mm = 1.0;
+  // The grains' mean diameter where the caller knows it (a DEM run, an element test's
+  // [shear_zone] d50_mm): a model with a length in grain diameters reads it (issue 56).
+  std::optional<double> d50_mm = {};
 };
 
 struct ModelSpec {

@@ -26,7 +26,8 @@ using analysis::StabilitySweep;
 namespace {
 
 models::ModelInputs inputs_for(const std::string& model) {
-  return test::has_intergranular_strain(model) ? test::table_5_3_toyoura() : test::table_5_1();
+  return test::with_model_tables(
+      model, test::has_intergranular_strain(model) ? test::table_5_3_toyoura() : test::table_5_1());
 }
 
 bool all_finite(const StabilityResult& r) {

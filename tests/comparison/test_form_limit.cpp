@@ -146,6 +146,31 @@ TEST_CASE("a form limit on runs three times stronger than the model blames the f
   CHECK(phi_c_on_bound);
 }
 
+TEST_CASE(
+    "a fit of one parameter with the walls held recovers the runs' own value, keeps the rest and "
+    "gives a break no cause",
+    "[comparison]") {
+  // the runs were written with phi_c 28 degrees at kappa_r 1 and d_s 5 d50, which is what the
+  // wall's R_n 1 and the held prediction give (eq. 5.35: min(1, 1.05)); only phi_c is free
+  auto o = form_limit_of("form_limit_free_phi", 1.0);
+  o.free = {"hypoplastic.phi_c_deg"};
+  o.hold_walls = true;
+  const auto j = comparison::run_form_limit(o);
+  REQUIRE(j["parameters"].size() == 1);
+  CHECK(j["parameters"][0]["value"].get<double>() == Approx(28.0).margin(0.5));
+  CHECK(j["restricted"].get<bool>());
+  for (const auto& c : causes(j, "peak_friction")) CHECK((c == "none" || c == "not judged"));
+  for (const auto& r : j["runs"])
+    CHECK(r["quantities"]["peak_friction"]["cause_if_breaks"] == "not judged");
+  // the held parameters are written as given, so the file is a whole set
+  const auto toml = io::read_file(o.out / "form_limit.toml");
+  CHECK(toml.find("hs_kPa = 2000000") != std::string::npos);
+  CHECK(toml.find("ec0 = 0.96") != std::string::npos);
+  o.free = {"chi"};
+  CHECK_THROWS_WITH(comparison::run_form_limit(o),
+                    Catch::Contains("--free chi: not a parameter of hvwe"));
+}
+
 TEST_CASE("a form limit refuses a run given both to fit and to hold out", "[comparison]") {
   auto o = form_limit_of("form_limit_twice", 1.0);
   o.held_out.push_back(o.fit_runs.front());

@@ -52,6 +52,11 @@ std::string base_of(const std::string& name) {
 models::StateVector with_delta(const models::Model& m, const models::StateVector& s, double dn,
                                double dx, double dy) {
   if (m.state_size() == s.size()) return s;
+  if (m.state_size() == s.size() + 1) {  // hvwe-pg: the travelled shear strain, some way along
+    models::StateVector out(m.state_size());
+    out << s, 0.2;
+    return out;
+  }
   models::StateVector out(m.state_size());
   out.head(s.size()) = s;
   if (m.state_size() - s.size() == 6)

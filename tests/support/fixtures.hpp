@@ -66,14 +66,25 @@ inline const double kPhiC51 = 28.0 * M_PI / 180.0;
 inline const double kK0Oedometric51 = 1.0 - std::sin(kPhiC51);
 
 // `in`, with Table 5.3's Toyoura intergranular-strain columns added for the -igs models when it
-// has none (the seed gives them only with Table 5.3): a merge of two shipped files, not a set of
-// its own.
+// has none (the seed gives them only with Table 5.3), and any other table the model reads but `in`
+// lacks from its declared example set: a merge of shipped files, not a set of its own.
+inline models::ModelInputs with_model_tables(const std::string& name, models::ModelInputs in) {
+  if (has_intergranular_strain(name) && !in.tables.count("intergranular_strain"))
+    in.tables["intergranular_strain"] = table_5_3_toyoura_igs();
+  // a table of a model's own beside the soil's (hvwe-rd's [roughness_dilatancy]): its example's
+  const auto& spec = models::find_model(name);
+  for (const auto* table : spec.tables)
+    if (!in.tables.count(table->name)) {
+      const auto example = shipped(spec.declaration.example_parameters);
+      if (const auto it = example.tables.find(table->name); it != example.tables.end())
+        in.tables[table->name] = it->second;
+    }
+  return in;
+}
+
 inline std::unique_ptr<models::Model> make(const std::string& name,
                                            const models::ModelInputs& in = table_5_1()) {
-  models::ModelInputs with = in;
-  if (has_intergranular_strain(name) && !with.tables.count("intergranular_strain"))
-    with.tables["intergranular_strain"] = table_5_3_toyoura_igs();
-  return models::find_model(name).make(with);
+  return models::find_model(name).make(with_model_tables(name, in));
 }
 
 struct Run {

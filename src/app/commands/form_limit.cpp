@@ -31,7 +31,9 @@ constexpr const char* kFormLimitHelp =
     "soil tests a break the free form limit holds is \"calibration (unchecked)\". Writes "
     "form_limit.json, form_limit.md (tables), form_limit.toml (the free set, for compare "
     "--params) and form_limit_joint.toml (the joint set); each parameter's move from the "
-    "soil-test set in that set's sigmas when a calibration.json sits beside --params.\n"
+    "soil-test set in that set's sigmas when a calibration.json sits beside --params. With --free "
+    "or --hold-walls only part is fitted: a fit of a candidate's parameters judged on held-out "
+    "runs (data/models_beyond/), whose breaks are given no cause.\n"
     "Example: iwb form-limit --runs data/reference/truth2_seeds45/runs/s4_cnl-50 --held-out "
     "data/reference/truth2_seeds45/runs/s5_cnl-50 --model hvwe --params "
     "data/params/truth_grains_epsd2.toml -o runs/form-limit";
@@ -57,6 +59,13 @@ void add_form_limit_command(CLI::App& app, CommandList& commands) {
   cmd->add_option("--params", c->options.params, "the soil-test parameter file (data/params/)")
       ->required()
       ->check(input_file());
+  cmd->add_option("--free", c->options.free,
+                  "KEY or TABLE.KEY, repeatable: fit only these material parameters, the others "
+                  "held at --params (a candidate's own parameters with the soil held, issue 56); "
+                  "the result is a fit, not a form limit, and a break it leaves gets no cause");
+  cmd->add_flag("--hold-walls", c->options.hold_walls,
+                "hold each wall's kappa_r and d_s at the prediction (eq. 5.35, 5 d50) instead of "
+                "fitting them: what a prediction on an unseen wall uses; a fit, not a form limit");
   cmd->add_option("--calibration", c->calibration,
                   "the soil-test set's calibration.json, for its sigmas (default: the one beside "
                   "--params, if any)")

@@ -23,15 +23,29 @@ std::unique_ptr<Model> make_member(const std::string& name, const Kinematics& ki
   return std::make_unique<Member>(name + "-igs", kin, c, intergranular_strain_parameters(in));
 }
 
+// The [hypoplastic] table of `in`, checked.
+inline HypoplasticParameters hypoplastic_parameters(const ModelInputs& in) {
+  return HypoplasticParameters::from(require_table(in, "hypoplastic"),
+                                     in.source + " [hypoplastic]");
+}
+
+// A member over the given parameters: a form that changes the soil's constants by what else it
+// reads (the wall's roughness dilatancy, models/hvwe_rd) passes them changed.
+template <class Kinematics>
+std::unique_ptr<Model> make_hypoplastic(const std::string& name, const Kinematics& kin,
+                                        const HypoplasticVariant& variant,
+                                        const HypoplasticParameters& p, const ModelInputs& in,
+                                        WithIntergranularStrain igs) {
+  const auto c =
+      make_constants(p, variant, in.roughness, HypoplasticModel<Kinematics>::trace_of_unit());
+  return make_member<VonWolffersdorffLaw>(name, kin, c, in, igs);
+}
+
 template <class Kinematics>
 std::unique_ptr<Model> make_hypoplastic(
     const std::string& name, const Kinematics& kin, const HypoplasticVariant& variant,
     const ModelInputs& in, WithIntergranularStrain igs = WithIntergranularStrain::kNo) {
-  const auto p =
-      HypoplasticParameters::from(require_table(in, "hypoplastic"), in.source + " [hypoplastic]");
-  const auto c =
-      make_constants(p, variant, in.roughness, HypoplasticModel<Kinematics>::trace_of_unit());
-  return make_member<VonWolffersdorffLaw>(name, kin, c, in, igs);
+  return make_hypoplastic(name, kin, variant, hypoplastic_parameters(in), in, igs);
 }
 
 // How a member of the family starts: K0 free with the oedometric default (hvwe, vw3d), fixed at

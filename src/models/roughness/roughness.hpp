@@ -5,6 +5,7 @@
 // sin(phi_c) (eq. 5.37 as printed). Gutjahr's scheme also scales the pyknotropy exponent alpha by
 // kappa_r^2 (eqs. 5.38, 5.39); Arnold & Herle's multiplies the whole rate by f_c = 1/kappa_r
 // (eqs. 5.40, 5.41). That difference is data (RoughnessEffect), not code paths.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,13 @@ struct Roughness {
   double kappa_r = 1.0;  // (0, 1]; 1 = fully rough
   ArnoldHerleFactor f_c =
       ArnoldHerleFactor::kReciprocal;  // read only by Arnold & Herle's sand scheme
+  // The wall's normalized roughness where the caller knows the wall (a DEM run, an element test's
+  // [roughness] R_n), for a model that reads it beside kappa_r (issue 56: a form in which
+  // roughness adds dilatancy); empty where no wall is described (the stability map, a pile).
+  std::optional<double> R_n = {};
+  // The wall's mean |dz/dx| along the shear direction (`iwb dem roughness`), for a model whose
+  // asperities ride (issue 56); empty where no wall is described.
+  std::optional<double> mean_abs_slope = {};
 };
 
 // "1/kappa_r" (as printed, the default) or "kappa_r"; InputError naming `where` otherwise.
