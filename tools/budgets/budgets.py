@@ -146,7 +146,8 @@ def render(f):
                      + " (the record's `tests` holds its exit code and the load it started at).")
     setup = f.get("setup") or {}
     if setup:
-        lines.append("Setup phases: " + ", ".join(f"{k[:-2]} {v:.0f} s" for k, v in setup.items() if k.endswith("_s")) + ".")
+        lines.append("Setup phases: " + ", ".join(f"{k[:-2]} {v:.0f} s" for k, v in setup.items() if k.endswith("_s"))
+                     + (f" (from `{setup['record']}`)" if "record" in setup else "") + ".")
     return "\n".join(lines) + "\n"
 
 
@@ -182,6 +183,8 @@ def main():
     p.add_argument("--measure-tests", action="store_true", help="run the README's test command, timed")
     p.add_argument("--measure-validate", action="store_true", help="run `iwb validate` (default scene), timed")
     p.add_argument("--from", dest="from_json", help="read the figures from this record instead of the build")
+    p.add_argument("--setup-from", help="take the setup's phases from this record: a fresh machine's "
+                   "(setup.sh in a debootstrap'd Debian chroot, data/budgets/fresh_machine.json)")
     p.add_argument("--write-readme", help="rewrite this README's budget block from the figures")
     p.add_argument("--check-readme", help="exit 1 unless this README's budget block shows the figures")
     a = p.parse_args()
@@ -199,6 +202,11 @@ def main():
             raise SystemExit(f"{a.from_json}: not a budget record")
     else:
         f = figures(build)
+    if a.setup_from:
+        fresh = read_json(a.setup_from)
+        if fresh is None or not (fresh.get("setup") or {}).get("packages_installed"):
+            raise SystemExit(f"{a.setup_from}: not a budget record of a setup that installed its packages")
+        f["setup"] = dict(fresh["setup"], record=a.setup_from)
     table = render(f)
     print(table)
     if a.json:
