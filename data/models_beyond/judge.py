@@ -53,6 +53,13 @@ def cells(record):
     return out
 
 
+def mean_error(c, key, variant):
+    """The cell's mean signed relative error of `variant` on `key`, over the runs that have one."""
+    errors = [r["quantities"][key][variant]["error"] for r in c["runs"]
+              if key in r["quantities"] and r["quantities"][key][variant]["error"] is not None]
+    return f"{100 * sum(errors) / len(errors):+.0f} %" if errors else "-"
+
+
 def cell_verdicts(c, variant):
     keys = sorted(set().union(*(r["quantities"].keys() for r in c["runs"])))
     return {k: majority([r["quantities"][k][variant]["verdict"] for r in c["runs"] if k in r["quantities"]])
@@ -90,11 +97,15 @@ def report(record, path):
              f"- Criterion 2 (no new breaks): {'met' if not new else 'NOT met: ' + '; '.join(new)}",
              f"- Criterion 3 (smooth walls unchanged): {'met' if not smooth else 'NOT met: ' + '; '.join(smooth)}",
              f"- The candidate {'HOLDS' if c1 and not new and not smooth else 'does not hold'} by the criteria fixed before the fit.",
-             "", "| cell | wall | boundary | seeds | quantity | hvwe | candidate |", "|---|---|---|---|---|---|---|"]
+             "", "Each cell's verdict (most of its runs) and mean error against the DEM; a changed verdict in bold.", "",
+             "| cell | wall | boundary | seeds | quantity | hvwe | candidate |", "|---|---|---|---|---|---|---|"]
     for c, hvwe, cand in rows:
         for k in DECIDING + ["dilation_rate"]:
             if k in hvwe:
-                lines.append(f"| {c['name']} | {c['wall']} | {c['boundary']} | {len(c['runs'])} | {k} | {hvwe[k]} | {'**' + cand[k] + '**' if hvwe[k] != cand[k] else cand[k]} |")
+                shown = f"{cand[k]} ({mean_error(c, k, 'form_limit')})"
+                lines.append(f"| {c['name']} | {c['wall']} | {c['boundary']} | {len(c['runs'])} | {k} | "
+                             f"{hvwe[k]} ({mean_error(c, k, 'soil_test_predicted')}) | "
+                             f"{'**' + shown + '**' if hvwe[k] != cand[k] else shown} |")
     return "\n".join(lines) + "\n"
 
 

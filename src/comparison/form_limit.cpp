@@ -77,6 +77,9 @@ struct Problem {
   std::vector<Wall> walls;
   std::vector<Unknown> unknowns;  // the material ones first, then each wall's fit parameters
   std::size_t materials = 0, per_wall = 0;
+  // Walls of the fit runs come first (runs are read in order): only they have fit unknowns. A
+  // held-out run on a wall no fit run has keeps its prediction: nothing fitted says anything of it.
+  std::size_t fitted_walls = 0;
 
   std::size_t unknown_of(std::size_t wall, std::size_t f) const {
     return materials + wall * per_wall + f;
@@ -84,6 +87,7 @@ struct Problem {
   Variant variant_at(std::size_t run, const Eigen::VectorXd& x) const {
     Variant v = starts[run];
     for (std::size_t k = 0; k < materials; ++k) set_value(v, unknowns[k].what, at(k, x));
+    if (wall_of[run] >= fitted_walls) return v;
     for (std::size_t f = 0; f < per_wall; ++f) {
       const auto k = unknown_of(wall_of[run], f);
       set_value(v, unknowns[k].what, at(k, x));
@@ -108,8 +112,9 @@ std::size_t wall_index(std::vector<Wall>& walls, const DemRun& r) {
 
 // The wall's fit parameters of the model's declaration, boxes in the wall's d50 where per d50.
 void add_wall_unknowns(Problem& p, const models::ModelSpec& spec) {
-  for (const auto& w : p.walls)
+  for (std::size_t i = 0; i < p.fitted_walls; ++i)
     for (const auto& f : spec.declaration.fit) {
+      const auto& w = p.walls[i];
       const double scale = f.per_d50 ? w.d50_mm : 1.0;
       Unknown u{f, f.lower * scale, f.upper * scale};
       u.what.name = fmt::format("{} ({})", f.name, w.name());
@@ -128,6 +133,7 @@ Problem set_up(const FormLimitOptions& o, const models::ModelInputs& soil_set) {
     p.targets.push_back(joint_targets(r, p.scatters.back()));
     p.starts.push_back(standard_variants(r, o.model, soil_set).front());
     p.wall_of.push_back(wall_index(p.walls, r));
+    if (p.wall_of.size() == p.fitted) p.fitted_walls = p.walls.size();
   }
   p.unknowns = material_unknowns(spec, o.free);
   p.materials = p.unknowns.size();
@@ -212,9 +218,10 @@ Fitted fit(const Problem& p, const FormLimitOptions& o) {
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       o.progress(fmt::format(
-          "form limit: {} of at most {} evaluations, RMS {:.4g} scatter units, {:.0f} s, ETA at "
-          "most ~{:.0f} s",
-          evaluations, budget, std::sqrt(out.squaredNorm() / double(out.size())), seconds,
+          "{}: {} of at most {} evaluations, RMS {:.4g} scatter units, {:.0f} s, ETA at most "
+          "~{:.0f} s",
+          o.restricted() ? "fit" : "form limit", evaluations, budget,
+          std::sqrt(out.squaredNorm() / double(out.size())), seconds,
           seconds / evaluations * std::max(0, budget - evaluations)));
     }
     return out;

@@ -166,6 +166,16 @@ TEST_CASE(
   const auto toml = io::read_file(o.out / "form_limit.toml");
   CHECK(toml.find("hs_kPa = 2000000") != std::string::npos);
   CHECK(toml.find("ec0 = 0.96") != std::string::npos);
+  // with the walls fitted, a held-out run on a wall no fit run has gets no unknowns of its own
+  // (nothing fitted would move them): it keeps the wall's prediction
+  test::SyntheticDem other;
+  other.name = "form_limit_free_phi_other_wall", other.R_n = 0.25;
+  o.held_out.push_back(test::write_synthetic_dem(other));
+  o.hold_walls = false;
+  const auto walls = comparison::run_form_limit(o);
+  for (const auto& p : walls["parameters"])
+    CHECK(p["name"].get<std::string>().find("R_n 0.25") == std::string::npos);
+  CHECK(walls["parameters"].size() == 3);  // phi_c, kappa_r and d_s of R_n 1
   o.free = {"chi"};
   CHECK_THROWS_WITH(comparison::run_form_limit(o),
                     Catch::Contains("--free chi: not a parameter of hvwe"));

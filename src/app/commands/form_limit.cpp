@@ -110,9 +110,9 @@ void add_form_limit_command(CLI::App& app, CommandList& commands) {
       std::fflush(stdout);
     };
     const auto j = comparison::run_form_limit(o);
-    fmt::print("form limit: RMS {:.4g} scatter units after {} evaluations ({:.0f} s)\n",
-               j["rms_scaled"].get<double>(), j["evaluations"].get<int>(),
-               j["seconds"].get<double>());
+    fmt::print("{}: RMS {:.4g} scatter units after {} evaluations ({:.0f} s)\n",
+               o.restricted() ? "fit" : "form limit", j["rms_scaled"].get<double>(),
+               j["evaluations"].get<int>(), j["seconds"].get<double>());
     if (j.contains("joint"))
       fmt::print(
           "with the soil tests: RMS {:.4g} scatter units after {} evaluations ({:.0f} s); the "
