@@ -5,7 +5,7 @@
 #include "common/errors.hpp"
 #include "comparison/cyclic_verdicts.hpp"
 #include "comparison/feasibility.hpp"
-#include "comparison/form_limit.hpp"
+#include "comparison/form_limit_causes.hpp"
 #include "comparison/metrics.hpp"
 #include "comparison/verdicts.hpp"
 #include "io/parameter_file.hpp"

@@ -35,16 +35,9 @@
 
 namespace iwb::comparison {
 
-// The wall's program of a cyclic run (its manifest's /scene/resolved/shear); nullopt when the run
-// is monotonic.
-std::optional<cycles::Program> cyclic_program(const DemRun& dem);
-
 // The cycles a reader looks at first, judged and drawn: 1, 2, 5 and the last of `cycles` (each
 // once, those that exist).
 std::vector<int> judged_cycles(int cycles);
-
-// A cyclic run's travel at each row: its wall moves at v throughout (no ramp with cycles), so v t.
-std::vector<double> cyclic_travel(const DemRun& dem);
 
 // The per-cycle quantities of the DEM run and of a replay of it (its rows are the DEM's, in time).
 cycles::CyclicQuantities dem_cycles(const DemRun& dem, const cycles::Program& program);

@@ -89,4 +89,17 @@ DemRun load_dem_run(const fs::path& dir, bool allow_partial) {
   return r;
 }
 
+std::vector<double> cyclic_travel(const DemRun& dem) {
+  return cycles::travel_at_speed(
+      dem.t_s, dem.scene_but_seed.value("/shear/velocity_mm_s"_json_pointer, 0.0));
+}
+
+std::optional<cycles::Program> cyclic_program(const DemRun& dem) {
+  if (!dem.scene_but_seed.is_object()) return std::nullopt;
+  const auto& sh = dem.scene_but_seed.value("shear", nlohmann::json::object());
+  const int n = sh.value("cycles", 0);
+  if (n < 1) return std::nullopt;
+  return cycles::Program{sh.value("amplitude_mm", 0.0), n, sh.value("post_cyclic_mm", 0.0)};
+}
+
 }  // namespace iwb::comparison

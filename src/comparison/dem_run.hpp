@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cycles/cycle_quantities.hpp"
 #include "driver/control.hpp"
 
 namespace iwb::comparison {
@@ -42,6 +43,14 @@ struct DemRun {
 // non-number or a truncated row are InputErrors naming the file and line; a run whose status is
 // not "complete" is refused unless `allow_partial`.
 DemRun load_dem_run(const std::filesystem::path& dir, bool allow_partial = false);
+
+// What the run's path is, below every verdict that reads it (the seed statistics and the cyclic
+// verdicts alike): the wall's program of a cyclic run (its manifest's /scene/resolved/shear),
+// nullopt when the run is monotonic ...
+std::optional<cycles::Program> cyclic_program(const DemRun& dem);
+// ... and a cyclic run's travel at each row: its wall moves at v throughout (no ramp with cycles),
+// so v t.
+std::vector<double> cyclic_travel(const DemRun& dem);
 
 // The columns of timeseries.csv the comparison needs (names carry the units).
 const std::vector<std::string>& required_timeseries_columns();

@@ -11,6 +11,7 @@
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
 #include "comparison/fit.hpp"
+#include "comparison/form_limit_causes.hpp"
 #include "comparison/verdicts.hpp"
 #include "fitting/constrained.hpp"
 #include "fitting/least_squares.hpp"
@@ -626,72 +627,6 @@ json soil_json(const Groups& soil, const Groups& free, const Groups& joint, doub
 }
 
 }  // namespace
-
-std::string wall_name(double R_n, double d50_mm) {
-  return fmt::format("R_n {:g}, d50 {:g} mm", R_n, d50_mm);
-}
-
-std::string cause_of(const std::string& verdict, const std::string& cause_if_breaks) {
-  return verdict == "breaks" ? cause_if_breaks : "";
-}
-
-std::string cause_if_breaks(const json& q) {
-  if (q.contains("cause_if_breaks")) return q["cause_if_breaks"].get<std::string>();
-  return q["form_limit"]["verdict"] == "breaks" ? "form" : "calibration (unchecked)";
-}
-
-void check_form_limit_record(const json& record, const fs::path& file) {
-  const auto& runs = io::json_array(record, "/runs", file);
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const auto run = fmt::format("/runs/{}", i);
-    if (io::json_object(record, run, file).contains("dir"))
-      io::json_field<std::string>(record, run + "/dir", file);
-    io::json_field<std::string>(record, run + "/wall", file);
-    io::json_field<std::string>(record, run + "/boundary", file);
-    for (const auto& q : io::json_object(record, run + "/quantities", file).items()) {
-      const auto at = fmt::format("{}/quantities/{}", run, q.key());
-      for (const char* variant : {"soil_test_predicted", "form_limit"})
-        io::json_field<std::string>(record, fmt::format("{}/{}/verdict", at, variant), file);
-      io::json_optional<std::string>(record, at + "/cause_if_breaks", file);
-    }
-  }
-}
-
-json read_form_limit(const fs::path& file, const std::string& model) {
-  const auto j = io::read_json_file(file);
-  if (io::json_optional<std::string>(j, "/kind", file).value_or("") != "form_limit" ||
-      !j.contains("runs"))
-    throw InputError(
-        fmt::format("--form-limit {}: not a form-limit record (iwb form-limit's "
-                    "form_limit.json)",
-                    file.string()));
-  const auto of = io::json_optional<std::string>(j, "/model", file);
-  if (of != model)
-    throw InputError(fmt::format("--form-limit {}: a form limit of {}, not of {}", file.string(),
-                                 of.value_or("?"), model));
-  check_form_limit_record(j, file);
-  return j;
-}
-
-std::map<std::string, std::string> form_limit_causes(const json& record, const fs::path& dem_dir,
-                                                     double R_n, double d50_mm,
-                                                     const std::string& boundary) {
-  const json* match = nullptr;
-  for (const auto& r : record["runs"]) {
-    const fs::path d = r.value("dir", "");
-    if (fs::exists(d) && fs::exists(dem_dir) && fs::equivalent(d, dem_dir)) {
-      match = &r;
-      break;
-    }
-    if (!match && r.value("wall", "") == wall_name(R_n, d50_mm) &&
-        r.value("boundary", "") == boundary)
-      match = &r;
-  }
-  std::map<std::string, std::string> out;
-  if (match)
-    for (const auto& [key, q] : (*match)["quantities"].items()) out[key] = cause_if_breaks(q);
-  return out;
-}
 
 json run_form_limit(const FormLimitOptions& o) {
   check_inputs(o);

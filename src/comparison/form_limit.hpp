@@ -86,35 +86,5 @@ struct FormLimitOptions {
 // file, a calibration.json that is not one or is truncated or edited.
 nlohmann::json run_form_limit(const FormLimitOptions& options);
 
-// How a form-limit record names a wall: "R_n 0.5, d50 2 mm".
-std::string wall_name(double R_n, double d50_mm);
-
-// The form-limit record `file` (form_limit.json) read for `model`: InputError naming the file
-// when it is not one, or is another model's (a form limit says nothing of another model's form),
-// or when check_form_limit_record refuses it.
-nlohmann::json read_form_limit(const std::filesystem::path& file, const std::string& model);
-
-// A form-limit record read from `file`, checked where its readers take it (form_limit_verdicts,
-// causes_on): runs[] of objects with a wall, a boundary and (if any) a dir as strings, and per
-// quantity the verdicts soil_test_predicted and form_limit as strings. InputError "FILE: key
-// '/runs/0/wall' = 3: should be a string" (issue 60), never nlohmann's type_error.
-void check_form_limit_record(const nlohmann::json& record, const std::filesystem::path& file);
-
-// Per quantity, the cause a "breaks" of the soil-test set's prediction has on a run of this wall
-// and boundary in `record` (the run itself when the record holds it, else the first run of its
-// wall and boundary); empty when the record has no such run.
-std::map<std::string, std::string> form_limit_causes(const nlohmann::json& record,
-                                                     const std::filesystem::path& dem_dir,
-                                                     double R_n, double d50_mm,
-                                                     const std::string& boundary);
-
-// The cause a record's quantity gives a "breaks": its cause_if_breaks; for a record written before
-// the soil tests judged the set, "form" where the form limit breaks it, else "calibration
-// (unchecked)".
-std::string cause_if_breaks(const nlohmann::json& quantity);
-
-// A verdict's cause: `cause_if_breaks` for "breaks", empty for every other verdict.
-std::string cause_of(const std::string& verdict, const std::string& cause_if_breaks);
-
 }  // namespace iwb::comparison
 #include "models/registry.hpp"

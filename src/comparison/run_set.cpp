@@ -6,7 +6,7 @@
 #include <set>
 
 #include "common/errors.hpp"
-#include "comparison/form_limit.hpp"
+#include "comparison/form_limit_causes.hpp"
 #include "comparison/seed_scatter.hpp"
 #include "io/json_file.hpp"
 #include "io/output_path.hpp"

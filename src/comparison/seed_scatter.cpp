@@ -7,7 +7,6 @@
 #include <filesystem>
 
 #include "common/errors.hpp"
-#include "comparison/cyclic_verdicts.hpp"
 #include "comparison/quantities.hpp"
 
 namespace iwb::comparison {

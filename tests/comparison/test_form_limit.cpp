@@ -20,6 +20,7 @@
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
 #include "comparison/form_limit.hpp"
+#include "comparison/form_limit_causes.hpp"
 #include "io/run_directory.hpp"
 #include "support/synthetic_dem.hpp"
 

@@ -3,50 +3,21 @@
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
+#include "models/clay/critical_state_keys.hpp"
 
 namespace iwb::models {
 
 // As the other clay tables: bounds far beyond published clays refuse only units mistakes.
-constexpr double kMaxSlope = 2.0;
-constexpr double kMaxN = 10.0;
 constexpr double kMaxR = 10.0;  // Masin (2005): r ~ 0.1-0.7
 
 const ParameterTable& MasinClayParameters::table() {
   static const ParameterTable t{
       "clay_hypoplasticity",
       {
-          {"phi_c_deg",
-           "deg",
-           {0.0, true},
-           {90.0, true},
-           "critical state friction angle phi_c",
-           "eqs. 6.35, 6.38",
-           ParameterRole::kCriticalFrictionAngle,
-           CalibrationBox{10.0, 40.0, false}},
-          {"lambda_star",
-           "-",
-           {0.0, true},
-           {kMaxSlope, false},
-           "slope lambda* of the isotropic normal compression line, ln(1+e) against ln p",
-           "eq. 6.43",
-           ParameterRole::kMaterial,
-           CalibrationBox{0.01, 0.5, false}},
-          {"kappa_star",
-           "-",
-           {0.0, true},
-           {kMaxSlope, false},
-           "slope kappa* of the isotropic unloading line, ln(1+e) against ln p",
-           "eq. 6.36",
-           ParameterRole::kMaterial,
-           CalibrationBox{0.001, 0.1, false}},
-          {"N",
-           "-",
-           {0.0, true},
-           {kMaxN, false},
-           "ln(1+e) on the isotropic normal compression line at p = 1 kPa",
-           "eq. 6.43",
-           ParameterRole::kMaterial,
-           CalibrationBox{0.5, 3.0, false}},
+          clay_keys::phi_c_deg("critical state friction angle phi_c", "eqs. 6.35, 6.38"),
+          clay_keys::lambda_star("eq. 6.43"),
+          clay_keys::kappa_star("eq. 6.36"),
+          clay_keys::N("ln(1+e) on the isotropic normal compression line at p = 1 kPa", "eq. 6.43"),
           {"r",
            "-",
            {0.0, true},
@@ -61,8 +32,7 @@ const ParameterTable& MasinClayParameters::table() {
 
 MasinClayParameters MasinClayParameters::from(const ParameterValues& v, const std::string& source) {
   validate(table(), v, source);
-  require_below(v, "kappa_star", "lambda_star", source,
-                "unloading is stiffer than normal compression");
+  clay_keys::require_slopes_ordered(v, source);
   return {v.at("phi_c_deg") * M_PI / 180.0, v.at("lambda_star"), v.at("kappa_star"), v.at("N"),
           v.at("r")};
 }

@@ -5,34 +5,16 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "models/clay/critical_state_keys.hpp"
 
 namespace iwb::models {
-
-// Upper bounds far beyond published clays (lambda* 0.05-0.3, kappa* 0.005-0.05, N 0.7-2):
-// only a units mistake or a typo is refused.
-constexpr double kMaxSlope = 2.0;
-constexpr double kMaxN = 10.0;
 
 const ParameterTable& ClayParameters::table() {
   static const ParameterTable t{
       "hypoplastic_clay",
       {
-          {"lambda_star",
-           "-",
-           {0.0, true},
-           {kMaxSlope, false},
-           "slope lambda* of the isotropic normal compression line, ln(1+e) against ln p",
-           "eq. 6.7",
-           ParameterRole::kMaterial,
-           CalibrationBox{0.01, 0.5, false}},
-          {"kappa_star",
-           "-",
-           {0.0, true},
-           {kMaxSlope, false},
-           "slope kappa* of the isotropic unloading line, ln(1+e) against ln p",
-           "eq. 6.9",
-           ParameterRole::kMaterial,
-           CalibrationBox{0.001, 0.1, false}},
+          clay_keys::lambda_star("eq. 6.7"),
+          clay_keys::kappa_star("eq. 6.9"),
           {"nu",
            "-",
            {0.0, true},
@@ -41,30 +23,17 @@ const ParameterTable& ClayParameters::table() {
            "eq. 6.6",
            ParameterRole::kMaterial,
            CalibrationBox{0.05, 0.45, false}},
-          {"phi_c_deg",
-           "deg",
-           {0.0, true},
-           {90.0, true},
-           "critical state friction angle phi_c (HCC: M = 6 sin phi_c / (3 - sin phi_c))",
-           "eq. 6.10",
-           ParameterRole::kCriticalFrictionAngle,
-           CalibrationBox{10.0, 40.0, false}},
-          {"N",
-           "-",
-           {0.0, true},
-           {kMaxN, false},
-           "ln(1+e) on the normal compression line at p = 1 kPa",
-           "eq. 6.7, ERRATA 15",
-           ParameterRole::kMaterial,
-           CalibrationBox{0.5, 3.0, false}},
+          clay_keys::phi_c_deg(
+              "critical state friction angle phi_c (HCC: M = 6 sin phi_c / (3 - sin phi_c))",
+              "eq. 6.10"),
+          clay_keys::N("ln(1+e) on the normal compression line at p = 1 kPa", "eq. 6.7, ERRATA 15"),
       }};
   return t;
 }
 
 ClayParameters ClayParameters::from(const ParameterValues& v, const std::string& source) {
   validate(table(), v, source);
-  require_below(v, "kappa_star", "lambda_star", source,
-                "unloading is stiffer than normal compression");
+  clay_keys::require_slopes_ordered(v, source);
   return {v.at("lambda_star"), v.at("kappa_star"), v.at("nu"), v.at("phi_c_deg") * M_PI / 180.0,
           v.at("N")};
 }
