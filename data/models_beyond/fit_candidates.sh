@@ -58,3 +58,8 @@ beta_w = 0
 lambda_w_d50 = 5")
 fit hvwe-pg hvwe_pg_held_walls "$pg" --free asperity_dilatancy.beta_w --free lambda_w_d50 --hold-walls
 fit hvwe-pg hvwe_pg_walls_fitted "$pg" --free asperity_dilatancy.beta_w --free lambda_w_d50
+
+# ahe beside them (the issue asks for hvwe and ahe side by side): only the record's soil-test
+# prediction is read (judge.py --reference), the same prediction rule on every held-out run; the
+# phi_c it fits is not used.
+fit ahe ahe_reference "$SOIL" --free phi_c_deg --hold-walls

@@ -84,8 +84,18 @@ def judge(record):
     return rows, c1_denominator, c1_held, new_breaks, smooth_changed
 
 
-def report(record, path):
+def reference_verdicts(reference, c):
+    """The reference model's predicted verdicts on cell `c`'s runs (matched by directory)."""
+    if reference is None:
+        return {}
+    by_dir = {r["dir"]: r for r in reference["runs"]}
+    runs = [by_dir[r["dir"]] for r in c["runs"] if r["dir"] in by_dir]
+    return cell_verdicts({"runs": runs}, "soil_test_predicted") if runs else {}
+
+
+def report(record, path, reference=None):
     rows, den, held, new, smooth = judge(record)
+    ref_name = reference["model"] if reference else None
     params = ", ".join(f"{p['name']} = {p['value']:.4g}" + (f" +- {p['sigma']:.2g}" if p.get("sigma") is not None else "")
                        + (" (on a bound)" if p.get("at_bound") else "") for p in record["parameters"])
     c1 = len(held) >= 2 * len(den) / 3 if den else False
@@ -98,13 +108,16 @@ def report(record, path):
              f"- Criterion 3 (smooth walls unchanged): {'met' if not smooth else 'NOT met: ' + '; '.join(smooth)}",
              f"- The candidate {'HOLDS' if c1 and not new and not smooth else 'does not hold'} by the criteria fixed before the fit.",
              "", "Each cell's verdict (most of its runs) and mean error against the DEM; a changed verdict in bold.", "",
-             "| cell | wall | boundary | seeds | quantity | hvwe | candidate |", "|---|---|---|---|---|---|---|"]
+             f"| cell | wall | boundary | seeds | quantity | hvwe |{' ' + ref_name + ' |' if ref_name else ''} candidate |",
+             "|---|---|---|---|---|---|---|" + ("---|" if ref_name else "")]
     for c, hvwe, cand in rows:
+        ref = reference_verdicts(reference, c)
         for k in DECIDING + ["dilation_rate"]:
             if k in hvwe:
+                ref_cell = f" {ref.get(k, '-')} |" if ref_name else ""
                 shown = f"{cand[k]} ({mean_error(c, k, 'form_limit')})"
                 lines.append(f"| {c['name']} | {c['wall']} | {c['boundary']} | {len(c['runs'])} | {k} | "
-                             f"{hvwe[k]} ({mean_error(c, k, 'soil_test_predicted')}) | "
+                             f"{hvwe[k]} ({mean_error(c, k, 'soil_test_predicted')}) |{ref_cell} "
                              f"{'**' + shown + '**' if hvwe[k] != cand[k] else shown} |")
     return "\n".join(lines) + "\n"
 
@@ -113,8 +126,11 @@ def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("records", nargs="+", help="form-limit output directories")
     p.add_argument("--md", help="also write the report here")
+    p.add_argument("--reference", help="a record of another model whose predicted verdicts are shown beside (ahe)")
     a = p.parse_args()
-    text = "".join(report(json.load(open(os.path.join(d, "form_limit.json"))), d) + "\n" for d in a.records)
+    reference = json.load(open(os.path.join(a.reference, "form_limit.json"))) if a.reference else None
+    text = "".join(report(json.load(open(os.path.join(d, "form_limit.json"))), d, reference) + "\n"
+                   for d in a.records)
     print(text)
     if a.md:
         with open(a.md, "w") as out:
