@@ -21,7 +21,14 @@ struct Metrics {
   std::optional<double> rmse_u_n_mm;       // CNL and CNS: dilation u_n(u_x)
   std::optional<double> rmse_sigma_n_kPa;  // CNS and CV: the normal-stress path
   std::size_t rows_compared;
+  // The last fifth of a cyclic run is the end of its path, not a residual (issue 59): named
+  // end_of_path_friction in the record, as in its summary.json.
+  bool cyclic = false;
 };
+
+// The record's key of the friction over the last fifth: "residual_friction" or, for a cyclic run,
+// "end_of_path_friction".
+const char* end_friction_key(bool cyclic);
 
 Metrics compare(const DemRun& dem, const Replay& replay);
 nlohmann::json to_json(const Metrics& m);

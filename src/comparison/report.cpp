@@ -14,6 +14,7 @@
 #include "comparison/dem_run.hpp"
 #include "comparison/figure.hpp"
 #include "comparison/html.hpp"
+#include "comparison/metrics.hpp"
 #include "comparison/quantities.hpp"
 #include "comparison/verdict_table.hpp"
 #include "io/csv_table.hpp"
@@ -130,9 +131,15 @@ Figure velocity_profile(const io::CsvTable& prof, const nlohmann::json& summary)
 }
 
 std::string metrics_table(const nlohmann::json& cmp) {
+  // a cyclic run's last fifth is the end of its path, not a residual (issue 59)
+  const bool cyclic =
+      !cmp["variants"].empty() && cmp["variants"][0]["metrics"].contains(end_friction_key(true));
+  const char* end_key = end_friction_key(cyclic);
   std::string h =
       "<table><tr><th>variant</th><th>kappa_r</th><th>d_s (mm)</th><th>RMSE tau (kPa)</th>"
-      "<th>peak tau/sigma_n<br>model (DEM)</th><th>residual<br>model (DEM)</th>"
+      "<th>peak tau/sigma_n<br>model (DEM)</th><th>" +
+      std::string(cyclic ? "end of path" : "residual") +
+      "<br>model (DEM)</th>"
       "<th>u_x at peak (mm)<br>model (DEM)</th><th>RMSE u_n (mm)</th><th>RMSE sigma_n "
       "(kPa)</th><th>status</th></tr>\n";
   auto num = [](const nlohmann::json& j, const char* fmt_) {
@@ -145,8 +152,8 @@ std::string metrics_table(const nlohmann::json& cmp) {
         "<td>{} ({})</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
         escape_html(v["label"]), v["kappa_r"].get<double>(), v["d_s_mm"].get<double>(),
         num(m["rmse_tau_kPa"], "{:.2f}"), num(m["peak_friction"]["model"], "{:.3f}"),
-        num(m["peak_friction"]["dem"], "{:.3f}"), num(m["residual_friction"]["model"], "{:.3f}"),
-        num(m["residual_friction"]["dem"], "{:.3f}"), num(m["u_x_at_peak_mm"]["model"], "{:.2f}"),
+        num(m["peak_friction"]["dem"], "{:.3f}"), num(m[end_key]["model"], "{:.3f}"),
+        num(m[end_key]["dem"], "{:.3f}"), num(m["u_x_at_peak_mm"]["model"], "{:.2f}"),
         num(m["u_x_at_peak_mm"]["dem"], "{:.2f}"), num(m["rmse_u_n_mm"], "{:.4f}"),
         num(m["rmse_sigma_n_kPa"], "{:.2f}"), escape_html(v["status"]));
   }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "comparison/cyclic_verdicts.hpp"
+#include "comparison/metrics.hpp"
 #include "comparison/seed_scatter.hpp"
 
 using namespace iwb;
@@ -193,4 +194,23 @@ TEST_CASE(
   CHECK(alone.seeds == 1);
   CHECK_FALSE(alone.dem_ci.has_value());
   CHECK(alone.verdict == "breaks");
+}
+
+TEST_CASE("a cyclic run's last fifth is recorded as its end of path, never as a residual",
+          "[comparison][cyclic]") {
+  const auto d = cyclic_run(driver::BoundaryKind::kCNL);
+  const auto m = comparison::to_json(comparison::compare(d, replay_of(d)));
+  CHECK(m.contains("end_of_path_friction"));
+  CHECK_FALSE(m.contains("residual_friction"));
+  // the end of path is the mean |tau|/sigma_n over the last fifth of the wall's travel v t (the
+  // path returns through u_x, so u_x's own last fifth would take rows from every cycle)
+  const double v = d.scene_but_seed.at("/shear/velocity_mm_s"_json_pointer).get<double>();
+  const double from = 0.8 * v * d.t_s.back();
+  double sum = 0.0;
+  int rows = 0;
+  for (std::size_t i = 0; i < d.t_s.size(); ++i)
+    if (v * d.t_s[i] >= from) sum += std::abs(d.tau_kPa[i]) / d.sigma_n_kPa[i], ++rows;
+  CHECK(rows < int(d.t_s.size()) / 4);
+  CHECK(m["end_of_path_friction"]["dem"].get<double>() == Approx(sum / rows).epsilon(1e-12));
+  CHECK(m["end_of_path_friction"]["error"].get<double>() == Approx(0.0).margin(1e-12));
 }
