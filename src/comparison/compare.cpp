@@ -275,32 +275,18 @@ nlohmann::json run_comparison(const CompareOptions& options) {
   return run_comparison(read_comparison_inputs(options));
 }
 
-nlohmann::json run_comparison(const ComparisonInputs& in) {
+namespace {
+
+// Each candidate replayed along the run and judged: its metrics, verdicts and, on a cyclic run,
+// its cycles (issue 34); `replays` gets the replays in the candidates' order.
+json judged_variants(const ComparisonInputs& in, const std::vector<Variant>& candidates,
+                     const std::optional<cycles::Program>& program,
+                     const std::optional<cycles::CyclicQuantities>& dem_cyclic,
+                     std::vector<Replay>& replays) {
   const auto& [opt, dem, seeds, scatter, tolerances, form_limit, given] = in;
-  auto candidates = given;
-  io::prepare_run_directory(opt.out, {"comparison"}, opt.force);
-  json manifest = manifest_of(opt);
-  if (!opt.roughness_scheme.empty()) manifest["inputs"]["roughness_scheme"] = opt.roughness_scheme;
-  if (!opt.f_c.empty()) manifest["inputs"]["f_c"] = opt.f_c;
-  io::write_manifest(opt.out, manifest);
-
-  const Variant predicted = candidates.front();
-  const FitBounds bounds = fit_bounds(opt.model);
-  const FitResult tau_fit = fit_kappa_and_ds(dem, predicted, tau_only_targets(), bounds);
-  const FitTargets joint = joint_targets(dem, scatter);
-  const FitResult fit = fit_kappa_and_ds(dem, predicted, joint, bounds);
-  candidates.push_back(fitted_variant(predicted, tau_fit, "tau alone", dem.d50_mm));
-  candidates.push_back(fitted_variant(
-      predicted, fit,
-      dem.boundary == driver::BoundaryKind::kCNL ? "tau and u_n" : "tau and sigma_n", dem.d50_mm));
-  const std::size_t fitted_index = candidates.size() - 1;
-
-  std::vector<Replay> replays;
-  json variants = json::array();
-  const auto program = cyclic_program(dem);
-  const auto dem_cyclic = program ? std::optional(dem_cycles(dem, *program)) : std::nullopt;
   const auto seed_cycles = program ? cycles_of_seeds(dem, seeds, scatter, *program)
                                    : std::vector<cycles::CyclicQuantities>{};
+  json variants = json::array();
   for (const auto& v : candidates) {
     replays.push_back(replay(dem, v));
     variants.push_back({{"index", replays.size() - 1},
@@ -318,42 +304,39 @@ nlohmann::json run_comparison(const ComparisonInputs& in) {
     }
   }
   if (!form_limit.is_null()) label_causes(variants, form_limit, opt.dem_dir, dem);
-  const Feasibility scan =
-      scan_feasibility(dem, scatter, predicted, tolerances, kScanPoints, bounds);
+  return variants;
+}
+
+// What compare.json says of the run, its seeds and tolerances, besides the variants.
+json run_record(const ComparisonInputs& in, const std::optional<cycles::CyclicQuantities>& cyc) {
+  const auto& [opt, dem, seeds, scatter, tolerances, form_limit, given] = in;
   json tol = json::object();
   for (const auto& [k, t] : tolerances) tol[k] = t;
-  const json result = {
-      {"dem",
-       {{"dir", opt.dem_dir.string()},
-        {"engine", dem.engine},
-        {"status", dem.status},
-        {"boundary", driver::to_string(dem.boundary)},
-        {"R_n", dem.R_n},
-        {"d50_mm", dem.d50_mm},
-        {"sigma_n0_kPa", dem.sigma_n_kPa.front()},
-        {"e0_band", dem.e_band.front()}}},
-      {"model", opt.model},
-      {"cyclic", dem_cyclic ? cycles::to_json(*dem_cyclic) : json(nullptr)},
-      {"seeds",
-       {{"runs", scatter.runs},
-        {"rows", scatter.rows},
-        {"tau_rms_sd_kPa", scatter.tau.rms_sd},
-        {"u_n_rms_sd_mm", scatter.u_n.rms_sd},
-        {"sigma_n_rms_sd_kPa", scatter.sigma_n.rms_sd}}},
-      {"tolerances", tol},
-      {"verdicts",
-       {{"predicted_variant", 0},
-        {"tau_only_variant", fitted_index - 1},
-        {"fitted_variant", fitted_index},
-        {"summary", headline(variants[0]["verdicts"], variants[fitted_index]["verdicts"], scan)}}},
-      {"variants", variants},
-      {"fit", fit_json(fit, dem, compare(dem, replays[fitted_index]))},
-      {"fit_tau_only", fit_json(tau_fit, dem, compare(dem, replays[fitted_index - 1]))},
-      {"replay",
-       {{"normal_control",
-         "the DEM's boundary condition: CNL with its measured sigma_n(t), CNS with its K, CV"},
-        {"initial_state", "DEM sigma_n and band void ratio of the first row; K0 = 1 - sin(phi_c)"},
-        {"strain_increment", kReplayStrainIncrement}}}};
+  return {{"dem",
+           {{"dir", opt.dem_dir.string()},
+            {"engine", dem.engine},
+            {"status", dem.status},
+            {"boundary", driver::to_string(dem.boundary)},
+            {"R_n", dem.R_n},
+            {"d50_mm", dem.d50_mm},
+            {"sigma_n0_kPa", dem.sigma_n_kPa.front()},
+            {"e0_band", dem.e_band.front()}}},
+          {"model", opt.model},
+          {"cyclic", cyc ? cycles::to_json(*cyc) : json(nullptr)},
+          {"seeds",
+           {{"runs", scatter.runs},
+            {"rows", scatter.rows},
+            {"tau_rms_sd_kPa", scatter.tau.rms_sd},
+            {"u_n_rms_sd_mm", scatter.u_n.rms_sd},
+            {"sigma_n_rms_sd_kPa", scatter.sigma_n.rms_sd}}},
+          {"tolerances", tol}};
+}
+
+// compare.json, compare.csv and (with seeds) seed_band.csv, each atomically and hashed in the
+// manifest (`iwb report` refuses a file that changed since), then the manifest says complete.
+void write_comparison(const ComparisonInputs& in, json manifest, const json& result,
+                      const std::vector<Replay>& replays) {
+  const auto& [opt, dem, seeds, scatter, tolerances, form_limit, given] = in;
   std::vector<std::pair<std::string, std::string>> files = {
       {"compare.json", result.dump(2) + "\n"}, {"compare.csv", curves_csv(dem, replays)}};
   if (scatter.from_seeds()) files.push_back({"seed_band.csv", seed_band_csv(dem, scatter)});
@@ -361,12 +344,55 @@ nlohmann::json run_comparison(const ComparisonInputs& in) {
   for (const auto& [name, content] : files) {
     io::write_atomically(opt.out / name, content);
     manifest["files"].push_back(name);
-    manifest["sha256"][name] =
-        io::sha256_hex(content);  // `iwb report` refuses a file that changed since
+    manifest["sha256"][name] = io::sha256_hex(content);
   }
   manifest["finished"] = io::utc_timestamp();
   manifest["status"] = "complete";
   io::write_manifest(opt.out, manifest);
+}
+
+}  // namespace
+
+nlohmann::json run_comparison(const ComparisonInputs& in) {
+  const auto& [opt, dem, seeds, scatter, tolerances, form_limit, given] = in;
+  auto candidates = given;
+  io::prepare_run_directory(opt.out, {"comparison"}, opt.force);
+  json manifest = manifest_of(opt);
+  if (!opt.roughness_scheme.empty()) manifest["inputs"]["roughness_scheme"] = opt.roughness_scheme;
+  if (!opt.f_c.empty()) manifest["inputs"]["f_c"] = opt.f_c;
+  io::write_manifest(opt.out, manifest);
+
+  const Variant predicted = candidates.front();
+  const FitBounds bounds = fit_bounds(opt.model);
+  const FitResult tau_fit = fit_kappa_and_ds(dem, predicted, tau_only_targets(), bounds);
+  const FitResult fit = fit_kappa_and_ds(dem, predicted, joint_targets(dem, scatter), bounds);
+  candidates.push_back(fitted_variant(predicted, tau_fit, "tau alone", dem.d50_mm));
+  candidates.push_back(fitted_variant(
+      predicted, fit,
+      dem.boundary == driver::BoundaryKind::kCNL ? "tau and u_n" : "tau and sigma_n", dem.d50_mm));
+  const std::size_t fitted_index = candidates.size() - 1;
+
+  std::vector<Replay> replays;
+  const auto program = cyclic_program(dem);
+  const auto dem_cyclic = program ? std::optional(dem_cycles(dem, *program)) : std::nullopt;
+  const json variants = judged_variants(in, candidates, program, dem_cyclic, replays);
+  const Feasibility scan =
+      scan_feasibility(dem, scatter, predicted, tolerances, kScanPoints, bounds);
+  json result = run_record(in, dem_cyclic);
+  result["verdicts"] = {
+      {"predicted_variant", 0},
+      {"tau_only_variant", fitted_index - 1},
+      {"fitted_variant", fitted_index},
+      {"summary", headline(variants[0]["verdicts"], variants[fitted_index]["verdicts"], scan)}};
+  result["variants"] = variants;
+  result["fit"] = fit_json(fit, dem, compare(dem, replays[fitted_index]));
+  result["fit_tau_only"] = fit_json(tau_fit, dem, compare(dem, replays[fitted_index - 1]));
+  result["replay"] = {
+      {"normal_control",
+       "the DEM's boundary condition: CNL with its measured sigma_n(t), CNS with its K, CV"},
+      {"initial_state", "DEM sigma_n and band void ratio of the first row; K0 = 1 - sin(phi_c)"},
+      {"strain_increment", kReplayStrainIncrement}};
+  write_comparison(in, manifest, result, replays);
   return result;
 }
 
