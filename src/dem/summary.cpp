@@ -65,35 +65,59 @@ double erfc_width(const std::vector<double>& z, const std::vector<double>& r, do
   return 2.0 * 0.9062 * best_w;
 }
 
-void shear_band(const io::CsvTable& profiles, Summary& s) {
-  if (profiles.rows.empty()) {
-    s.shear_mode = "no profile";
-    return;
-  }
+// The velocity and porosity profile of the last window (bin heights on the d50 grid: see above).
+struct Profile {
+  std::vector<double> z, v, porosity;
+};
+
+Profile last_window(const io::CsvTable& profiles) {
+  Profile p;
   const auto window = profiles.values("u_x_mm_window");
   const double last = *std::max_element(window.begin(), window.end());
-  std::vector<double> z, v, porosity;
   for (const auto& row : profiles.rows)
     if (row[profiles.column("u_x_mm_window")] == last &&
         row[profiles.column("z_over_d50")] >= 0.0) {
-      z.push_back(std::round(row[profiles.column("z_over_d50")] * kHeightStepsPerD50) /
-                  kHeightStepsPerD50);
-      v.push_back(row[profiles.column("vx_over_vwall")]);
-      porosity.push_back(row[profiles.column("porosity")]);
+      p.z.push_back(std::round(row[profiles.column("z_over_d50")] * kHeightStepsPerD50) /
+                    kHeightStepsPerD50);
+      p.v.push_back(row[profiles.column("vx_over_vwall")]);
+      p.porosity.push_back(row[profiles.column("porosity")]);
     }
-  if (z.size() < 4) {
-    s.shear_mode = "no profile";
-    return;
-  }
+  return p;
+}
+
+// The mean speed of the first grain layer, relative to the wall's.
+double first_layer_speed(const Profile& p) {
   double first = 0.0;
   int n_first = 0;
-  for (std::size_t i = 0; i < z.size(); ++i)
-    if (z[i] <= kFirstLayerD50) first += v[i], ++n_first;
-  first = n_first ? first / n_first : v.front();
-  s.wall_slip = 1.0 - first;
-  std::vector<double> r;
-  for (double x : v) r.push_back(first > 1e-9 ? x / first : 0.0);
+  for (std::size_t i = 0; i < p.z.size(); ++i)
+    if (p.z[i] <= kFirstLayerD50) first += p.v[i], ++n_first;
+  return n_first ? first / n_first : p.v.front();
+}
+
+// Where shear localised and how wide its bands are, from the speeds r relative to the first
+// layer's and the far field's `far`; returns the top of the zone whose porosity is e_band's.
+double localised_bands(const Profile& p, const std::vector<double>& r, double far, Summary& s) {
+  const auto& z = p.z;
   const double height = z.back();
+  double band_top = std::min(kDefaultBandD50, 0.5 * height);
+  s.shear_mode = far < kLocalisedFarField         ? "localised at the wall"
+                 : far > 1.0 - kLocalisedFarField ? "localised at the plate"
+                                                  : "split between wall and plate";
+  // the wall band: from the wall until r is within 10 % of its drop from the far field (only
+  // where the wall carries a real share of the drop)
+  for (std::size_t i = 0; i < z.size() && far < 1.0 - kLocalisedFarField; ++i)
+    if (r[i] - far <= 0.1 * (1.0 - far)) {
+      s.wall_band_d50 = z[i];
+      band_top = z[i];
+      break;
+    }
+  // the plate band: from the top down until r is within 10 % of the far field (a rough plate
+  // holds its grains at rest; DEM.md: shear may localise there instead of at the wall)
+  for (std::size_t i = z.size(); i-- > 0;)
+    if (r[i] >= 0.9 * far) {
+      if (far > kLocalisedFarField) s.plate_band_d50 = height - z[i];
+      break;
+    }
   // Relative to the first layer (DEM.md: on smooth walls the 0.9 -> 0.1 band is undefined
   // against the wall's speed because the wall slips).
   double z90 = NAN, z10 = NAN;
@@ -101,48 +125,42 @@ void shear_band(const io::CsvTable& profiles, Summary& s) {
     if (std::isnan(z90) && r[i] < 0.9) z90 = z[i];
     if (std::isnan(z10) && r[i] < 0.1) z10 = z[i];
   }
-  const Fit lin = linear_fit(z, r);
-  std::vector<double> middle;
+  if (far < kLocalisedFarField && !std::isnan(z90) && !std::isnan(z10))
+    s.band_thickness_d50 = z10 - z90;
+  std::vector<double> zl, ql;  // the wall band normalised to [0, 1], lower half of the specimen
   for (std::size_t i = 0; i < z.size(); ++i)
-    if (z[i] >= height / 3.0 && z[i] <= 2.0 * height / 3.0) middle.push_back(r[i]);
+    if (z[i] <= 0.5 * height) zl.push_back(z[i]), ql.push_back((r[i] - far) / (1.0 - far));
+  if (zl.size() >= 4 && far < 1.0 - kLocalisedFarField)
+    s.band_thickness_erf_d50 = erfc_width(zl, ql, 0.5 * height);
+  return band_top;
+}
+
+void shear_band(const io::CsvTable& profiles, Summary& s) {
+  const Profile p = profiles.rows.empty() ? Profile{} : last_window(profiles);
+  if (p.z.size() < 4) {
+    s.shear_mode = "no profile";
+    return;
+  }
+  const double first = first_layer_speed(p);
+  s.wall_slip = 1.0 - first;
+  std::vector<double> r;
+  for (double x : p.v) r.push_back(first > 1e-9 ? x / first : 0.0);
+  const double height = p.z.back();
+  std::vector<double> middle;
+  for (std::size_t i = 0; i < p.z.size(); ++i)
+    if (p.z[i] >= height / 3.0 && p.z[i] <= 2.0 * height / 3.0) middle.push_back(r[i]);
   std::nth_element(middle.begin(), middle.begin() + long(middle.size() / 2), middle.end());
   const double far = middle.empty() ? 0.0 : middle[middle.size() / 2];
   s.far_field_speed = far;
   s.wall_share = 1.0 - far;
-  double band_top = std::min(kDefaultBandD50, 0.5 * height);
-  if (lin.r2 > kDistributedR2) {
-    s.shear_mode = "distributed shear";
-  } else {
-    s.shear_mode = far < kLocalisedFarField         ? "localised at the wall"
-                   : far > 1.0 - kLocalisedFarField ? "localised at the plate"
-                                                    : "split between wall and plate";
-    // the wall band: from the wall until r is within 10 % of its drop from the far field (only
-    // where the wall carries a real share of the drop)
-    for (std::size_t i = 0; i < z.size() && far < 1.0 - kLocalisedFarField; ++i)
-      if (r[i] - far <= 0.1 * (1.0 - far)) {
-        s.wall_band_d50 = z[i];
-        band_top = z[i];
-        break;
-      }
-    // the plate band: from the top down until r is within 10 % of the far field (a rough plate
-    // holds its grains at rest; DEM.md: shear may localise there instead of at the wall)
-    for (std::size_t i = z.size(); i-- > 0;)
-      if (r[i] >= 0.9 * far) {
-        if (far > kLocalisedFarField) s.plate_band_d50 = height - z[i];
-        break;
-      }
-    if (far < kLocalisedFarField && !std::isnan(z90) && !std::isnan(z10))
-      s.band_thickness_d50 = z10 - z90;
-    std::vector<double> zl, ql;  // the wall band normalised to [0, 1], lower half of the specimen
-    for (std::size_t i = 0; i < z.size(); ++i)
-      if (z[i] <= 0.5 * height) zl.push_back(z[i]), ql.push_back((r[i] - far) / (1.0 - far));
-    if (zl.size() >= 4 && far < 1.0 - kLocalisedFarField)
-      s.band_thickness_erf_d50 = erfc_width(zl, ql, 0.5 * height);
-  }
+  const bool distributed = linear_fit(p.z, r).r2 > kDistributedR2;
+  if (distributed) s.shear_mode = "distributed shear";
+  const double band_top =
+      distributed ? std::min(kDefaultBandD50, 0.5 * height) : localised_bands(p, r, far, s);
   double n = 0;
   int count = 0;
-  for (std::size_t i = 0; i < z.size(); ++i)
-    if (z[i] <= band_top) n += porosity[i], ++count;
+  for (std::size_t i = 0; i < p.z.size(); ++i)
+    if (p.z[i] <= band_top) n += p.porosity[i], ++count;
   if (count > 0) {
     n /= count;
     s.e_band = n / (1.0 - n);
