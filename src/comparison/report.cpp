@@ -426,30 +426,10 @@ std::string verdict_section(const nlohmann::json& cmp) {
                  escape_html(cmp["fit"]["algorithm"].get<std::string>()));
 }
 
-// Figures go to `staging` (the report's files directory while it is built); the page links them
-// where they will be, under `files`.
-Section comparison_section(const LoadedComparison& c, std::size_t k,
-                           const io::StagedDirectory& files, const fs::path& html) {
-  const auto& [dir, dem_dir, cmp, manifest, dem_manifest, summary, curves, profiles, seeds, program,
-               travel_mm] = c;
-  const std::string fig_name = fmt::format("{}-{}", k, dir.filename().string());
-  const fs::path fig_dir = files.path() / fig_name;
-  fs::create_directories(fig_dir);
+// Where the model's shear zone sits against the DEM's band: the predicted and the fitted d_s, with
+// the model's u_n along the run.
+std::vector<ShearZoneMark> shear_zone_marks(const nlohmann::json& cmp, const io::CsvTable& curves) {
   const auto& vs = cmp["variants"];
-  std::vector<std::size_t> shown;
-  for (const char* which : {"predicted_variant", "tau_only_variant", "fitted_variant"})
-    if (cmp["verdicts"].contains(which)) shown.push_back(cmp["verdicts"][which].get<std::size_t>());
-  std::vector<Figure> figs;
-  if (program)  // loops drawn over one another along u_x would hide every cycle
-    figs = cyclic_figures(cmp, curves, travel_mm, *program, shown);
-  else
-    figs = {versus_u_x("tau_ux", "tau (kPa)", "tau_dem_kPa", "tau_model_kPa", curves, vs, shown,
-                       seed_band(seeds, "tau_mean_kPa", "tau_sd_kPa")),
-            versus_u_x("un_ux", "u_n (mm), dilation positive", "u_n_dem_mm", "u_n_model_mm", curves,
-                       vs, shown, seed_band(seeds, "u_n_mean_mm", "u_n_sd_mm")),
-            versus_u_x("sigman_ux", "sigma_n (kPa)", "sigma_n_dem_kPa", "sigma_n_model_kPa", curves,
-                       vs, shown, seed_band(seeds, "sigma_n_mean_kPa", "sigma_n_sd_kPa"))};
-  figs.push_back(velocity_profile(profiles, summary));
   std::vector<ShearZoneMark> marks;
   for (const auto& [which, label] :
        {std::pair{"predicted_variant", "d_s predicted"}, {"fitted_variant", "d_s fitted"}})
@@ -466,7 +446,43 @@ Section comparison_section(const LoadedComparison& c, std::size_t k,
               m.u_n_mm.push_back(r[curves.column("u_n_model_mm")]);
       marks.push_back(std::move(m));
     }
-  for (auto& f : band_figures(dem_dir, marks)) figs.push_back(std::move(f));
+  return marks;
+}
+
+// The section's figures: tau, u_n and sigma_n along u_x (a cyclic run: its loops, cycle by
+// cycle), the velocity profile and the band's figures with the model's shear zones.
+std::vector<Figure> comparison_figures(const LoadedComparison& c) {
+  const auto& [dir, dem_dir, cmp, manifest, dem_manifest, summary, curves, profiles, seeds, program,
+               travel_mm] = c;
+  const auto& vs = cmp["variants"];
+  std::vector<std::size_t> shown;
+  for (const char* which : {"predicted_variant", "tau_only_variant", "fitted_variant"})
+    if (cmp["verdicts"].contains(which)) shown.push_back(cmp["verdicts"][which].get<std::size_t>());
+  std::vector<Figure> figs;
+  if (program)  // loops drawn over one another along u_x would hide every cycle
+    figs = cyclic_figures(cmp, curves, travel_mm, *program, shown);
+  else
+    figs = {versus_u_x("tau_ux", "tau (kPa)", "tau_dem_kPa", "tau_model_kPa", curves, vs, shown,
+                       seed_band(seeds, "tau_mean_kPa", "tau_sd_kPa")),
+            versus_u_x("un_ux", "u_n (mm), dilation positive", "u_n_dem_mm", "u_n_model_mm", curves,
+                       vs, shown, seed_band(seeds, "u_n_mean_mm", "u_n_sd_mm")),
+            versus_u_x("sigman_ux", "sigma_n (kPa)", "sigma_n_dem_kPa", "sigma_n_model_kPa", curves,
+                       vs, shown, seed_band(seeds, "sigma_n_mean_kPa", "sigma_n_sd_kPa"))};
+  figs.push_back(velocity_profile(profiles, summary));
+  for (auto& f : band_figures(dem_dir, shear_zone_marks(cmp, curves))) figs.push_back(std::move(f));
+  return figs;
+}
+
+// Figures go to `staging` (the report's files directory while it is built); the page links them
+// where they will be, under `files`.
+Section comparison_section(const LoadedComparison& c, std::size_t k,
+                           const io::StagedDirectory& files, const fs::path& html) {
+  const auto& [dir, dem_dir, cmp, manifest, dem_manifest, summary, curves, profiles, seeds, program,
+               travel_mm] = c;
+  const std::string fig_name = fmt::format("{}-{}", k, dir.filename().string());
+  const fs::path fig_dir = files.path() / fig_name;
+  fs::create_directories(fig_dir);
+  std::vector<Figure> figs = comparison_figures(c);
   std::vector<std::string> notes(figs.size());
   for (std::size_t i = 0; i < figs.size(); ++i)
     if (figs[i].name == "sigman_ux" && cmp["dem"]["boundary"] == "CNL")
