@@ -7,7 +7,8 @@
 // plate. One analysis tests them all: Welch's t-test between groups (one run against a group: its
 // prediction interval), the family of a file controlled by Benjamini-Hochberg at the file's q, and
 // a status per claim:
-//   supported      significant after the control, in the direction claimed;
+//   supported      significant after the control, in the direction claimed (for "b = a": the
+//                  two one-sided tests significant: equal within the margin);
 //   contradicted   significant after the control, the other way;
 //   not resolved   not significant after the control (never read as "equal"): with the seeds per
 //                  group that the measured scatter would need to resolve the effect measured;
@@ -20,9 +21,17 @@
 //   says = "roughness lowers the loss of ..."  # the sentence the README would say
 //   quantity = "/cyclic/cycles/19/friction_ratio"      # JSON pointer into summary.json
 //   relative_to = "/cyclic/cycles/0/friction_ratio"   # optional: (q - r) / r
+//   quantity_b = "/cyclic/post_cyclic/peak_friction"  # optional: group b's own pointer, where
+//   relative_to_b = ...                               # the two groups are runs of different
+//                                                     # kinds (a post-cyclic peak against a
+//                                                     # virgin one); default: as group a
 //   a = ["cyclic_small/runs/flat_cns*"]        # run directories, relative to the file; a '*' in
 //   b = ["cyclic_small/runs/rough_cns*"]       # the last component matches names
-//   expect = "b > a"                           # "b > a", "b < a" or "b != a"
+//   expect = "b > a"                           # "b > a", "b < a", "b != a" or "b = a"
+//   margin = 0.05                              # "b = a" only: equal within +-margin (the
+//                                              # quantity's units; a fraction for a relative
+//                                              # change), by two one-sided tests: the one
+//                                              # form in which "no difference" can be shown
 //   flagged = "exclude"                        # runs split or at the plate: "exclude" or "include"
 //   unsteady = "include"                       # a claim on /residual_friction: runs whose
 //                                              # residual_is is not "steady" are left out
@@ -42,8 +51,11 @@ namespace iwb::claims {
 
 struct Claim {
   std::string id, says, quantity, relative_to, expect, flagged;
+  std::string quantity_b, relative_to_b;  // group b's pointers (default: quantity, relative_to)
   std::string unsteady = "exclude";
   std::vector<std::string> a, b;
+  double margin = 0.0;  // of an equality claim ("b = a")
+  bool equality() const { return expect == "b = a"; }
 };
 
 struct ClaimsFile {
@@ -68,6 +80,8 @@ struct ClaimResult {
   Claim claim;
   Group a, b;
   std::optional<statistics::Difference> difference;
+  double p = 1.0;  // the claim's own test: Welch's (or the prediction interval's) two-sided p, or
+                   // for an equality claim the two one-sided tests' p
   double p_adjusted = 1.0;
   std::string status;
   std::optional<int> seeds_needed;

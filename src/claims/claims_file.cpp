@@ -1,5 +1,6 @@
 #include <fmt/core.h>
 
+#include <limits>
 #include <set>
 
 #include "claims/claims.hpp"
@@ -43,15 +44,28 @@ Claim read_claim(io::TableReader& t) {
   c.says = t.text("says");
   c.quantity = t.text("quantity");
   c.relative_to = t.optional_text("relative_to").value_or("");
-  for (const auto* pointer : {&c.quantity, &c.relative_to})
+  c.quantity_b = t.optional_text("quantity_b").value_or(c.quantity);
+  c.relative_to_b = t.optional_text("relative_to_b").value_or(c.relative_to);
+  const std::pair<const std::string*, const char*> pointers[] = {
+      {&c.quantity, "quantity"},
+      {&c.relative_to, "relative_to"},
+      {&c.quantity_b, "quantity_b"},
+      {&c.relative_to_b, "relative_to_b"}};
+  for (const auto& [pointer, key] : pointers)
     if (!pointer->empty() && pointer->front() != '/')
       throw InputError(
           fmt::format("{}: \"{}\": should be a JSON pointer into summary.json "
                       "(\"/cyclic/cycles/0/friction_ratio\")",
-                      t.where(pointer == &c.quantity ? "quantity" : "relative_to"), *pointer));
+                      t.where(key), *pointer));
+  if (c.relative_to.empty() != c.relative_to_b.empty())
+    throw InputError(fmt::format("{}: both groups are relative changes or neither",
+                                 t.where(c.relative_to.empty() ? "relative_to_b" : "relative_to")));
   c.a = patterns(t, "a");
   c.b = patterns(t, "b");
-  c.expect = one_of(t, "expect", {"b > a", "b < a", "b != a"});
+  c.expect = one_of(t, "expect", {"b > a", "b < a", "b != a", "b = a"});
+  if (c.equality())
+    c.margin =
+        t.number_in("margin", Range{0.0, std::numeric_limits<double>::infinity(), false, false});
   c.flagged = one_of(t, "flagged", {"exclude", "include"});
   if (t.optional_text("unsteady")) c.unsteady = one_of(t, "unsteady", {"exclude", "include"});
   t.finish();

@@ -1,6 +1,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "claims/claims.hpp"
@@ -63,22 +64,27 @@ std::string runs_cell(const Group& g) {
 json to_json(const ClaimsReport& report) {
   json claims = json::array();
   for (const auto& r : report.results) {
-    json c = {{"id", r.claim.id},
-              {"says", r.claim.says},
-              {"quantity", r.claim.quantity},
-              {"relative_to", r.claim.relative_to.empty() ? json() : json(r.claim.relative_to)},
-              {"expect", r.claim.expect},
-              {"flagged", r.claim.flagged},
-              {"a", group_json(r.a)},
-              {"b", group_json(r.b)},
-              {"status", r.status},
-              {"p_adjusted", r.difference ? json(r.p_adjusted) : json()},
-              {"seeds_needed", r.seeds_needed ? json(*r.seeds_needed) : json()}};
+    json c = {
+        {"id", r.claim.id},
+        {"says", r.claim.says},
+        {"quantity", r.claim.quantity},
+        {"relative_to", r.claim.relative_to.empty() ? json() : json(r.claim.relative_to)},
+        {"quantity_b", r.claim.quantity_b},
+        {"relative_to_b", r.claim.relative_to_b.empty() ? json() : json(r.claim.relative_to_b)},
+        {"expect", r.claim.expect},
+        {"margin", r.claim.equality() ? json(r.claim.margin) : json()},
+        {"flagged", r.claim.flagged},
+        {"a", group_json(r.a)},
+        {"b", group_json(r.b)},
+        {"status", r.status},
+        {"p", r.difference ? json(r.p) : json()},
+        {"p_adjusted", r.difference ? json(r.p_adjusted) : json()},
+        {"seeds_needed", r.seeds_needed ? json(*r.seeds_needed) : json()}};
     if (r.difference)
       c["difference"] = {{"effect", r.difference->effect},
                          {"half_width_95", r.difference->half_width},
                          {"degrees_of_freedom", r.difference->degrees_of_freedom},
-                         {"p", r.difference->p_value},
+                         {"p_welch", r.difference->p_value},
                          {"test", r.difference->prediction_interval
                                       ? "one run against the group's prediction interval"
                                       : "Welch's t-test"}};
@@ -111,6 +117,12 @@ std::string markdown(const ClaimsReport& report) {
       "at most q / {}, which survives the control whatever the others give): {}.\n\n",
       report.results.size(), report.file.file.filename().string(), tested, report.file.q, tested,
       tally);
+  if (std::any_of(report.results.begin(), report.results.end(),
+                  [](const ClaimResult& r) { return r.claim.equality(); }))
+    md +=
+        "A claim of equality (\"equal within ...\") is tested by two one-sided tests at its "
+        "margin (Schuirmann 1987), the one test whose small p shows the groups equal; its "
+        "status \"not resolved\" shows neither equality nor a difference.\n\n";
   md += cost_line(report) +
         "| claim | says | runs a, b | a | b | b - a (95 %) | p | p, BH | status |\n"
         "|---|---|---|---|---|---|---|---|---|\n";
@@ -119,13 +131,19 @@ std::string markdown(const ClaimsReport& report) {
     std::string status = r.status;
     if (r.seeds_needed)
       status += fmt::format(" ({} seeds a group would resolve it)", *r.seeds_needed);
+    else if (r.status == "not resolved" && d && r.claim.equality() &&
+             !(std::abs(d->effect) < r.claim.margin))
+      status += " (the measured difference is outside the margin: no count of seeds shows it)";
     else if (r.status == "not resolved" && d && !d->prediction_interval)
       status += " (not within 1000 seeds a group)";
+    const std::string says =
+        r.claim.says +
+        (r.claim.equality() ? fmt::format(" (equal within ±{:g})", r.claim.margin) : std::string());
     md += fmt::format("| {} | {} (flagged runs: {}) | {}, {} | {} | {} | {} | {} | {} | {} |\n",
-                      r.claim.id, r.claim.says, r.claim.flagged, runs_cell(r.a), runs_cell(r.b),
+                      r.claim.id, says, r.claim.flagged, runs_cell(r.a), runs_cell(r.b),
                       mean_sd(r.a), mean_sd(r.b),
                       d ? fmt::format("{:+.3g} ± {:.2g}", d->effect, d->half_width) : "-",
-                      d ? fmt::format("{:.2g}", d->p_value) : "-",
+                      d ? fmt::format("{:.2g}", r.p) : "-",
                       d ? fmt::format("{:.2g}", r.p_adjusted) : "-", status);
   }
   return md;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <tuple>
 
 #include "common/errors.hpp"
 #include "io/json_file.hpp"
@@ -74,17 +75,25 @@ bool flagged(const json& summary, std::string& why) {
 // its "residual" is a point on the way down, and averaging it with settled ones compares
 // different states (issue 59); left out of a claim on the residual unless the claim says it is on
 // the friction at the runs' stated travel (unsteady = "include").
-bool unsettled(const json& summary, const Claim& c) {
-  return c.quantity == "/residual_friction" && c.unsteady == "exclude" &&
+bool unsettled(const json& summary, const Claim& c, const std::string& quantity) {
+  return quantity == "/residual_friction" && c.unsteady == "exclude" &&
          summary.value("residual_is", std::string()) != "steady";
 }
 
-Group read_group(const fs::path& base, const std::vector<std::string>& patterns, const Claim& c) {
+// What a group reads from each run: its quantity and, for a relative change, what it is relative
+// to.
+struct Pointers {
+  const std::string& quantity;
+  const std::string& relative_to;
+};
+
+Group read_group(const fs::path& base, const std::vector<std::string>& patterns, const Claim& c,
+                 const Pointers& at) {
   Group g;
   for (const auto& pattern : patterns)
     for (const auto& run : runs_of(base, pattern, c)) {
       const auto [summary, soil_cell] = summary_of(run);
-      if (unsettled(summary, c)) {
+      if (unsettled(summary, c, at.quantity)) {
         g.excluded.emplace_back(run.string(), "residual not steady");
         continue;
       }
@@ -96,9 +105,9 @@ Group read_group(const fs::path& base, const std::vector<std::string>& patterns,
         }
         ++g.flagged_included;
       }
-      double v = number_at(summary, c.quantity, run);
-      if (!c.relative_to.empty()) {
-        const double r = number_at(summary, c.relative_to, run);
+      double v = number_at(summary, at.quantity, run);
+      if (!at.relative_to.empty()) {
+        const double r = number_at(summary, at.relative_to, run);
         v = (v - r) / r;
       }
       g.runs.push_back(run.string());
@@ -134,7 +143,8 @@ std::string status_of(const ClaimResult& r, double q) {
   if (r.p_adjusted > q) return "not resolved";
   const double e = r.difference->effect;
   const std::string& x = r.claim.expect;
-  const bool agrees = x == "b != a" || (x == "b > a" && e > 0.0) || (x == "b < a" && e < 0.0);
+  const bool agrees =
+      x == "b != a" || x == "b = a" || (x == "b > a" && e > 0.0) || (x == "b < a" && e < 0.0);
   return agrees ? "supported" : "contradicted";
 }
 
@@ -165,11 +175,14 @@ ClaimsReport test_claims(const ClaimsFile& file) {
   for (const auto& c : file.claims) {
     ClaimResult r;
     r.claim = c;
-    r.a = read_group(base, c.a, c);
-    r.b = read_group(base, c.b, c);
+    r.a = read_group(base, c.a, c, {c.quantity, c.relative_to});
+    r.b = read_group(base, c.b, c, {c.quantity_b, c.relative_to_b});
     r.difference = statistics::compare_groups(r.a.sample, r.b.sample);
+    if (r.difference)
+      r.p = c.equality() ? statistics::equivalence_p_value(*r.difference, c.margin)
+                         : r.difference->p_value;
     report.results.push_back(r);
-    if (r.difference) p.push_back(r.difference->p_value);
+    if (r.difference) p.push_back(r.p);
   }
   // the family: every claim that could be tested; a claim whose p is at most q / m survives the
   // control whatever the others give, the level the seeds a group needs are counted for
@@ -179,9 +192,11 @@ ClaimsReport test_claims(const ClaimsFile& file) {
   for (auto& r : report.results) {
     if (r.difference) r.p_adjusted = adjusted[k++];
     r.status = status_of(r, file.q);
-    if (r.status == "not resolved" && !r.difference->prediction_interval)
-      r.seeds_needed =
-          statistics::seeds_to_resolve(r.a.sample, r.b.sample, r.difference->effect, alpha);
+    if (r.status != "not resolved" || r.difference->prediction_interval) continue;
+    const auto& [a, b, c] = std::tie(r.a.sample, r.b.sample, r.claim);
+    r.seeds_needed =
+        c.equality() ? statistics::seeds_to_show_equal(a, b, r.difference->effect, c.margin, alpha)
+                     : statistics::seeds_to_resolve(a, b, r.difference->effect, alpha);
   }
   report.cost = cost_of(report.results);
   return report;

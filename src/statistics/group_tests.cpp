@@ -41,6 +41,7 @@ std::optional<Difference> compare_groups(const Sample& a, const Sample& b) {
     const double scale = a.sd * std::sqrt(1.0 + 1.0 / a.n);
     if (!(scale > 0.0)) return std::nullopt;
     d.degrees_of_freedom = a.n - 1;
+    d.standard_error = scale;
     d.half_width = t_quantile_real(d.degrees_of_freedom) * scale;
     d.p_value = two_sided_p(d.effect / scale, d.degrees_of_freedom);
     d.prediction_interval = true;
@@ -50,9 +51,20 @@ std::optional<Difference> compare_groups(const Sample& a, const Sample& b) {
   const double va = a.sd * a.sd / a.n, vb = b.sd * b.sd / b.n, se2 = va + vb;
   if (!(se2 > 0.0)) return std::nullopt;
   d.degrees_of_freedom = se2 * se2 / (va * va / (a.n - 1) + vb * vb / (b.n - 1));
-  d.half_width = t_quantile_real(d.degrees_of_freedom) * std::sqrt(se2);
+  d.standard_error = std::sqrt(se2);
+  d.half_width = t_quantile_real(d.degrees_of_freedom) * d.standard_error;
   d.p_value = two_sided_p(d.effect / std::sqrt(se2), d.degrees_of_freedom);
   return d;
+}
+
+double equivalence_p_value(const Difference& d, double margin) {
+  const boost::math::students_t dist{d.degrees_of_freedom};
+  // H0 effect <= -margin is rejected by a large t_low, H0 effect >= margin by a small t_high
+  const double t_low = (d.effect + margin) / d.standard_error;
+  const double t_high = (d.effect - margin) / d.standard_error;
+  const double p_low = boost::math::cdf(boost::math::complement(dist, t_low));
+  const double p_high = boost::math::cdf(dist, t_high);
+  return std::max(p_low, p_high);
 }
 
 std::vector<double> benjamini_hochberg(const std::vector<double>& p) {
@@ -77,6 +89,17 @@ std::optional<int> seeds_to_resolve(const Sample& a, const Sample& b, double eff
     const Sample sa{n, a.mean, a.sd}, sb{n, b.mean, b.sd};
     const auto d = compare_groups(sa, sb);
     if (d && d->p_value <= alpha) return n;
+  }
+  return std::nullopt;
+}
+
+std::optional<int> seeds_to_show_equal(const Sample& a, const Sample& b, double effect,
+                                       double margin, double alpha, int at_most) {
+  if (!(std::abs(effect) < margin)) return std::nullopt;
+  for (int n = 2; n <= at_most; ++n) {
+    const Sample sa{n, a.mean, a.sd}, sb{n, b.mean, b.sd};
+    const auto d = compare_groups(sa, sb);
+    if (d && equivalence_p_value(*d, margin) <= alpha) return n;
   }
   return std::nullopt;
 }

@@ -18,6 +18,7 @@ struct Difference {
   double effect = 0.0;               // mean of b - mean of a
   double half_width = 0.0;           // of its 95 % interval
   double degrees_of_freedom = 0.0;   // Welch-Satterthwaite (or n_a - 1 for one run)
+  double standard_error = 0.0;       // of the effect (of a new run's deviation, for one run)
   double p_value = 1.0;              // two-sided
   bool prediction_interval = false;  // b is a single run, judged against a's interval
 };
@@ -26,6 +27,12 @@ struct Difference {
 // prediction interval, t = (b - mean_a) / (sd_a sqrt(1 + 1/n_a)) with n_a - 1 degrees of freedom;
 // nullopt when neither applies (a group of fewer than two, or no scatter at all).
 std::optional<Difference> compare_groups(const Sample& a, const Sample& b);
+
+// "b equals a within +-margin", by two one-sided tests (Schuirmann 1987) at the difference's own
+// degrees of freedom and standard error: the larger of the p-values of H0 effect <= -margin and of
+// H0 effect >= margin. A small p shows the groups equal within the margin; a large one shows
+// nothing (a difference not resolved is never equality: this is the test that can say "equal").
+double equivalence_p_value(const Difference& d, double margin);
 
 // Benjamini-Hochberg adjusted p-values, in the order given: p_(i) m / i made monotone from the
 // largest down and capped at 1. A test is significant at false-discovery rate q where its adjusted
@@ -39,5 +46,9 @@ std::vector<double> benjamini_hochberg(const std::vector<double>& p_values);
 // it with that many seeds.) nullopt beyond `at_most` or for no effect.
 std::optional<int> seeds_to_resolve(const Sample& a, const Sample& b, double effect, double alpha,
                                     int at_most = 1000);
+// The same for equality within +-margin (equivalence_p_value at most alpha); nullopt where the
+// measured effect is not inside the margin (no count of seeds shows it equal) or beyond at_most.
+std::optional<int> seeds_to_show_equal(const Sample& a, const Sample& b, double effect,
+                                       double margin, double alpha, int at_most = 1000);
 
 }  // namespace iwb::statistics

@@ -115,6 +115,52 @@ TEST_CASE("a claim on the residual leaves out runs whose friction has not settle
   CHECK(kept.results[0].difference->effect > 0.0);
 }
 
+TEST_CASE("group b reads its own pointer where its runs are of another kind", "[claims]") {
+  // a post-cyclic peak against a virgin one: the rough runs carry the values of the supported
+  // claim above under /cyclic/post_cyclic/peak_friction and a decoy 10.0 at /peak_friction; read
+  // at their own pointer they give the same p, read at group a's the decoy
+  write_runs();
+  const double b[] = {0.343, 0.301, 0.385, 0.37};
+  for (int i = 0; i < 4; ++i) {
+    nlohmann::json s = {{"peak_friction", 10.0}, {"shear_mode", "localised at the wall"}};
+    s["cyclic"]["post_cyclic"]["peak_friction"] = b[i];
+    std::ofstream(runs_dir() / ("rough_s" + std::to_string(i + 1)) / "summary.json") << s.dump();
+  }
+  const auto own = test_file(claim("rough-lower", "flat_*", "rough_*") +
+                             "quantity_b = \"/cyclic/post_cyclic/peak_friction\"\n");
+  CHECK(own.results[0].difference->p_value == Approx(0.03609332062368329).epsilon(1e-6));
+  CHECK(own.results[0].status == "supported");
+  const auto shared = test_file(claim("rough-lower", "flat_*", "rough_*"));
+  CHECK(shared.results[0].difference->effect > 9.0);
+  // a relative change on one side only compares a ratio with a value: refused
+  CHECK_THROWS_WITH(
+      test_file(claim("rough-lower", "flat_*", "rough_*") + "relative_to_b = \"/peak_friction\"\n"),
+      Catch::Contains("both groups are relative changes or neither"));
+}
+
+TEST_CASE("a claim of equality is shown only by two one-sided tests within its margin",
+          "[claims]") {
+  // x = 0.40, 0.41, 0.42 and y = 0.41, 0.39, 0.37 (write_runs): SciPy 1.10's one-sided Welch tests
+  // of y shifted by the margin give 0.00449 at +-0.1 and 0.752 at +-0.01
+  write_runs();
+  const auto equal = [](double margin) {
+    auto text = claim("same", "x_*", "y_*");
+    text.replace(text.find("b < a"), 5, "b = a");
+    return text + "margin = " + std::to_string(margin) + "\n";
+  };
+  const auto wide = test_file(equal(0.1));
+  CHECK(wide.results[0].p == Approx(0.004485343250761535).epsilon(1e-6));
+  CHECK(wide.results[0].status == "supported");
+  const auto narrow = test_file(equal(0.01));
+  CHECK(narrow.results[0].p == Approx(0.7519723127707378).epsilon(1e-6));
+  CHECK(narrow.results[0].status == "not resolved");
+  CHECK(claims::markdown(narrow).find("equal within ±0.01") != std::string::npos);
+  // an equality without its margin is refused, naming the key
+  auto bare = claim("same", "x_*", "y_*");
+  bare.replace(bare.find("b < a"), 5, "b = a");
+  CHECK_THROWS_WITH(test_file(bare), Catch::Contains("margin"));
+}
+
 TEST_CASE("a claims file with a repeated id or a pattern naming no run is refused", "[claims]") {
   write_runs();
   CHECK_THROWS_WITH(test_file(claim("a", "flat_*", "rough_*") + claim("a", "x_*", "y_*")),

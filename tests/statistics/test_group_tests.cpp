@@ -54,3 +54,21 @@ TEST_CASE("the seeds a difference needs are the fewest at which its p falls to t
   CHECK(statistics::seeds_to_resolve(a, b, -0.04, 0.05 / 24) == 14);
   CHECK_FALSE(statistics::seeds_to_resolve(a, b, -0.04, 0.05 / 24, 13));
 }
+
+// Two one-sided tests, computed outside this code as SciPy 1.10's one-sided Welch tests of b
+// shifted by the margin: max(ttest_ind(b + m, a, equal_var=False, alternative='greater'),
+// ttest_ind(b - m, a, equal_var=False, alternative='less')).
+TEST_CASE("equality within a margin is two one-sided Welch tests, as SciPy gives them",
+          "[statistics]") {
+  const auto a = statistics::describe({0.418, 0.392, 0.447});
+  const auto b = statistics::describe({0.40, 0.43, 0.41, 0.425});
+  const auto d = statistics::compare_groups(a, b);
+  REQUIRE(d);
+  CHECK(statistics::equivalence_p_value(*d, 0.05) == Approx(0.039508528666246163).epsilon(1e-6));
+  // a margin narrower than the scatter shows nothing
+  CHECK(statistics::equivalence_p_value(*d, 0.02) == Approx(0.1991520497277264).epsilon(1e-6));
+  // SciPy's ttest_ind_from_stats at the same means and SDs: 6 seeds a group reach p <= 0.005
+  CHECK(statistics::seeds_to_show_equal(a, b, d->effect, 0.05, 0.005) == 6);
+  // an effect outside the margin is never shown equal, however many seeds
+  CHECK_FALSE(statistics::seeds_to_show_equal(a, b, 0.06, 0.05, 0.005));
+}
