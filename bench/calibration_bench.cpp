@@ -13,14 +13,14 @@
 
 namespace iwb::bench {
 
-calibration::SoilTest synthetic_soil_test(calibration::SoilTestKind kind, driver::BoundaryKind bc,
-                                          double e0, const std::string& name,
-                                          const models::ModelInputs& truth, double sigma_max_kPa) {
+soil_test::SoilTest synthetic_soil_test(soil_test::SoilTestKind kind, driver::BoundaryKind bc,
+                                        double e0, const std::string& name,
+                                        const models::ModelInputs& truth, double sigma_max_kPa) {
   calibration::SyntheticSpec s;
   s.kind = kind;
   s.boundary = bc;
   s.e0 = e0;
-  if (kind == calibration::SoilTestKind::kOedometer) {
+  if (kind == soil_test::SoilTestKind::kOedometer) {
     s.sigma0_kPa = 10.0, s.sigma_max_kPa = sigma_max_kPa, s.sigma_end_kPa = 100.0, s.rows = 30;
   } else {
     s.gamma_max = 2.0, s.rows = 40;
@@ -30,9 +30,9 @@ calibration::SoilTest synthetic_soil_test(calibration::SoilTestKind kind, driver
   return t;
 }
 
-std::vector<calibration::SoilTest> hostun_soil_tests(const models::ModelInputs& truth) {
-  using calibration::SoilTestKind;
+std::vector<soil_test::SoilTest> hostun_soil_tests(const models::ModelInputs& truth) {
   using driver::BoundaryKind;
+  using soil_test::SoilTestKind;
   return {
       synthetic_soil_test(SoilTestKind::kOedometer, BoundaryKind::kCNL, 0.85, "oedometer", truth),
       synthetic_soil_test(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.65, "dense CNL", truth),

@@ -8,21 +8,21 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "calibration/soil_test.hpp"
 #include "models/registry.hpp"
+#include "soil_test/soil_test.hpp"
 
 namespace iwb::bench {
 
 // A noise-free synthetic soil test of `truth` as the calibration tests build them: an oedometer
 // from 10 kPa to sigma_max and back to 100 kPa (30 rows a branch), or a simple shear to gamma 2
 // (40 rows) from e0.
-calibration::SoilTest synthetic_soil_test(calibration::SoilTestKind kind,
-                                          driver::BoundaryKind boundary, double e0,
-                                          const std::string& name, const models::ModelInputs& truth,
-                                          double sigma_max_kPa = 5000.0);
+soil_test::SoilTest synthetic_soil_test(soil_test::SoilTestKind kind, driver::BoundaryKind boundary,
+                                        double e0, const std::string& name,
+                                        const models::ModelInputs& truth,
+                                        double sigma_max_kPa = 5000.0);
 
 // The five synthetic soil tests of `truth` (the unit test's targets, built once here).
-std::vector<calibration::SoilTest> hostun_soil_tests(const models::ModelInputs& truth);
+std::vector<soil_test::SoilTest> hostun_soil_tests(const models::ModelInputs& truth);
 
 struct CalibrationBenchOptions {
   int repeats = 1;  // calibrations; the fastest is reported

@@ -6,9 +6,9 @@
 #include <filesystem>
 
 #include "common/errors.hpp"
-#include "dem/engines.hpp"
-#include "dem/run.hpp"
-#include "dem/run_fields.hpp"
+#include "dem/analysis/run_fields.hpp"
+#include "dem/engines/engines.hpp"
+#include "dem/run/run.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::bench {

@@ -11,7 +11,7 @@ Every DEM measure is the product's (issue 59: no table script re-implements a ru
 the peak and the peak friction from each run's summary (summary.json; a soil cell's manifest
 cell_summary, both recomputed by `iwb dem summary`), the element span from cell_summary's
 element_until_gamma (calibration's own rule). The rate is d u_n / d u_x over half a d50 either side
-of the peak friction, the mean of 8 block slopes (src/dem/summary.hpp); until 2 Dec it was the
+of the peak friction, the mean of 8 block slopes (src/dem/analysis/summary.hpp); until 2 Dec it was the
 largest 1 mm windowed slope here, which grows with the noise.
 """
 import csv

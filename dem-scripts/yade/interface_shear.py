@@ -489,7 +489,7 @@ def stress_volume_sums(volumes):
 
 
 def export_snapshot(vtk):
-    """Particles, walls and contacts in the raw layout of src/dem/snapshots.hpp (LIGGGHTS's): point
+    """Particles, walls and contacts in the raw layout of src/dem/engines/snapshots.hpp (LIGGGHTS's): point
     arrays id, mass, v, omega (radius is VTKExporter's own); contact rows of 15 columns, the force on
     the first body. Positions are YADE's (unwrapped, lifted by ZS): the workbench shifts them."""
     vtk.exportSpheres(ids=IDS["grains"], numLabel=O.iter,
@@ -627,7 +627,7 @@ def oedometer():
 # height (x and y held), then sheared by its own velocity gradient, the top image moving in +x
 # over the bottom one at the wall's speed (velGrad[0][2] = v / H), the height servo-controlled
 # (CNL) or held (CV). Every `every` steps the servo sets d H / dt = k (sigma_zz - sigma_n0),
-# capped at vel_max, with the gains of dem/periodic_cell.hpp. The raw files have the plate
+# capped at vel_max, with the gains of dem/scene/periodic_cell.hpp. The raw files have the plate
 # cell's columns: u_x is the top image's travel, the "plate" the cell's height, both stresses
 # the grains' (getStress: the Love-Weber stress of the whole cell).
 

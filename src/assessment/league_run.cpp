@@ -11,7 +11,7 @@
 #include "common/errors.hpp"
 #include "comparison/dem_run.hpp"
 #include "comparison/form_limit_causes.hpp"
-#include "dem/scene.hpp"
+#include "dem/scene/scene.hpp"
 #include "io/json_file.hpp"
 #include "io/parameter_sets.hpp"
 #include "io/run_directory.hpp"

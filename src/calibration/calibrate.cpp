@@ -104,7 +104,7 @@ using Keys = std::vector<std::string>;
 using Indices = std::vector<std::size_t>;
 
 struct Calibrator {
-  const std::vector<SoilTest>& tests;
+  const std::vector<soil_test::SoilTest>& tests;
   const CalibrationOptions& options;
   std::string table;  // the model's calibrated table
   Boxes boxes;
@@ -249,7 +249,7 @@ struct Calibrator {
     return r;
   }
 
-  Indices of_kind(SoilTestKind kind) const {
+  Indices of_kind(soil_test::SoilTestKind kind) const {
     Indices out;
     for (std::size_t i = 0; i < tests.size(); ++i)
       if (tests[i].kind == kind) out.push_back(i);
@@ -261,11 +261,11 @@ struct Calibrator {
     return out;
   }
   Indices selected(StageTests which) const {
-    if (which == StageTests::kOedometer) return of_kind(SoilTestKind::kOedometer);
+    if (which == StageTests::kOedometer) return of_kind(soil_test::SoilTestKind::kOedometer);
     if (which == StageTests::kAll) return all();
     Indices out;  // the shear tests whose end is a critical state
-    for (const auto i : of_kind(SoilTestKind::kSimpleShear))
-      if (ends_at_critical_state(tests[i])) out.push_back(i);
+    for (const auto i : of_kind(soil_test::SoilTestKind::kSimpleShear))
+      if (soil_test::ends_at_critical_state(tests[i])) out.push_back(i);
     return out;
   }
   const FactorTie& tie_of(const std::string& key) const {
@@ -531,11 +531,12 @@ models::ModelInputs CalibrationResult::inputs() const {
   return in;
 }
 
-TestFit test_fit(const SoilTest& t, const std::string& model, const models::ModelInputs& in) {
+TestFit test_fit(const soil_test::SoilTest& t, const std::string& model,
+                 const models::ModelInputs& in) {
   const Simulated s = simulate(t, model, in);
   TestFit f{t.name,
             to_string(t.kind),
-            t.kind == SoilTestKind::kOedometer ? "" : driver::to_string(t.boundary),
+            t.kind == soil_test::SoilTestKind::kOedometer ? "" : driver::to_string(t.boundary),
             s.status,
             s.rows(),
             t.rows(),
@@ -553,11 +554,11 @@ TestFit test_fit(const SoilTest& t, const std::string& model, const models::Mode
                       end_model, end_data});
   };
   rmse("e", s.e, t.e);
-  if (is_shear(t.kind)) {
+  if (soil_test::is_shear(t.kind)) {
     rmse("tau_kPa", s.tau_kPa, t.tau_kPa);
     rmse("sigma_n_kPa", s.sigma_n_kPa, t.sigma_n_kPa);
   }
-  if (t.kind == SoilTestKind::kSimpleShear && t.boundary == driver::BoundaryKind::kCNL &&
+  if (t.kind == soil_test::SoilTestKind::kSimpleShear && t.boundary == driver::BoundaryKind::kCNL &&
       s.rows() == t.rows()) {
     f.peak_rate_model = peak_dilatancy_rate(t.control, s.e, s.rows());
     f.peak_rate_measured = peak_dilatancy_rate(t.control, t.e, t.rows());
@@ -566,7 +567,8 @@ TestFit test_fit(const SoilTest& t, const std::string& model, const models::Mode
 }
 
 std::array<std::vector<double>, kObjectiveGroups.size()> group_residuals(
-    const std::vector<SoilTest>& tests, const std::string& model, const models::ModelInputs& in) {
+    const std::vector<soil_test::SoilTest>& tests, const std::string& model,
+    const models::ModelInputs& in) {
   std::vector<Simulated> simulated(tests.size());
   // one test per task: a simulation takes milliseconds, far above TBB's scheduling cost
   tbb::parallel_for(std::size_t(0), tests.size(),
@@ -591,8 +593,9 @@ GroupFit group_fit(ObjectiveGroup group, const std::vector<double>& r, double we
           unreached};
 }
 
-std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::string& model,
-                                 const models::ModelInputs& in, const ObjectiveWeights& weights) {
+std::vector<GroupFit> group_fits(const std::vector<soil_test::SoilTest>& tests,
+                                 const std::string& model, const models::ModelInputs& in,
+                                 const ObjectiveWeights& weights) {
   const auto residuals = group_residuals(tests, model, in);
   std::vector<GroupFit> out;
   for (const auto g : kObjectiveGroups)
@@ -601,7 +604,8 @@ std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::
   return out;
 }
 
-CalibrationResult calibrate(const std::vector<SoilTest>& tests, const CalibrationOptions& o) {
+CalibrationResult calibrate(const std::vector<soil_test::SoilTest>& tests,
+                            const CalibrationOptions& o) {
   if (tests.empty()) throw InputError("calibrate: no soil tests given");
   const auto t0 = std::chrono::steady_clock::now();
   const auto& table = calibrated_table(o.model, o.table);

@@ -4,7 +4,8 @@
 // control (simulate.hpp).
 //   start  the model family's recipe (recipe.hpp) where it declares one for the table: its
 //          starting values and its stages in order (for sand Herle & Gudehus's A-D,
-//          herle_gudehus_recipe.hpp); else the middle of the table's calibration boxes;
+//          models/hypoplastic/calibration_recipe.hpp); else the middle of the table's calibration
+//          boxes;
 //   E      every free parameter jointly on all tests, from that start; Gauss-Newton covariance.
 //          A parameter the data do not determine (singular direction, or one sigma at the
 //          declared scatter above kUnidentifiedShareOfBox of its calibration box) is flagged;
@@ -21,9 +22,9 @@
 
 #include "calibration/objectives.hpp"
 #include "calibration/recipe.hpp"
-#include "calibration/soil_test.hpp"
 #include "models/parameters.hpp"
 #include "models/registry.hpp"
+#include "soil_test/soil_test.hpp"
 
 namespace iwb::calibration {
 
@@ -129,14 +130,14 @@ struct CalibrationResult {
 
 // InputError for no tests, a model without calibration boxes, and a fixed key the model does not
 // declare or a fixed value outside its bounds.
-CalibrationResult calibrate(const std::vector<SoilTest>& tests,
+CalibrationResult calibrate(const std::vector<soil_test::SoilTest>& tests,
                             const CalibrationOptions& options = {});
 
 // Each objective group's residuals over `tests` run with `inputs`, unweighted, in scatter units
 // (kUnreachedResidual for a row the model did not reach), indexed by ObjectiveGroup; a group no
 // test gives a residual to is empty. The tests run in parallel: each is its own simulation.
 std::array<std::vector<double>, kObjectiveGroups.size()> group_residuals(
-    const std::vector<SoilTest>& tests, const std::string& model,
+    const std::vector<soil_test::SoilTest>& tests, const std::string& model,
     const models::ModelInputs& inputs);
 
 // The RMS of a group's residuals over the rows the model reached, and how many it did not reach.
@@ -144,13 +145,14 @@ GroupFit group_fit(ObjectiveGroup group, const std::vector<double>& residuals, d
 
 // Each objective group's RMS (unweighted, scatter units) over `tests` run with `inputs`; groups
 // no test gives a residual to are left out.
-std::vector<GroupFit> group_fits(const std::vector<SoilTest>& tests, const std::string& model,
-                                 const models::ModelInputs& inputs,
+std::vector<GroupFit> group_fits(const std::vector<soil_test::SoilTest>& tests,
+                                 const std::string& model, const models::ModelInputs& inputs,
                                  const ObjectiveWeights& weights);
 
 // A test run through `model` with a parameter set: its RMSE per column and end values. For the
 // tests of a fit, and for a test held out of it (a prediction).
-TestFit test_fit(const SoilTest& test, const std::string& model, const models::ModelInputs& inputs);
+TestFit test_fit(const soil_test::SoilTest& test, const std::string& model,
+                 const models::ModelInputs& inputs);
 
 struct ParetoFront;
 
@@ -158,13 +160,15 @@ struct ParetoFront;
 // calibration.json next to it; with a front, also pareto.csv/.json, its figure (pareto.svg, .png,
 // .gp) and pareto/point-K.toml, each point's parameter file (pareto_files.cpp). All or nothing.
 void write_calibration(const CalibrationResult& result, const std::filesystem::path& toml_file,
-                       const std::vector<SoilTest>& tests, const std::string& command_line,
-                       const ParetoFront* front = nullptr);
+                       const std::vector<soil_test::SoilTest>& tests,
+                       const std::string& command_line, const ParetoFront* front = nullptr);
 
 // The parameter file's text, and calibration.json's content.
-std::string parameter_file_text(const CalibrationResult& r, const std::vector<SoilTest>& tests,
+std::string parameter_file_text(const CalibrationResult& r,
+                                const std::vector<soil_test::SoilTest>& tests,
                                 const std::string& command_line);
-nlohmann::json calibration_json(const CalibrationResult& r, const std::vector<SoilTest>& tests,
+nlohmann::json calibration_json(const CalibrationResult& r,
+                                const std::vector<soil_test::SoilTest>& tests,
                                 const std::string& command_line);
 
 }  // namespace iwb::calibration

@@ -18,7 +18,8 @@ std::string sigma_text(const ParameterEstimate& p) {
 
 }  // namespace
 
-std::string parameter_file_text(const CalibrationResult& r, const std::vector<SoilTest>& tests,
+std::string parameter_file_text(const CalibrationResult& r,
+                                const std::vector<soil_test::SoilTest>& tests,
                                 const std::string& command_line) {
   std::string s = fmt::format("# Calibrated by `iwb calibrate` ({}) for {} from {} soil test(s):\n",
                               io::utc_timestamp(), r.model, tests.size());
@@ -56,7 +57,8 @@ nlohmann::json finite_or_null(double v) {
 
 }  // namespace
 
-nlohmann::json calibration_json(const CalibrationResult& r, const std::vector<SoilTest>& tests,
+nlohmann::json calibration_json(const CalibrationResult& r,
+                                const std::vector<soil_test::SoilTest>& tests,
                                 const std::string& command_line) {
   nlohmann::json j;
   j["kind"] = "calibration";
@@ -136,8 +138,8 @@ nlohmann::json calibration_json(const CalibrationResult& r, const std::vector<So
 }
 
 void write_calibration(const CalibrationResult& r, const std::filesystem::path& toml_file,
-                       const std::vector<SoilTest>& tests, const std::string& command_line,
-                       const ParetoFront* front) {
+                       const std::vector<soil_test::SoilTest>& tests,
+                       const std::string& command_line, const ParetoFront* front) {
   // the parameter file and its calibration.json together or not at all
   io::StagedDirectory staged(std::filesystem::absolute(toml_file).parent_path());
   io::write_atomically(staged.path() / toml_file.filename(),

@@ -41,12 +41,12 @@ CalibrationOptions options_of(const CalibrationRequest& q) {
 
 // A test whose cell localised before it was an element is left out with a note (`left_out`);
 // every other defect refuses the calibration.
-std::vector<SoilTest> read_soil_tests(const std::vector<std::string>& dirs,
-                                      std::vector<std::string>& left_out) {
-  std::vector<SoilTest> out;
+std::vector<soil_test::SoilTest> read_soil_tests(const std::vector<std::string>& dirs,
+                                                 std::vector<std::string>& left_out) {
+  std::vector<soil_test::SoilTest> out;
   for (const auto& dir : dirs) try {
-      out.push_back(read_soil_test(dir));
-    } catch (const NotAnElement& e) {
+      out.push_back(soil_test::read_soil_test(dir));
+    } catch (const soil_test::NotAnElement& e) {
       left_out.push_back(fmt::format("{}; left out", e.what()));
     }
   return out;
@@ -59,15 +59,16 @@ bool refused(const TestFit& t) {
 // The --fix that leaves the model no set it admits the tests with: every test refused at the
 // fitted set, and some admitted once that value is freed to the middle of its box (the fit then
 // found nothing to move, which is not the tests' fault). Empty when no --fix is to blame.
-std::string blocking_fix(const CalibrationResult& r, const std::vector<SoilTest>& tests) {
+std::string blocking_fix(const CalibrationResult& r,
+                         const std::vector<soil_test::SoilTest>& tests) {
   if (r.tests.empty() || !std::all_of(r.tests.begin(), r.tests.end(), refused)) return "";
   for (const auto& p : r.parameters) {
     if (!p.fixed) continue;
     auto freed = r.inputs();
     freed.tables[r.table][p.key] = 0.5 * (p.lower + p.upper);
-    const auto admitted = std::count_if(tests.begin(), tests.end(), [&](const SoilTest& t) {
-      return !refused(test_fit(t, r.model, freed));
-    });
+    const auto admitted = std::count_if(
+        tests.begin(), tests.end(),
+        [&](const soil_test::SoilTest& t) { return !refused(test_fit(t, r.model, freed)); });
     if (admitted == 0) continue;
     const auto& first = r.tests.front();
     return fmt::format(
@@ -83,7 +84,8 @@ std::string blocking_fix(const CalibrationResult& r, const std::vector<SoilTest>
 
 // Nothing is written and the input is refused (exit 2), rather than a file of starting values
 // flagged NOT IDENTIFIED (issue 37).
-void refuse_if_nothing_identified(const CalibrationResult& r, const std::vector<SoilTest>& tests,
+void refuse_if_nothing_identified(const CalibrationResult& r,
+                                  const std::vector<soil_test::SoilTest>& tests,
                                   const std::vector<std::string>& runs) {
   if (std::any_of(r.parameters.begin(), r.parameters.end(),
                   [](const auto& p) { return p.identified && !p.fixed; }))
@@ -147,7 +149,7 @@ CalibrationRun run_calibration(const CalibrationRequest& q,
   refuse_if_nothing_identified(run.result, run.tests, q.runs);
   for (const auto& t : held_out)
     run.result.held_out.push_back(test_fit(t, q.model, run.result.inputs()));
-  const auto note_localised = [&run](const std::vector<SoilTest>& tests) {
+  const auto note_localised = [&run](const std::vector<soil_test::SoilTest>& tests) {
     for (const auto& t : tests)
       if (t.element_until > 0.0)
         run.result.notes.push_back(fmt::format(

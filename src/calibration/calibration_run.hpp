@@ -29,7 +29,7 @@ struct CalibrationRequest {
 };
 
 struct CalibrationRun {
-  std::vector<SoilTest> tests;
+  std::vector<soil_test::SoilTest> tests;
   CalibrationResult result;  // with its held-out tests predicted
   std::optional<ParetoFront> front;
 };

@@ -112,25 +112,25 @@ double or_declared(double measured, double declared) {
 }
 
 // The group whose residuals are a test's path, row by row.
-ObjectiveGroup path_group(SoilTestKind k) {
+ObjectiveGroup path_group(soil_test::SoilTestKind k) {
   switch (k) {
-    case SoilTestKind::kOedometer:
+    case soil_test::SoilTestKind::kOedometer:
       return ObjectiveGroup::kOedometer;
-    case SoilTestKind::kSimpleShear:
+    case soil_test::SoilTestKind::kSimpleShear:
       return ObjectiveGroup::kShear;
-    case SoilTestKind::kCyclicShear:
+    case soil_test::SoilTestKind::kCyclicShear:
       return ObjectiveGroup::kCyclic;
   }
   return ObjectiveGroup::kShear;
 }
 
-void append_path_residuals(ObjectiveGroup g, const SoilTest& t, const Simulated& s,
+void append_path_residuals(ObjectiveGroup g, const soil_test::SoilTest& t, const Simulated& s,
                            std::vector<double>& r) {
   const double declared_stress = kStressRatioScale * t.sigma0_kPa;
   const double tau_scale = or_declared(t.scales.tau_kPa, declared_stress);
   const double sigma_scale = or_declared(t.scales.sigma_n_kPa, declared_stress);
   const double e_scale = or_declared(t.scales.e, kVoidRatioScale);
-  const bool oedometer = t.kind == SoilTestKind::kOedometer;
+  const bool oedometer = t.kind == soil_test::SoilTestKind::kOedometer;
   if (g != path_group(t.kind)) return;
   for (std::size_t i = 1; i < t.rows(); ++i) {
     const bool reached = i < s.rows();
@@ -149,8 +149,10 @@ void append_path_residuals(ObjectiveGroup g, const SoilTest& t, const Simulated&
   }
 }
 
-void append_dilatancy_residuals(const SoilTest& t, const Simulated& s, std::vector<double>& r) {
-  if (t.kind != SoilTestKind::kSimpleShear || t.boundary != driver::BoundaryKind::kCNL) return;
+void append_dilatancy_residuals(const soil_test::SoilTest& t, const Simulated& s,
+                                std::vector<double>& r) {
+  if (t.kind != soil_test::SoilTestKind::kSimpleShear || t.boundary != driver::BoundaryKind::kCNL)
+    return;
   if (s.rows() < t.rows()) {  // a peak and an end the model did not reach
     r.insert(r.end(), 2, kUnreachedResidual);
     return;
@@ -165,7 +167,7 @@ void append_dilatancy_residuals(const SoilTest& t, const Simulated& s, std::vect
 
 }  // namespace
 
-void append_group_residuals(ObjectiveGroup g, const SoilTest& t, const Simulated& s,
+void append_group_residuals(ObjectiveGroup g, const soil_test::SoilTest& t, const Simulated& s,
                             std::vector<double>& r) {
   if (g == ObjectiveGroup::kDilatancy)
     append_dilatancy_residuals(t, s, r);

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "calibration/simulate.hpp"
-#include "calibration/soil_test.hpp"
+#include "soil_test/soil_test.hpp"
 
 namespace iwb::calibration {
 
@@ -58,7 +58,7 @@ double peak_dilatancy_rate(const std::vector<double>& gamma, const std::vector<d
 // Appends the residuals of group `g` for test `t` simulated as `s` (nothing when the group does
 // not apply to the test), in scatter units and unweighted; rows the model did not reach count
 // kUnreachedResidual each.
-void append_group_residuals(ObjectiveGroup g, const SoilTest& t, const Simulated& s,
+void append_group_residuals(ObjectiveGroup g, const soil_test::SoilTest& t, const Simulated& s,
                             std::vector<double>& r);
 
 }  // namespace iwb::calibration

@@ -31,7 +31,7 @@ namespace {
 
 // A group's residual count over the tests: what it appends for a model that reached no row (one
 // residual per measured value, whatever the parameters).
-std::size_t residual_count(ObjectiveGroup g, const std::vector<SoilTest>& tests) {
+std::size_t residual_count(ObjectiveGroup g, const std::vector<soil_test::SoilTest>& tests) {
   std::vector<double> r;
   for (const auto& t : tests) append_group_residuals(g, t, Simulated{{}, {}, {}, {}, ""}, r);
   return r.size();
@@ -88,9 +88,9 @@ std::vector<std::string> monotonicity_notes(const ParetoFront& f) {
 
 }  // namespace
 
-ParetoFront trace_front(const std::vector<SoilTest>& tests, const CalibrationOptions& options,
-                        ObjectiveGroup a, ObjectiveGroup b, int points,
-                        const std::function<void(const std::string&)>& progress) {
+ParetoFront trace_front(const std::vector<soil_test::SoilTest>& tests,
+                        const CalibrationOptions& options, ObjectiveGroup a, ObjectiveGroup b,
+                        int points, const std::function<void(const std::string&)>& progress) {
   if (a == b) throw InputError("--pareto: the two groups must differ");
   if (points < kMinParetoPoints || points > kMaxParetoPoints)
     throw InputError(fmt::format("--points {}: a front needs {} to {} points", points,

@@ -47,15 +47,16 @@ inline constexpr double kParetoRatioDecades = 6.0;
 // 0..points-1 (r_0 the given weights' ratio, 1 if either is 0), and the given point.
 // InputError for a equal to b, points outside [kMinParetoPoints, kMaxParetoPoints], and a group
 // the tests give no residual to. `progress` receives a line per point fitted.
-ParetoFront trace_front(const std::vector<SoilTest>& tests, const CalibrationOptions& options,
-                        ObjectiveGroup a, ObjectiveGroup b, int points,
-                        const std::function<void(const std::string&)>& progress = {});
+ParetoFront trace_front(const std::vector<soil_test::SoilTest>& tests,
+                        const CalibrationOptions& options, ObjectiveGroup a, ObjectiveGroup b,
+                        int points, const std::function<void(const std::string&)>& progress = {});
 
 // Into `dir`: pareto.csv (a row per point: share, the pair's weights, every group's RMS, s^2,
 // given, converged, the parameters), pareto.json (the same with sigmas, bounds reached and notes),
 // the figure pareto.svg/.png/.gp (RMS of b against RMS of a) and pareto/point-K.toml.
 void write_front_files(const ParetoFront& front, const std::filesystem::path& dir,
-                       const std::vector<SoilTest>& tests, const std::string& command_line);
+                       const std::vector<soil_test::SoilTest>& tests,
+                       const std::string& command_line);
 
 // The "A,B" of --pareto; InputError naming the option otherwise.
 std::pair<ObjectiveGroup, ObjectiveGroup> parse_pareto_groups(const std::string& text);

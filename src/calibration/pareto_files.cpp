@@ -95,7 +95,8 @@ void draw_front(const ParetoFront& f, const io::CsvTable& table, const fs::path&
 }  // namespace
 
 void write_front_files(const ParetoFront& front, const fs::path& dir,
-                       const std::vector<SoilTest>& tests, const std::string& command_line) {
+                       const std::vector<soil_test::SoilTest>& tests,
+                       const std::string& command_line) {
   const auto table = front_table(front);
   draw_front(front, table, dir);  // pareto.csv is the figure's data
   io::write_atomically(dir / "pareto.json", front_json(front).dump(2) + "\n");

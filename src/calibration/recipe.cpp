@@ -2,24 +2,17 @@
 
 #include <fmt/core.h>
 
-#include "calibration/herle_gudehus_recipe.hpp"
 #include "common/errors.hpp"
 
 namespace iwb::calibration {
 
-namespace {
-
-// The recipes model declarations may name: one line per model family that has one.
-std::vector<const CalibrationRecipe*> known_recipes() {
-  return {&herle_gudehus_recipe()};
-}
-
-}  // namespace
-
 const CalibrationRecipe* find_recipe(const std::string& name) {
+  // every family's recipes, from its folder (models/<family>/calibration_recipe.cpp, collected by
+  // the generated registered_recipes.cpp)
+  static const std::vector<const CalibrationRecipe*> recipes = known_recipes();
   if (name.empty()) return nullptr;
   std::string names;
-  for (const auto* r : known_recipes()) {
+  for (const auto* r : recipes) {
     if (r->name == name) return r;
     names += (names.empty() ? "" : ", ") + r->name;
   }

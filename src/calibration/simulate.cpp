@@ -18,19 +18,19 @@ constexpr double kMaxShearStrainStep = 0.05;
 constexpr double kMaxLogStressStep = 0.25;  // ln(sigma_i / sigma_{i-1})
 constexpr double kIntegratorTolerance = 1e-7;
 
-int increments_between(const SoilTest& t, std::size_t i) {
-  const double step = t.kind == SoilTestKind::kOedometer
+int increments_between(const soil_test::SoilTest& t, std::size_t i) {
+  const double step = t.kind == soil_test::SoilTestKind::kOedometer
                           ? std::abs(std::log(t.control[i] / t.control[i - 1])) / kMaxLogStressStep
                           : std::abs(t.control[i] - t.control[i - 1]) / kMaxShearStrainStep;
   return std::max(1, int(std::ceil(step)));
 }
 
-driver::Path path_along(const SoilTest& t) {
+driver::Path path_along(const soil_test::SoilTest& t) {
   driver::Path path;
   const driver::BoundaryCondition bc{t.boundary, 0.0};
   for (std::size_t i = 1; i < t.rows(); ++i) {
     const int n = increments_between(t, i);
-    if (t.kind == SoilTestKind::kOedometer)
+    if (t.kind == soil_test::SoilTestKind::kOedometer)
       path.push_back(driver::oedometric_path(t.control[i - 1], t.control[i], n).front());
     else
       path.push_back({fmt::format("row {}", i), t.control[i] - t.control[i - 1], 0.0, bc.row(), n});
@@ -48,12 +48,12 @@ void record(Simulated& out, const models::Model& model, const driver::HistoryRow
 
 }  // namespace
 
-double initial_K0(const SoilTest& test, const std::string& model_name,
+double initial_K0(const soil_test::SoilTest& test, const std::string& model_name,
                   const models::ModelInputs& inputs) {
   return test.K0 > 0.0 ? test.K0 : models::offer(models::find_model(model_name), inputs, {}).K0;
 }
 
-Simulated simulate(const SoilTest& test, const std::string& model_name,
+Simulated simulate(const soil_test::SoilTest& test, const std::string& model_name,
                    const models::ModelInputs& inputs) {
   Simulated out;
   std::unique_ptr<models::Model> model;

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "calibration/soil_test.hpp"
 #include "models/registry.hpp"
+#include "soil_test/soil_test.hpp"
 
 namespace iwb::calibration {
 
@@ -20,11 +20,11 @@ struct Simulated {
 // Runs `model_name` with `inputs` along `test.control`. Never throws for a parameter set the
 // model refuses (inadmissible initial state, domain left on the way): the status says why and
 // the rows stop there, which the calibration penalises.
-Simulated simulate(const SoilTest& test, const std::string& model_name,
+Simulated simulate(const soil_test::SoilTest& test, const std::string& model_name,
                    const models::ModelInputs& inputs);
 
 // Initial lateral stress ratio of `test` under `inputs`: the test's K0, or 1 - sin(phi_c).
-double initial_K0(const SoilTest& test, const std::string& model_name,
+double initial_K0(const soil_test::SoilTest& test, const std::string& model_name,
                   const models::ModelInputs& inputs);
 
 }  // namespace iwb::calibration

@@ -11,8 +11,8 @@ namespace iwb::calibration {
 
 comparison::FormLimitOptions::SoilTests soil_test_judge(const std::vector<std::string>& dirs) {
   if (dirs.empty()) return {};
-  auto tests = std::make_shared<std::vector<SoilTest>>();
-  for (const auto& d : dirs) tests->push_back(read_soil_test(d));
+  auto tests = std::make_shared<std::vector<soil_test::SoilTest>>();
+  for (const auto& d : dirs) tests->push_back(soil_test::read_soil_test(d));
   measure_seed_scatter(*tests);
   return [tests](const comparison::FormLimitOptions::Tables& tables) {
     models::ModelInputs in;

@@ -36,8 +36,8 @@ std::vector<double> cyclic_control(const SyntheticSpec& s) {
 }
 
 std::vector<double> control_of(const SyntheticSpec& s) {
-  if (s.kind == SoilTestKind::kCyclicShear) return cyclic_control(s);
-  if (s.kind == SoilTestKind::kSimpleShear) {
+  if (s.kind == soil_test::SoilTestKind::kCyclicShear) return cyclic_control(s);
+  if (s.kind == soil_test::SoilTestKind::kSimpleShear) {
     std::vector<double> g;
     for (int i = 0; i <= s.rows; ++i) g.push_back(s.gamma_max * i / s.rows);
     return g;
@@ -54,7 +54,8 @@ std::vector<double> control_of(const SyntheticSpec& s) {
 }
 
 // Bauer's e_c at the initial mean pressure -tr T = sigma0 (1 + 2 K0): a medium-dense start.
-double default_e0(const SoilTest& t, const std::string& model, const models::ModelInputs& inputs) {
+double default_e0(const soil_test::SoilTest& t, const std::string& model,
+                  const models::ModelInputs& inputs) {
   const auto p = models::HypoplasticParameters::from(models::require_table(inputs, "hypoplastic"),
                                                      inputs.source);
   const double pressure = t.sigma0_kPa * (1.0 + 2.0 * initial_K0(t, model, inputs));
@@ -63,8 +64,8 @@ double default_e0(const SoilTest& t, const std::string& model, const models::Mod
 
 }  // namespace
 
-SoilTest synthesise(const SyntheticSpec& spec, const models::ModelInputs& inputs) {
-  SoilTest t;
+soil_test::SoilTest synthesise(const SyntheticSpec& spec, const models::ModelInputs& inputs) {
+  soil_test::SoilTest t;
   t.kind = spec.kind;
   t.boundary = spec.boundary;
   t.sigma0_kPa = spec.sigma0_kPa;
@@ -86,14 +87,15 @@ SoilTest synthesise(const SyntheticSpec& spec, const models::ModelInputs& inputs
   return t;
 }
 
-SoilTest write_synthetic_test(const SyntheticSpec& spec, const std::string& params,
-                              const std::string& out, bool force, const std::string& command_line) {
+soil_test::SoilTest write_synthetic_test(const SyntheticSpec& spec, const std::string& params,
+                                         const std::string& out, bool force,
+                                         const std::string& command_line) {
   models::ModelInputs in;
   in.tables = io::load_parameter_file(params);
   in.source = params;
   auto t = synthesise(spec, in);
   t.name = out;
-  write_soil_test(
+  soil_test::write_soil_test(
       t, out, force,
       {{"command_line", command_line},
        {"workbench", {{"name", "iwb"}}},

@@ -10,7 +10,7 @@ namespace iwb::calibration {
 
 struct SyntheticSpec {
   std::string model = "vw3d";
-  SoilTestKind kind = SoilTestKind::kOedometer;
+  soil_test::SoilTestKind kind = soil_test::SoilTestKind::kOedometer;
   driver::BoundaryKind boundary = driver::BoundaryKind::kCNL;  // simple shear
   std::optional<double> e0;  // default: the critical void ratio at the initial mean stress
   double sigma0_kPa = 100.0;
@@ -28,12 +28,13 @@ struct SyntheticSpec {
 // The test `spec` describes, run through `spec.model` with `inputs`; source "synthetic:<model>"
 // and the parameters in source_parameters. InputError if the model refuses the initial state or
 // the run does not complete (a synthetic target must be whole).
-SoilTest synthesise(const SyntheticSpec& spec, const models::ModelInputs& inputs);
+soil_test::SoilTest synthesise(const SyntheticSpec& spec, const models::ModelInputs& inputs);
 
 // `iwb soiltest synthetic`: the test of `spec` with the parameter file `params`, written to the
 // run directory `out` (write_soil_test) with the command line and the file's sha256 in its
 // manifest; returns the test written.
-SoilTest write_synthetic_test(const SyntheticSpec& spec, const std::string& params,
-                              const std::string& out, bool force, const std::string& command_line);
+soil_test::SoilTest write_synthetic_test(const SyntheticSpec& spec, const std::string& params,
+                                         const std::string& out, bool force,
+                                         const std::string& command_line);
 
 }  // namespace iwb::calibration

@@ -8,8 +8,8 @@
 #include <map>
 
 #include "common/errors.hpp"
-#include "dem/scene.hpp"
-#include "dem/scene_keys.hpp"
+#include "dem/scene/scene.hpp"
+#include "dem/scene/scene_keys.hpp"
 #include "io/toml_reader.hpp"
 
 namespace iwb::campaign {

@@ -10,10 +10,10 @@
 
 #include "campaign/job_start.hpp"
 #include "campaign/sweep_record.hpp"
-#include "dem/consolidation_cache.hpp"
-#include "dem/engines.hpp"
-#include "dem/run.hpp"
-#include "dem/scene.hpp"
+#include "dem/engines/engines.hpp"
+#include "dem/run/consolidation_cache.hpp"
+#include "dem/run/run.hpp"
+#include "dem/scene/scene.hpp"
 #include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 

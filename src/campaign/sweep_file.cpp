@@ -9,7 +9,7 @@
 #include "campaign/slurm.hpp"
 #include "common/errors.hpp"
 #include "common/input_file.hpp"
-#include "dem/engines.hpp"
+#include "dem/engines/engines.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_reader.hpp"
 #include "models/registry.hpp"

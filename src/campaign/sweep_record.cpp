@@ -3,7 +3,7 @@
 #include <fmt/core.h>
 
 #include "campaign/job_start.hpp"
-#include "dem/scene.hpp"
+#include "dem/scene/scene.hpp"
 #include "io/json_file.hpp"
 #include "io/run_directory.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // What the coarse-graining needs of a DEM snapshot, engine-neutral: grains and contacts in the
 // scene's frame (x along shear, z up from the wall's base), SI units. The run directory's .vtp
-// files hold exactly this (dem/snapshots.hpp writes them from either engine).
+// files hold exactly this (dem/engines/snapshots.hpp writes them from either engine).
 #include <Eigen/Core>
 #include <vector>
 

@@ -160,7 +160,8 @@ std::string metrics_table(const nlohmann::json& cmp) {
   return h + "</table>\n";
 }
 
-// summary.json's keys as a reader names them, with units (src/dem/summary.cpp defines them).
+// summary.json's keys as a reader names them, with units (src/dem/analysis/summary.cpp defines
+// them).
 struct SummaryRow {
   const char* key;
   const char* name;

@@ -2,7 +2,7 @@
 // The quantities of a displacement-controlled cyclic interface test, cycle by cycle (issue 34,
 // item 2), from the path's rows alone: a DEM run's time series and a model's replay of it along
 // the same u_x are measured by one definition. The wall follows 0 -> +A -> -A -> 0 `cycles` times,
-// then optionally a monotonic (post-cyclic) shear in +x from 0 (src/dem/scene.hpp, Shear).
+// then optionally a monotonic (post-cyclic) shear in +x from 0 (src/dem/scene/scene.hpp, Shear).
 //
 // Where a row is: the travelled distance s (the sum of |du_x|, v t for a wall at constant speed)
 // is given with the rows, not summed over them: a reversal falls between two output rows, and the

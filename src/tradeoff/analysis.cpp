@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "dem/crosscheck.hpp"
-#include "dem/requirements.hpp"
+#include "dem/run/crosscheck.hpp"
+#include "dem/scene/requirements.hpp"
 #include "tradeoff/tradeoff.hpp"
 
 namespace iwb::tradeoff {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
-#include "dem/numerics.hpp"
+#include "dem/scene/numerics.hpp"
 #include "io/toml_override.hpp"
 #include "io/toml_reader.hpp"
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "campaign/jobs.hpp"
-#include "dem/scene.hpp"
+#include "dem/scene/scene.hpp"
 
 namespace iwb::tradeoff {
 

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "assessment/league.hpp"
-#include "dem/requirements.hpp"
-#include "dem/scene.hpp"
+#include "dem/scene/requirements.hpp"
+#include "dem/scene/scene.hpp"
 #include "io/parameter_sets.hpp"
 
 namespace iwb::tradeoff {
@@ -81,8 +81,8 @@ ModelErrors evaluate_model(const assessment::SceneReference& reference, const st
 dem::Scene load_scene_to_plan(const std::filesystem::path& scene_file);
 
 // InputError when the scene states no requirements, or the tradeoff is missing, unfinished, of
-// another scene (compared by content, dem/scene_content.hpp: the keys that differ are named) or
-// without its run directories (a committed tradeoff holds tables only).
+// another scene (compared by content, dem/scene/scene_content.hpp: the keys that differ are named)
+// or without its run directories (a committed tradeoff holds tables only).
 nlohmann::json run_plan(const PlanOptions& options);
 
 // The reference run's directory, after checking the tradeoff (for the CLI's default parameters).

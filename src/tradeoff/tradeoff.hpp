@@ -4,8 +4,8 @@
 // halved and doubled one at a time, with every knob refined at once (the reference) and coarsened
 // at once. The runs are jobs of a campaign (src/campaign/pool.hpp): at most N at once, complete
 // runs reused and stopped ones resumed when the tradeoff is run again. Each quantity of interest
-// (dem/requirements.hpp) is measured against the reference, with its cost in particle-steps and
-// wall time: tradeoff.json, tradeoff.csv, tradeoff.md and pareto.svg/.png.
+// (dem/scene/requirements.hpp) is measured against the reference, with its cost in particle-steps
+// and wall time: tradeoff.json, tradeoff.csv, tradeoff.md and pareto.svg/.png.
 #include <atomic>
 #include <filesystem>
 #include <functional>
@@ -74,8 +74,8 @@ nlohmann::json analyse(const nlohmann::json& rows, Reference reference = Referen
 
 // sha256 of the base scene the tradeoff runs for a scene file of this text and file name (its
 // [requirements] left out). Recorded in tradeoff.json beside the scene's content
-// (dem/scene_content.hpp), by which `iwb plan` checks that a tradeoff belongs to a scene; plan
-// falls back on the hash for a tradeoff.json that predates the content.
+// (dem/scene/scene_content.hpp), by which `iwb plan` checks that a tradeoff belongs to a scene;
+// plan falls back on the hash for a tradeoff.json that predates the content.
 std::string dem_scene_sha256(const std::string& scene_text, const std::string& scene_file_name);
 
 std::filesystem::path default_out(const std::filesystem::path& scene_file);

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "comparison/figure.hpp"
-#include "dem/requirements.hpp"
+#include "dem/scene/requirements.hpp"
 #include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 #include "tradeoff/tradeoff.hpp"

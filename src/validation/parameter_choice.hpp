@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "dem/scene.hpp"
+#include "dem/scene/scene.hpp"
 #include "io/parameter_sets.hpp"
 
 namespace iwb::validation {

@@ -5,9 +5,9 @@
 #include "common/errors.hpp"
 #include "comparison/compare.hpp"
 #include "comparison/report.hpp"
-#include "dem/engines.hpp"
-#include "dem/run.hpp"
-#include "dem/scene_content.hpp"
+#include "dem/engines/engines.hpp"
+#include "dem/run/run.hpp"
+#include "dem/scene/scene_content.hpp"
 #include "io/run_directory.hpp"
 #include "validation/parameter_choice.hpp"
 

@@ -8,24 +8,24 @@
 
 #include "bench/calibration_bench.hpp"
 #include "calibration/calibrate.hpp"
-#include "calibration/herle_gudehus_recipe.hpp"
 #include "calibration/seed_scatter.hpp"
 #include "calibration/synthetic.hpp"
+#include "models/hypoplastic/calibration_recipe.hpp"
 #include "support/fixtures.hpp"
 
 using namespace iwb;
-using calibration::SoilTestKind;
 using driver::BoundaryKind;
+using soil_test::SoilTestKind;
 
 namespace {
 
-calibration::SoilTest target(SoilTestKind kind, BoundaryKind bc, double e0, const std::string& name,
-                             const models::ModelInputs& truth = test::table_5_2_hostun(),
-                             double sigma_max_kPa = 5000.0) {
+soil_test::SoilTest target(SoilTestKind kind, BoundaryKind bc, double e0, const std::string& name,
+                           const models::ModelInputs& truth = test::table_5_2_hostun(),
+                           double sigma_max_kPa = 5000.0) {
   return bench::synthetic_soil_test(kind, bc, e0, name, truth, sigma_max_kPa);
 }
 
-std::vector<calibration::SoilTest> hostun_targets() {
+std::vector<soil_test::SoilTest> hostun_targets() {
   return bench::hostun_soil_tests(test::table_5_2_hostun());
 }
 
@@ -89,7 +89,7 @@ TEST_CASE("calibration recovers the Toyoura parameters from two oedometers, CNL 
           "[calibration]") {
   constexpr double kRecoveryTolerance = 1e-4;
   const auto toyoura = test::table_5_2_toyoura();
-  const std::vector<calibration::SoilTest> tests = {
+  const std::vector<soil_test::SoilTest> tests = {
       target(SoilTestKind::kOedometer, BoundaryKind::kCNL, 0.70, "dense oedometer", toyoura, 2000),
       target(SoilTestKind::kOedometer, BoundaryKind::kCNL, 0.95, "loose oedometer", toyoura, 2000),
       target(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.75, "CNL", toyoura),
@@ -111,7 +111,7 @@ TEST_CASE("calibration recovers the Toyoura parameters from two oedometers, CNL 
 // e_d0, e_i0 are not. The calibration must flag them rather than print a number, and set the
 // limits from e_c0.
 TEST_CASE("calibration flags what loose-only tests cannot identify", "[calibration]") {
-  std::vector<calibration::SoilTest> tests = {
+  std::vector<soil_test::SoilTest> tests = {
       target(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.90, "loose CNL"),
       target(SoilTestKind::kSimpleShear, BoundaryKind::kCV, 0.88, "loose CV")};
   const auto r = calibration::calibrate(tests);
@@ -143,7 +143,7 @@ TEST_CASE("calibration flags what loose-only tests cannot identify", "[calibrati
 // order the recipe runs its stages and then the joint fit, each naming its phase of all.
 TEST_CASE("a calibration reports its progress: each phase of the recipe, then the joint fit",
           "[calibration]") {
-  std::vector<calibration::SoilTest> tests = {
+  std::vector<soil_test::SoilTest> tests = {
       target(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.90, "loose CNL"),
       target(SoilTestKind::kSimpleShear, BoundaryKind::kCV, 0.88, "loose CV")};
   std::vector<std::string> lines;
@@ -202,7 +202,7 @@ TEST_CASE("a localised cell's low bulk void ratio does not leave the loose tests
   // state, has its last fifth 0.3 lower, as if so measured: e_c0 from it (about 0.96 - 0.3) would
   // put e_i at the test's own start below its e0 of 0.90, and a fit starting there would have
   // nothing to follow.
-  std::vector<calibration::SoilTest> tests = {
+  std::vector<soil_test::SoilTest> tests = {
       target(SoilTestKind::kOedometer, BoundaryKind::kCNL, 0.85, "oedometer"),
       target(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.65, "dense CNL"),
       target(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.90, "loose CNL, localised")};
@@ -242,13 +242,13 @@ TEST_CASE("the truth grains' 27 DEM soil tests calibrate with every parameter id
   // design left out), as `make.sh calibrate` fits them. One of them ends at a stationary bulk e
   // below the critical state line (a localised cell): from that start the fit stopped at RMS 756
   // with alpha, beta and phi_c unidentified until the start was made admissible.
-  std::vector<calibration::SoilTest> tests;
+  std::vector<soil_test::SoilTest> tests;
   for (const auto& seed :
        std::filesystem::directory_iterator("data/calibration/truth_grains_epsd2"))
     if (seed.path().filename().string().rfind("seed", 0) == 0)
       for (const auto& t : std::filesystem::directory_iterator(seed.path()))
         if (t.path().filename() != "simpleshear-CNL-dense-200")
-          tests.push_back(calibration::read_soil_test(t.path()));
+          tests.push_back(soil_test::read_soil_test(t.path()));
   REQUIRE(tests.size() == 27);
   calibration::measure_seed_scatter(tests);
   const auto r = calibration::calibrate(tests);

@@ -18,7 +18,7 @@ namespace {
 
 // Two amplitudes, one inside the elastic range R = 1e-4 and one well beyond it, under CV and CNL:
 // the small one measures the stiffness factors, the large one how fast delta swings (beta_r, chi).
-std::vector<calibration::SoilTest> cyclic_targets() {
+std::vector<soil_test::SoilTest> cyclic_targets() {
   return {test::cyclic_soil_test(BoundaryKind::kCV, 5e-4),
           test::cyclic_soil_test(BoundaryKind::kCV, 2e-3),
           test::cyclic_soil_test(BoundaryKind::kCNL, 5e-4),
@@ -98,7 +98,7 @@ TEST_CASE("a target on the order m_T = m_R is recovered, held by the declared or
           "[calibration][cyclic]") {
   auto truth = test::table_5_3_toyoura();
   truth.tables.at("intergranular_strain")["m_T"] = 5.0;  // = m_R
-  std::vector<calibration::SoilTest> tests;
+  std::vector<soil_test::SoilTest> tests;
   for (const auto bc : {BoundaryKind::kCV, BoundaryKind::kCNL})
     for (const double amplitude : {5e-4, 2e-3})
       tests.push_back(test::cyclic_soil_test(bc, amplitude, truth));

@@ -13,10 +13,10 @@ namespace {
 
 // e = e0 + k (1 + e0) gamma up to gamma_knee, constant after: eps_n = k gamma there, so every
 // window inside the ramp has the slope k exactly, and windows straddling the knee less.
-calibration::SoilTest ramp_then_flat(double e0, double k, double gamma_knee,
-                                     driver::BoundaryKind bc = driver::BoundaryKind::kCNL) {
-  calibration::SoilTest t;
-  t.kind = calibration::SoilTestKind::kSimpleShear;
+soil_test::SoilTest ramp_then_flat(double e0, double k, double gamma_knee,
+                                   driver::BoundaryKind bc = driver::BoundaryKind::kCNL) {
+  soil_test::SoilTest t;
+  t.kind = soil_test::SoilTestKind::kSimpleShear;
   t.boundary = bc;
   t.sigma0_kPa = 50.0, t.e0 = e0;
   for (int i = 0; i <= 200; ++i) {
@@ -28,7 +28,7 @@ calibration::SoilTest ramp_then_flat(double e0, double k, double gamma_knee,
   return t;
 }
 
-calibration::Simulated as_measured(const calibration::SoilTest& t) {
+calibration::Simulated as_measured(const soil_test::SoilTest& t) {
   calibration::Simulated s;
   s.tau_kPa = t.tau_kPa, s.sigma_n_kPa = t.sigma_n_kPa, s.eps_v = t.eps_v, s.e = t.e;
   return s;

@@ -11,13 +11,13 @@
 
 using namespace iwb;
 using calibration::ObjectiveGroup;
-using calibration::SoilTestKind;
 using driver::BoundaryKind;
+using soil_test::SoilTestKind;
 
 namespace {
 
-calibration::SoilTest synthetic_test(SoilTestKind kind, BoundaryKind bc, double e0,
-                                     const models::ModelInputs& set) {
+soil_test::SoilTest synthetic_test(SoilTestKind kind, BoundaryKind bc, double e0,
+                                   const models::ModelInputs& set) {
   calibration::SyntheticSpec s;
   s.kind = kind, s.boundary = bc, s.e0 = e0;
   if (kind == SoilTestKind::kOedometer)
@@ -29,8 +29,8 @@ calibration::SoilTest synthetic_test(SoilTestKind kind, BoundaryKind bc, double 
   return t;
 }
 
-std::vector<calibration::SoilTest> design(const models::ModelInputs& oedometer_set,
-                                          const models::ModelInputs& shear_set) {
+std::vector<soil_test::SoilTest> design(const models::ModelInputs& oedometer_set,
+                                        const models::ModelInputs& shear_set) {
   return {synthetic_test(SoilTestKind::kOedometer, BoundaryKind::kCNL, 0.85, oedometer_set),
           synthetic_test(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.65, shear_set),
           synthetic_test(SoilTestKind::kSimpleShear, BoundaryKind::kCNL, 0.90, shear_set),
@@ -115,7 +115,7 @@ TEST_CASE("a front between two conflicting groups is monotonic", "[calibration]"
 TEST_CASE("a front is refused for one group twice, too few points or a group without residuals",
           "[calibration]") {
   const auto hostun = test::table_5_2_hostun();
-  const std::vector<calibration::SoilTest> oedometer_only = {
+  const std::vector<soil_test::SoilTest> oedometer_only = {
       synthetic_test(SoilTestKind::kOedometer, BoundaryKind::kCNL, 0.85, hostun)};
   CHECK_THROWS_WITH(calibration::parse_pareto_groups("shear,shear"),
                     Catch::Contains("the two groups must differ"));

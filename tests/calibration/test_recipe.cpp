@@ -15,8 +15,8 @@
 #include "support/fixtures.hpp"
 
 using namespace iwb;
-using calibration::SoilTestKind;
 using driver::BoundaryKind;
+using soil_test::SoilTestKind;
 
 namespace {
 
@@ -52,7 +52,7 @@ calibration::CalibrationRecipe two_stage_recipe(Trace& trace) {
   oedometer_pass.only_with = SoilTestKind::kOedometer;
   return {"test-two-stage",
           "intergranular_strain",
-          [](const std::vector<calibration::SoilTest>&) {
+          [](const std::vector<soil_test::SoilTest>&) {
             return models::ParameterValues{
                 {"R", 3e-4}, {"m_R", 4.0}, {"m_T", 3.0}, {"beta_r", 0.3}, {"chi", 3.0}};
           },
@@ -77,10 +77,10 @@ TEST_CASE("a recipe declared for another table runs its stages in order and reco
           "[calibration][recipe][cyclic]") {
   Trace trace;
   const auto recipe = two_stage_recipe(trace);
-  const std::vector<calibration::SoilTest> tests{test::cyclic_soil_test(BoundaryKind::kCV, 5e-4),
-                                                 test::cyclic_soil_test(BoundaryKind::kCV, 2e-3),
-                                                 test::cyclic_soil_test(BoundaryKind::kCNL, 5e-4),
-                                                 test::cyclic_soil_test(BoundaryKind::kCNL, 2e-3)};
+  const std::vector<soil_test::SoilTest> tests{test::cyclic_soil_test(BoundaryKind::kCV, 5e-4),
+                                               test::cyclic_soil_test(BoundaryKind::kCV, 2e-3),
+                                               test::cyclic_soil_test(BoundaryKind::kCNL, 5e-4),
+                                               test::cyclic_soil_test(BoundaryKind::kCNL, 2e-3)};
   const auto r = calibration::calibrate(tests, options_with(recipe));
   for (const auto& n : r.notes) UNSCOPED_INFO(n);
   // the declared order, and no pass for the oedometer tests the set lacks

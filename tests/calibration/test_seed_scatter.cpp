@@ -7,13 +7,13 @@
 #include "calibration/seed_scatter.hpp"
 
 using namespace iwb;
-using calibration::SoilTest;
+using soil_test::SoilTest;
 
 namespace {
 
 SoilTest cv_test(int seed, double tau_offset, double e_offset, std::string specimen = "dense") {
   SoilTest t;
-  t.kind = calibration::SoilTestKind::kSimpleShear;
+  t.kind = soil_test::SoilTestKind::kSimpleShear;
   t.boundary = driver::BoundaryKind::kCV;
   t.sigma0_kPa = 200.0;
   t.source = "dem:liggghts";

@@ -9,7 +9,7 @@
 #include "campaign/slurm.hpp"
 #include "campaign/sweep.hpp"
 #include "common/errors.hpp"
-#include "dem/scene.hpp"
+#include "dem/scene/scene.hpp"
 #include "io/toml_reader.hpp"
 #include "support/sweep_fixtures.hpp"
 

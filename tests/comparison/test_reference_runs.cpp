@@ -8,8 +8,8 @@
 #include <string>
 
 #include "comparison/dem_run.hpp"
-#include "dem/scene.hpp"
-#include "dem/summary.hpp"
+#include "dem/analysis/summary.hpp"
+#include "dem/scene/scene.hpp"
 #include "io/run_directory.hpp"
 
 using namespace iwb;
@@ -54,7 +54,7 @@ bool row_on_window_edge(const comparison::DemRun& run) {
   return false;
 }
 
-// summary.json is what src/dem/summary.cpp computes from the run's own timeseries.csv and
+// summary.json is what src/dem/analysis/summary.cpp computes from the run's own timeseries.csv and
 // profiles.csv under its own scene (`iwb dem summary`): the DEM's derived quantities that the
 // comparison and the hypothesis checks read are those of the committed data. Returns whether the
 // quantities of the residual window could be compared.

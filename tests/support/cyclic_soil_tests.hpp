@@ -9,12 +9,12 @@
 
 namespace iwb::test {
 
-inline calibration::SoilTest cyclic_soil_test(
+inline soil_test::SoilTest cyclic_soil_test(
     driver::BoundaryKind bc, double amplitude,
     const models::ModelInputs& truth = table_5_3_toyoura()) {
   calibration::SyntheticSpec s;
   s.model = "vw3d-igs";
-  s.kind = calibration::SoilTestKind::kCyclicShear;
+  s.kind = soil_test::SoilTestKind::kCyclicShear;
   s.boundary = bc;
   s.e0 = 0.75;
   s.gamma_amplitude = amplitude;

@@ -1,12 +1,12 @@
 #pragma once
 // Test time (issue 37): the smoke scenes that differ only in their shear stage (CNL, CNS, CV, the
 // start-of-shear variants, the implausible speed) start from one consolidated specimen per engine,
-// as a campaign's runs do (dem/consolidation_cache.hpp), instead of consolidating it again in each
-// test: consolidation is most of a smoke run (YADE: ~70 of ~90 s). The first test to need it
+// as a campaign's runs do (dem/run/consolidation_cache.hpp), instead of consolidating it again in
+// each test: consolidation is most of a smoke run (YADE: ~70 of ~90 s). The first test to need it
 // consolidates and the others wait on its lock. Consolidation itself stays tested by that first
 // run, by the runs that change what it reads (glued wall, servo failure, resume) and by
-// tests/dem/test_consolidation_cache.cpp, which also shows a reused specimen gives the bytes of a
-// run that consolidated itself.
+// tests/dem/run/test_consolidation_cache.cpp, which also shows a reused specimen gives the bytes of
+// a run that consolidated itself.
 #include <fmt/core.h>
 
 #include <filesystem>

@@ -11,7 +11,7 @@
 #include <random>
 
 #include "common/band_zone.hpp"
-#include "dem/summary.hpp"
+#include "dem/analysis/summary.hpp"
 #include "io/run_directory.hpp"
 #include "support/fixtures.hpp"
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 
-#include "dem/numerics.hpp"
-#include "dem/scene.hpp"
+#include "dem/scene/numerics.hpp"
+#include "dem/scene/scene.hpp"
 #include "io/run_directory.hpp"
 #include "tradeoff/knobs.hpp"
 #include "tradeoff/tradeoff.hpp"

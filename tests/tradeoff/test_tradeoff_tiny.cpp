@@ -6,8 +6,8 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 
-#include "dem/numerics.hpp"
-#include "dem/scene.hpp"
+#include "dem/scene/numerics.hpp"
+#include "dem/scene/scene.hpp"
 #include "io/run_directory.hpp"
 #include "io/toml_override.hpp"
 #include "io/toml_reader.hpp"

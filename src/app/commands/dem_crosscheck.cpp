@@ -1,4 +1,4 @@
-// `iwb dem crosscheck SCENE.toml --seeds K`: one scene in both engines (dem/crosscheck.hpp).
+// `iwb dem crosscheck SCENE.toml --seeds K`: one scene in both engines (dem/run/crosscheck.hpp).
 #include <fmt/core.h>
 
 #include <filesystem>
@@ -8,7 +8,7 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "app/progress.hpp"
-#include "dem/crosscheck.hpp"
+#include "dem/run/crosscheck.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::app {

@@ -7,7 +7,7 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "app/progress.hpp"
-#include "dem/run_fields.hpp"
+#include "dem/analysis/run_fields.hpp"
 
 namespace iwb::app {
 

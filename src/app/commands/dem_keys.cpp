@@ -1,12 +1,12 @@
 // `iwb dem keys`: every key a scene file may hold, from the declarations the parser reads
-// (src/dem/scene_keys.cpp); data/scenes/README.md's key table is this command's Markdown.
+// (src/dem/scene/scene_keys.cpp); data/scenes/README.md's key table is this command's Markdown.
 #include <fmt/core.h>
 
 #include <memory>
 
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
-#include "dem/scene_keys.hpp"
+#include "dem/scene/scene_keys.hpp"
 
 namespace iwb::app {
 

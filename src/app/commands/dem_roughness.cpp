@@ -6,7 +6,7 @@
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
-#include "dem/scene_roughness.hpp"
+#include "dem/scene/scene_roughness.hpp"
 
 namespace iwb::app {
 

@@ -1,4 +1,4 @@
-// `iwb dem run SCENE.toml`: a DEM interface-shear scene into a run directory (dem/run.hpp).
+// `iwb dem run SCENE.toml`: a DEM interface-shear scene into a run directory (dem/run/run.hpp).
 #include <fmt/core.h>
 
 #include <filesystem>
@@ -8,9 +8,9 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "app/progress.hpp"
-#include "dem/consolidation_cache.hpp"
-#include "dem/engines.hpp"
-#include "dem/run.hpp"
+#include "dem/engines/engines.hpp"
+#include "dem/run/consolidation_cache.hpp"
+#include "dem/run/run.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::app {
@@ -74,7 +74,8 @@ void add_dem_run_command(CLI::App& dem, CommandList& commands) {
   dem_run->add_option(
       "--consolidated", o->consolidated,
       "start from a consolidated specimen of the same consolidation key kept in DIR, or keep this "
-      "run's there (default $IWB_CONSOLIDATED_DIR, else none; src/dem/consolidation_cache.hpp)");
+      "run's there (default $IWB_CONSOLIDATED_DIR, else none; "
+      "src/dem/run/consolidation_cache.hpp)");
   commands.add(dem_run, [o](const CommandContext& c) { return run_dem(*o, c); });
 }
 

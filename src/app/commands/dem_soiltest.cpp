@@ -1,4 +1,5 @@
-// `iwb dem soiltest SCENE.toml --test ...`: a soil element test on a DEM cell (dem/soil_cell.hpp).
+// `iwb dem soiltest SCENE.toml --test ...`: a soil element test on a DEM cell
+// (dem/soil_cells/soil_cell.hpp).
 #include <fmt/core.h>
 
 #include <memory>
@@ -7,7 +8,7 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "app/progress.hpp"
-#include "dem/soil_cell.hpp"
+#include "dem/soil_cells/soil_cell.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::app {
@@ -23,11 +24,11 @@ struct DemSoiltestCommand {
 
 int run_dem_soiltest(const DemSoiltestCommand& c, const CommandContext& context) {
   dem::SoilCellSpec spec = c.spec;
-  spec.test = calibration::soil_test_kind(c.test, "--test");
+  spec.test = soil_test::soil_test_kind(c.test, "--test");
   spec.boundary = driver::parse_boundary_kind(c.bc, "--bc");
   spec.density = dem::parse_soil_density(c.density, "--density");
   spec.cell = dem::parse_cell_kind(c.cell, "--cell");
-  const bool oed = spec.test == calibration::SoilTestKind::kOedometer;
+  const bool oed = spec.test == soil_test::SoilTestKind::kOedometer;
   const std::filesystem::path dir =
       !c.out.empty()
           ? std::filesystem::path(c.out)

@@ -6,8 +6,8 @@
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
-#include "dem/run.hpp"
-#include "dem/soil_cell.hpp"
+#include "dem/run/run.hpp"
+#include "dem/soil_cells/soil_cell.hpp"
 #include "io/json_file.hpp"
 
 namespace iwb::app {

@@ -82,7 +82,7 @@ CLI::App* add_synthetic_options(CLI::App& soiltest, SyntheticCommand& c) {
 }
 
 int run_synthetic(SyntheticCommand c, const std::string& command_line) {
-  c.spec.kind = calibration::soil_test_kind(c.test, "--test");
+  c.spec.kind = soil_test::soil_test_kind(c.test, "--test");
   c.spec.boundary = driver::parse_boundary_kind(c.bc, "--bc");
   if (c.e0 > 0.0) c.spec.e0 = c.e0;
   const auto t = calibration::write_synthetic_test(c.spec, c.params, c.out, c.force, command_line);
