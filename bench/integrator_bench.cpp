@@ -7,7 +7,7 @@
 #include <cmath>
 #include <map>
 
-#include "comparison/figure.hpp"
+#include "comparison/presentation/figure.hpp"
 #include "driver/element_test.hpp"
 #include "io/output_path.hpp"
 #include "io/parameter_sets.hpp"

@@ -22,7 +22,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # data/seed_stats.
 from seed_stats import interval, mean_half, seeds_needed  # noqa: E402
 
 WINDOWS = [(8.0, 10.0), (16.0, 20.0)]
-TOLERANCE = 0.05  # the residual's default tolerance (src/comparison/quantities.cpp)
+TOLERANCE = 0.05  # the residual's default tolerance (src/comparison/replay/quantities.cpp)
 
 
 def slope(xs, ys):

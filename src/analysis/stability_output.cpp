@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "comparison/figure.hpp"
+#include "comparison/presentation/figure.hpp"
 #include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 

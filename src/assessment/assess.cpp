@@ -11,7 +11,7 @@
 #include "assessment/distribution_file.hpp"
 #include "assessment/element_sensitivity.hpp"
 #include "common/errors.hpp"
-#include "comparison/figure.hpp"
+#include "comparison/presentation/figure.hpp"
 #include "io/parameter_file.hpp"
 #include "io/run_directory.hpp"
 

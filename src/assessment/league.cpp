@@ -9,7 +9,7 @@
 #include "assessment/distribution_file.hpp"
 #include "assessment/evaluate.hpp"
 #include "common/errors.hpp"
-#include "comparison/compare.hpp"
+#include "comparison/compare/compare.hpp"
 
 namespace iwb::assessment {
 

@@ -4,8 +4,8 @@
 // (model_uncertainty.hpp), its parameter uncertainty about the calibrated set (Latin hypercube
 // samples with the COVs of the seed's Table 4.8 and Appendix A), optionally its total Sobol indices
 // there, and the global uncertainty sqrt(UA_model^2 + UA_par^2) (ERRATA 16). Every sample is a
-// replay along the DEM's own path (comparison/replay.hpp), so the models are judged on exactly the
-// test the DEM ran.
+// replay along the DEM's own path (comparison/replay/replay.hpp), so the models are judged on
+// exactly the test the DEM ran.
 //
 // Calibration to the runs: kappa_r and d_s as `iwb compare` fits them; d_s where the model's
 // response depends on it (not for displacement-based models); and, for a model whose parameters
@@ -22,9 +22,9 @@
 #include "assessment/model_uncertainty.hpp"
 #include "assessment/sobol.hpp"
 #include "assessment/uncertainty.hpp"
-#include "comparison/fit.hpp"
-#include "comparison/seed_scatter.hpp"
-#include "comparison/verdicts.hpp"
+#include "comparison/replay/fit.hpp"
+#include "comparison/replay/seed_scatter.hpp"
+#include "comparison/verdicts/verdicts.hpp"
 
 namespace iwb::assessment {
 

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "comparison/figure.hpp"
-#include "comparison/verdicts.hpp"
+#include "comparison/presentation/figure.hpp"
+#include "comparison/verdicts/verdicts.hpp"
 
 namespace iwb::assessment {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "calibration/pareto.hpp"
-#include "comparison/figure.hpp"
+#include "comparison/presentation/figure.hpp"
 #include "io/run_directory.hpp"
 
 namespace iwb::calibration {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "comparison/form_limit.hpp"
+#include "comparison/causes/form_limit.hpp"
 
 namespace iwb::calibration {
 

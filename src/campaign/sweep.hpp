@@ -12,7 +12,7 @@
 #include <string>
 
 #include "campaign/slurm.hpp"
-#include "comparison/run_set.hpp"
+#include "comparison/compare/run_set.hpp"
 
 namespace iwb::campaign {
 

@@ -1,8 +1,8 @@
 #pragma once
 // Bounded least squares under inequality constraints (issue 59): minimise ||r(x)||^2 subject to
 // c_k(x) <= 0, inside box bounds. For a material set that must fit DEM runs while the soil tests
-// still accept it (comparison/form_limit.hpp): the constraints are not smooth (a model that leaves
-// its domain makes them jump) and have no derivatives we know, so NLopt's derivative-free
+// still accept it (comparison/causes/form_limit.hpp): the constraints are not smooth (a model that
+// leaves its domain makes them jump) and have no derivatives we know, so NLopt's derivative-free
 // LN_COBYLA, which takes inequality constraints directly, from a start that meets them (then every
 // point it returns as feasible is one the constraints accept; a penalty would trade a violation
 // against the fit by a weight nobody can state).

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "common/errors.hpp"
-#include "comparison/figure.hpp"
+#include "comparison/presentation/figure.hpp"
 #include "cycles/cycle_quantities.hpp"
 #include "io/directory_lock.hpp"
 #include "io/output_path.hpp"

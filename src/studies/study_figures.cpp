@@ -2,8 +2,8 @@
 
 #include <fmt/core.h>
 
-#include "comparison/figure.hpp"
-#include "comparison/html.hpp"
+#include "comparison/presentation/figure.hpp"
+#include "comparison/presentation/html.hpp"
 #include "io/output_path.hpp"
 #include "io/run_directory.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The figures of a study (the seed's figures redrawn from the study's runs) and its page, in the
-// style of the validation report (comparison/html.hpp).
+// style of the validation report (comparison/presentation/html.hpp).
 #include <filesystem>
 #include <map>
 #include <string>

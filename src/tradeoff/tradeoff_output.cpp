@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "comparison/figure.hpp"
+#include "comparison/presentation/figure.hpp"
 #include "dem/scene/requirements.hpp"
 #include "io/output_path.hpp"
 #include "io/run_directory.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // The tradeoff's files: tradeoff.json (everything), tradeoff.csv (one row per setting),
 // tradeoff.md (the tables people read) and pareto.svg/.png (error against cost per QoI, drawn by
-// comparison/figure.hpp).
+// comparison/presentation/figure.hpp).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>

@@ -3,8 +3,8 @@
 #include <fmt/core.h>
 
 #include "common/errors.hpp"
-#include "comparison/compare.hpp"
-#include "comparison/report.hpp"
+#include "comparison/compare/compare.hpp"
+#include "comparison/presentation/report.hpp"
 #include "dem/engines/engines.hpp"
 #include "dem/run/run.hpp"
 #include "dem/scene/scene_content.hpp"

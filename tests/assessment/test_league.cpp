@@ -7,7 +7,7 @@
 
 #include "assessment/distribution_file.hpp"
 #include "assessment/league.hpp"
-#include "comparison/replay.hpp"
+#include "comparison/replay/replay.hpp"
 #include "support/fixtures.hpp"
 #include "support/mohr_coulomb_reference.hpp"
 

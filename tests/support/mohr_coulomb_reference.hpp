@@ -3,7 +3,7 @@
 // calibrate models to it (issue 17).
 #include <catch2/catch.hpp>
 
-#include "comparison/replay.hpp"
+#include "comparison/replay/replay.hpp"
 #include "support/fixtures.hpp"
 
 namespace iwb::test {

@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """The house's floors (issue 58), checked from the includes: within src/dem and src/comparison no
-unit (a .hpp with its .cpp) includes one that includes it back, and src/dem's sublayers read only
-those below them (scene < engines, analysis < run < soil_cells; engines and analysis apart).
+unit (a .hpp with its .cpp) includes one that includes it back, and each folder's sublayers read
+only those below them: src/dem scene < engines, analysis < run < soil_cells (engines and analysis
+apart); src/comparison replay < verdicts < compare, presentation < causes (compare and
+presentation apart).
 Prints each violation; exit 1 if any.
     tools/house/layers.py [SRC]"""
 import collections
@@ -9,7 +11,10 @@ import os
 import re
 import sys
 
-DEM_LAYERS = {"scene": 0, "engines": 1, "analysis": 1, "run": 2, "soil_cells": 3}
+LAYERS = {
+    "dem": {"scene": 0, "engines": 1, "analysis": 1, "run": 2, "soil_cells": 3},
+    "comparison": {"replay": 0, "verdicts": 1, "compare": 2, "presentation": 2, "causes": 3},
+}
 INCLUDE = re.compile(r'#include "([^"]+)"')
 
 
@@ -35,16 +40,17 @@ def violations(src):
         for b in sorted(graph[a]):
             if b != a and a < b and a in graph.get(b, ()):
                 found.append(f"{a} and {b} include each other")
-        if a.startswith("dem/"):
-            mine = a.split("/")[1]
-            for b in graph[a]:
-                if not b.startswith("dem/"):
-                    continue
-                theirs = b.split("/")[1]
-                if theirs not in DEM_LAYERS or mine not in DEM_LAYERS:
-                    found.append(f"{a} -> {b}: outside src/dem's sublayers {sorted(DEM_LAYERS)}")
-                elif theirs != mine and DEM_LAYERS[theirs] >= DEM_LAYERS[mine]:
-                    found.append(f"{a} -> {b}: {mine} may not read {theirs}")
+        top = a.split("/")[0]
+        layers = LAYERS[top]
+        mine = a.split("/")[1]
+        for b in graph[a]:
+            if not b.startswith(top + "/"):
+                continue
+            theirs = b.split("/")[1]
+            if theirs not in layers or mine not in layers:
+                found.append(f"{a} -> {b}: outside src/{top}'s sublayers {sorted(layers)}")
+            elif theirs != mine and layers[theirs] >= layers[mine]:
+                found.append(f"{a} -> {b}: {mine} may not read {theirs}")
     return found
 
 

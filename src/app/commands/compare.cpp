@@ -1,6 +1,6 @@
 // `iwb compare RUN_DIR` and `iwb compare --runs RUN_DIR...`: a continuum model judged against DEM
-// runs (comparison/compare.hpp, comparison/run_set.hpp).
-#include "comparison/compare.hpp"
+// runs (comparison/compare/compare.hpp, comparison/compare/run_set.hpp).
+#include "comparison/compare/compare.hpp"
 
 #include <fmt/core.h>
 
@@ -11,9 +11,11 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "common/errors.hpp"
-#include "comparison/compare_models.hpp"
-#include "comparison/run_set.hpp"
-#include "comparison/verdict_table.hpp"
+#include "comparison/compare/compare_models.hpp"
+#include "comparison/compare/run_set.hpp"
+#include "comparison/presentation/verdict_table.hpp"
+#include "comparison/replay/quantities.hpp"
+#include "comparison/verdicts/cyclic_verdicts.hpp"
 #include "models/registry.hpp"
 
 namespace iwb::app {
@@ -67,7 +69,7 @@ void print_verdicts(const nlohmann::json& result, bool with_cycles) {
   for (const auto& f : comparison::verdict_findings(result)) fmt::print("{}\n", f);
 }
 
-// One model into OUT, several each into OUT/<model> (comparison/compare_models.hpp).
+// One model into OUT, several each into OUT/<model> (comparison/compare/compare_models.hpp).
 int compare_run(const CompareCommand& o, const CommandContext& context) {
   if (o.dem_dir.empty()) throw InputError("compare: give a DEM run directory or --runs DIR...");
   auto opt = o.options;
@@ -95,6 +97,14 @@ int compare_run(const CompareCommand& o, const CommandContext& context) {
   return 0;
 }
 
+// "cycle_peak_friction 10 %, ...": the cyclic defaults, as comparison/verdicts writes them.
+std::string cyclic_tolerances_text() {
+  std::string out;
+  for (const auto& [key, t] : comparison::cyclic_default_tolerances())
+    out += fmt::format("{}{} {:g} %", out.empty() ? "" : ", ", key, 100.0 * t);
+  return out;
+}
+
 }  // namespace
 
 void add_compare_command(CLI::App& app, CommandList& commands) {
@@ -114,19 +124,22 @@ void add_compare_command(CLI::App& app, CommandList& commands) {
       "alone, from its void ratio: a loose specimen may move the plate from elsewhere) the DEM "
       "(its seed mean +- the 95 % "
       "Student's t-interval; seeds that sheared at the plate left out), the model, the error, the "
-      "tolerance (the scene's [requirements], else 10, 5, 30, 20, 20, 20, 20, 20 %), the detection "
-      "limit and a verdict: holds, "
-      "breaks (beyond the tolerance by more than the interval), or within DEM scatter. A cyclic "
-      "run is judged per cycle first (cycles 1, 2, 5 and the last: peaks each way, sigma_n "
-      "degradation, accumulated u_n, reversal stiffness; each as a change from cycle 1 to the "
-      "last; then the post-cyclic peak and u_n; tolerances the scene's [requirements] "
-      "cycle_peak_friction, cycle_sigma_n_ratio, cycle_u_n, reversal_secant, "
-      "post_cyclic_peak_friction, post_cyclic_u_n_change, else 10, 10, 20, 30, 10, 20 %). "
-      "A scan of the (kappa_r, d_s) box says whether any pair makes every quantity hold. "
-      "Writes compare.json, compare.csv (curves) and seed_band.csv.\n"
-      "Example: iwb compare data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s1 --seeds "
-      "data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s{2,3} --params "
-      "data/params/dem_default_grains.toml -o runs/cmp");
+      "tolerance (the scene's [requirements], else the default: " +
+          comparison::default_tolerances_text() +
+          "), the detection "
+          "limit and a verdict: holds, "
+          "breaks (beyond the tolerance by more than the interval), or within DEM scatter. A "
+          "cyclic "
+          "run is judged per cycle first (cycles 1, 2, 5 and the last: peaks each way, sigma_n "
+          "degradation, accumulated u_n, reversal stiffness; each as a change from cycle 1 to the "
+          "last; then the post-cyclic peak and u_n; tolerances the scene's [requirements], else " +
+          cyclic_tolerances_text() +
+          "). "
+          "A scan of the (kappa_r, d_s) box says whether any pair makes every quantity hold. "
+          "Writes compare.json, compare.csv (curves) and seed_band.csv.\n"
+          "Example: iwb compare data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s1 --seeds "
+          "data/reference/reference_rn/runs/sawtooth-2-0.5_cnl_s{2,3} --params "
+          "data/params/dem_default_grains.toml -o runs/cmp");
   auto& copt = o->options;
   auto* single_run = compare->add_option("dem_run", o->dem_dir, "a run directory of `iwb dem run`")
                          ->check(input_directory());

@@ -1,6 +1,6 @@
 // `iwb form-limit`: an interface model's best fit of every declared parameter to DEM runs, which
-// tells a verdict's form from its calibration (comparison/form_limit.hpp).
-#include "comparison/form_limit.hpp"
+// tells a verdict's form from its calibration (comparison/causes/form_limit.hpp).
+#include "comparison/causes/form_limit.hpp"
 
 #include <fmt/core.h>
 

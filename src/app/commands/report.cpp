@@ -1,5 +1,5 @@
-// `iwb report COMPARE_DIR... -o report.html` (comparison/report.hpp).
-#include "comparison/report.hpp"
+// `iwb report COMPARE_DIR... -o report.html` (comparison/presentation/report.hpp).
+#include "comparison/presentation/report.hpp"
 
 #include <fmt/core.h>
 

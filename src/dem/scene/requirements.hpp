@@ -17,11 +17,12 @@ struct Qoi {
   const char* label;  // for people
 };
 const std::vector<Qoi>& quantities_of_interest();
-// Quantities that only `iwb compare` judges (a model against the DEM; comparison/quantities.hpp
-// holds their default tolerances): a scene may state tolerances for them too.
+// Quantities that only `iwb compare` judges (a model against the DEM;
+// comparison/replay/quantities.hpp holds their default tolerances): a scene may state tolerances
+// for them too.
 const std::vector<Qoi>& compared_only_quantities();
 // The cyclic quantities `iwb compare` judges on a cyclic run (issue 34; their default tolerances
-// are comparison/cyclic_verdicts.cpp's), each per cycle and as a change over the cycles.
+// are comparison/verdicts/cyclic_verdicts.cpp's), each per cycle and as a change over the cycles.
 const std::vector<Qoi>& cyclic_quantities();
 // Every key [requirements] may hold: the three lists above.
 const std::vector<const std::vector<Qoi>*>& requirement_lists();
