@@ -34,7 +34,6 @@ params() {  # soil set file, output
   } > "$2"
 }
 
-judged=()
 for s in "${sets[@]}"; do
   if [ "$s" = cyclic ]; then
     rm -rf "${WORK:?}/cyclic"
@@ -69,7 +68,11 @@ for s in "${sets[@]}"; do
       mkdir -p "$WORK/$s" && cp "$WORK/$s.$m.err" "$WORK/$s/$m.refused"
     }
   done
-  judged+=("$s=$WORK/$s")
 done
-/usr/bin/python3 "$HERE/more_table.py" "${judged[@]}" --md "$HERE/more_verdicts.md" \
+# the table holds every set judged so far (this call's and earlier calls' in WORK), in one order
+tables=()
+for s in cu2 cu3 cu3_rn025 density asymmetric; do
+  [ -d "$WORK/$s/hvwe" ] && tables+=("$s=$WORK/$s")
+done
+/usr/bin/python3 "$HERE/more_table.py" "${tables[@]}" --md "$HERE/more_verdicts.md" \
   --json "$HERE/more_verdicts.json"
