@@ -97,14 +97,6 @@ int compare_run(const CompareCommand& o, const CommandContext& context) {
   return 0;
 }
 
-// "cycle_peak_friction 10 %, ...": the cyclic defaults, as comparison/verdicts writes them.
-std::string cyclic_tolerances_text() {
-  std::string out;
-  for (const auto& [key, t] : comparison::cyclic_default_tolerances())
-    out += fmt::format("{}{} {:g} %", out.empty() ? "" : ", ", key, 100.0 * t);
-  return out;
-}
-
 }  // namespace
 
 void add_compare_command(CLI::App& app, CommandList& commands) {
@@ -133,7 +125,8 @@ void add_compare_command(CLI::App& app, CommandList& commands) {
           "run is judged per cycle first (cycles 1, 2, 5 and the last: peaks each way, sigma_n "
           "degradation, accumulated u_n, reversal stiffness; each as a change from cycle 1 to the "
           "last; then the post-cyclic peak and u_n; tolerances the scene's [requirements], else " +
-          cyclic_tolerances_text() +
+          comparison::tolerances_text({comparison::cyclic_default_tolerances().begin(),
+                                       comparison::cyclic_default_tolerances().end()}) +
           "). "
           "A scan of the (kappa_r, d_s) box says whether any pair makes every quantity hold. "
           "Writes compare.json, compare.csv (curves) and seed_band.csv.\n"

@@ -114,11 +114,17 @@ const std::vector<QuantityInfo>& quantity_table() {
   return t;
 }
 
-std::string default_tolerances_text() {
+std::string tolerances_text(const std::vector<std::pair<std::string, double>>& keyed) {
   std::string out;
-  for (const auto& q : quantity_table())
-    out += fmt::format("{}{} {:g} %", out.empty() ? "" : ", ", q.key, 100.0 * q.tolerance);
+  for (const auto& [key, t] : keyed)
+    out += fmt::format("{}{} {:g} %", out.empty() ? "" : ", ", key, 100.0 * t);
   return out;
+}
+
+std::string default_tolerances_text() {
+  std::vector<std::pair<std::string, double>> keyed;
+  for (const auto& q : quantity_table()) keyed.emplace_back(q.key, q.tolerance);
+  return tolerances_text(keyed);
 }
 
 const QuantityInfo& quantity(const std::string& key) {

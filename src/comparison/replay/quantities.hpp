@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "driver/control.hpp"
@@ -28,8 +29,9 @@ struct QuantityInfo {
 // In the order reports list them.
 const std::vector<QuantityInfo>& quantity_table();
 const QuantityInfo& quantity(const std::string& key);
-// "peak_friction 10 %, u_x_at_peak 30 %, ...": each quantity's default tolerance, from the table
-// above (the one place it is written; `iwb compare --help` shows this).
+// "peak_friction 10 %, u_x_at_peak 30 %, ...": tolerances as `iwb compare --help` lists them.
+std::string tolerances_text(const std::vector<std::pair<std::string, double>>& keyed);
+// Each quantity's default tolerance, from the table above (the one place it is written).
 std::string default_tolerances_text();
 
 // The quantities that a boundary condition leaves free to judge: CV fixes u_n, CNL fixes sigma_n.
