@@ -48,7 +48,7 @@ const json& setting(const json& t, const std::string& name) {
 TEST_CASE(
     "tradeoff on a tiny scene: cost follows particles and 1/dt, halving dt converges the residual "
     "friction",
-    "[tradeoff][dem]") {
+    "[tradeoff][dem][heavy]") {  // heavy since 2026-12-02: nine DEM runs (issue 60's 6 minutes)
   const fs::path dir = fs::path(IWB_TEST_RUNS_DIR) / "tradeoff" / "tiny";
   fs::remove_all(dir);
   tradeoff::TradeoffOptions opt;

@@ -489,7 +489,9 @@ TEST_CASE("YADE smoke file wall: a measured profile's mesh carries the load",
 TEST_CASE("YADE smoke CNL: sigma_n stays within 5 % of the target during shear", "[dem][yade]") {
   check_cnl("yade");
 }
-TEST_CASE("YADE smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][yade]") {
+// heavy since 2026-12-02 (issue 60, the default suite's 6 minutes): the CNS servo's default check
+// is LIGGGHTS's twin, and YADE's runner stays in the default suite through its CNL test
+TEST_CASE("YADE smoke CNS: d sigma_n / d u_n matches K within 10 %", "[dem][yade][heavy]") {
   check_cns("yade");
 }
 TEST_CASE("YADE smoke cyclic: the wall reverses at +-A and tau follows it", "[dem][yade][heavy]") {

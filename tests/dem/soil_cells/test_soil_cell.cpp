@@ -87,8 +87,10 @@ void check_oedometer(const std::string& engine) {
 
 }  // namespace
 
+// heavy since 2026-12-02 (issue 60, the default suite's 6 minutes): the soil cells stay in the
+// default suite through the periodic cell's CV and CNL test
 TEST_CASE("DEM soil cell oedometer compresses on loading and swells less on unloading",
-          "[dem][soil]") {
+          "[dem][soil][heavy]") {
   check_oedometer("liggghts");
 }
 
