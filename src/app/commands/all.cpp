@@ -47,6 +47,7 @@ void add_all_commands(CLI::App& app, CommandList& commands) {
   add_tradeoff_command(app, commands);
   add_plan_command(app, commands);
   add_pile_command(app, commands);
+  add_column_command(app, commands);
 }
 
 }  // namespace iwb::app

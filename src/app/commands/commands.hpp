@@ -37,6 +37,7 @@ void add_calibrate_command(CLI::App& app, CommandList& commands);
 void add_tradeoff_command(CLI::App& app, CommandList& commands);
 void add_plan_command(CLI::App& app, CommandList& commands);
 void add_pile_command(CLI::App& app, CommandList& commands);
+void add_column_command(CLI::App& app, CommandList& commands);
 
 // The hypothesis verdicts of a set of comparisons (`compare --runs`, `sweep`), title and verdict.
 void print_hypothesis_checks(const nlohmann::json& hypotheses);

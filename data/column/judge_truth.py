@@ -1,0 +1,200 @@
+#!/usr/bin/python3
+"""The column (src/column) on the DEM truth's cells (issue 57), judged as `iwb compare` judges a
+model: per quantity the DEM's seed mean +- its 95 % Student's t-interval, the column's value, the
+error, the tolerance (compare's defaults: peak 10 %, friction at the end 5 %, total dilation 20 %;
+the band 25 %), and a verdict: holds (within the tolerance), breaks (beyond it by more than the
+interval), or not resolved (the interval straddles the tolerance's edge).
+
+    data/column/judge_truth.py [--iwb build/iwb] [--cells NAME,...]
+
+Each cell's column runs once (`iwb column`, 4 elements per d50, 500 increments) from the seeds'
+mean e at the start of shear, into data/column/runs/<cell>; its files are kept (they are small).
+The wall by the column's rule (src/column/README.md), stated before the judging and read from
+R_n alone, never from the DEM's own wall friction: free rotation on every wall; no slip where
+R_n >= 0.5 (the DEM's trapped layer moves with the wall); below it the seed's kappa_r from R_n
+(eq. 5.35, 0.05 on the flat wall) and slip at the critical simple-shear ratio of phi_r,
+sin phi_r = kappa_r sin phi_c. Runs that sheared at the plate or split are left out.
+Writes data/column/verdicts.md and verdicts.json."""
+import argparse
+import csv
+import glob
+import json
+import math
+import os
+import subprocess
+import sys
+
+from scipy import stats
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+PARAMS = "data/params/truth_grains_epsd2.toml"
+TOL = {"peak_friction": 0.10, "end_friction": 0.05, "dilation_mm": 0.20, "band_fwhm_d50": 0.25}
+
+# name: (runs glob, R_n)
+CELLS = {
+    "flat_cnl50": ("data/reference/truth2_rn/runs/flat_s*_cnl", 0.0),
+    "rn0.1_cnl50": ("data/reference/truth2_rn/runs/sawtooth-2-0.1_s*_cnl", 0.1),
+    "rn0.25_cnl50": ("data/convergence/truth_clamped_rn025/runs/Rn0.25_s*", 0.25),
+    "rn0.5_cnl50": ("data/convergence/truth_clamped/runs/s*", 0.5),
+    "rn1_cnl50": ("data/reference/truth2_rn/runs/sawtooth-2-1_s*_cnl", 1.0),
+    "flat_cns50": ("data/reference/truth2_rn/runs/flat_s*_cns-50", 0.0),
+    "rn0.1_cns50": ("data/reference/truth2_rn/runs/sawtooth-2-0.1_s*_cns-50", 0.1),
+    "rn0.25_cns50": ("data/reference/truth2_cns/runs/sawtooth-2-0.25_s*_cns-50", 0.25),
+    "rn0.5_cns50": ("data/reference/truth2_cns/runs/sawtooth-2-0.5_s*_cns-50", 0.5),
+    "rn1_cns50": ("data/reference/truth2_rn/runs/sawtooth-2-1_s*_cns-50", 1.0),
+    "flat_cnl200": ("data/reference/truth2_stress/runs/flat_s*_s200_cnl-200", 0.0),
+    "rn0.1_cnl200": ("data/reference/truth2_stress/runs/sawtooth-2-0.1_s*_s200_cnl-200", 0.1),
+    "rn0.25_cnl200": ("data/reference/truth2_stress/runs/sawtooth-2-0.25_s*_s200_cnl-200", 0.25),
+    "rn0.5_cnl200": ("data/reference/truth2_stress/runs/sawtooth-2-0.5_s*_s200_cnl-200", 0.5),
+    "rn1_cnl200": ("data/reference/truth2_stress/runs/sawtooth-2-1_s*_s200_cnl-200", 1.0),
+    "d1_rn1_cnl50": ("data/reference/truth2_d50/runs/d1_sawtooth-4-1_s*_cnl", 1.0),
+    "d1_rn1_cns100": ("data/reference/truth2_d50/runs/d1_sawtooth-4-1_s*_cns-100", 1.0),
+}
+
+
+def scene_of(run):
+    m = json.load(open(os.path.join(run, "manifest.json")))
+    return m["scene"]["resolved"]
+
+
+def dem_run(run):
+    """One DEM run's quantities, or None if it sheared at the plate or split."""
+    s = json.load(open(os.path.join(run, "summary.json")))
+    mode = s.get("shear_mode") or ""
+    if "plate" in mode or "split" in mode:  # the column's band is the wall's: left out, as compare does
+        return None
+    rows = list(csv.DictReader(open(os.path.join(run, "timeseries.csv"))))
+    band = None
+    bpath = os.path.join(run, "fields", "band.csv")
+    if os.path.exists(bpath):
+        b = list(csv.DictReader(open(bpath)))
+        band = float(b[-1]["band_fwhm_d50"]) if b else None
+    last = rows[-1]
+    return {
+        "e0": float(rows[0]["e_specimen"]),
+        "peak_friction": s["peak_friction"],
+        "end_friction": float(last["tau_kPa"]) / float(last["sigma_n_kPa"]),
+        "dilation_mm": float(last["u_n_mm"]) - float(rows[0]["u_n_mm"]),
+        "band_fwhm_d50": band,
+        "shear_mode": s.get("shear_mode"),
+    }
+
+
+def interval(values):
+    n = len(values)
+    mean = sum(values) / n
+    if n < 2:
+        return mean, float("nan"), n
+    sd = math.sqrt(sum((v - mean) ** 2 for v in values) / (n - 1))
+    return mean, stats.t.ppf(0.975, n - 1) * sd / math.sqrt(n), n
+
+
+def verdict(model, mean, half, tol):
+    miss = abs(model - mean)
+    limit = tol * abs(mean)
+    if miss <= limit:
+        return "holds"
+    if math.isfinite(half) and miss - limit > half:
+        return "breaks"
+    return "not resolved"
+
+
+def column_quantities(out):
+    rows = list(csv.DictReader(open(os.path.join(out, "timeseries.csv"))))
+    ratio = [float(r["tau_kPa"]) / float(r["sigma_n_kPa"]) for r in rows[1:]]
+    band = list(csv.DictReader(open(os.path.join(out, "band.csv"))))
+    return {
+        "peak_friction": max(ratio),
+        "end_friction": ratio[-1],
+        "dilation_mm": float(rows[-1]["u_n_mm"]),
+        "band_fwhm_d50": float(band[-1]["band_fwhm_d50"]),
+    }
+
+
+def wall_options(R_n, soil_phi_c_deg):
+    if R_n >= 0.5:
+        return []
+    kappa = min(1.0, 0.25 * math.log10(max(R_n, 1e-4)) + 1.05) if R_n > 0 else 0.05
+    phi_r = math.asin(kappa * math.sin(math.radians(soil_phi_c_deg)))
+    # the critical simple-shear ratio of phi_r (von Wolffersdorff 1996): the root of
+    # sqrt2 eta a / 3 = sqrt(1 - eta^2 / 4) - eta / (2 sqrt3)
+    s = math.sin(phi_r)
+    a = math.sqrt(3) * (3 - s) / (2 * math.sqrt(2) * s)
+    lo, hi = 0.0, 2.0
+    for _ in range(100):
+        eta = 0.5 * (lo + hi)
+        f = math.sqrt(2) * eta * a / 3 - (math.sqrt(1 - eta * eta / 4) - eta / (2 * math.sqrt(3)))
+        lo, hi = (lo, eta) if f > 0 else (eta, hi)
+    return ["--wall-friction", f"{eta:.6g}"]
+
+
+def phi_c_deg():
+    for line in open(os.path.join(ROOT, PARAMS)):
+        if line.startswith("phi_c_deg"):
+            return float(line.split("=")[1].split("#")[0])
+    raise SystemExit("phi_c_deg not found")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--iwb", default=os.path.join(ROOT, "build", "iwb"))
+    p.add_argument("--cells", default=",".join(CELLS))
+    a = p.parse_args()
+    os.chdir(ROOT)
+    results = {}
+    for name in a.cells.split(","):
+        pattern, R_n = CELLS[name]
+        runs = sorted(glob.glob(pattern))
+        dem = [q for q in (dem_run(r) for r in runs) if q is not None]
+        if not dem:
+            print(f"{name}: no DEM run", file=sys.stderr)
+            continue
+        sc = scene_of(runs[0])
+        d50 = sc["particles"]["d50_mm"]
+        height = (sc["specimen"]["height_mm"] - sc["plate"].get("clamp_mm", 0.0)) / d50
+        bc = sc["boundary"]
+        e0 = sum(q["e0"] for q in dem) / len(dem)
+        out = os.path.join("data", "column", "runs", name)
+        cmd = [a.iwb, "column", PARAMS, "--e0", f"{e0:.6g}", "--sigma", str(bc["sigma_n_kPa"]),
+               "--bc", bc["type"], "--height-d50", str(height), "--d50", str(d50),
+               "--travel", str(sc["shear"]["displacement_mm"]), "--increments", "500",
+               "--wall-rotation", "free", "-o", out, "--force"] + wall_options(R_n, phi_c_deg())
+        if bc["type"] == "CNS":
+            cmd += ["--stiffness", str(bc["K_kPa_per_mm"])]
+        print(" ".join(cmd), file=sys.stderr)
+        subprocess.run(cmd, check=False, stderr=subprocess.DEVNULL)
+        if not os.path.exists(os.path.join(out, "timeseries.csv")):
+            continue
+        manifest = json.load(open(os.path.join(out, "manifest.json")))
+        cell = {"runs": runs, "used": len(dem), "e0": e0, "status": manifest["status"],
+                "reason": manifest.get("reason", ""), "quantities": {}}
+        results[name] = cell
+        if manifest["status"] != "complete":  # a stopped column's last state is not its 10 mm
+            continue
+        col = column_quantities(out)
+        cell["column"] = col
+        for k, tol in TOL.items():
+            values = [q[k] for q in dem if q[k] is not None]
+            if not values:
+                continue
+            mean, half, n = interval(values)
+            cell["quantities"][k] = {"dem_mean": mean, "dem_half_width": half, "n": n,
+                                     "column": col[k], "error": (col[k] - mean) / abs(mean),
+                                     "tolerance": tol, "verdict": verdict(col[k], mean, half, tol)}
+    json.dump(results, open(os.path.join(HERE, "verdicts.json"), "w"), indent=1)
+    lines = ["| cell | seeds | e0 | quantity | DEM mean +- 95 % t | column | error | tolerance | verdict |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for name, cell in results.items():
+        if cell["status"] != "complete":
+            lines.append(f"| {name} | {cell['used']} | {cell['e0']:.3f} | all | | | | | not judged: the column "
+                         f"stopped ({cell['reason']}) |")
+        for k, q in cell["quantities"].items():
+            lines.append(f"| {name} | {q['n']} | {cell['e0']:.3f} | {k} | {q['dem_mean']:.4g} +- {q['dem_half_width']:.2g} | "
+                         f"{q['column']:.4g} | {100 * q['error']:+.0f} % | {100 * q['tolerance']:.0f} % | {q['verdict']} |")
+    open(os.path.join(HERE, "verdicts.md"), "w").write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
