@@ -182,3 +182,20 @@ TEST_CASE("column: under CNS sigma_n rises by K u_n, under CV the plate stays an
   for (const auto& row : cv.rows) CHECK(row.u_n_mm == 0.0);
   CHECK(cv.rows.back().sigma_n_kPa > 55.0);  // the dilation it is denied raises sigma_n
 }
+
+// A wall that slips: its pull on the soil saturates at tan(delta) sigma_n (smoothly, column.cpp),
+// so once it slides tau / sigma_n sits at tan(delta) from below, and the slip takes up all the
+// wall's travel that the soil above no longer follows.
+TEST_CASE("column: a wall slides under the soil once tau reaches tan(delta) sigma_n", "[column]") {
+  auto s = truth_column(1.0, WallRotation::kFree);
+  s.wall_friction = 0.3;  // below the soil's peak (0.58 on this column without slip)
+  s.travel_mm = 4.0;
+  s.increments = 200;
+  const auto r = run_column(s);
+  REQUIRE(r.status == "complete");
+  const auto& end = r.rows.back();
+  CHECK(end.tau_kPa / end.sigma_n_kPa <= 0.3 + 1e-4);  // to the balance, 1e-4 sigma_n0
+  CHECK(end.tau_kPa / end.sigma_n_kPa > 0.299);
+  const auto& before = r.rows[r.rows.size() / 2];
+  CHECK((end.slip_mm - before.slip_mm) / (end.u_mm - before.u_mm) > 0.99);
+}
