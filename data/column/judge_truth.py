@@ -154,7 +154,8 @@ def main():
     for name in a.cells.split(","):
         pattern, R_n = CELLS[name]
         runs = sorted(glob.glob(pattern))
-        dem = [q for q in (dem_run(r) for r in runs) if q is not None]
+        used = [r for r in runs if dem_run(r) is not None]
+        dem = [dem_run(r) for r in used]
         if not dem:
             print(f"{name}: no DEM run", file=sys.stderr)
             continue
@@ -168,10 +169,13 @@ def main():
                "--bc", bc["type"], "--height-d50", str(height), "--d50", str(d50),
                "--travel", str(sc["shear"]["displacement_mm"]), "--increments", "500",
                "--wall-rotation", "free", "-o", out, "--force"] + wall_options(R_n, phi_c_deg())
+        cmd += ["--dem"] + used  # for `iwb report` to set their profiles beside the column's
         if bc["type"] == "CNS":
             cmd += ["--stiffness", str(bc["K_kPa_per_mm"])]
         print(" ".join(cmd), file=sys.stderr)
-        subprocess.run(cmd, check=False, stderr=subprocess.DEVNULL)
+        run = subprocess.run(cmd, check=False, stderr=subprocess.PIPE, text=True)
+        if run.returncode not in (0, 1):  # 1: the column stopped, its manifest says why
+            raise SystemExit(f"{name}: {run.stderr.strip()}")
         if not os.path.exists(os.path.join(out, "timeseries.csv")):
             continue
         manifest = json.load(open(os.path.join(out, "manifest.json")))

@@ -83,15 +83,12 @@ nlohmann::json spec_json(const ColumnSpec& s) {
 }
 
 ColumnResult run_column_into(const ColumnSpec& spec, const std::filesystem::path& dir, bool force,
-                             const nlohmann::json& inputs,
+                             const nlohmann::json& inputs, const nlohmann::json& dem_runs,
                              const std::function<void(long, long)>& progress) {
   require_spec(spec);  // before anything is written
   io::prepare_run_directory(dir, {"column"}, force);
-  nlohmann::json m = {{"kind", "column"},
-                      {"status", "running"},
-                      {"spec", spec_json(spec)},
-                      {"inputs", inputs},
-                      {"started", io::utc_timestamp()}};
+  nlohmann::json m = {{"kind", "column"}, {"status", "running"},  {"spec", spec_json(spec)},
+                      {"inputs", inputs}, {"dem_runs", dem_runs}, {"started", io::utc_timestamp()}};
   io::write_manifest(dir, m);
   const auto t0 = std::chrono::steady_clock::now();
   const auto r = run_column(spec, progress);

@@ -13,9 +13,10 @@ namespace iwb::column {
 nlohmann::json spec_json(const ColumnSpec& spec);
 
 // Claims `dir` for a column run (refusing a foreign or earlier one unless `force`), runs the
-// column and writes its files; the manifest says "running" while it runs.
+// column and writes its files; the manifest says "running" while it runs and names `dem_runs`
+// (paths relative to `dir`), the DEM runs the column is set beside.
 ColumnResult run_column_into(const ColumnSpec& spec, const std::filesystem::path& dir, bool force,
-                             const nlohmann::json& inputs,
+                             const nlohmann::json& inputs, const nlohmann::json& dem_runs,
                              const std::function<void(long, long)>& progress = {});
 
 }  // namespace iwb::column

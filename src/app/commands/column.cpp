@@ -19,6 +19,7 @@ namespace {
 
 struct ColumnOptions {
   std::string params, out, bc = "CNL", wall_rotation = "free";
+  std::vector<std::string> dem;
   double height_d50 = 14.0, d50_mm = 2.0, elements_per_d50 = 4.0, e0 = 0.0, sigma_kPa = 50.0;
   double stiffness = 0.0, wall_friction = std::numeric_limits<double>::infinity();
   double imperfection = 0.0, travel_mm = 10.0;
@@ -61,8 +62,15 @@ int run_column_command(const ColumnOptions& o, const CommandContext& context,
   const auto spec = column_spec(o, command);
   const auto dir =
       o.out.empty() ? std::filesystem::path("runs") / "column" : std::filesystem::path(o.out);
-  const nlohmann::json inputs = {{"params", o.params}, {"command_line", context.command_line}};
-  const auto r = column::run_column_into(spec, dir, o.force, inputs, increment_progress());
+  nlohmann::json inputs = {{"params", o.params}, {"command_line", context.command_line}};
+  // the DEM runs the column is for, relative to its directory so that a committed pair moves
+  // together; `iwb report` sets their profiles beside the column's
+  nlohmann::json dem = nlohmann::json::array();
+  for (const auto& d : o.dem)
+    dem.push_back(
+        std::filesystem::relative(std::filesystem::absolute(d), std::filesystem::absolute(dir))
+            .generic_string());
+  const auto r = column::run_column_into(spec, dir, o.force, inputs, dem, increment_progress());
   const auto& end = r.rows.back();
   const auto band = column::band_widths(r.profiles.back());
   fmt::print(
@@ -125,6 +133,11 @@ void add_column_command(CLI::App& app, CommandList& commands) {
       ->check(number_in(positive(1000.0), "mm"));
   column->add_option("--increments", o->increments, "increments of the travel (default 1000)")
       ->check(whole_in(1, 10000000));
+  column
+      ->add_option("--dem", o->dem,
+                   "DEM run directories of the same cell, for `iwb report` to set their "
+                   "profiles and curves beside the column's")
+      ->check(input_directory());
   column->add_flag(
       "--plain", o->plain,
       "without the polar terms (no couple stress, the grains turn with the continuum)");

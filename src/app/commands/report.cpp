@@ -32,12 +32,13 @@ void add_report_command(CLI::App& app, CommandList& commands) {
   auto* report = app.add_subcommand(
       "report",
       "Write one self-contained HTML report (inline SVG figures, opens offline) from comparison "
-      "directories of `iwb compare`; figures also as SVG and PNG with their data and gnuplot "
-      "scripts.");
+      "directories of `iwb compare` and run directories of `iwb column` (their profiles beside "
+      "the DEM runs given to the column with --dem); figures also as SVG and PNG with their data "
+      "and gnuplot scripts.");
   report
       ->add_option("compare_dirs", o->compare_dirs,
                    "directories of `iwb compare`, or the OUT of `iwb compare --runs` "
-                   "(its verdicts come first)")
+                   "(its verdicts come first), or runs of `iwb column`")
       ->required()
       ->check(input_path());
   report->add_option("-o,--out", o->out, "HTML file")->check(output_file())->capture_default_str();

@@ -9,6 +9,7 @@
 #include "common/errors.hpp"
 #include "comparison/presentation/band_figures.hpp"
 #include "comparison/presentation/cell_glance.hpp"
+#include "comparison/presentation/column_section.hpp"
 #include "comparison/presentation/cyclic_figures.hpp"
 #include "comparison/presentation/figure.hpp"
 #include "comparison/presentation/html.hpp"
@@ -272,7 +273,8 @@ bool set_file(const fs::path& p) {
 
 struct ReportInputs {
   std::vector<fs::path> compare_dirs;
-  std::vector<fs::path> hypotheses;  // hypotheses.json of the sets the directories came from
+  std::vector<fs::path> column_runs;  // `iwb column` run directories (column_section.hpp)
+  std::vector<fs::path> hypotheses;   // hypotheses.json of the sets the directories came from
 };
 
 // Comparison directories as given, a set directory (OUT of `iwb compare --runs`) as its runs,
@@ -287,7 +289,9 @@ ReportInputs resolve(const std::vector<fs::path>& paths) {
   for (const auto& given : paths) {
     auto p = given.lexically_normal();
     if (p.filename().empty()) p = p.parent_path();  // "OUT/run/": its parent is OUT
-    if (fs::is_directory(p) && fs::exists(p / "compare.json")) {
+    if (is_column_run(p)) {
+      add_unique(in.column_runs, p);
+    } else if (fs::is_directory(p) && fs::exists(p / "compare.json")) {
       add_unique(in.compare_dirs, p);
       if (fs::exists(p.parent_path() / "hypotheses.json"))
         add_unique(in.hypotheses, p.parent_path() / "hypotheses.json");
@@ -300,8 +304,8 @@ ReportInputs resolve(const std::vector<fs::path>& paths) {
       add_unique(in.hypotheses, p.parent_path() / "hypotheses.json");
     } else {
       throw InputError(
-          fmt::format("{}: neither a directory of `iwb compare` (compare.json) nor a set of "
-                      "`iwb compare --runs` (hypotheses.json)",
+          fmt::format("{}: neither a directory of `iwb compare` (compare.json), a set of "
+                      "`iwb compare --runs` (hypotheses.json) nor a run of `iwb column`",
                       p.string()));
     }
   }
@@ -597,9 +601,10 @@ std::string models_beside(const std::vector<LoadedComparison>& comparisons) {
 std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs::path& html) {
   io::require_file_destination(html, "-o");
   // every input read and checked before anything is written
-  const auto [compare_dirs, hypotheses] = resolve(paths);
+  const auto [compare_dirs, column_runs, hypotheses] = resolve(paths);
   std::vector<LoadedComparison> comparisons;
   for (const auto& dir : compare_dirs) comparisons.push_back(load_comparison(dir));
+  for (const auto& run : column_runs) require_column_run(run);
   std::vector<nlohmann::json> sets;
   for (const auto& h : hypotheses) sets.push_back(io::read_json_file(h));
 
@@ -608,14 +613,24 @@ std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs:
   std::vector<fs::path> figures;
   std::vector<nlohmann::json> cmps;
   for (const auto& c : comparisons) cmps.push_back(c.cmp);
-  std::string body = "<section><h2>Verdicts at a glance: one row per cell</h2>\n" +
-                     cell_glance_html(cell_rows(cmps)) +
-                     "</section>\n<section><h2>Runs at a glance</h2>\n" +
-                     glance_table(comparisons) + "</section>\n" + models_beside(comparisons);
+  std::string body;
+  if (!comparisons.empty())
+    body = "<section><h2>Verdicts at a glance: one row per cell</h2>\n" +
+           cell_glance_html(cell_rows(cmps)) + "</section>\n<section><h2>Runs at a glance</h2>\n" +
+           glance_table(comparisons) + "</section>\n" + models_beside(comparisons);
   for (std::size_t i = 0; i < hypotheses.size(); ++i)
     body += hypotheses_section(hypotheses[i], sets[i]);
   for (std::size_t k = 0; k < comparisons.size(); ++k) {
     auto section = comparison_section(comparisons[k], k, files, html);
+    body += section.html;
+    for (const auto& svg : section.figures)
+      figures.push_back(files.final_path() / fs::relative(svg, files.path()));
+  }
+  for (std::size_t k = 0; k < column_runs.size(); ++k) {
+    const auto name = fmt::format("column-{}-{}", k, column_runs[k].filename().string());
+    const auto section =
+        column_section(column_runs[k], files.path() / name,
+                       fs::relative(files.final_path() / name, html.parent_path()).string());
     body += section.html;
     for (const auto& svg : section.figures)
       figures.push_back(files.final_path() / fs::relative(svg, files.path()));

@@ -1,0 +1,181 @@
+#include "comparison/presentation/column_section.hpp"
+
+#include <fmt/core.h>
+
+#include <nlohmann/json.hpp>
+
+#include "common/errors.hpp"
+#include "comparison/presentation/figure.hpp"
+#include "comparison/presentation/html.hpp"
+#include "io/csv_table.hpp"
+#include "io/json_file.hpp"
+
+namespace iwb::comparison {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The rows of a profiles.csv at its last window.
+struct LastWindow {
+  double u_mm;
+  std::vector<double> z, vx, porosity_or_e;
+};
+
+LastWindow last_window(const fs::path& csv, const std::string& third) {
+  const auto t = io::read_csv_table(csv);
+  const auto w = t.values("u_x_mm_window", csv.string());
+  const auto z = t.values("z_over_d50", csv.string());
+  const auto vx = t.values("vx_over_vwall", csv.string());
+  const auto c = t.values(third, csv.string());
+  LastWindow out{w.empty() ? 0.0 : w.back(), {}, {}, {}};
+  for (std::size_t k = 0; k < w.size(); ++k)
+    if (w[k] == out.u_mm) {
+      out.z.push_back(z[k]);
+      out.vx.push_back(vx[k]);
+      out.porosity_or_e.push_back(c[k]);
+    }
+  return out;
+}
+
+std::vector<double> void_ratios(const std::vector<double>& porosity) {
+  std::vector<double> e;
+  for (double n : porosity) e.push_back(n / (1.0 - n));
+  return e;
+}
+
+// A run's time series as (u_x, y) for a y of its columns (tau/sigma_n when `ratio`).
+PlotCurve series(const fs::path& csv, const std::string& title, const std::string& y, bool ratio,
+                 const std::string& style) {
+  const auto t = io::read_csv_table(csv);
+  PlotCurve c{title, t.values("u_x_mm", csv.string()), {}, style};
+  if (ratio) {
+    const auto tau = t.values("tau_kPa", csv.string());
+    const auto sigma = t.values("sigma_n_kPa", csv.string());
+    for (std::size_t k = 0; k < tau.size(); ++k) c.y.push_back(tau[k] / sigma[k]);
+  } else {
+    c.y = t.values(y, csv.string());
+  }
+  return c;
+}
+
+std::vector<fs::path> dem_runs(const nlohmann::json& manifest, const fs::path& run) {
+  std::vector<fs::path> runs;
+  if (!manifest.contains("dem_runs")) return runs;
+  for (const auto& r : manifest["dem_runs"]) {
+    const fs::path p = (run / r.get<std::string>()).lexically_normal();
+    if (!fs::exists(p / "profiles.csv") || !fs::exists(p / "timeseries.csv"))
+      throw InputError(
+          fmt::format("{}: the DEM run {} its manifest names has no profiles.csv "
+                      "and timeseries.csv",
+                      run.string(), p.string()));
+    runs.push_back(p);
+  }
+  return runs;
+}
+
+std::vector<Figure> figures(const fs::path& run, const std::vector<fs::path>& dems) {
+  const auto col = last_window(run / "profiles.csv", "e");
+  std::vector<PlotCurve> v, e, friction, u_n;
+  const std::string dem_style = "with lines lw 1 dt 2";
+  const double top = col.z.back() + col.z.front();  // the column's height in d50
+  for (const auto& d : dems) {
+    const auto w = last_window(d / "profiles.csv", "porosity");
+    const auto name = "DEM " + d.filename().string();
+    // the DEM's bins over the column's height, those whose grains' centres thin out at the wall
+    // (solid fraction below 0.4, e above 1.5) left out of the void ratio
+    PlotCurve vx{name, {}, {}, dem_style}, ex{name, {}, {}, dem_style};
+    const auto ew = void_ratios(w.porosity_or_e);
+    for (std::size_t k = 0; k < w.z.size(); ++k) {
+      if (w.z[k] > top) continue;
+      vx.x.push_back(w.vx[k]);
+      vx.y.push_back(w.z[k]);
+      if (ew[k] > 1.5) continue;
+      ex.x.push_back(ew[k]);
+      ex.y.push_back(w.z[k]);
+    }
+    v.push_back(vx);
+    e.push_back(ex);
+    friction.push_back(series(d / "timeseries.csv", name, "", true, dem_style));
+    u_n.push_back(series(d / "timeseries.csv", name, "u_n_mm", false, dem_style));
+  }
+  const auto label = fmt::format("column at {:.3g} mm", col.u_mm);
+  v.push_back({label, col.vx, col.z, kReferenceStyle});
+  e.push_back({label, col.porosity_or_e, col.z, kReferenceStyle});
+  friction.push_back(series(run / "timeseries.csv", "column", "", true, kReferenceStyle));
+  u_n.push_back(series(run / "timeseries.csv", "column", "u_n_mm", false, kReferenceStyle));
+  const auto t = io::read_csv_table(run / "profiles.csv");
+  std::vector<PlotCurve> stresses;
+  const auto w = t.values("u_x_mm_window");
+  std::vector<double> z, tau_zx, tau_xz, m;
+  const auto all_z = t.values("z_over_d50"), zx = t.values("tau_zx_kPa"),
+             xz = t.values("tau_xz_kPa"), mm = t.values("m_kPa_mm");
+  for (std::size_t k = 0; k < w.size(); ++k)
+    if (w[k] == col.u_mm) {
+      z.push_back(all_z[k]);
+      tau_zx.push_back(zx[k]);
+      tau_xz.push_back(xz[k]);
+      m.push_back(mm[k]);
+    }
+  stresses = {{"tau_zx (on horizontal planes)", tau_zx, z},
+              {"tau_xz (on vertical planes)", tau_xz, z},
+              {"m (kPa mm)", m, z}};
+  return {curves_figure("column_velocity", "Velocity over the height at the end", "v_x / v_wall",
+                        "z / d50", v),
+          curves_figure("column_void_ratio", "Void ratio over the height at the end", "e",
+                        "z / d50", e),
+          curves_figure("column_stresses", "The column's shear and couple stresses at the end",
+                        "kPa, kPa mm", "z / d50", stresses),
+          curves_figure("column_friction", "tau / sigma_n along the travel", "u_x (mm)",
+                        "tau / sigma_n", friction),
+          curves_figure("column_u_n", "u_n along the travel", "u_x (mm)", "u_n (mm)", u_n)};
+}
+
+}  // namespace
+
+bool is_column_run(const fs::path& dir) {
+  if (!fs::is_directory(dir) || !fs::exists(dir / "manifest.json")) return false;
+  const auto m = io::read_json_file(dir / "manifest.json");
+  return m.value("kind", "") == "column";
+}
+
+void require_column_run(const fs::path& run) {
+  dem_runs(io::read_json_file(run / "manifest.json"), run);
+  for (const char* f : {"profiles.csv", "timeseries.csv"})
+    if (!fs::exists(run / f))
+      throw InputError(fmt::format("{}: a column run without {} (stopped before it was written?)",
+                                   run.string(), f));
+}
+
+ColumnSection column_section(const fs::path& run, const fs::path& fig_dir,
+                             const std::string& data_prefix) {
+  const auto manifest = io::read_json_file(run / "manifest.json");
+  const auto dems = dem_runs(manifest, run);
+  const auto& spec = manifest["spec"];
+  ColumnSection out;
+  out.html = fmt::format(
+      "<section><h2>Micro-polar column {}</h2>\n<p>{} column of {:.3g} mm in {} elements, d50 "
+      "{:g} mm, e0 {:.3f}, sigma_n0 {:g} kPa, wall rotation {}, wall friction {}; {}. Beside it "
+      "{} DEM run(s) (dashed; their last window of profiles.csv over the column's height, z from "
+      "the wall's mean height; their void ratio without the bins where the grains' centres thin "
+      "out at the wall, e above 1.5).</p>\n<div "
+      "class=\"figures\">\n",
+      escape_html(run.string()), spec["polar"].get<bool>() ? "A micro-polar" : "A plain",
+      spec["height_mm"].get<double>(), spec["elements"].get<int>(), spec["d50_mm"].get<double>(),
+      spec["e0"].get<double>(), spec["sigma_n0_kPa"].get<double>(),
+      escape_html(spec["wall_rotation"].get<std::string>()),
+      escape_html(spec["wall_friction"].dump()), escape_html(manifest.value("status", "")),
+      dems.size());
+  fs::create_directories(fig_dir);
+  for (const auto& f : figures(run, dems)) {
+    const auto svg = draw(f, fig_dir);
+    out.figures.push_back(svg);
+    out.html += fmt::format("<figure>{}<figcaption>{} (data: {}/{}.csv)</figcaption></figure>\n",
+                            inline_svg(svg), escape_html(f.title), escape_html(data_prefix),
+                            escape_html(f.name));
+  }
+  out.html += "</div></section>\n";
+  return out;
+}
+
+}  // namespace iwb::comparison
