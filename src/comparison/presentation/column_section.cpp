@@ -74,9 +74,32 @@ std::vector<fs::path> dem_runs(const nlohmann::json& manifest, const fs::path& r
   return runs;
 }
 
+// A DEM run's grain spin over the height from its coarse-grained band profile (fields/,
+// the last snapshot), scaled as the column's (w d50 / v_wall) and turned into the column's sense:
+// the column's w turns from x1 to x2 (up), the DEM's rotation about y from z to x, so w = -omega_y.
+// Empty where the run has no coarse-grained fields.
+PlotCurve dem_spin(const fs::path& dem, const std::string& title, double top,
+                   const std::string& style) {
+  PlotCurve c{title, {}, {}, style};
+  const fs::path csv = dem / "fields" / "band_profile.csv";
+  if (!fs::exists(csv)) return c;
+  const auto scene = io::read_json_file(dem / "manifest.json")["scene"]["resolved"];
+  const double scale =
+      scene["particles"]["d50_mm"].get<double>() / scene["shear"]["velocity_mm_s"].get<double>();
+  const auto t = io::read_csv_table(csv);
+  const auto z = t.values("z_over_d50", csv.string());
+  const auto spin = t.values("grain_spin_y_rad_s", csv.string());
+  for (std::size_t k = 0; k < z.size(); ++k)
+    if (z[k] >= 0.0 && z[k] <= top) {
+      c.x.push_back(-spin[k] * scale);
+      c.y.push_back(z[k]);
+    }
+  return c;
+}
+
 std::vector<Figure> figures(const fs::path& run, const std::vector<fs::path>& dems) {
   const auto col = last_window(run / "profiles.csv", "e");
-  std::vector<PlotCurve> v, e, friction, u_n;
+  std::vector<PlotCurve> v, e, friction, u_n, spin;
   const std::string dem_style = "with lines lw 1 dt 2";
   const double top = col.z.back() + col.z.front();  // the column's height in d50
   for (const auto& d : dems) {
@@ -96,11 +119,14 @@ std::vector<Figure> figures(const fs::path& run, const std::vector<fs::path>& de
     }
     v.push_back(vx);
     e.push_back(ex);
+    if (auto c = dem_spin(d, name, top, dem_style); !c.x.empty()) spin.push_back(c);
     friction.push_back(series(d / "timeseries.csv", name, "", true, dem_style));
     u_n.push_back(series(d / "timeseries.csv", name, "u_n_mm", false, dem_style));
   }
   const auto label = fmt::format("column at {:.3g} mm", col.u_mm);
   v.push_back({label, col.vx, col.z, kReferenceStyle});
+  spin.push_back({label, last_window(run / "profiles.csv", "spin_d50_over_vwall").porosity_or_e,
+                  col.z, kReferenceStyle});
   e.push_back({label, col.porosity_or_e, col.z, kReferenceStyle});
   friction.push_back(series(run / "timeseries.csv", "column", "", true, kReferenceStyle));
   u_n.push_back(series(run / "timeseries.csv", "column", "u_n_mm", false, kReferenceStyle));
@@ -124,6 +150,9 @@ std::vector<Figure> figures(const fs::path& run, const std::vector<fs::path>& de
                         "z / d50", v),
           curves_figure("column_void_ratio", "Void ratio over the height at the end", "e",
                         "z / d50", e),
+          curves_figure("column_spin",
+                        "Grain spin over the height at the end (the DEM's at its last snapshot)",
+                        "w d50 / v_wall", "z / d50", spin),
           curves_figure("column_stresses", "The column's shear and couple stresses at the end",
                         "kPa, kPa mm", "z / d50", stresses),
           curves_figure("column_friction", "tau / sigma_n along the travel", "u_x (mm)",
