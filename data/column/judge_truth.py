@@ -9,11 +9,10 @@ interval), or not resolved (the interval straddles the tolerance's edge).
 
 Each cell's column runs once (`iwb column`, 4 elements per d50, 500 increments) from the seeds'
 mean e at the start of shear, into data/column/runs/<cell>; its files are kept (they are small).
-The wall by the column's rule (src/column/README.md), stated before the judging and read from
-R_n alone, never from the DEM's own wall friction: free rotation on every wall; no slip where
-R_n >= 0.5 (the DEM's trapped layer moves with the wall); below it the seed's kappa_r from R_n
-(eq. 5.35, 0.05 on the flat wall) and slip at the critical simple-shear ratio of phi_r,
-sin phi_r = kappa_r sin phi_c. Runs that sheared at the plate or split are left out.
+The column takes the cell's scene (`--scene`: its geometry, boundary, travel and the wall's
+condition by the rule of src/column/README.md, stated before the judging and read from R_n alone,
+never from the DEM's own wall friction) and its runs (`--dem`: e0 their mean at the start, and
+`iwb report` draws them beside it). Runs that sheared at the plate or split are left out.
 Writes data/column/verdicts.md and verdicts.json."""
 import argparse
 import csv
@@ -51,11 +50,6 @@ CELLS = {
     "d1_rn1_cnl50": ("data/reference/truth2_d50/runs/d1_sawtooth-4-1_s*_cnl", 1.0),
     "d1_rn1_cns100": ("data/reference/truth2_d50/runs/d1_sawtooth-4-1_s*_cns-100", 1.0),
 }
-
-
-def scene_of(run):
-    m = json.load(open(os.path.join(run, "manifest.json")))
-    return m["scene"]["resolved"]
 
 
 def dem_run(run):
@@ -120,30 +114,6 @@ def column_quantities(out):
     }
 
 
-def wall_options(R_n, soil_phi_c_deg):
-    if R_n >= 0.5:
-        return []
-    kappa = min(1.0, 0.25 * math.log10(max(R_n, 1e-4)) + 1.05) if R_n > 0 else 0.05
-    phi_r = math.asin(kappa * math.sin(math.radians(soil_phi_c_deg)))
-    # the critical simple-shear ratio of phi_r (von Wolffersdorff 1996): the root of
-    # sqrt2 eta a / 3 = sqrt(1 - eta^2 / 4) - eta / (2 sqrt3)
-    s = math.sin(phi_r)
-    a = math.sqrt(3) * (3 - s) / (2 * math.sqrt(2) * s)
-    lo, hi = 0.0, 2.0
-    for _ in range(100):
-        eta = 0.5 * (lo + hi)
-        f = math.sqrt(2) * eta * a / 3 - (math.sqrt(1 - eta * eta / 4) - eta / (2 * math.sqrt(3)))
-        lo, hi = (lo, eta) if f > 0 else (eta, hi)
-    return ["--wall-friction", f"{eta:.6g}"]
-
-
-def phi_c_deg():
-    for line in open(os.path.join(ROOT, PARAMS)):
-        if line.startswith("phi_c_deg"):
-            return float(line.split("=")[1].split("#")[0])
-    raise SystemExit("phi_c_deg not found")
-
-
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--iwb", default=os.path.join(ROOT, "build", "iwb"))
@@ -159,19 +129,16 @@ def main():
         if not dem:
             print(f"{name}: no DEM run", file=sys.stderr)
             continue
-        sc = scene_of(runs[0])
-        d50 = sc["particles"]["d50_mm"]
-        height = (sc["specimen"]["height_mm"] - sc["plate"].get("clamp_mm", 0.0)) / d50
-        bc = sc["boundary"]
+        # the scene of the cell's first run (its seeds differ only in the seed), in the
+        # campaign's scenes/ beside runs/
+        scene = os.path.join(os.path.dirname(os.path.dirname(runs[0])), "scenes",
+                             os.path.basename(runs[0]) + ".toml")
         e0 = sum(q["e0"] for q in dem) / len(dem)
         out = os.path.join("data", "column", "runs", name)
-        cmd = [a.iwb, "column", PARAMS, "--e0", f"{e0:.6g}", "--sigma", str(bc["sigma_n_kPa"]),
-               "--bc", bc["type"], "--height-d50", str(height), "--d50", str(d50),
-               "--travel", str(sc["shear"]["displacement_mm"]), "--increments", "500",
-               "--wall-rotation", "free", "-o", out, "--force"] + wall_options(R_n, phi_c_deg())
-        cmd += ["--dem"] + used  # for `iwb report` to set their profiles beside the column's
-        if bc["type"] == "CNS":
-            cmd += ["--stiffness", str(bc["K_kPa_per_mm"])]
+        # iwb column takes the geometry, boundary, travel and the wall's rule from the scene and
+        # e0 from the runs it is set beside (`iwb report` draws them with it)
+        cmd = [a.iwb, "column", PARAMS, "--scene", scene, "--increments", "500", "-o", out,
+               "--force", "--dem"] + used
         print(" ".join(cmd), file=sys.stderr)
         run = subprocess.run(cmd, check=False, stderr=subprocess.PIPE, text=True)
         if run.returncode not in (0, 1):  # 1: the column stopped, its manifest says why

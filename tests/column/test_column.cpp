@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "column/column.hpp"
+#include "column/column_scene.hpp"
 #include "io/parameter_file.hpp"
 
 using namespace iwb;
@@ -198,4 +199,36 @@ TEST_CASE("column: a wall slides under the soil once tau reaches tan(delta) sigm
   CHECK(end.tau_kPa / end.sigma_n_kPa > 0.299);
   const auto& before = r.rows[r.rows.size() / 2];
   CHECK((end.slip_mm - before.slip_mm) / (end.u_mm - before.u_mm) > 0.99);
+}
+
+// The wall's rule from R_n (column_scene.hpp), against numbers computed by hand: eq. 5.35 gives
+// kappa_r = 0.25 log10(R_n) + 1.05 = 0.8 at R_n 0.1 and 0.8995 at 0.25; with phi_c 30 deg, sin
+// phi_r = kappa_r / 2, and the critical simple-shear ratio of phi_r (the root of sqrt2 eta a / 3 =
+// sqrt(1 - eta^2 / 4) - eta / (2 sqrt3), a of phi_r; bisected outside the code) is 0.45004 and
+// 0.50265.
+TEST_CASE("column: a scene's wall slips at the seed's kappa_r below R_n 0.5 and sticks from it",
+          "[column]") {
+  const double phi_c = 30.0 * M_PI / 180.0;
+  CHECK(std::isinf(wall_from_roughness(0.5, phi_c).friction));
+  CHECK(std::isinf(wall_from_roughness(1.0, phi_c).friction));
+  CHECK(wall_from_roughness(0.1, phi_c).friction == Approx(0.45004).epsilon(1e-4));
+  CHECK(wall_from_roughness(0.25, phi_c).friction == Approx(0.50265).epsilon(1e-4));
+  CHECK(wall_from_roughness(0.1, phi_c).rotation == WallRotation::kFree);
+}
+
+// The truth scene as a column: 40 mm of specimen less the 12 mm clamped under the plate, 2 mm
+// grains, CNL 50 kPa, 10 mm of travel, its sawtooth of R_n 0.5 without slip.
+TEST_CASE("column: a DEM scene gives the column its height, grains, plate, travel and wall",
+          "[column]") {
+  ColumnSpec s;
+  s.soil = truth_grains();
+  const auto c = on_scene(s, dem::load_scene("data/convergence/truth_clamped/scenes/s1.toml"), 4.0);
+  CHECK(c.height_mm == Approx(28.0));
+  CHECK(c.d50_mm == Approx(2.0));
+  CHECK(c.elements == 56);
+  CHECK(c.sigma_n0_kPa == Approx(50.0));
+  CHECK(c.top == TopBoundary::kCNL);
+  CHECK(c.travel_mm == Approx(10.0));
+  CHECK(std::isinf(c.wall_friction));
+  CHECK(start_void_ratio({"data/convergence/truth_clamped/runs/s1"}) > 0.6);
 }

@@ -10,6 +10,7 @@
 #include "app/option_checks.hpp"
 #include "app/progress.hpp"
 #include "column/column_output.hpp"
+#include "column/column_scene.hpp"
 #include "common/errors.hpp"
 #include "io/parameter_file.hpp"
 
@@ -18,7 +19,7 @@ namespace iwb::app {
 namespace {
 
 struct ColumnOptions {
-  std::string params, out, bc = "CNL", wall_rotation = "free";
+  std::string params, out, scene, bc = "CNL", wall_rotation = "free";
   std::vector<std::string> dem;
   double height_d50 = 14.0, d50_mm = 2.0, elements_per_d50 = 4.0, e0 = 0.0, sigma_kPa = 50.0;
   double stiffness = 0.0, wall_friction = std::numeric_limits<double>::infinity();
@@ -26,6 +27,16 @@ struct ColumnOptions {
   int increments = 1000;
   bool plain = false, force = false;
 };
+
+// The start: --e0, else the DEM runs' mean void ratio at the start of shear.
+double start_e0(const ColumnOptions& o) {
+  if (o.e0 > 0.0) return o.e0;
+  if (o.dem.empty())
+    throw InputError(
+        "--e0: the void ratio at the start of shear is needed (or --dem RUN_DIR..., "
+        "whose specimens' mean at the start is taken)");
+  return column::start_void_ratio({o.dem.begin(), o.dem.end()});
+}
 
 column::ColumnSpec column_spec(const ColumnOptions& o, const CLI::App& command) {
   const auto tables = io::load_parameter_file(o.params);
@@ -37,12 +48,21 @@ column::ColumnSpec column_spec(const ColumnOptions& o, const CLI::App& command) 
                     o.params));
   if (o.bc != "CNS") refuse_given(command, {"--stiffness"}, "applies only to --bc CNS");
   if (o.plain) refuse_given(command, {"--wall-rotation"}, "a plain column has no rotations");
+  if (!o.scene.empty())
+    refuse_given(command,
+                 {"--sigma", "--bc", "--stiffness", "--height-d50", "--d50", "--travel",
+                  "--wall-friction", "--wall-rotation"},
+                 "--scene gives it (the scene's boundary, geometry, travel and wall)");
   column::ColumnSpec s;
   s.soil = models::HypoplasticParameters::from(it->second, o.params + " [hypoplastic]");
+  s.e0 = start_e0(o);
+  s.polar = !o.plain;
+  s.imperfection = o.imperfection;
+  s.increments = o.increments;
+  if (!o.scene.empty()) return column::on_scene(s, dem::load_scene(o.scene), o.elements_per_d50);
   s.d50_mm = o.d50_mm;
   s.height_mm = o.height_d50 * o.d50_mm;
   s.elements = std::max(2, int(std::lround(o.height_d50 * o.elements_per_d50)));
-  s.e0 = o.e0;
   s.sigma_n0_kPa = o.sigma_kPa;
   s.top = o.bc == "CNS" ? column::TopBoundary::kCNS
                         : (o.bc == "CV" ? column::TopBoundary::kCV : column::TopBoundary::kCNL);
@@ -50,10 +70,7 @@ column::ColumnSpec column_spec(const ColumnOptions& o, const CLI::App& command) 
   s.wall_rotation =
       o.wall_rotation == "free" ? column::WallRotation::kFree : column::WallRotation::kFixed;
   s.wall_friction = o.wall_friction;
-  s.polar = !o.plain;
-  s.imperfection = o.imperfection;
   s.travel_mm = o.travel_mm;
-  s.increments = o.increments;
   return s;
 }
 
@@ -94,13 +111,23 @@ void add_column_command(CLI::App& app, CommandList& commands) {
       "ratio, stresses and couple stress over the height at five windows, as a DEM run's "
       "profiles.csv), band.csv (the band's width along the travel) and manifest.json "
       "(src/column/README.md).\n\nExample: iwb column data/params/truth_grains_epsd2.toml "
-      "--e0 0.64 -o runs/column");
+      "--e0 0.64 -o runs/column\n         iwb column data/params/truth_grains_epsd2.toml --scene "
+      "data/convergence/truth_clamped/scenes/s1.toml --dem "
+      "data/convergence/truth_clamped/runs/s{1,2} -o runs/column");
   column->add_option("params", o->params, "parameter file with a [hypoplastic] table")
       ->required()
       ->check(input_file());
-  column->add_option("--e0", o->e0, "void ratio at the start of shear (a DEM run's e_band at 0)")
-      ->required()
+  column
+      ->add_option("--e0", o->e0,
+                   "void ratio at the start of shear (default with --dem: the mean of the DEM "
+                   "runs' specimens at their start)")
       ->check(number_in(positive(10.0)));
+  column
+      ->add_option("--scene", o->scene,
+                   "a DEM scene: the column takes its d50, its height below the plate's clamp, "
+                   "the plate's boundary, the travel, and the wall's condition from its R_n (no "
+                   "slip from R_n 0.5, else slip at the seed's kappa_r; src/column/README.md)")
+      ->check(input_file());
   column->add_option("--sigma", o->sigma_kPa, "sigma_n0 (kPa, default 50)")
       ->check(number_in(positive(1e5), "kPa"));
   column->add_option("--bc", o->bc, "the plate: CNL (default), CNS or CV")
