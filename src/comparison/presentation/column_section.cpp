@@ -97,9 +97,24 @@ PlotCurve dem_spin(const fs::path& dem, const std::string& title, double top,
   return c;
 }
 
+// A run's band width (FWHM of the shear rate, d50) along the travel: the column's band.csv, or a
+// DEM run's coarse-grained fields/band.csv at its snapshots after the start. Empty where absent.
+PlotCurve band_along(const fs::path& csv, const std::string& title, const std::string& style) {
+  PlotCurve c{title, {}, {}, style};
+  if (!fs::exists(csv)) return c;
+  const auto t = io::read_csv_table(csv);
+  const auto u = t.values("u_x_mm", csv.string()), w = t.values("band_fwhm_d50", csv.string());
+  for (std::size_t k = 0; k < u.size(); ++k)
+    if (u[k] > 0.0) {
+      c.x.push_back(u[k]);
+      c.y.push_back(w[k]);
+    }
+  return c;
+}
+
 std::vector<Figure> figures(const fs::path& run, const std::vector<fs::path>& dems) {
   const auto col = last_window(run / "profiles.csv", "e");
-  std::vector<PlotCurve> v, e, friction, u_n, spin;
+  std::vector<PlotCurve> v, e, friction, u_n, spin, band;
   const std::string dem_style = "with lines lw 1 dt 2";
   const double top = col.z.back() + col.z.front();  // the column's height in d50
   for (const auto& d : dems) {
@@ -120,6 +135,9 @@ std::vector<Figure> figures(const fs::path& run, const std::vector<fs::path>& de
     v.push_back(vx);
     e.push_back(ex);
     if (auto c = dem_spin(d, name, top, dem_style); !c.x.empty()) spin.push_back(c);
+    if (auto c = band_along(d / "fields" / "band.csv", name, "with linespoints lw 1 dt 2");
+        !c.x.empty())
+      band.push_back(c);
     friction.push_back(series(d / "timeseries.csv", name, "", true, dem_style));
     u_n.push_back(series(d / "timeseries.csv", name, "u_n_mm", false, dem_style));
   }
@@ -129,6 +147,7 @@ std::vector<Figure> figures(const fs::path& run, const std::vector<fs::path>& de
                   col.z, kReferenceStyle});
   e.push_back({label, col.porosity_or_e, col.z, kReferenceStyle});
   friction.push_back(series(run / "timeseries.csv", "column", "", true, kReferenceStyle));
+  band.push_back(band_along(run / "band.csv", "column", "with linespoints lw 3 lc rgb '#000000'"));
   u_n.push_back(series(run / "timeseries.csv", "column", "u_n_mm", false, kReferenceStyle));
   const auto t = io::read_csv_table(run / "profiles.csv");
   std::vector<PlotCurve> stresses;
@@ -155,6 +174,8 @@ std::vector<Figure> figures(const fs::path& run, const std::vector<fs::path>& de
                         "w d50 / v_wall", "z / d50", spin),
           curves_figure("column_stresses", "The column's shear and couple stresses at the end",
                         "kPa, kPa mm", "z / d50", stresses),
+          curves_figure("column_band", "The band's width along the travel (FWHM of the shear rate)",
+                        "u_x (mm)", "band FWHM / d50", band),
           curves_figure("column_friction", "tau / sigma_n along the travel", "u_x (mm)",
                         "tau / sigma_n", friction),
           curves_figure("column_u_n", "u_n along the travel", "u_x (mm)", "u_n (mm)", u_n)};

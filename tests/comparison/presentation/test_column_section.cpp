@@ -58,7 +58,7 @@ TEST_CASE("report: a column's section sets its profiles beside the DEM runs it n
   REQUIRE(r.status == "complete");
   const fs::path html = kColumnWork / "report" / "report.html";
   const auto figures = comparison::write_report({run}, html);
-  CHECK(figures.size() == 6);
+  CHECK(figures.size() == 7);
   const fs::path dir = kColumnWork / "report" / "report_files" / "column-0-column";
   // the DEM's curve (drawn first): its last window's bins up to the column's 14 d50
   const auto dem_curve = column_figure_curve(dir / "column_velocity.csv", 0);
