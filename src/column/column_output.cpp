@@ -61,6 +61,25 @@ std::string band_csv(const nlohmann::json& bands) {
   return out;
 }
 
+// The run's quantities under the names a DEM run's summary.json gives them (peak_friction,
+// dilation_mm), so that a claims file (`iwb claims`) sets a column against its DEM runs; beside
+// them the friction and the band at the end and the share of the last fifth of the travel that
+// the wall slid.
+nlohmann::json summary_json(const ColumnResult& r, const nlohmann::json& bands) {
+  double peak = 0.0;
+  for (std::size_t k = 1; k < r.rows.size(); ++k)
+    peak = std::max(peak, r.rows[k].tau_kPa / r.rows[k].sigma_n_kPa);
+  const auto& end = r.rows.back();
+  const auto& fifth = r.rows[r.rows.size() - 1 - (r.rows.size() - 1) / 5];
+  const double travel = end.u_mm - fifth.u_mm;
+  return {{"status", r.status},
+          {"peak_friction", peak},
+          {"end_friction", end.tau_kPa / end.sigma_n_kPa},
+          {"dilation_mm", end.u_n_mm},
+          {"band_fwhm_d50", bands.empty() ? nlohmann::json() : bands.back()["band_fwhm_d50"]},
+          {"wall_slip_share", travel > 0.0 ? (end.slip_mm - fifth.slip_mm) / travel : 0.0}};
+}
+
 }  // namespace
 
 nlohmann::json spec_json(const ColumnSpec& s) {
@@ -96,6 +115,7 @@ ColumnResult run_column_into(const ColumnSpec& spec, const std::filesystem::path
   io::write_atomically(dir / "timeseries.csv", timeseries_csv(r));
   io::write_atomically(dir / "profiles.csv", profiles_csv(r));
   io::write_atomically(dir / "band.csv", band_csv(bands));
+  io::write_atomically(dir / "summary.json", summary_json(r, bands).dump(1) + "\n");
   m["status"] = r.status == "complete" ? "complete" : "stopped";
   m["reason"] = r.status;
   m["bands"] = bands;

@@ -2,7 +2,8 @@
 // A column's run directory (CONVENTIONS.md "Results"): manifest.json (the spec, how the run ended,
 // the band at each profile), timeseries.csv (the wall's tau, sigma_n, u_n and slip along the
 // travel), profiles.csv (the fields over the height at each window's end, as the DEM's
-// profiles.csv) and band.csv (the band's widths along the travel).
+// profiles.csv), band.csv (the band's widths along the travel) and summary.json (its quantities
+// under a DEM run's summary names: peak_friction, dilation_mm; for `iwb claims`).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
