@@ -63,8 +63,8 @@ def main():
     results = {}
     with tempfile.TemporaryDirectory() as work:
         for name, v in verdicts.items():
-            if v["status"] != "complete":
-                continue
+            if v["status"] != "complete" or v["column"]["slip_share"] > 0.5:
+                continue  # a stopped column, or one whose wall slides under unsheared soil
             prefix = name.rsplit("_", 1)[0]
             manifest = json.load(open(os.path.join(HERE, "runs", name, "manifest.json")))
             cell = {"spec": manifest["spec"], "R_n": R_N[prefix]}
