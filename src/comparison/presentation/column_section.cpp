@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "common/errors.hpp"
@@ -16,25 +17,24 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The rows of a profiles.csv at its last window.
+// The last window of a profiles.csv: its travel and the named columns' values there.
 struct LastWindow {
-  double u_mm;
-  std::vector<double> z, vx, porosity_or_e;
+  double u_mm = 0.0;
+  std::map<std::string, std::vector<double>> columns;
+  const std::vector<double>& operator[](const std::string& name) const { return columns.at(name); }
 };
 
-LastWindow last_window(const fs::path& csv, const std::string& third) {
+LastWindow last_window(const fs::path& csv, const std::vector<std::string>& names) {
   const auto t = io::read_csv_table(csv);
   const auto w = t.values("u_x_mm_window", csv.string());
-  const auto z = t.values("z_over_d50", csv.string());
-  const auto vx = t.values("vx_over_vwall", csv.string());
-  const auto c = t.values(third, csv.string());
-  LastWindow out{w.empty() ? 0.0 : w.back(), {}, {}, {}};
-  for (std::size_t k = 0; k < w.size(); ++k)
-    if (w[k] == out.u_mm) {
-      out.z.push_back(z[k]);
-      out.vx.push_back(vx[k]);
-      out.porosity_or_e.push_back(c[k]);
-    }
+  LastWindow out;
+  out.u_mm = w.empty() ? 0.0 : w.back();
+  for (const auto& name : names) {
+    const auto all = t.values(name, csv.string());
+    auto& kept = out.columns[name];
+    for (std::size_t k = 0; k < w.size(); ++k)
+      if (w[k] == out.u_mm) kept.push_back(all[k]);
+  }
   return out;
 }
 
@@ -112,28 +112,38 @@ PlotCurve band_along(const fs::path& csv, const std::string& title, const std::s
   return c;
 }
 
+// A DEM run's velocity and void ratio over the column's height `top` (d50), the bins whose grains'
+// centres thin out at the wall (solid fraction below 0.4, e above 1.5) left out of the void ratio.
+std::pair<PlotCurve, PlotCurve> dem_profiles(const fs::path& dem, const std::string& name,
+                                             double top, const std::string& style) {
+  const auto w = last_window(dem / "profiles.csv", {"z_over_d50", "vx_over_vwall", "porosity"});
+  const auto& z = w["z_over_d50"];
+  const auto e = void_ratios(w["porosity"]);
+  PlotCurve v{name, {}, {}, style}, ex{name, {}, {}, style};
+  for (std::size_t k = 0; k < z.size(); ++k) {
+    if (z[k] > top) continue;
+    v.x.push_back(w["vx_over_vwall"][k]);
+    v.y.push_back(z[k]);
+    if (e[k] > 1.5) continue;
+    ex.x.push_back(e[k]);
+    ex.y.push_back(z[k]);
+  }
+  return {v, ex};
+}
+
 std::vector<Figure> figures(const fs::path& run, const std::vector<fs::path>& dems) {
-  const auto col = last_window(run / "profiles.csv", "e");
+  const auto col =
+      last_window(run / "profiles.csv", {"z_over_d50", "vx_over_vwall", "e", "spin_d50_over_vwall",
+                                         "tau_zx_kPa", "tau_xz_kPa", "m_kPa_mm"});
+  const auto& z = col["z_over_d50"];
+  const double top = z.back() + z.front();  // the column's height in d50
   std::vector<PlotCurve> v, e, friction, u_n, spin, band;
   const std::string dem_style = "with lines lw 1 dt 2";
-  const double top = col.z.back() + col.z.front();  // the column's height in d50
   for (const auto& d : dems) {
-    const auto w = last_window(d / "profiles.csv", "porosity");
     const auto name = "DEM " + d.filename().string();
-    // the DEM's bins over the column's height, those whose grains' centres thin out at the wall
-    // (solid fraction below 0.4, e above 1.5) left out of the void ratio
-    PlotCurve vx{name, {}, {}, dem_style}, ex{name, {}, {}, dem_style};
-    const auto ew = void_ratios(w.porosity_or_e);
-    for (std::size_t k = 0; k < w.z.size(); ++k) {
-      if (w.z[k] > top) continue;
-      vx.x.push_back(w.vx[k]);
-      vx.y.push_back(w.z[k]);
-      if (ew[k] > 1.5) continue;
-      ex.x.push_back(ew[k]);
-      ex.y.push_back(w.z[k]);
-    }
-    v.push_back(vx);
-    e.push_back(ex);
+    const auto [dv, de] = dem_profiles(d, name, top, dem_style);
+    v.push_back(dv);
+    e.push_back(de);
     if (auto c = dem_spin(d, name, top, dem_style); !c.x.empty()) spin.push_back(c);
     if (auto c = band_along(d / "fields" / "band.csv", name, "with linespoints lw 1 dt 2");
         !c.x.empty())
@@ -142,29 +152,15 @@ std::vector<Figure> figures(const fs::path& run, const std::vector<fs::path>& de
     u_n.push_back(series(d / "timeseries.csv", name, "u_n_mm", false, dem_style));
   }
   const auto label = fmt::format("column at {:.3g} mm", col.u_mm);
-  v.push_back({label, col.vx, col.z, kReferenceStyle});
-  spin.push_back({label, last_window(run / "profiles.csv", "spin_d50_over_vwall").porosity_or_e,
-                  col.z, kReferenceStyle});
-  e.push_back({label, col.porosity_or_e, col.z, kReferenceStyle});
+  v.push_back({label, col["vx_over_vwall"], z, kReferenceStyle});
+  spin.push_back({label, col["spin_d50_over_vwall"], z, kReferenceStyle});
+  e.push_back({label, col["e"], z, kReferenceStyle});
   friction.push_back(series(run / "timeseries.csv", "column", "", true, kReferenceStyle));
   band.push_back(band_along(run / "band.csv", "column", "with linespoints lw 3 lc rgb '#000000'"));
   u_n.push_back(series(run / "timeseries.csv", "column", "u_n_mm", false, kReferenceStyle));
-  const auto t = io::read_csv_table(run / "profiles.csv");
-  std::vector<PlotCurve> stresses;
-  const auto w = t.values("u_x_mm_window");
-  std::vector<double> z, tau_zx, tau_xz, m;
-  const auto all_z = t.values("z_over_d50"), zx = t.values("tau_zx_kPa"),
-             xz = t.values("tau_xz_kPa"), mm = t.values("m_kPa_mm");
-  for (std::size_t k = 0; k < w.size(); ++k)
-    if (w[k] == col.u_mm) {
-      z.push_back(all_z[k]);
-      tau_zx.push_back(zx[k]);
-      tau_xz.push_back(xz[k]);
-      m.push_back(mm[k]);
-    }
-  stresses = {{"tau_zx (on horizontal planes)", tau_zx, z},
-              {"tau_xz (on vertical planes)", tau_xz, z},
-              {"m (kPa mm)", m, z}};
+  const std::vector<PlotCurve> stresses = {{"tau_zx (on horizontal planes)", col["tau_zx_kPa"], z},
+                                           {"tau_xz (on vertical planes)", col["tau_xz_kPa"], z},
+                                           {"m (kPa mm)", col["m_kPa_mm"], z}};
   return {curves_figure("column_velocity", "Velocity over the height at the end", "v_x / v_wall",
                         "z / d50", v),
           curves_figure("column_void_ratio", "Void ratio over the height at the end", "e",

@@ -620,20 +620,18 @@ std::vector<fs::path> write_report(const std::vector<fs::path>& paths, const fs:
            glance_table(comparisons) + "</section>\n" + models_beside(comparisons);
   for (std::size_t i = 0; i < hypotheses.size(); ++i)
     body += hypotheses_section(hypotheses[i], sets[i]);
-  for (std::size_t k = 0; k < comparisons.size(); ++k) {
-    auto section = comparison_section(comparisons[k], k, files, html);
+  // a section's page and its figures, named where they will be once the files are committed
+  const auto add = [&](const auto& section) {
     body += section.html;
     for (const auto& svg : section.figures)
       figures.push_back(files.final_path() / fs::relative(svg, files.path()));
-  }
+  };
+  for (std::size_t k = 0; k < comparisons.size(); ++k)
+    add(comparison_section(comparisons[k], k, files, html));
   for (std::size_t k = 0; k < column_runs.size(); ++k) {
     const auto name = fmt::format("column-{}-{}", k, column_runs[k].filename().string());
-    const auto section =
-        column_section(column_runs[k], files.path() / name,
-                       fs::relative(files.final_path() / name, html.parent_path()).string());
-    body += section.html;
-    for (const auto& svg : section.figures)
-      figures.push_back(files.final_path() / fs::relative(svg, files.path()));
+    add(column_section(column_runs[k], files.path() / name,
+                       fs::relative(files.final_path() / name, html.parent_path()).string()));
   }
   const std::string page = html_page(
       "iwb validation report",
