@@ -2,13 +2,17 @@
 
 #include <fmt/core.h>
 
-#include <Eigen/Sparse>
-#include <Eigen/SparseLU>
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 
 #include "coarse_graining/band_measures.hpp"
 #include "common/errors.hpp"
+
+// LAPACK's band solver (Debian's liblapack): A x = b for a band matrix in column-major band
+// storage, overwritten by its LU factors; b by x.
+extern "C" void dgbsv_(const int* n, const int* kl, const int* ku, const int* nrhs, double* ab,
+                       const int* ldab, int* ipiv, double* b, const int* ldb, int* info);
 
 namespace iwb::column {
 
@@ -255,23 +259,30 @@ class ColumnSolver {
     return false;
   }
 
+  // The Newton step on the free increments: -J_ff^-1 R_f, J banded (a node couples only to its
+  // neighbours), solved by LAPACK's band LU with partial pivoting (dgbsv).
   Eigen::VectorXd newton_step(const Eigen::VectorXd& R,
                               const std::vector<Eigen::Triplet<double>>& J,
                               const std::vector<int>& free, const std::vector<int>& index) const {
-    std::vector<Eigen::Triplet<double>> Jf;
+    const int n = int(free.size()), one = 1;
+    int band = 0;
     for (const auto& t : J)
       if (index[t.row()] >= 0 && index[t.col()] >= 0)
-        Jf.emplace_back(index[t.row()], index[t.col()], t.value());
-    Eigen::SparseMatrix<double> A(int(free.size()), int(free.size()));
-    A.setFromTriplets(Jf.begin(), Jf.end());
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-    lu.compute(A);
-    if (lu.info() != Eigen::Success) throw DomainError("singular column stiffness");
-    Eigen::VectorXd rf(free.size());
-    for (std::size_t k = 0; k < free.size(); ++k) rf(k) = R(free[k]);
-    const Eigen::VectorXd x = lu.solve(-rf);
+        band = std::max(band, std::abs(index[t.row()] - index[t.col()]));
+    const int kl = band, ku = band, ldab = 2 * kl + ku + 1;
+    std::vector<double> ab(std::size_t(ldab) * n, 0.0);  // column-major band storage
+    for (const auto& t : J) {
+      const int i = index[t.row()], j = index[t.col()];
+      if (i >= 0 && j >= 0) ab[std::size_t(kl + ku + i - j) + std::size_t(j) * ldab] += t.value();
+    }
+    std::vector<double> x(n);
+    for (int k = 0; k < n; ++k) x[k] = -R(free[k]);
+    std::vector<int> pivots(n);
+    int info = 0;
+    dgbsv_(&n, &kl, &ku, &one, ab.data(), &ldab, pivots.data(), x.data(), &n, &info);
+    if (info != 0) throw DomainError("singular column stiffness");
     Eigen::VectorXd step = Eigen::VectorXd::Zero(R.size());
-    for (std::size_t k = 0; k < free.size(); ++k) step(free[k]) = x(k);
+    for (int k = 0; k < n; ++k) step(free[k]) = x[k];
     return step;
   }
 
