@@ -38,23 +38,32 @@ struct ColumnSpec {
   double imperfection = 0.0;  // relative raise of e0 in the element at the wall
   double travel_mm = 10.0;
   int increments = 2000;
-  int profiles = 5;              // profiles at the ends of this many equal windows of the travel
+  int profiles = 5;  // profiles at the ends of this many equal windows of the travel, unless:
+  // profiles at the first increment's end at or past each of these travels (mm, ascending), and
+  // at the end: a DEM run's windows, for the column's profiles to be set beside its own
+  std::vector<double> profile_at_mm;
+  // The wall zone whose void ratio the time series gives (e_wall_zone): the DEM's on a scene
+  // (on_scene: common/band_zone.hpp's rule on the specimen), else 0: the rule on the column
+  double wall_zone_mm = 0.0;
   double substep_strain = 2e-4;  // the law's substeps: at most this much ||D^c|| each
 };
 
 // One increment's end: the wall's travel, tau (on the soil, positive along the travel),
-// sigma_n (compression positive), u_n (the plate's rise, dilation positive), the wall's slip.
+// sigma_n (compression positive), u_n (the plate's rise, dilation positive), the wall's slip, and
+// the void ratio of the wall zone (voids over solids of the soil within wall_zone_mm of the wall
+// in the deformed column, as the DEM's e_band is measured in a zone of fixed height).
 struct ColumnRow {
-  double u_mm, tau_kPa, sigma_n_kPa, u_n_mm, slip_mm;
+  double u_mm, tau_kPa, sigma_n_kPa, u_n_mm, slip_mm, e_wall_zone;
 };
 
 // A profile over the height at an increment's end, per element centre: the increment's velocity
 // and spin scaled by the wall's (vx / v_wall, w d50 / v_wall), the shear rate (du1/dy d50 /
-// v_wall, magnitude), the void ratio and the stresses (kPa; m in kPa mm).
+// v_wall, magnitude), the void ratio and the stresses (kPa; m in kPa mm); the element centres'
+// heights in the deformed column, its lengths those the increment's gradients were taken over.
 struct ColumnProfile {
   double u_mm;
   std::vector<double> z_over_d50, vx_over_vwall, spin, shear_rate, e, tau_kPa, T21_kPa,
-      sigma_zz_kPa, m_kPa_mm;
+      sigma_zz_kPa, m_kPa_mm, length_mm;
 };
 
 struct ColumnResult {
@@ -68,6 +77,9 @@ struct ColumnResult {
 // InputError where the spec cannot start: too few elements, non-positive sizes, e0 outside the
 // soil's limits e_d .. e_i at sigma_n0.
 void require_spec(const ColumnSpec& spec);
+
+// The zone whose void ratio the rows give: spec.wall_zone_mm, or the DEM's rule on the column.
+double wall_zone_of(const ColumnSpec& spec);
 
 // progress(increment done, increments in all)
 ColumnResult run_column(const ColumnSpec& spec,

@@ -23,10 +23,10 @@ const char* to_string(TopBoundary t) {
 }
 
 std::string timeseries_csv(const ColumnResult& r) {
-  std::string out = "u_x_mm,tau_kPa,sigma_n_kPa,u_n_mm,slip_mm\n";
+  std::string out = "u_x_mm,tau_kPa,sigma_n_kPa,u_n_mm,slip_mm,e_wall_zone\n";
   for (const auto& row : r.rows)
-    out += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", row.u_mm, row.tau_kPa,
-                       row.sigma_n_kPa, row.u_n_mm, row.slip_mm);
+    out += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", row.u_mm, row.tau_kPa,
+                       row.sigma_n_kPa, row.u_n_mm, row.slip_mm, row.e_wall_zone);
   return out;
 }
 
@@ -98,6 +98,8 @@ nlohmann::json spec_json(const ColumnSpec& s) {
           {"imperfection", s.imperfection},
           {"travel_mm", s.travel_mm},
           {"increments", s.increments},
+          {"wall_zone_mm", wall_zone_of(s)},
+          {"profile_at_mm", s.profile_at_mm},
           {"substep_strain", s.substep_strain}};
 }
 

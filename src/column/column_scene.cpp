@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "common/band_zone.hpp"
 #include "common/errors.hpp"
 #include "io/csv_table.hpp"
 #include "models/roughness/roughness.hpp"
@@ -33,6 +34,7 @@ ColumnSpec on_scene(ColumnSpec spec, const dem::Scene& scene, double elements_pe
                                                                      : TopBoundary::kCNL);
   spec.stiffness_kPa_per_mm = scene.boundary.K_Pa_per_m * 1e-6;
   spec.travel_mm = scene.shear.travel_m() * 1e3;
+  spec.wall_zone_mm = wall_zone_thickness(scene.particles.d50_m, scene.height_m) * 1e3;
   const auto wall =
       wall_from_roughness(scene.wall.normalized_roughness(scene.particles.d50_m), spec.soil.phi_c);
   spec.wall_rotation = wall.rotation;
@@ -49,6 +51,16 @@ double start_void_ratio(const std::vector<std::filesystem::path>& runs) {
     sum += e.front();
   }
   return sum / double(runs.size());
+}
+
+std::vector<double> profile_windows(const std::filesystem::path& run, double travel_mm) {
+  const auto path = run / "profiles.csv";
+  if (!std::filesystem::exists(path)) return {};
+  const auto u = io::read_csv_table(path).values("u_x_mm_window", path.string());
+  std::vector<double> at;
+  for (double x : u)
+    if (x > 0.0 && x <= travel_mm && (at.empty() || x > at.back())) at.push_back(x);
+  return at;
 }
 
 }  // namespace iwb::column

@@ -29,4 +29,9 @@ ColumnSpec on_scene(ColumnSpec spec, const dem::Scene& scene, double elements_pe
 // e_specimen); InputError naming a run that has none.
 double start_void_ratio(const std::vector<std::filesystem::path>& runs);
 
+// The travels (mm, ascending) of a DEM run's profile windows (its profiles.csv), those within
+// `travel_mm`: the column writes its profiles there, to be set beside the run's. Empty where the
+// run has no profiles.csv.
+std::vector<double> profile_windows(const std::filesystem::path& run, double travel_mm);
+
 }  // namespace iwb::column

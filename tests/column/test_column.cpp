@@ -6,6 +6,7 @@
 
 #include "column/column.hpp"
 #include "column/column_scene.hpp"
+#include "common/errors.hpp"
 #include "io/parameter_file.hpp"
 
 using namespace iwb;
@@ -77,16 +78,17 @@ TEST_CASE(
   CHECK(gamma_at_peak == Approx(0.059).margin(0.004));
   CHECK(r.rows[500].u_n_mm / s.height_mm == Approx(0.008445).margin(3e-4));
   CHECK(r.rows[1500].u_n_mm / s.height_mm == Approx(0.030020).margin(5e-4));
-  const auto& p = r.profiles.back();  // the velocity linear over the height
+  const auto& p = r.profiles.back();  // the velocity linear over the height it has now
+  const double H = s.height_mm + r.rows.back().u_n_mm;
   for (std::size_t j = 0; j < p.z_over_d50.size(); ++j)
-    CHECK(p.vx_over_vwall[j] ==
-          Approx(1.0 - p.z_over_d50[j] * s.d50_mm / s.height_mm).margin(1e-6));
+    CHECK(p.vx_over_vwall[j] == Approx(1.0 - p.z_over_d50[j] * s.d50_mm / H).margin(1e-6));
 }
 
 // The balances the solution must satisfy whatever the law: tau on horizontal planes and sigma_zz
 // the same in every element (forces along and across the wall), and between two elements the
 // couple stress's step equal to the asymmetric shear over the node's half-elements,
-// m_j - m_{j-1} = h [(T12 - T21)_{j-1} + (T12 - T21)_j] / 2 (moments).
+// m_j - m_{j-1} = [L_{j-1} (T12 - T21)_{j-1} + L_j (T12 - T21)_j] / 2 over the elements' lengths
+// (moments).
 TEST_CASE("column: forces and moments balance in every element and node", "[column]") {
   auto s = truth_column(2.0, WallRotation::kFree);
   s.travel_mm = 4.0;
@@ -94,7 +96,7 @@ TEST_CASE("column: forces and moments balance in every element and node", "[colu
   const auto r = run_column(s);
   REQUIRE(r.status == "complete");
   const auto& p = r.profiles.back();
-  const double h = s.height_mm / s.elements, tol = 1e-5 * s.sigma_n0_kPa;
+  const double tol = 1e-5 * s.sigma_n0_kPa;
   double largest_moment = 0.0;
   for (std::size_t j = 0; j < p.z_over_d50.size(); ++j) {
     CHECK(p.tau_kPa[j] == Approx(p.tau_kPa[0]).margin(tol));
@@ -102,8 +104,9 @@ TEST_CASE("column: forces and moments balance in every element and node", "[colu
     largest_moment = std::max(largest_moment, std::abs(p.m_kPa_mm[j]));
     if (j == 0) continue;
     // tau_zx = -T12, tau_xz = -T21
-    const double asym = -(p.tau_kPa[j - 1] - p.T21_kPa[j - 1]) - (p.tau_kPa[j] - p.T21_kPa[j]);
-    CHECK(p.m_kPa_mm[j] - p.m_kPa_mm[j - 1] == Approx(0.5 * h * asym).margin(tol * h));
+    const double asym = -p.length_mm[j - 1] * (p.tau_kPa[j - 1] - p.T21_kPa[j - 1]) -
+                        p.length_mm[j] * (p.tau_kPa[j] - p.T21_kPa[j]);
+    CHECK(p.m_kPa_mm[j] - p.m_kPa_mm[j - 1] == Approx(0.5 * asym).margin(tol * p.length_mm[j]));
   }
   CHECK(largest_moment > 1.0);  // the couple stress is there to be balanced (kPa mm)
 }
@@ -231,4 +234,54 @@ TEST_CASE("column: a DEM scene gives the column its height, grains, plate, trave
   CHECK(c.travel_mm == Approx(10.0));
   CHECK(std::isinf(c.wall_friction));
   CHECK(start_void_ratio({"data/convergence/truth_clamped/runs/s1"}) > 0.6);
+}
+
+// The wall zone's void ratio against the plate's rise, by mass alone: a zone of fixed height Z
+// above the wall dilating from e0 to e has pushed out of its top the grains that raised the plate
+// (at e0, where the soil above it keeps its void ratio), Z (1 + e0) / (Z - u_n) = 1 + e, so
+// u_n = Z (e - e0) / (1 + e). With Z the column's height, what leaves the zone is the top u_n of
+// a soil that hardly changed (the band is at the wall).
+TEST_CASE("column: the wall zone's void ratio carries the plate's rise, by mass alone",
+          "[column]") {
+  auto s = truth_column(2.0, WallRotation::kFree);
+  s.travel_mm = 4.0;
+  s.increments = 200;
+  CHECK(wall_zone_of(s) == Approx(14.0));  // by default the DEM's: min(10 d50, half the height)
+  s.wall_zone_mm = s.height_mm;
+  const auto r = run_column(s);
+  REQUIRE(r.status == "complete");
+  REQUIRE(peak_height(r.profiles.back()) < 1.0);
+  CHECK(r.rows.front().e_wall_zone == Approx(s.e0));
+  const auto& end = r.rows.back();
+  REQUIRE(end.u_n_mm > 0.1);
+  const double Z = s.wall_zone_mm;
+  CHECK(Z * (end.e_wall_zone - s.e0) / (1.0 + end.e_wall_zone) ==
+        Approx(end.u_n_mm).epsilon(0.005));
+}
+
+// Profiles where a DEM run has its windows: at the first increment's end at or past each travel
+// (500 increments of 0.02 mm), and at the end of the travel once.
+TEST_CASE("column: profiles at given travels, a DEM run's windows, and only rising ones",
+          "[column]") {
+  auto s = truth_column(1.0, WallRotation::kFree);
+  s.profile_at_mm = {0.71, 2.5, 9.99};
+  const auto r = run_column(s);
+  REQUIRE(r.status == "complete");
+  REQUIRE(r.profiles.size() == 3);
+  CHECK(r.profiles[0].u_mm == Approx(0.72));
+  CHECK(r.profiles[1].u_mm == Approx(2.5));
+  CHECK(r.profiles[2].u_mm == Approx(10.0));
+  s.profile_at_mm = {0.71, 2.5};
+  const auto ended = run_column(s);
+  REQUIRE(ended.profiles.size() == 3);
+  CHECK(ended.profiles[2].u_mm == Approx(10.0));
+  s.profile_at_mm = {2.5, 0.71};
+  CHECK_THROWS_AS(run_column(s), InputError);
+  s.profile_at_mm = {12.0};
+  CHECK_THROWS_AS(run_column(s), InputError);
+  // the truth's first seed wrote its profiles at these travels (its profiles.csv)
+  const auto w = profile_windows("data/convergence/truth_clamped/runs/s1", 10.0);
+  REQUIRE(w.size() == 5);
+  CHECK(w.front() == Approx(1.598506371));
+  CHECK(w.back() == Approx(9.637687011));
 }

@@ -76,7 +76,9 @@ column::ColumnSpec column_spec(const ColumnOptions& o, const CLI::App& command) 
 
 int run_column_command(const ColumnOptions& o, const CommandContext& context,
                        const CLI::App& command) {
-  const auto spec = column_spec(o, command);
+  auto spec = column_spec(o, command);
+  // set beside DEM runs, the column's profiles are taken where theirs are
+  if (!o.dem.empty()) spec.profile_at_mm = column::profile_windows(o.dem.front(), spec.travel_mm);
   const auto dir =
       o.out.empty() ? std::filesystem::path("runs") / "column" : std::filesystem::path(o.out);
   nlohmann::json inputs = {{"params", o.params}, {"command_line", context.command_line}};
@@ -108,8 +110,9 @@ void add_column_command(CLI::App& app, CommandList& commands) {
       "a wall below a clamped plate under CNL, CNS or CV, in linear elements over the height, "
       "solved implicitly increment by increment. Writes timeseries.csv (tau, sigma_n, u_n and "
       "slip along the wall's travel), profiles.csv (velocity, grain spin, shear rate, void "
-      "ratio, stresses and couple stress over the height at five windows, as a DEM run's "
-      "profiles.csv), band.csv (the band's width along the travel) and manifest.json "
+      "ratio, stresses and couple stress over the height at the ends of five windows, or at the "
+      "first --dem run's windows, as a DEM run's profiles.csv), band.csv (the band's width along "
+      "the travel) and manifest.json "
       "(src/column/README.md).\n\nExample: iwb column data/params/truth_grains_epsd2.toml "
       "--e0 0.64 -o runs/column\n         iwb column data/params/truth_grains_epsd2.toml --scene "
       "data/convergence/truth_clamped/scenes/s1.toml --dem "
@@ -163,7 +166,8 @@ void add_column_command(CLI::App& app, CommandList& commands) {
   column
       ->add_option("--dem", o->dem,
                    "DEM run directories of the same cell, for `iwb report` to set their "
-                   "profiles and curves beside the column's")
+                   "profiles and curves beside the column's (the column's profiles are written "
+                   "at the first run's windows)")
       ->check(input_directory());
   column->add_flag(
       "--plain", o->plain,
