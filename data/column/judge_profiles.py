@@ -5,7 +5,8 @@ mean +- its 95 % Student's t-interval, the column's value, the error against the
 verdict (holds / breaks / not resolved, judge_truth.py's rule). Beside each verdict the p of the
 prediction-interval test "one column run differs from the DEM seeds' mean" (t = (column - mean) /
 (s sqrt(1 + 1/n)), n - 1 degrees of freedom) and its Benjamini-Hochberg q over every test of the
-table: the README states a difference only where q < 0.05.
+table: the README states a difference only where q < 0.05. Where a verdict is not resolved, the
+seeds whose interval at the seeds' scatter would resolve it.
 
     data/column/judge_profiles.py        # after judge_truth.py: reads data/column/runs/<cell>
 
@@ -152,13 +153,23 @@ def judge(key, col, dem_values, scale_floor=0.0):
         v = "breaks"
     else:
         v = "not resolved"
-    p = None
+    p = needed = None
     if n >= 2:
         sd = math.sqrt(sum((x - mean) ** 2 for x in values) / (n - 1))
         if sd > 0.0:
             p = 2.0 * stats.t.sf(miss / (sd * math.sqrt(1.0 + 1.0 / n)), n - 1)
+            needed = seeds_to_decide(sd, abs(miss - limit)) if v == "not resolved" else n
     return {"dem_mean": mean, "dem_half_width": half, "n": n, "column": col,
-            "error": col - mean, "limit": limit, "verdict": v, "p": p}
+            "error": col - mean, "limit": limit, "verdict": v, "p": p, "seeds_to_decide": needed}
+
+
+def seeds_to_decide(sd, gap):
+    """The seeds whose 95 % t-interval, at this scatter, would be narrower than the gap between the
+    miss and the tolerance's edge (the verdict then holds or breaks); None beyond 50."""
+    for m in range(2, 51):
+        if stats.t.ppf(0.975, m - 1) * sd / math.sqrt(m) < gap:
+            return m
+    return None
 
 
 def cell_rows(name):
@@ -215,6 +226,12 @@ def bh(ps):
     return q
 
 
+def decide(j):
+    if j["verdict"] != "not resolved":
+        return ""
+    return "> 50" if j["seeds_to_decide"] is None and j["n"] >= 2 else str(j["seeds_to_decide"] or "")
+
+
 def main():
     os.chdir(jt.ROOT)
     table = []
@@ -233,16 +250,16 @@ def main():
              "over all of them); verdicts: " + ", ".join(
                  f"{v} {sum(1 for *_, j in table if j['verdict'] == v)}"
                  for v in ("holds", "not resolved", "breaks")), "",
-             "| cell | quantity | seeds | DEM mean +- 95 % t | column | column - DEM | tolerance | verdict | p | q (BH) |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "| cell | quantity | seeds | DEM mean +- 95 % t | column | column - DEM | tolerance | verdict | p | q (BH) | seeds to decide |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     def f(x):
         return "" if x is None else f"{x:.2g}"
     for name, label, j in table:
         lines.append(f"| {name} | {label} | {j['n']} | {j['dem_mean']:.4g} +- {j['dem_half_width']:.2g} | "
                      f"{j['column']:.4g} | {j['error']:+.3g} | {j['limit']:.3g} | {j['verdict']} | "
-                     f"{f(j['p'])} | {f(j['q'])} |")
+                     f"{f(j['p'])} | {f(j['q'])} | {decide(j)} |")
     for name, why in notes.items():
-        lines.append(f"| {name} | all | | | | | | not judged: {why} | | |")
+        lines.append(f"| {name} | all | | | | | | not judged: {why} | | | |")
     open(os.path.join(HERE, "profile_verdicts.md"), "w").write("\n".join(lines) + "\n")
     json.dump([{"cell": n, "quantity": l, **j} for n, l, j in table] +
               [{"cell": n, "not_judged": w} for n, w in notes.items()],
