@@ -8,7 +8,7 @@ prediction-interval test "one column run differs from the DEM seeds' mean" (t = 
 table: the README states a difference only where q < 0.05. Where a verdict is not resolved, the
 seeds whose interval at the seeds' scatter would resolve it.
 
-    data/column/judge_profiles.py        # after judge_truth.py: reads data/column/runs/<cell>
+    data/column/judge_profiles.py [--out DIR]   # after judge_truth.py: reads data/column/runs/<cell>
 
 Stated before the first judged run (README.md, "The profiles"), per cell whose column wall does
 not slide (on a sliding wall no band forms: not judged), with the column written at the DEM's
@@ -233,6 +233,11 @@ def decide(j):
 
 
 def main():
+    import argparse
+    a = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    a.add_argument("--out", default=HERE, help="where profile_verdicts.md and .json go (default: here)")
+    out = os.path.abspath(a.parse_args().out)
+    os.makedirs(out, exist_ok=True)
     os.chdir(jt.ROOT)
     table = []
     notes = {}
@@ -260,10 +265,10 @@ def main():
                      f"{f(j['p'])} | {f(j['q'])} | {decide(j)} |")
     for name, why in notes.items():
         lines.append(f"| {name} | all | | | | | | not judged: {why} | | | |")
-    open(os.path.join(HERE, "profile_verdicts.md"), "w").write("\n".join(lines) + "\n")
+    open(os.path.join(out, "profile_verdicts.md"), "w").write("\n".join(lines) + "\n")
     json.dump([{"cell": n, "quantity": l, **j} for n, l, j in table] +
               [{"cell": n, "not_judged": w} for n, w in notes.items()],
-              open(os.path.join(HERE, "profile_verdicts.json"), "w"), indent=1)
+              open(os.path.join(out, "profile_verdicts.json"), "w"), indent=1)
     print("\n".join(lines[:1]))
 
 
