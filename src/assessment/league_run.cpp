@@ -1,7 +1,9 @@
 // `iwb assess --reference RUN...`: the league of the interface models on a DEM scene (issue 17,
 // seed 4.3): parameters per model, the runs, resumable records, the tables and figures.
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 
@@ -33,14 +35,7 @@ models::ModelInputs as_inputs(const io::ParameterSet& set) {
 // `iwb validate` chooses it, else the model's own example (the seed's table), where its fit starts.
 models::ModelInputs league_parameters(const AssessOptions& o, const std::string& model,
                                       const comparison::DemRun& dem) {
-  for (const auto& g : o.params_for) {
-    const auto eq = g.find('=');
-    if (eq == std::string::npos || eq == 0 || eq + 1 == g.size())
-      throw InputError(fmt::format(
-          "--params-for {}: give MODEL=FILE, e.g. hvwe=data/params/truth_grains.toml", g));
-    if (g.substr(0, eq) != model) continue;
-    return as_inputs(io::read_parameter_set(g.substr(eq + 1)));
-  }
+  if (const auto given = io::parameter_set_given_for(o.params_for, model)) return as_inputs(*given);
   if (!o.params.empty()) return as_inputs(io::read_parameter_set(o.params));
   const auto& spec = models::find_model(model);
   if (spec.declaration.calibration_recipe.empty())
@@ -65,13 +60,18 @@ models::ModelInputs with_missing_tables(const models::ModelSpec& spec, models::M
 }
 
 std::vector<std::string> league_models(const AssessOptions& o) {
-  if (!o.model.empty()) return {o.model};
-  if (!o.models.empty()) {
+  std::vector<std::string> names = {o.model};
+  if (o.model.empty()) {
     for (const auto& m : o.models)
       models::find_model(m);  // an unknown name is refused before anything runs
-    return o.models;
+    names = o.models.empty() ? models::ranked_interface_models(true) : o.models;
   }
-  return models::ranked_interface_models(true);
+  // a set given for a model the league does not judge is a mistake, not an extra
+  for (const auto& m : io::models_given_sets(o.params_for))
+    if (std::find(names.begin(), names.end(), m) == names.end())
+      throw InputError(fmt::format("--params-for {}=...: {} is not among the league's models ({})",
+                                   m, m, fmt::join(names, ", ")));
+  return names;
 }
 
 // What a model's record was made from: a record of other inputs is not reused.

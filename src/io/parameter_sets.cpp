@@ -68,4 +68,33 @@ models::ModelInputs shipped_inputs(const std::string& name) {
       fmt::format("{} is not among the parameter sets built into iwb (data/params/)", name));
 }
 
+std::vector<std::string> models_given_sets(const std::vector<std::string>& params_for) {
+  std::vector<std::string> models;
+  for (const auto& g : params_for) {
+    const auto eq = g.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == g.size())
+      throw InputError(fmt::format(
+          "--params-for {}: give MODEL=FILE, e.g. hvwe=data/params/truth_grains.toml", g));
+    try {
+      models::find_model(g.substr(0, eq));
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("--params-for {}: {}", g, e.what()));
+    }
+    models.push_back(g.substr(0, eq));
+  }
+  return models;
+}
+
+std::optional<ParameterSet> parameter_set_given_for(const std::vector<std::string>& params_for,
+                                                    const std::string& model) {
+  const auto named = models_given_sets(params_for);
+  for (std::size_t k = 0; k < named.size(); ++k)
+    if (named[k] == model) try {
+        return read_parameter_set(params_for[k].substr(model.size() + 1));
+      } catch (const InputError& e) {
+        throw InputError(fmt::format("--params-for {}: {}", params_for[k], e.what()));
+      }
+  return std::nullopt;
+}
+
 }  // namespace iwb::io

@@ -5,6 +5,7 @@
 // Every set is read and checked when the list is made, before anything runs.
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,14 @@ models::ModelInputs shipped_inputs(const std::string& name);
 // One parameter file as a set; InputError naming the file when it is missing or not a parameter
 // file.
 ParameterSet read_parameter_set(const std::filesystem::path& file);
+
+// `--params-for MODEL=FILE` (repeatable), the set a command gives one model: the models named,
+// in order, each checked known (find_model); InputError naming the entry that is not MODEL=FILE
+// or names no model. Nothing is read.
+std::vector<std::string> models_given_sets(const std::vector<std::string>& params_for);
+// The set given for `model`, read, if the entries name it.
+std::optional<ParameterSet> parameter_set_given_for(const std::vector<std::string>& params_for,
+                                                    const std::string& model);
 
 // The set as a file a run directory can name: its own path, or (embedded) a copy written
 // atomically into `dir` under its name.

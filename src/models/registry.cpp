@@ -1,6 +1,7 @@
 #include "models/registry.hpp"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -153,6 +154,15 @@ std::vector<std::string> ranked_interface_models(bool with_intergranular_strain)
   std::vector<std::string> out;
   for (const auto& r : ranked) out.push_back(r.second);
   return out;
+}
+
+std::string ranked_interface_models_text() {
+  const auto all = ranked_interface_models(true), plain = ranked_interface_models(false);
+  std::string reversing;
+  for (const auto& m : all)
+    if (std::find(plain.begin(), plain.end(), m) == plain.end())
+      reversing += (reversing.empty() ? "" : " and ") + m;
+  return fmt::format("{}; {} for reversing paths", fmt::join(plain, ", "), reversing);
 }
 
 const ModelSpec& find_model(const std::string& name) {

@@ -95,6 +95,8 @@ const ModelSpec& find_model(const std::string& name);
 // The interface models for granular scenes (ModelDeclaration::plan_rank > 0), simplest first;
 // those with intergranular strain only when `with_intergranular_strain` (it acts on reversals).
 std::vector<std::string> ranked_interface_models(bool with_intergranular_strain);
+// The same, for a command's help: "mc, hyperbolic, ...; ahe-igs and hvwe-igs for reversing paths".
+std::string ranked_interface_models_text();
 // Adds a model at run time (a user's library, models/external): checked like the registered ones;
 // InputError for an inconsistent declaration or a name already taken. Before any thread starts.
 void add_runtime_model(ModelSpec spec);

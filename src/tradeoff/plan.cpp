@@ -1,6 +1,7 @@
 #include "tradeoff/plan.hpp"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -292,17 +293,53 @@ std::vector<fs::path> base_runs(const PlanOptions& opt, const json& t) {
   return out;
 }
 
-// A candidate's parameter set: the scene's (opt.params) for a model calibrated from soil tests,
-// else the model's own example, where its calibration to the runs starts.
-models::ModelInputs candidate_inputs(const io::ParameterSet& set, const std::string& model) {
+namespace {
+
+// A candidate's parameter set: its own (--params-for), else the scene's (opt.params) for a model
+// calibrated from soil tests, else the model's own example, where its calibration to the runs
+// starts.
+models::ModelInputs candidate_inputs(const io::ParameterSet& set, const std::string& model,
+                                     const std::vector<std::string>& params_for) {
   const auto& spec = models::find_model(model);
-  if (spec.declaration.calibration_recipe.empty())
+  const auto given = io::parameter_set_given_for(params_for, model);
+  if (!given && spec.declaration.calibration_recipe.empty())
     return io::shipped_inputs(spec.declaration.example_parameters);
   models::ModelInputs in;
-  in.tables = set.tables;
-  in.source = set.origin;
+  in.tables = given ? given->tables : set.tables;
+  in.source = given ? given->origin : set.origin;
   return in;
 }
+
+// One candidate judged, or, where its set lacks a table of the model's (the candidates of issue
+// 56 carry parameters no soil test gives), listed with what to give it.
+ModelErrors evaluate_candidate(const assessment::SceneReference& reference,
+                               const std::string& model, const models::ModelInputs& inputs,
+                               const assessment::LeagueOptions& league) {
+  for (const auto* table : models::find_model(model).tables)
+    if (!inputs.tables.count(table->name))
+      return {model,
+              {},
+              fmt::format("could not be evaluated: {} has no [{}] table; give the model its own "
+                          "set with --params-for {}=FILE",
+                          inputs.source, table->name, model)};
+  return evaluate_model(reference, model, inputs, league);
+}
+
+// The models --params-for names, each one the plan tries (refused before anything runs).
+std::vector<std::string> models_with_own_sets(const PlanOptions& opt,
+                                              const std::vector<std::string>& ladder) {
+  const auto named = io::models_given_sets(opt.params_for);
+  for (const auto& m : named)
+    if (std::find(ladder.begin(), ladder.end(), m) == ladder.end())
+      throw InputError(
+          fmt::format("--params-for {}=...: the plan does not try {} on this scene (it tries {})",
+                      m, m, fmt::join(ladder, ", ")));
+    else
+      io::parameter_set_given_for(opt.params_for, m);  // a file that is not a set, refused now
+  return named;
+}
+
+}  // namespace
 
 // A base reference's first seed stands for it (load_tradeoff has checked that one completed).
 fs::path reference_run(const PlanOptions& opt) {
@@ -330,6 +367,8 @@ json other_origins(const PlanOptions& opt) {
 
 json run_plan(const PlanOptions& opt) {
   const dem::Scene scene = load_scene_to_plan(opt.scene_file);
+  const auto ladder = model_ladder(scene.shear.cyclic());
+  const auto own_sets = models_with_own_sets(opt, ladder);
   const json t = load_tradeoff(opt);
   const fs::path ref = reference_run(opt);
   const fs::path out = opt.out.empty() ? ref.parent_path().parent_path() : opt.out;
@@ -353,9 +392,11 @@ json run_plan(const PlanOptions& opt) {
   std::vector<std::string> set_names;
   for (const auto& p : sets) set_names.push_back(fs::path(p.origin).stem().string());
   std::vector<ModelErrors> models;
-  for (const auto& c : plan_candidates(model_ladder(scene.shear.cyclic()), set_names)) {
-    models.push_back(
-        evaluate_model(reference, c.model, candidate_inputs(sets[c.set], c.model), league));
+  for (const auto& c : plan_candidates(ladder, set_names)) {
+    const bool own = std::find(own_sets.begin(), own_sets.end(), c.model) != own_sets.end();
+    if (own && c.set > 0) continue;  // a model given its own set is tried with it alone
+    models.push_back(evaluate_candidate(
+        reference, c.model, candidate_inputs(sets[c.set], c.model, opt.params_for), league));
     models.back().model = c.name;
   }
   json judged = json::array();
@@ -373,6 +414,7 @@ json run_plan(const PlanOptions& opt) {
                {"continuum_judged_on", judged},
                {"params", opt.params.origin},
                {"other_calibrations", other_origins(opt)},
+               {"params_for", opt.params_for},
                {"parameter_uncertainty",
                 opt.spread == assessment::ParameterSpread::kFitSigmas ? "fit" : "seed"},
                {"parameter_samples", opt.samples},

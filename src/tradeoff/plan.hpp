@@ -68,6 +68,9 @@ struct PlanOptions {
   int samples = 200;  // parameter samples per candidate
   // further calibrations of the models calibrated from soil tests, tried after `params`
   std::vector<io::ParameterSet> other_calibrations = {};
+  // MODEL=FILE: a model's own set, tried instead of the sets above (issue 56's candidates, whose
+  // parameters are fitted to DEM walls); each MODEL one the plan tries
+  std::vector<std::string> params_for = {};
 };
 
 // `model` calibrated to the reference (the base seeds' mean) and judged: its global uncertainty

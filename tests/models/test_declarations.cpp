@@ -101,7 +101,9 @@ TEST_CASE("the interface models of the plan and the league are declared, simples
   CHECK(at("hyperbolic") < at("hp1d"));
   CHECK(at("hp1d") < at("ah"));
   CHECK(at("ah") < at("hvwe"));
-  CHECK(at("hvwe") < at("hvwe-igs"));
+  CHECK(at("hvwe") < at("hvwe-rd"));  // issue 56's candidates: hvwe and one parameter, then two
+  CHECK(at("hvwe-rd") < at("hvwe-pg"));
+  CHECK(at("hvwe-pg") < at("hvwe-igs"));
   CHECK(at("hvwe-igs") < std::ptrdiff_t(ranked.size()));
   const auto plain = models::ranked_interface_models(false);
   CHECK(std::find(plain.begin(), plain.end(), "hvwe-igs") == plain.end());

@@ -12,6 +12,10 @@ SAMPLES=${SAMPLES:-2000}
 SOBOL=${SOBOL:-500}
 extra=()
 [ -n "${PARAMS:-}" ] && for m in hp1d ah ahe hvwe ahe-igs hvwe-igs; do extra+=(--params-for "$m=$PARAMS"); done
+# issue 56's candidates with their deciding fits (the soil held, their own parameters fitted to
+# the DEM walls of data/models_beyond/: README.md there)
+extra+=(--params-for hvwe-rd=data/models_beyond/hvwe_rd_held_walls/form_limit.toml
+        --params-for hvwe-pg=data/models_beyond/hvwe_pg_held_walls/form_limit.toml)
 league() {  # name, run directories
   local name=$1; shift
   "$IWB" assess --reference "$@" --samples "$SAMPLES" --sobol-samples "$SOBOL" "${extra[@]}" \

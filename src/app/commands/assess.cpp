@@ -12,6 +12,7 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "app/progress.hpp"
+#include "models/registry.hpp"
 
 namespace iwb::app {
 
@@ -106,11 +107,10 @@ void add_assess_command(CLI::App& app, CommandList& commands) {
                   "league.csv, "
                   "models/<model>.json, figures/. Run again with the same options to resume.")
       ->check(CLI::ExistingDirectory);
-  cmd->add_option(
-         "--models", o->models,
-         "with --reference: the models of the league (default: every interface model for "
-         "granular scenes, simplest first: mc, hyperbolic, hp1d, ah, ahe, lashkari, mortara, "
-         "hvwe, ahe-igs, hvwe-igs)")
+  cmd->add_option("--models", o->models,
+                  "with --reference: the models of the league (default: every interface model for "
+                  "granular scenes, simplest first: " +
+                      models::ranked_interface_models_text() + ")")
       ->delimiter(',');
   cmd->add_option("--params-for", o->params_for,
                   "with --reference: MODEL=FILE, that model's parameter set (repeat; default: the "

@@ -26,7 +26,7 @@ ModelSpec ahe_spec() {
 
 ModelSpec ahe_igs_spec() {
   auto spec = with_intergranular_strain(ahe_spec(), build);
-  spec.declaration.plan_rank = 9;
+  spec.declaration.plan_rank = 11;
   return spec;
 }
 

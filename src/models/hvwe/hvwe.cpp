@@ -27,7 +27,7 @@ ModelSpec hvwe_spec() {
 // On cyclic paths `iwb plan` tries it last (intergranular strain matters where the path reverses).
 ModelSpec hvwe_igs_spec() {
   auto spec = with_intergranular_strain(hvwe_spec(), build);
-  spec.declaration.plan_rank = 10;
+  spec.declaration.plan_rank = 12;
   return spec;
 }
 

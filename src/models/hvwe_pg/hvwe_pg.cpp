@@ -180,6 +180,9 @@ ModelSpec hvwe_pg_spec() {
                            DiagnosticRole::kNone});
   d.roughness.reads_mean_slope = true;
   d.example_parameters = "hvwe_pg_example.toml";
+  // tried by `iwb plan` and the league after hvwe-rd: hvwe and two parameters (fitted to DEM
+  // walls: --params-for hvwe-pg=FILE)
+  d.plan_rank = 10;
   return spec;
 }
 

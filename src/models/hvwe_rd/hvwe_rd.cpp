@@ -67,6 +67,9 @@ ModelSpec hvwe_rd_spec() {
                               true, InPlaneStart::kFreeK0, kListingOrder)};
   spec.declaration.roughness.reads_normalized_roughness = true;
   spec.declaration.example_parameters = "hvwe_rd_example.toml";
+  // tried by `iwb plan` and the league after hvwe, whose form it extends by one parameter (its
+  // chi from a set fitted to DEM walls: --params-for hvwe-rd=FILE)
+  spec.declaration.plan_rank = 9;
   return spec;
 }
 

@@ -7,7 +7,7 @@ set ylabel 'uncertainty'
 set style data histograms
 set style histogram clustered
 set style fill solid 0.8
-set xtics ('lashkari' 0, 'hp1d' 1, 'hvwe-igs' 2, 'hvwe' 3, 'mc' 4, 'ahe' 5, 'ah' 6, 'ahe-igs' 7, 'hyperbolic' 8, 'mortara' 9) rotate by -30
+set xtics ('lashkari' 0, 'hvwe-pg' 1, 'hvwe-rd' 2, 'hp1d' 3, 'hvwe-igs' 4, 'hvwe' 5, 'mc' 6, 'ahe' 7, 'ah' 8, 'ahe-igs' 9, 'hyperbolic' 10, 'mortara' 11) rotate by -30
 set logscale y
 
 set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'

@@ -7,7 +7,7 @@ set ylabel 'uncertainty'
 set style data histograms
 set style histogram clustered
 set style fill solid 0.8
-set xtics ('lashkari' 0, 'hp1d' 1, 'hvwe-igs' 2, 'hvwe' 3, 'ahe' 4, 'ah' 5, 'ahe-igs' 6, 'mc' 7, 'hyperbolic' 8, 'mortara' 9) rotate by -30
+set xtics ('hvwe-rd' 0, 'lashkari' 1, 'hvwe-pg' 2, 'hp1d' 3, 'hvwe-igs' 4, 'hvwe' 5, 'ahe' 6, 'ah' 7, 'ahe-igs' 8, 'mc' 9, 'hyperbolic' 10, 'mortara' 11) rotate by -30
 set logscale y
 
 set terminal svg size 900,560 font 'sans,12' noenhanced background '#ffffff'
