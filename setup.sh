@@ -11,7 +11,7 @@ fresh_build=false
 
 PACKAGES=(
   cmake ninja-build g++ clang pkg-config  # clang compiles iwb (build time, see below); g++ for libstdc++
-  liblapack-dev  # the column's band solver (src/column)
+  liblapack3  # the column's band solver (src/column), loaded when a column first solves
   libeigen3-dev catch2 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev libssl-dev
   liggghts libliggghts-dev yade gnuplot-nox libnlopt-cxx-dev
   mpi-default-dev  # mpi.h for liggghts_tri, LIGGGHTS with the triclinic fix (the periodic soil cell)

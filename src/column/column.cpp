@@ -1,23 +1,41 @@
 #include "column/column.hpp"
 
+#include <dlfcn.h>
 #include <fmt/core.h>
 
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "coarse_graining/band_measures.hpp"
 #include "common/band_zone.hpp"
 #include "common/errors.hpp"
 
-// LAPACK's band solver (Debian's liblapack): A x = b for a band matrix in column-major band
-// storage, overwritten by its LU factors; b by x.
-extern "C" void dgbsv_(const int* n, const int* kl, const int* ku, const int* nrhs, double* ab,
-                       const int* ldab, int* ipiv, double* b, const int* ldb, int* info);
-
 namespace iwb::column {
 
 namespace {
+
+// LAPACK's band solver (Debian's liblapack3): A x = b for a band matrix in column-major band
+// storage, overwritten by its LU factors; b by x. Loaded the first time a column solves, not
+// linked: linked, LAPACK and the BLAS, gfortran and quadmath it pulls in were 5 of iwb's 17
+// libraries and raised every command's start-up from 9 to 15 ms (`iwb bench element`).
+using Dgbsv = void(const int* n, const int* kl, const int* ku, const int* nrhs, double* ab,
+                   const int* ldab, int* ipiv, double* b, const int* ldb, int* info);
+
+Dgbsv* lapack_dgbsv() {
+  static Dgbsv* const dgbsv = [] {
+    // RTLD_LOCAL: its symbols stay its own; loaded once, never unloaded
+    void* lapack = dlopen("liblapack.so.3", RTLD_NOW | RTLD_LOCAL);
+    void* f = lapack ? dlsym(lapack, "dgbsv_") : nullptr;
+    if (f == nullptr)
+      throw std::runtime_error(fmt::format(
+          "the column solves with LAPACK, which did not load ({}): install Debian's liblapack3",
+          dlerror()));
+    return reinterpret_cast<Dgbsv*>(f);
+  }();
+  return dgbsv;
+}
 
 constexpr int kDofs = 3;  // per node: u1, u2, w
 constexpr int kU1 = 0, kU2 = 1, kW = 2;
@@ -308,7 +326,7 @@ class ColumnSolver {
     for (int k = 0; k < n; ++k) x[k] = -R(free[k]);
     std::vector<int> pivots(n);
     int info = 0;
-    dgbsv_(&n, &kl, &ku, &one, ab.data(), &ldab, pivots.data(), x.data(), &n, &info);
+    lapack_dgbsv()(&n, &kl, &ku, &one, ab.data(), &ldab, pivots.data(), x.data(), &n, &info);
     if (info != 0) throw DomainError("singular column stiffness");
     Eigen::VectorXd step = Eigen::VectorXd::Zero(R.size());
     for (int k = 0; k < n; ++k) step(free[k]) = x[k];
