@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
+#include "models/registry.hpp"
 
 using namespace iwb;
 namespace fs = std::filesystem;
@@ -81,4 +83,10 @@ TEST_CASE("a range prints its bounds with %g and never admits a value that is no
   CHECK_FALSE(positive().admits(0.0));
   CHECK(non_negative().admits(0.0));
   CHECK_FALSE((Range{0.0, 0.5, false, true}.admits(0.5)));
+}
+
+// The ladder the plan's and the league's help name is written in app (not asked of the registry
+// at start-up); it must be the registry's, rank by rank.
+TEST_CASE("the help's model ladder is the one the registry ranks", "[app]") {
+  CHECK(std::string(app::kInterfaceModelLadder) == models::ranked_interface_models_text());
 }

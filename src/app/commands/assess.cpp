@@ -12,7 +12,6 @@
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
 #include "app/progress.hpp"
-#include "models/registry.hpp"
 
 namespace iwb::app {
 
@@ -110,7 +109,7 @@ void add_assess_command(CLI::App& app, CommandList& commands) {
   cmd->add_option("--models", o->models,
                   "with --reference: the models of the league (default: every interface model for "
                   "granular scenes, simplest first: " +
-                      models::ranked_interface_models_text() + ")")
+                      std::string(kInterfaceModelLadder) + ")")
       ->delimiter(',');
   cmd->add_option("--params-for", o->params_for,
                   "with --reference: MODEL=FILE, that model's parameter set (repeat; default: the "

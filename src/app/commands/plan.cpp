@@ -8,7 +8,6 @@
 #include "app/command_list.hpp"
 #include "app/commands/commands.hpp"
 #include "app/option_checks.hpp"
-#include "models/registry.hpp"
 #include "tradeoff/plan_parameters.hpp"
 
 namespace iwb::app {
@@ -31,7 +30,7 @@ CLI::App* add_plan_options(CLI::App& app, PlanCommand& c) {
       "interest, or \"not needed\") and its tradeoff (run `iwb tradeoff` first): the cheapest DEM "
       "setting whose "
       "errors plus the seed noise floor meet every tolerance, and the simplest interface model (" +
-          models::ranked_interface_models_text() +
+          std::string(kInterfaceModelLadder) +
           ") whose "
           "global uncertainty meets them: each model calibrated to the scene's own runs (the base "
           "seeds: kappa_r and "
