@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "assessment/distribution_file.hpp"
 #include "common/errors.hpp"
@@ -299,9 +300,10 @@ namespace {
 // calibrated from soil tests, else the model's own example, where its calibration to the runs
 // starts.
 models::ModelInputs candidate_inputs(const io::ParameterSet& set, const std::string& model,
-                                     const std::vector<std::string>& params_for) {
+                                     const std::map<std::string, io::ParameterSet>& own_sets) {
   const auto& spec = models::find_model(model);
-  const auto given = io::parameter_set_given_for(params_for, model);
+  const auto it = own_sets.find(model);
+  const io::ParameterSet* given = it == own_sets.end() ? nullptr : &it->second;
   if (!given && spec.declaration.calibration_recipe.empty())
     return io::shipped_inputs(spec.declaration.example_parameters);
   models::ModelInputs in;
@@ -325,18 +327,19 @@ ModelErrors evaluate_candidate(const assessment::SceneReference& reference,
   return evaluate_model(reference, model, inputs, league);
 }
 
-// The models --params-for names, each one the plan tries (refused before anything runs).
-std::vector<std::string> models_with_own_sets(const PlanOptions& opt,
-                                              const std::vector<std::string>& ladder) {
-  const auto named = io::models_given_sets(opt.params_for);
-  for (const auto& m : named)
+// The sets --params-for gives, by model, read once before anything runs: each model one the
+// plan tries, each file a set.
+std::map<std::string, io::ParameterSet> models_with_own_sets(
+    const PlanOptions& opt, const std::vector<std::string>& ladder) {
+  std::map<std::string, io::ParameterSet> sets;
+  for (const auto& m : io::models_given_sets(opt.params_for)) {
     if (std::find(ladder.begin(), ladder.end(), m) == ladder.end())
       throw InputError(
           fmt::format("--params-for {}=...: the plan does not try {} on this scene (it tries {})",
                       m, m, fmt::join(ladder, ", ")));
-    else
-      io::parameter_set_given_for(opt.params_for, m);  // a file that is not a set, refused now
-  return named;
+    sets.emplace(m, *io::parameter_set_given_for(opt.params_for, m));
+  }
+  return sets;
 }
 
 }  // namespace
@@ -393,10 +396,9 @@ json run_plan(const PlanOptions& opt) {
   for (const auto& p : sets) set_names.push_back(fs::path(p.origin).stem().string());
   std::vector<ModelErrors> models;
   for (const auto& c : plan_candidates(ladder, set_names)) {
-    const bool own = std::find(own_sets.begin(), own_sets.end(), c.model) != own_sets.end();
-    if (own && c.set > 0) continue;  // a model given its own set is tried with it alone
-    models.push_back(evaluate_candidate(
-        reference, c.model, candidate_inputs(sets[c.set], c.model, opt.params_for), league));
+    if (own_sets.count(c.model) && c.set > 0) continue;  // tried with its own set alone
+    models.push_back(evaluate_candidate(reference, c.model,
+                                        candidate_inputs(sets[c.set], c.model, own_sets), league));
     models.back().model = c.name;
   }
   json judged = json::array();
